@@ -1,0 +1,35 @@
+//! `ugo info CASE`: what the case will cost, before any assembly.
+
+use super::{bytes, load};
+use crate::Discretize;
+use anyhow::Result;
+use std::path::Path;
+use ugo::kernel::Estimate;
+use ugo::model::Model;
+
+pub fn run(case: &Path, d: &Discretize) -> Result<()> {
+    let (scene, options) = load(case, d)?;
+    let mesh = Model::mesh(&scene, &options);
+    let estimate = Estimate::of(&mesh, 1);
+    let areas = mesh.surface_areas(scene.surfaces.len());
+    println!("ugo info: {} ({})", scene.name, case.display());
+    println!("  patch size         {:>12} m", options.patch_size);
+    println!("  surfaces           {:>12}", scene.surfaces.len());
+    for (s, a) in scene.surfaces.iter().zip(&areas) {
+        let n = mesh.patches.iter().filter(|p| scene.surfaces[p.surface as usize].name == s.name).count();
+        println!("    {:<24} {:>6} patches  {:>10.4} m²", s.name, n, a);
+    }
+    println!("  patches N          {:>12}", estimate.patches);
+    println!("  direction cells K  {:>12}", estimate.cells);
+    println!("  unknowns           {:>12}", estimate.unknowns);
+    println!(
+        "  facing pairs       {:>12.0}{}",
+        estimate.facing_pairs,
+        if estimate.sampled { " (sampled)" } else { "" }
+    );
+    println!("  non-zeros of G     {:>12.0}   (upper bound: occlusion removes some)", estimate.nonzeros);
+    println!("  kernel memory      {:>12}", bytes(estimate.kernel_bytes));
+    println!("  assembly peak      {:>12}", bytes(estimate.assembly_bytes));
+    println!("  memory limit       {:>12}", bytes(options.memory_limit as f64));
+    Ok(())
+}

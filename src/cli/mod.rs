@@ -1,0 +1,52 @@
+//! The subcommands, one file each, and what they share.
+
+pub mod bench;
+pub mod info;
+pub mod solve;
+
+use crate::Discretize;
+use anyhow::{Result, bail};
+use std::path::Path;
+use ugo::model::ModelOptions;
+use ugo::scene::Scene;
+
+/// Loads a case and applies the command-line overrides.
+pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
+    let mut scene = Scene::load(case)?;
+    let mut options = ModelOptions::of(&scene);
+    if let Some(h) = d.patch_size {
+        if !(h.is_finite() && h > 0.0) {
+            bail!("--patch-size must be a positive length in metres, got {h}");
+        }
+        options.patch_size = h;
+        scene.discretization.patch_size = h;
+    }
+    if let Some(gib) = d.memory_limit {
+        if !(gib.is_finite() && gib > 0.0) {
+            bail!("--memory-limit must be a positive number of GiB, got {gib}");
+        }
+        options.memory_limit = (gib * (1u64 << 30) as f64) as u64;
+    }
+    Ok((scene, options))
+}
+
+/// A progress bar on stderr (hidden when stderr is not a terminal).
+pub fn bar(total: u64, what: &str) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(total);
+    let style =
+        indicatif::ProgressStyle::with_template("{msg:>10} [{bar:40}] {percent:>3}% {elapsed_precise} eta {eta}")
+            .map(|s| s.progress_chars("=> "))
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar());
+    bar.set_style(style);
+    bar.set_message(what.to_string());
+    bar
+}
+
+/// Bytes as GiB/MiB text.
+pub fn bytes(b: f64) -> String {
+    if b >= (1u64 << 30) as f64 {
+        format!("{:.2} GiB", b / (1u64 << 30) as f64)
+    } else {
+        format!("{:.1} MiB", b / (1u64 << 20) as f64)
+    }
+}

@@ -1,0 +1,119 @@
+//! The patch mesh: every surface of a scene cut into planar patches (`design.md` §2).
+//!
+//! Owns the per-patch record (centroid, normal, area, local frame, owning surface and
+//! material, emitted luminance) and the rule for `inside` (normals flipped) and
+//! `two_sided` (a second patch, back to back, on the same geometric face).
+
+use super::polygon::ConvexPolygon;
+use super::tessellate::tessellate;
+use crate::scene::{Emission, Scene};
+use glam::DVec3;
+use std::f64::consts::PI;
+
+/// One planar patch `P_i`.
+#[derive(Debug, Clone, Copy)]
+pub struct Patch {
+    pub polygon: ConvexPolygon,
+    pub centroid: DVec3,
+    /// Unit normal of the reflecting side.
+    pub normal: DVec3,
+    pub area: f64,
+    /// Local frame `(tangent, bitangent, normal)`, right-handed.
+    pub tangent: DVec3,
+    pub bitangent: DVec3,
+    /// Index of the owning [`crate::scene::Surface`].
+    pub surface: u32,
+    /// Index of the patch's [`crate::scene::Material`].
+    pub material: u32,
+    /// Geometric face: the two patches of a two-sided element share it.
+    pub face: u32,
+}
+
+impl Patch {
+    /// The patch of `polygon` with its derived quantities.
+    pub fn from_polygon(polygon: ConvexPolygon, surface: u32, material: u32, face: u32) -> Patch {
+        let normal = polygon.normal();
+        let v = polygon.vertices();
+        let tangent = (v[1] - v[0]).normalize();
+        Patch {
+            polygon,
+            centroid: polygon.centroid(),
+            normal,
+            area: polygon.area(),
+            tangent,
+            bitangent: normal.cross(tangent),
+            surface,
+            material,
+            face,
+        }
+    }
+}
+
+/// All patches of a scene with their emitted luminance.
+#[derive(Debug, Clone)]
+pub struct Mesh {
+    pub patches: Vec<Patch>,
+    /// Emitted (Lambertian) luminance of each patch, cd/m².
+    pub emission: Vec<f64>,
+    /// Number of geometric faces (patches of a two-sided element share one).
+    pub faces: usize,
+}
+
+impl Mesh {
+    /// Meshes every surface of `scene` with target edge length `patch_size` (m).
+    pub fn build(scene: &Scene, patch_size: f64) -> Mesh {
+        let mut patches = Vec::new();
+        let mut emission = Vec::new();
+        let mut faces = 0u32;
+        for (s, surface) in scene.surfaces.iter().enumerate() {
+            let first = patches.len();
+            for mut element in tessellate(&surface.shape, patch_size) {
+                if surface.inside {
+                    element = element.reversed();
+                }
+                patches.push(Patch::from_polygon(element, s as u32, surface.material as u32, faces));
+                if surface.two_sided {
+                    patches.push(Patch::from_polygon(element.reversed(), s as u32, surface.material as u32, faces));
+                }
+                faces += 1;
+            }
+            let area: f64 = patches[first..].iter().map(|p| p.area).sum();
+            let luminance = match surface.emission {
+                None => 0.0,
+                Some(Emission::Luminance(l)) => l,
+                Some(Emission::Flux(phi)) => phi / (PI * area),
+            };
+            emission.resize(patches.len(), luminance);
+        }
+        Mesh { patches, emission, faces: faces as usize }
+    }
+
+    pub fn len(&self) -> usize {
+        self.patches.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.patches.is_empty()
+    }
+
+    /// Length of the diagonal of the bounding box, m: the scene's length scale.
+    pub fn extent(&self) -> f64 {
+        let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+        for p in &self.patches {
+            for v in p.polygon.vertices() {
+                lo = lo.min(*v);
+                hi = hi.max(*v);
+            }
+        }
+        (hi - lo).length()
+    }
+
+    /// Total meshed area of each surface (both sides of a two-sided one), m².
+    pub fn surface_areas(&self, surfaces: usize) -> Vec<f64> {
+        let mut areas = vec![0.0; surfaces];
+        for p in &self.patches {
+            areas[p.surface as usize] += p.area;
+        }
+        areas
+    }
+}

@@ -1,0 +1,133 @@
+//! Small convex planar polygons (triangles and quads): the shape of every patch.
+//!
+//! Owns the elementary geometry used by meshing (`design.md` §2) and by the form
+//! factors (§3): area, normal, centroid, triangle fan, distance from a point, and
+//! clipping against a plane. Vertices are counter-clockwise seen from the front.
+
+use glam::DVec3;
+
+/// The most vertices a clipped patch can have (a quad cut by one plane has at most 5).
+pub const MAX_CLIPPED: usize = 5;
+
+/// A convex planar polygon of 3 or 4 vertices.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ConvexPolygon {
+    vertices: [DVec3; 4],
+    len: u8,
+}
+
+impl ConvexPolygon {
+    pub fn triangle(a: DVec3, b: DVec3, c: DVec3) -> Self {
+        ConvexPolygon { vertices: [a, b, c, c], len: 3 }
+    }
+
+    pub fn quad(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Self {
+        ConvexPolygon { vertices: [a, b, c, d], len: 4 }
+    }
+
+    /// A polygon from 3 or 4 vertices.
+    pub fn from_slice(v: &[DVec3]) -> Self {
+        match v.len() {
+            3 => Self::triangle(v[0], v[1], v[2]),
+            4 => Self::quad(v[0], v[1], v[2], v[3]),
+            n => panic!("a patch has 3 or 4 vertices, not {n}"),
+        }
+    }
+
+    pub fn vertices(&self) -> &[DVec3] {
+        &self.vertices[..self.len as usize]
+    }
+
+    /// The same polygon seen from the other side (vertex order reversed).
+    pub fn reversed(&self) -> Self {
+        let mut v: Vec<DVec3> = self.vertices().to_vec();
+        v.reverse();
+        Self::from_slice(&v)
+    }
+
+    /// Vector area: normal times area (Newell's formula).
+    pub fn vector_area(&self) -> DVec3 {
+        let v = self.vertices();
+        let mut s = DVec3::ZERO;
+        for i in 1..v.len() - 1 {
+            s += (v[i] - v[0]).cross(v[i + 1] - v[0]);
+        }
+        0.5 * s
+    }
+
+    pub fn area(&self) -> f64 {
+        self.vector_area().length()
+    }
+
+    pub fn normal(&self) -> DVec3 {
+        self.vector_area().normalize()
+    }
+
+    /// Area centroid.
+    pub fn centroid(&self) -> DVec3 {
+        let v = self.vertices();
+        let (mut sum, mut weight) = (DVec3::ZERO, 0.0);
+        for i in 1..v.len() - 1 {
+            let a = (v[i] - v[0]).cross(v[i + 1] - v[0]).length();
+            sum += a * (v[0] + v[i] + v[i + 1]) / 3.0;
+            weight += a;
+        }
+        sum / weight
+    }
+
+    /// The triangles of a fan from vertex 0.
+    pub fn triangles(&self) -> impl Iterator<Item = [DVec3; 3]> + '_ {
+        let v = self.vertices();
+        (1..v.len() - 1).map(move |i| [v[0], v[i], v[i + 1]])
+    }
+
+    /// Longest distance between two vertices.
+    pub fn diameter(&self) -> f64 {
+        let v = self.vertices();
+        let mut d: f64 = 0.0;
+        for i in 0..v.len() {
+            for j in i + 1..v.len() {
+                d = d.max(v[i].distance(v[j]));
+            }
+        }
+        d
+    }
+
+    /// Euclidean distance from `p` to the closed polygon.
+    pub fn distance_to(&self, p: DVec3) -> f64 {
+        let n = self.normal();
+        let v = self.vertices();
+        let q = p - n * n.dot(p - v[0]);
+        let inside = (0..v.len()).all(|i| (v[(i + 1) % v.len()] - v[i]).cross(q - v[i]).dot(n) >= 0.0);
+        if inside {
+            return (p - q).length();
+        }
+        (0..v.len()).map(|i| segment_distance(p, v[i], v[(i + 1) % v.len()])).fold(f64::INFINITY, f64::min)
+    }
+
+    /// The part on the side `(x − origin)·normal ≥ 0` (Sutherland–Hodgman), written into
+    /// `out`; returns its vertex count (0 when nothing is left).
+    pub fn clip_above(&self, origin: DVec3, normal: DVec3, out: &mut [DVec3; MAX_CLIPPED]) -> usize {
+        let v = self.vertices();
+        let mut n = 0;
+        for i in 0..v.len() {
+            let (a, b) = (v[i], v[(i + 1) % v.len()]);
+            let (da, db) = ((a - origin).dot(normal), (b - origin).dot(normal));
+            if da >= 0.0 {
+                out[n] = a;
+                n += 1;
+            }
+            if (da >= 0.0) != (db >= 0.0) {
+                out[n] = a + (b - a) * (da / (da - db));
+                n += 1;
+            }
+        }
+        if n < 3 { 0 } else { n }
+    }
+}
+
+fn segment_distance(p: DVec3, a: DVec3, b: DVec3) -> f64 {
+    let ab = b - a;
+    let t = ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0);
+    p.distance(a + t * ab)
+}

@@ -1,0 +1,165 @@
+//! The HDF5 file of one solve (`design.md` §8), readable with h5py or h5dump alone.
+//!
+//! Layout: `/mesh/{points,normals,areas,surface_id,material_id,vertices,vertex_count,
+//! surface_names}`, `/directions/{vectors,solid_angle,projected}`,
+//! `/field/{luminance,emission,illuminance}`, `/solver/residual_history`,
+//! `/energy/{surface_emitted,surface_absorbed}`,
+//! `/probes/{name,position,normal,luminance,illuminance}`, and attributes on the root for
+//! method, tolerance, iterations, timings, energy totals, the scene text and the version.
+//! The file is written under a temporary name and renamed when complete.
+
+use crate::energy::EnergyBalance;
+use crate::field::Field;
+use crate::model::Model;
+use crate::probe::ProbeReading;
+use crate::scene::Scene;
+use crate::solve::{SolveInfo, SolveParams};
+use hdf5::types::VarLenUnicode;
+use ndarray::{Array1, Array2, Array3};
+use std::path::Path;
+
+/// Everything a solve produced.
+pub struct Solution<'a> {
+    pub scene: &'a Scene,
+    pub model: &'a Model,
+    pub field: &'a Field,
+    /// Incident illuminance of each patch, lx.
+    pub illuminance: &'a [f64],
+    pub params: &'a SolveParams,
+    pub info: &'a SolveInfo,
+    pub energy: &'a EnergyBalance,
+    pub probes: &'a [ProbeReading],
+}
+
+/// Writes `solution` to `path` (through `path.tmp`, renamed when complete).
+pub fn write_solution(path: &Path, solution: &Solution) -> hdf5::Result<()> {
+    let mut tmp = path.as_os_str().to_owned();
+    tmp.push(".tmp");
+    let tmp = std::path::PathBuf::from(tmp);
+    let result = write_to(&tmp, solution);
+    match result {
+        Ok(()) => {
+            std::fs::rename(&tmp, path).map_err(|e| hdf5::Error::from(format!("cannot rename {}: {e}", tmp.display())))
+        }
+        Err(e) => {
+            let _ = std::fs::remove_file(&tmp);
+            Err(e)
+        }
+    }
+}
+
+fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
+    let file = hdf5::File::create(path)?;
+    write_mesh(&file.create_group("mesh")?, s)?;
+    write_directions(&file.create_group("directions")?, s)?;
+
+    let field = file.create_group("field")?;
+    dataset(&field, "luminance", &s.field.luminance)?;
+    let k = s.model.kernel.cells();
+    let emission = Array3::from_shape_vec((s.model.mesh.len(), k, 1), s.model.l0.clone()).map_err(shape_error)?;
+    dataset(&field, "emission", &emission)?;
+    dataset(&field, "illuminance", &Array1::from(s.illuminance.to_vec()))?;
+
+    let solver = file.create_group("solver")?;
+    dataset(&solver, "residual_history", &Array1::from(s.info.residual_history.clone()))?;
+
+    let energy = file.create_group("energy")?;
+    dataset(&energy, "surface_emitted", &Array1::from(s.energy.surface_emitted.clone()))?;
+    dataset(&energy, "surface_absorbed", &Array1::from(s.energy.surface_absorbed.clone()))?;
+
+    write_probes(&file.create_group("probes")?, s.probes)?;
+    write_attributes(&file, s)
+}
+
+fn write_mesh(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
+    let p = &s.model.mesh.patches;
+    let n = p.len();
+    let vec3 = |f: &dyn Fn(usize) -> glam::DVec3| Array2::from_shape_fn((n, 3), |(i, c)| f(i)[c]);
+    dataset(g, "points", &vec3(&|i| p[i].centroid))?;
+    dataset(g, "normals", &vec3(&|i| p[i].normal))?;
+    dataset(g, "areas", &Array1::from_iter(p.iter().map(|q| q.area)))?;
+    dataset(g, "surface_id", &Array1::from_iter(p.iter().map(|q| q.surface)))?;
+    dataset(g, "material_id", &Array1::from_iter(p.iter().map(|q| q.material)))?;
+    let vertices = Array3::from_shape_fn((n, 4, 3), |(i, v, c)| {
+        let vs = p[i].polygon.vertices();
+        vs[v.min(vs.len() - 1)][c]
+    });
+    dataset(g, "vertices", &vertices)?;
+    dataset(g, "vertex_count", &Array1::from_iter(p.iter().map(|q| q.polygon.vertices().len() as u8)))?;
+    strings(g, "surface_names", s.scene.surfaces.iter().map(|x| x.name.as_str()))?;
+    strings(g, "material_names", s.scene.materials.iter().map(|x| x.name.as_str()))
+}
+
+fn write_directions(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
+    let cells = s.model.kernel.directions.cells();
+    dataset(g, "vectors", &Array2::from_shape_fn((cells.len(), 3), |(k, c)| cells[k].direction[c]))?;
+    dataset(g, "solid_angle", &Array1::from_iter(cells.iter().map(|c| c.solid_angle)))?;
+    dataset(g, "projected", &Array1::from_iter(cells.iter().map(|c| c.projected)))
+}
+
+fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
+    let n = probes.len();
+    strings(g, "name", probes.iter().map(|p| p.name.as_str()))?;
+    dataset(g, "position", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].position[c]))?;
+    dataset(g, "normal", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].normal[c]))?;
+    dataset(g, "luminance", &Array1::from_iter(probes.iter().map(|p| p.luminance)))?;
+    dataset(g, "illuminance", &Array1::from_iter(probes.iter().map(|p| p.illuminance)))
+}
+
+fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
+    let st = &s.model.stats;
+    text(file, "method", s.info.method)?;
+    text(file, "scene_name", &s.scene.name)?;
+    text(file, "scene_file", &s.scene.path.display().to_string())?;
+    text(file, "scene_text", &s.scene.source)?;
+    text(file, "version", env!("CARGO_PKG_VERSION"))?;
+    text(file, "units", "luminance cd/m2, illuminance lx, flux lm, lengths m")?;
+    let numbers: [(&str, f64); 17] = [
+        ("tolerance", s.params.tolerance),
+        ("max_iterations", s.params.max_iterations as f64),
+        ("iterations", s.info.iterations as f64),
+        ("kernel_applications", s.info.applications as f64),
+        ("residual", s.info.residual()),
+        ("patch_size", s.scene.discretization.patch_size),
+        ("nonzeros", s.model.kernel.g.nnz() as f64),
+        ("mesh_seconds", st.mesh_seconds),
+        ("bvh_seconds", st.bvh_seconds),
+        ("assembly_seconds", st.kernel_seconds),
+        ("solve_seconds", s.info.seconds),
+        ("balance_max_correction", st.balance.max_correction),
+        ("flux_emitted", s.energy.emitted),
+        ("flux_absorbed", s.energy.absorbed),
+        ("flux_escaped", s.energy.escaped),
+        ("flux_imbalance", s.energy.imbalance),
+        ("occlusion_rays", st.rays as f64),
+    ];
+    for (name, value) in numbers {
+        file.new_attr::<f64>().create(name)?.write_scalar(&value)?;
+    }
+    Ok(())
+}
+
+fn dataset<T: hdf5::H5Type, D: ndarray::Dimension>(
+    g: &hdf5::Group,
+    name: &str,
+    data: &ndarray::Array<T, D>,
+) -> hdf5::Result<()> {
+    g.new_dataset_builder().with_data(data).create(name).map(|_| ())
+}
+
+fn strings<'a>(g: &hdf5::Group, name: &str, items: impl Iterator<Item = &'a str>) -> hdf5::Result<()> {
+    let values: hdf5::Result<Vec<VarLenUnicode>> = items.map(unicode).collect();
+    dataset(g, name, &Array1::from(values?))
+}
+
+fn text(file: &hdf5::File, name: &str, value: &str) -> hdf5::Result<()> {
+    file.new_attr::<VarLenUnicode>().shape(()).create(name)?.write_scalar(&unicode(value)?)
+}
+
+fn unicode(s: &str) -> hdf5::Result<VarLenUnicode> {
+    s.parse::<VarLenUnicode>().map_err(|e| hdf5::Error::from(format!("cannot store {s:?}: {e}")))
+}
+
+fn shape_error(e: ndarray::ShapeError) -> hdf5::Error {
+    hdf5::Error::from(e.to_string())
+}

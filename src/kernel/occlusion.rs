@@ -1,0 +1,59 @@
+//! Visibility fractions `V_ij` between two patches: the mean of the pupil function `Θ`
+//! over segments joining stratified points of the two patches (`design.md` §3).
+//!
+//! The same points serve both directions, so `V_ij = V_ji` and occlusion keeps the
+//! kernel reciprocal. Four segments (point `k` to point `k` of the other patch) are tested
+//! first; only when they disagree (a penumbra) are all `POINTS²` segments traced.
+
+use crate::geometry::Patch;
+use crate::visibility::{Blocker, Visibility};
+use glam::DVec3;
+
+/// Points per patch; a pair is tested with `POINTS²` segments.
+pub const POINTS: usize = 4;
+
+/// Four stratified interior points of a triangle or convex quad.
+pub fn sample_points(p: &Patch) -> [DVec3; POINTS] {
+    let v = p.polygon.vertices();
+    if v.len() == 4 {
+        let at = |s: f64, t: f64| v[0].lerp(v[1], s).lerp(v[3].lerp(v[2], s), t);
+        [at(0.25, 0.25), at(0.75, 0.25), at(0.75, 0.75), at(0.25, 0.75)]
+    } else {
+        let c = (v[0] + v[1] + v[2]) / 3.0;
+        [(4.0 * v[0] + v[1] + v[2]) / 6.0, (v[0] + 4.0 * v[1] + v[2]) / 6.0, (v[0] + v[1] + 4.0 * v[2]) / 6.0, c]
+    }
+}
+
+/// Fraction of the `POINTS²` segments between `a` and `b` that no other face blocks.
+pub fn visible_fraction(
+    visibility: &Visibility,
+    a: &Patch,
+    pa: &[DVec3; POINTS],
+    b: &Patch,
+    pb: &[DVec3; POINTS],
+    blocker: &mut Blocker,
+) -> VisibleFraction {
+    let ignore = [a.face, b.face];
+    let mut seen = [[None; POINTS]; POINTS];
+    for k in 0..POINTS {
+        seen[k][k] = Some(visibility.visible_cached(pa[k], pb[k], ignore, blocker));
+    }
+    let first = (0..POINTS).filter(|&k| seen[k][k] == Some(true)).count();
+    if first == 0 || first == POINTS {
+        return VisibleFraction { fraction: (first / POINTS) as f64, rays: POINTS };
+    }
+    let mut visible = 0;
+    for (k, row) in seen.iter_mut().enumerate() {
+        for (m, cell) in row.iter_mut().enumerate() {
+            visible += cell.unwrap_or_else(|| visibility.visible_cached(pa[k], pb[m], ignore, blocker)) as usize;
+        }
+    }
+    VisibleFraction { fraction: visible as f64 / (POINTS * POINTS) as f64, rays: POINTS * POINTS }
+}
+
+/// A visibility fraction and the rays it took.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VisibleFraction {
+    pub fraction: f64,
+    pub rays: usize,
+}

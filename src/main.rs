@@ -1,0 +1,81 @@
+//! The `ugo` command line (`design.md` §6): `solve`, `info`, `bench`.
+
+mod cli;
+
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// A numerical laboratory for the global illumination equation of a 3D scene.
+#[derive(Parser)]
+#[command(name = "ugo", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// Options that override the case file's `[discretization]`.
+#[derive(clap::Args, Clone, Debug)]
+pub struct Discretize {
+    /// Target patch edge length, m (default: the case's `patch_size`).
+    #[arg(long)]
+    patch_size: Option<f64>,
+    /// Largest kernel memory allowed, GiB (default: half the machine's RAM).
+    #[arg(long)]
+    memory_limit: Option<f64>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Mesh, assemble and solve a case; write the luminance field to HDF5.
+    Solve {
+        /// The case file (TOML).
+        case: PathBuf,
+        /// Output HDF5 file (default: the case's name with `.h5`, in the current folder).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        #[command(flatten)]
+        discretize: Discretize,
+        /// Relative residual at which the iteration stops (default: the case's `[solver]`).
+        #[arg(long)]
+        tolerance: Option<f64>,
+        /// Most iterations (default: the case's `[solver]`).
+        #[arg(long)]
+        max_iterations: Option<usize>,
+    },
+    /// Patches, unknowns, and the kernel's estimated size, before any assembly.
+    Info {
+        case: PathBuf,
+        #[command(flatten)]
+        discretize: Discretize,
+    },
+    /// Throughput of the visibility queries on a case (occlusion rays per second).
+    Bench {
+        /// The case to measure on (default: the bundled Cornell box).
+        #[arg(default_value = "cases/cornell-box.toml")]
+        case: PathBuf,
+        #[command(flatten)]
+        discretize: Discretize,
+        /// Occlusion rays per configuration.
+        #[arg(long, default_value_t = 2_000_000)]
+        rays: usize,
+    },
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Solve { case, output, discretize, tolerance, max_iterations } => {
+            cli::solve::run(&case, output, &discretize, tolerance, max_iterations)
+        }
+        Command::Info { case, discretize } => cli::info::run(&case, &discretize),
+        Command::Bench { case, discretize, rays } => cli::bench::run(&case, &discretize, rays),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("ugo: error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}

@@ -1,0 +1,121 @@
+//! The discretized problem of a scene: mesh, visibility, kernel `K = B·G` and source
+//! `L0` (`design.md` §6, the arrows from Scene to Kernel).
+//!
+//! The kernel's memory is estimated before assembly and a kernel over the limit is
+//! refused with the estimate and the ways out.
+
+use crate::brdf::Block;
+use crate::directions::DirectionSet;
+use crate::geometry::Mesh;
+use crate::kernel::{Estimate, Kernel, Transport, assemble, form_factor::Quadrature};
+use crate::scene::Scene;
+use crate::visibility::Visibility;
+use std::time::Instant;
+use thiserror::Error;
+
+/// How a scene is discretized.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModelOptions {
+    /// Target patch edge length, m.
+    pub patch_size: f64,
+    /// Largest kernel memory allowed, bytes.
+    pub memory_limit: u64,
+    pub quadrature: Quadrature,
+}
+
+impl ModelOptions {
+    /// The scene's own discretization with the default limits.
+    pub fn of(scene: &Scene) -> ModelOptions {
+        ModelOptions {
+            patch_size: scene.discretization.patch_size,
+            memory_limit: crate::kernel::memory::default_limit(),
+            quadrature: Quadrature::default(),
+        }
+    }
+}
+
+/// Why a model could not be built.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ModelError {
+    #[error(
+        "the kernel would need about {need:.2} GiB ({nonzeros:.3e} non-zeros for {patches} patches × {cells} \
+         cells), over the limit of {limit:.2} GiB. Ways out: a coarser patch_size (memory grows as \
+         patch_size⁻⁴), fewer direction cells, or a higher --memory-limit if the machine has the RAM"
+    )]
+    TooLarge { need: f64, limit: f64, nonzeros: f64, patches: usize, cells: usize },
+}
+
+/// Timings and counts of the assembly.
+#[derive(Debug, Clone)]
+pub struct AssemblyStats {
+    pub mesh_seconds: f64,
+    pub bvh_seconds: f64,
+    pub kernel_seconds: f64,
+    pub pairs: usize,
+    pub rays: usize,
+    pub balance: crate::kernel::BalanceReport,
+}
+
+/// A scene discretized into the linear system `x = L0 + K x`.
+pub struct Model {
+    pub mesh: Mesh,
+    pub visibility: Visibility,
+    pub kernel: Kernel,
+    /// Source term `L0(i,k)`, flat, `x[i·K + k]`.
+    pub l0: Vec<f64>,
+    pub stats: AssemblyStats,
+}
+
+const GIB: f64 = (1u64 << 30) as f64;
+
+impl Model {
+    /// Meshes the scene only (for estimates).
+    pub fn mesh(scene: &Scene, options: &ModelOptions) -> Mesh {
+        Mesh::build(scene, options.patch_size)
+    }
+
+    /// Builds the full model. `progress(total)` is called once with the number of pair
+    /// evaluations ahead, then `step(done)` as they finish.
+    pub fn build(
+        scene: &Scene,
+        options: &ModelOptions,
+        start: &dyn Fn(u64),
+        step: &(dyn Fn(u64) + Sync),
+    ) -> Result<Model, ModelError> {
+        let t = Instant::now();
+        let mesh = Mesh::build(scene, options.patch_size);
+        let directions = DirectionSet::single();
+        let estimate = Estimate::of(&mesh, directions.len());
+        if estimate.peak_bytes() > options.memory_limit as f64 {
+            return Err(ModelError::TooLarge {
+                need: estimate.peak_bytes() / GIB,
+                limit: options.memory_limit as f64 / GIB,
+                nonzeros: estimate.nonzeros,
+                patches: estimate.patches,
+                cells: estimate.cells,
+            });
+        }
+        let mesh_seconds = t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        let visibility = Visibility::build(&mesh);
+        let bvh_seconds = t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        let n = mesh.len() as u64;
+        start(n * n.saturating_sub(1) / 2);
+        let Transport { g, balance, pairs, rays } = assemble(&mesh, &visibility, &options.quadrature, step);
+        let blocks = scene.materials.iter().map(|m| Block::of(&m.model, &directions)).collect();
+        let patch_material = mesh.patches.iter().map(|p| p.material).collect();
+        let k = directions.len();
+        let l0 = mesh.emission.iter().flat_map(|&l| std::iter::repeat_n(l, k)).collect();
+        let kernel = Kernel { g, directions, blocks, patch_material };
+        let stats = AssemblyStats {
+            mesh_seconds,
+            bvh_seconds,
+            kernel_seconds: t.elapsed().as_secs_f64(),
+            pairs,
+            rays,
+            balance,
+        };
+        Ok(Model { mesh, visibility, kernel, l0, stats })
+    }
+}

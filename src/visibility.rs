@@ -1,0 +1,219 @@
+//! Visibility: the pupil function `Θ(r, r')` of `design.md` §1 and closest hits, through `obvhs`.
+//!
+//! Owns the only conversion of the scene to `f32` (obvhs works in `Vec3A`), the
+//! triangle → face map, and the self-intersection policy: a query names the faces it
+//! starts and ends on, and hits on those faces are ignored; besides, the segment is
+//! shortened at both ends by a length scaled to the scene (`1e-6` of its diagonal).
+//! The triangle test is made watertight by a small tolerance on the barycentric
+//! coordinates, so rays through shared edges (including the diagonal of a quad) never
+//! slip between two triangles.
+//!
+//! obvhs's compressed wide BVH is slow on axis-aligned rooms (flat boxes defeat its
+//! quantized nodes), so the scene may be turned by a fixed generic rotation before the
+//! build, every query turned with it; which layout is fastest was measured with
+//! `ugo bench` and is the default (`docs/performance.md`).
+
+use crate::geometry::Mesh;
+use glam::{DMat3, DVec3, Vec3A};
+use obvhs::{
+    BvhBuildParams,
+    bvh2::{Bvh2, builder::build_bvh2_from_tris},
+    cwbvh::{CwBvh, builder::build_cwbvh_from_tris},
+    ray::{Ray, RayHit},
+    triangle::Triangle,
+};
+use std::time::Duration;
+
+/// Which hierarchy and layout the queries run on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VisibilityOptions {
+    pub wide: bool,
+    pub rotate: bool,
+    pub preset: BuildPreset,
+}
+
+/// The obvhs build presets that were measured.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum BuildPreset {
+    Fast,
+    Medium,
+    Slow,
+}
+
+impl Default for VisibilityOptions {
+    fn default() -> Self {
+        VisibilityOptions { wide: false, rotate: false, preset: BuildPreset::Slow }
+    }
+}
+
+enum Hierarchy {
+    Binary(Bvh2),
+    Wide(CwBvh),
+}
+
+/// A ray-casting structure over the faces of a mesh.
+pub struct Visibility {
+    hierarchy: Hierarchy,
+    /// Triangles in the hierarchy's primitive order (rotated when `rotation` is not identity).
+    triangles: Vec<Triangle>,
+    /// Face of each triangle, same order.
+    face_of: Vec<u32>,
+    rotation: DMat3,
+    epsilon: f64,
+}
+
+/// The first face hit by a ray.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hit {
+    pub face: u32,
+    /// Distance along the (unit) direction, m.
+    pub distance: f64,
+}
+
+/// Sentinel for "no face to ignore".
+pub const NO_FACE: u32 = u32::MAX;
+
+/// The triangle that blocked a caller's last occlusion query, if any.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Blocker(Option<usize>);
+
+/// No blocker known yet.
+pub const NO_BLOCKER: Blocker = Blocker(None);
+
+impl Visibility {
+    pub fn build(mesh: &Mesh) -> Visibility {
+        Visibility::build_with(mesh, VisibilityOptions::default())
+    }
+
+    pub fn build_with(mesh: &Mesh, options: VisibilityOptions) -> Visibility {
+        let rotation = if options.rotate {
+            DMat3::from_euler(glam::EulerRot::XYZ, 0.5123, 0.7331, 0.3179)
+        } else {
+            DMat3::IDENTITY
+        };
+        let mut seen = vec![false; mesh.faces];
+        let (mut triangles, mut face_of) = (Vec::new(), Vec::new());
+        for p in &mesh.patches {
+            if std::mem::replace(&mut seen[p.face as usize], true) {
+                continue;
+            }
+            for [a, b, c] in p.polygon.triangles() {
+                let v = |x: DVec3| Vec3A::from((rotation * x).as_vec3());
+                triangles.push(Triangle { v0: v(a), v1: v(b), v2: v(c) });
+                face_of.push(p.face);
+            }
+        }
+        let params = match options.preset {
+            BuildPreset::Fast => BvhBuildParams::fast_build(),
+            BuildPreset::Medium => BvhBuildParams::medium_build(),
+            BuildPreset::Slow => BvhBuildParams::slow_build(),
+        };
+        let mut time = Duration::default();
+        let (hierarchy, order) = if options.wide {
+            let bvh = build_cwbvh_from_tris(&triangles, params, &mut time);
+            let order = bvh.primitive_indices.clone();
+            (Hierarchy::Wide(bvh), order)
+        } else {
+            let bvh = build_bvh2_from_tris(&triangles, params, &mut time);
+            let order = bvh.primitive_indices.clone();
+            (Hierarchy::Binary(bvh), order)
+        };
+        Visibility {
+            hierarchy,
+            triangles: order.iter().map(|&i| triangles[i as usize]).collect(),
+            face_of: order.iter().map(|&i| face_of[i as usize]).collect(),
+            rotation,
+            epsilon: 1e-6 * mesh.extent(),
+        }
+    }
+
+    /// Number of triangles in the hierarchy.
+    pub fn triangle_count(&self) -> usize {
+        self.triangles.len()
+    }
+
+    /// True when the segment from `a` to `b` crosses no face other than `ignore`.
+    pub fn visible(&self, a: DVec3, b: DVec3, ignore: [u32; 2]) -> bool {
+        self.visible_cached(a, b, ignore, &mut Blocker::default())
+    }
+
+    /// [`Visibility::visible`] that first tries the triangle which blocked the caller's
+    /// previous query (`blocker`, updated): neighbouring segments are often blocked by
+    /// the same triangle, and one test then replaces a traversal.
+    pub fn visible_cached(&self, a: DVec3, b: DVec3, ignore: [u32; 2], blocker: &mut Blocker) -> bool {
+        let d = b - a;
+        let length = d.length();
+        if length <= 2.0 * self.epsilon {
+            return true;
+        }
+        let ray = self.ray(a, d / length, self.epsilon, length - self.epsilon);
+        let skip = |id: usize| {
+            let face = self.face_of[id];
+            face == ignore[0] || face == ignore[1]
+        };
+        if let Some(id) = blocker.0
+            && !skip(id)
+            && intersect(&self.triangles[id], &ray) < f32::INFINITY
+        {
+            return false;
+        }
+        let mut hit = None;
+        let test = |ray: &Ray, id: usize| {
+            let t = if skip(id) { f32::INFINITY } else { intersect(&self.triangles[id], ray) };
+            if t < f32::INFINITY {
+                hit = Some(id);
+            }
+            t
+        };
+        let miss = match &self.hierarchy {
+            Hierarchy::Binary(bvh) => bvh.ray_traverse_miss(ray, test),
+            Hierarchy::Wide(bvh) => bvh.ray_traverse_miss(ray, test),
+        };
+        if hit.is_some() {
+            blocker.0 = hit;
+        }
+        miss
+    }
+
+    /// The first face along `origin + t·direction`, `t > 0`, other than `ignore`.
+    pub fn closest_hit(&self, origin: DVec3, direction: DVec3, ignore: u32) -> Option<Hit> {
+        let ray = self.ray(origin, direction.normalize(), self.epsilon, f32::INFINITY as f64);
+        let test = |ray: &Ray, id: usize| {
+            if self.face_of[id] == ignore { f32::INFINITY } else { intersect(&self.triangles[id], ray) }
+        };
+        let mut hit = RayHit::none();
+        let found = match &self.hierarchy {
+            Hierarchy::Binary(bvh) => bvh.ray_traverse(ray, &mut hit, test),
+            Hierarchy::Wide(bvh) => bvh.ray_traverse(ray, &mut hit, test),
+        };
+        found.then(|| Hit { face: self.face_of[hit.primitive_id as usize], distance: hit.t as f64 })
+    }
+
+    fn ray(&self, origin: DVec3, direction: DVec3, tmin: f64, tmax: f64) -> Ray {
+        let o = Vec3A::from((self.rotation * origin).as_vec3());
+        let d = Vec3A::from((self.rotation * direction).as_vec3());
+        Ray::new(o, d, tmin as f32, tmax as f32)
+    }
+}
+
+/// Barycentric slack that closes the cracks between triangles sharing an edge.
+const EDGE_SLACK: f32 = 1e-5;
+
+/// Möller–Trumbore with a slack on the barycentric coordinates; distance or infinity.
+#[inline(always)]
+fn intersect(tri: &Triangle, ray: &Ray) -> f32 {
+    let (e1, e2) = (tri.v1 - tri.v0, tri.v2 - tri.v0);
+    let p = ray.direction.cross(e2);
+    let det = e1.dot(p);
+    if det.abs() < 1e-20 {
+        return f32::INFINITY;
+    }
+    let inv = 1.0 / det;
+    let s = ray.origin - tri.v0;
+    let u = s.dot(p) * inv;
+    let q = s.cross(e1);
+    let v = ray.direction.dot(q) * inv;
+    let t = e2.dot(q) * inv;
+    let inside = u >= -EDGE_SLACK && v >= -EDGE_SLACK && u + v <= 1.0 + EDGE_SLACK;
+    if inside && t > ray.tmin && t < ray.tmax { t } else { f32::INFINITY }
+}

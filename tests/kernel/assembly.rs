@@ -1,0 +1,125 @@
+//! Closure, reciprocity and occlusion of the form factors and of the assembled `G`.
+
+use crate::support::{build, furnace, lambert, scene, surface};
+use glam::DVec3;
+use ugo::geometry::Mesh;
+use ugo::kernel::facing;
+use ugo::kernel::form_factor::{Quadrature, form_factor};
+use ugo::scene::{Emission, Shape};
+
+/// Raw (unbalanced, unoccluded) form factors of every facing pair.
+fn raw_matrix(mesh: &Mesh) -> Vec<Vec<f64>> {
+    let q = Quadrature::default();
+    let p = &mesh.patches;
+    (0..p.len())
+        .map(|i| {
+            (0..p.len())
+                .map(|j| if i != j && facing(&p[i], &p[j]) { form_factor(&p[i], &p[j], &q) } else { 0.0 })
+                .collect()
+        })
+        .collect()
+}
+
+fn check_raw_closure_and_reciprocity(mesh: &Mesh) {
+    let f = raw_matrix(mesh);
+    let p = &mesh.patches;
+    let mut worst_closure: f64 = 0.0;
+    let mut worst_reciprocity: f64 = 0.0;
+    for i in 0..p.len() {
+        worst_closure = worst_closure.max((f[i].iter().sum::<f64>() - 1.0).abs());
+        for j in 0..p.len() {
+            let (a, b) = (p[i].area * f[i][j], p[j].area * f[j][i]);
+            if a + b > 0.0 {
+                worst_reciprocity = worst_reciprocity.max((a - b).abs() / a.max(b));
+            }
+        }
+    }
+    eprintln!("{} patches: closure error {worst_closure:.2e}, reciprocity error {worst_reciprocity:.2e}", p.len());
+    assert!(worst_closure < 1e-3, "closure error {worst_closure}");
+    assert!(worst_reciprocity < 1e-3, "reciprocity error {worst_reciprocity}");
+}
+
+#[test]
+fn raw_form_factors_of_a_closed_box_close_and_are_reciprocal() {
+    let s = furnace(1.0, 0.5, 1.0, 0.25);
+    check_raw_closure_and_reciprocity(&Mesh::build(&s, 0.25));
+}
+
+#[test]
+fn raw_form_factors_of_a_closed_sphere_close_and_are_reciprocal() {
+    let shape = Shape::Sphere { center: DVec3::ZERO, radius: 1.0 };
+    let s =
+        scene(vec![lambert("grey", 0.5)], vec![surface("sphere", shape, 0, true, Some(Emission::Luminance(1.0)))], 0.5);
+    check_raw_closure_and_reciprocity(&Mesh::build(&s, 0.5));
+}
+
+#[test]
+fn assembled_transport_is_closed_and_reciprocal() {
+    let model = build(&furnace(2.0, 0.5, 1.0, 0.4));
+    let g = &model.kernel.g;
+    let a: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+    for (i, row) in g.outer_iterator().enumerate() {
+        assert!((row.data().iter().sum::<f64>() - 1.0).abs() < 1e-12);
+        for (j, &v) in row.iter() {
+            let back = g.get(j, i).copied().unwrap_or(0.0);
+            assert!((a[i] * v - a[j] * back).abs() <= 1e-12 * a[i] * v);
+        }
+    }
+    assert!(model.stats.balance.max_correction < 1e-3, "{:?}", model.stats.balance);
+}
+
+#[test]
+fn coaxial_unit_discs_one_apart() {
+    let disc =
+        |z: f64, n: f64| Shape::Disc { center: DVec3::new(0.0, 0.0, z), normal: DVec3::new(0.0, 0.0, n), radius: 1.0 };
+    let s = scene(
+        vec![lambert("black", 0.0)],
+        vec![
+            surface("lower", disc(0.0, 1.0), 0, false, Some(Emission::Luminance(1.0))),
+            surface("upper", disc(1.0, -1.0), 0, false, None),
+        ],
+        0.1,
+    );
+    let model = build(&s);
+    let p = &model.mesh.patches;
+    let (mut exchange, mut area) = (0.0, 0.0);
+    for (i, row) in model.kernel.g.outer_iterator().enumerate() {
+        if p[i].surface == 0 {
+            area += p[i].area;
+            exchange += p[i].area * row.iter().filter(|(j, _)| p[*j].surface == 1).map(|(_, v)| v).sum::<f64>();
+        }
+    }
+    let f = exchange / area;
+    eprintln!("coaxial discs: F = {f:.6}");
+    assert!((f / 0.3819660 - 1.0).abs() < 5e-3, "{f}");
+}
+
+#[test]
+fn an_opaque_screen_removes_the_exchange_it_hides() {
+    let square = |z: f64, up: bool| {
+        let (u, v) = if up { (DVec3::X, DVec3::Y) } else { (DVec3::Y, DVec3::X) };
+        Shape::Rectangle { origin: DVec3::new(0.0, 0.0, z), edge_u: u, edge_v: v }
+    };
+    let big = Shape::Rectangle {
+        origin: DVec3::new(-1.0, -1.0, 0.5),
+        edge_u: DVec3::new(3.0, 0.0, 0.0),
+        edge_v: DVec3::new(0.0, 3.0, 0.0),
+    };
+    let s = scene(
+        vec![lambert("grey", 0.5)],
+        vec![
+            surface("bottom", square(0.0, true), 0, false, Some(Emission::Luminance(1.0))),
+            surface("top", square(1.0, false), 0, false, None),
+            surface("screen", big, 0, false, None),
+        ],
+        1.0,
+    );
+    let model = build(&s);
+    let p = &model.mesh.patches;
+    for (i, row) in model.kernel.g.outer_iterator().enumerate() {
+        for (j, _) in row.iter() {
+            let pair = (p[i].surface, p[j].surface);
+            assert!(pair != (0, 1) && pair != (1, 0), "bottom and top exchange through the screen");
+        }
+    }
+}

@@ -1,0 +1,2 @@
+mod assembly;
+mod form_factor;

@@ -1,0 +1,89 @@
+//! Tests of the case-file reader (`ugo::scene`): valid scenes, parse errors, validation errors.
+
+mod parse_errors;
+mod valid;
+mod validation_errors;
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use ugo::scene::{Scene, SceneError};
+
+/// The discretization and one material, `white`.
+const BASE: &str = r#"
+[discretization]
+patch_size = 0.1
+
+[[material]]
+name = "white"
+type = "lambert"
+reflectance = 0.75
+"#;
+
+/// An emitting disc, so that scenes built on it light up.
+const LAMP: &str = r#"
+[[surface]]
+name = "lamp"
+shape = "disc"
+material = "white"
+center = [0, 2, 0]
+normal = [0, -1, 0]
+radius = 0.2
+emission = { luminance = 100.0 }
+"#;
+
+/// The case file every inline scene pretends to come from.
+const CASE: &str = "cases/test.toml";
+
+fn parse(text: &str) -> Result<Scene, SceneError> {
+    Scene::parse(Path::new(CASE), text.to_string())
+}
+
+/// `BASE`, `LAMP` (surface #1), then `extra`.
+fn lit(extra: &str) -> String {
+    format!("{BASE}{LAMP}{extra}")
+}
+
+fn rejected(text: &str) -> SceneError {
+    match parse(text) {
+        Ok(scene) => panic!("accepted a bad scene: {scene:#?}"),
+        Err(error) => error,
+    }
+}
+
+/// Checks where the error points and that its message contains every fragment.
+fn assert_error(error: &SceneError, table: &str, key: &str, fragments: &[&str]) {
+    assert_eq!(error.file(), Path::new(CASE), "{error}");
+    assert_eq!(error.table(), table, "{error}");
+    assert_eq!(error.key(), key, "{error}");
+    for fragment in fragments {
+        assert!(error.message().contains(fragment), "{error:?} lacks {fragment:?}");
+    }
+}
+
+/// A fresh, empty directory under the system temp dir, removed on drop.
+struct TempDir(PathBuf);
+
+impl TempDir {
+    /// Unique per process and call, so that tests running in parallel do not collide.
+    fn new(name: &str) -> TempDir {
+        static COUNT: AtomicUsize = AtomicUsize::new(0);
+        let count = COUNT.fetch_add(1, Ordering::Relaxed);
+        let unique = format!("ugo-test-{}-{count}-{name}", std::process::id());
+        let dir = std::env::temp_dir().join(unique);
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("create temp dir");
+        TempDir(dir)
+    }
+
+    fn write(&self, file: &str, text: &str) -> PathBuf {
+        let path = self.0.join(file);
+        std::fs::write(&path, text).expect("write temp file");
+        path
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
