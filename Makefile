@@ -1,5 +1,6 @@
 # ugo — the two commands of the README: `make demo` and `make test`.
-# Both install what the build needs on a fresh Debian machine (the HDF5 C library).
+# Both install what the build needs on a fresh Debian machine: the HDF5 C library
+# (found through pkg-config) and, for the demo's listing, h5dump.
 
 CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -10,12 +11,16 @@ DEMO_OUT ?= out/cornell-box.h5
 
 all: build
 
-# The HDF5 C library, found through pkg-config; installed with apt-get when missing.
 deps:
-	@pkg-config --exists hdf5 2>/dev/null || pkg-config --exists hdf5-serial 2>/dev/null || { \
-	  echo "ugo: installing the HDF5 C library (libhdf5-dev) with apt-get"; \
+	@missing=""; \
+	pkg-config --exists hdf5 2>/dev/null || missing="$$missing libhdf5-dev"; \
+	command -v pkg-config >/dev/null || missing="$$missing pkg-config"; \
+	command -v h5dump >/dev/null || missing="$$missing hdf5-tools"; \
+	if [ -n "$$missing" ]; then \
+	  echo "ugo: installing$$missing with apt-get"; \
 	  $(SUDO) apt-get update -qq && \
-	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq libhdf5-dev pkg-config hdf5-tools >/dev/null; }
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing >/dev/null; \
+	fi
 
 build: deps
 	$(CARGO) build --release
@@ -24,7 +29,7 @@ demo: build
 	mkdir -p out
 	./target/release/ugo info $(DEMO_CASE)
 	./target/release/ugo solve $(DEMO_CASE) -o $(DEMO_OUT)
-	@command -v h5dump >/dev/null && h5dump -H $(DEMO_OUT) | head -60 || true
+	h5dump -H $(DEMO_OUT)
 
 test: deps
 	$(CARGO) test --release

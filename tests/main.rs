@@ -1,6 +1,8 @@
 //! The one integration-test crate of ugo; its folders mirror `src/`.
 
+mod cli;
 mod kernel;
 mod scene;
 mod solve;
 mod support;
+mod visibility;

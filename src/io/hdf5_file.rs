@@ -1,7 +1,7 @@
 //! The HDF5 file of one solve (`design.md` §8), readable with h5py or h5dump alone.
 //!
 //! Layout: `/mesh/{points,normals,areas,surface_id,material_id,vertices,vertex_count,
-//! surface_names}`, `/directions/{vectors,solid_angle,projected}`,
+//! surface_names,material_names}`, `/directions/{vectors,solid_angle,projected}`,
 //! `/field/{luminance,emission,illuminance}`, `/solver/residual_history`,
 //! `/energy/{surface_emitted,surface_absorbed}`,
 //! `/probes/{name,position,normal,luminance,illuminance}`, and attributes on the root for

@@ -1,1 +1,3 @@
 mod furnace;
+mod plates;
+mod sphere;

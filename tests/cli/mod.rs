@@ -1,0 +1,107 @@
+//! The `ugo` binary end to end: a solve written to HDF5 and read back, and every
+//! failure a clear message with a non-zero exit, never a panic.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn ugo(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ugo")).args(args).output().expect("ugo runs")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("ugo-cli-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn assert_clean_failure(o: &Output) -> String {
+    let err = stderr(o);
+    assert!(!o.status.success(), "expected a failure");
+    assert!(!err.contains("panicked"), "{err}");
+    assert!(err.starts_with("ugo: error:"), "{err}");
+    err
+}
+
+#[test]
+fn solve_writes_an_hdf5_file_that_reads_back() {
+    let out = scratch("solve").join("furnace.h5");
+    let o = ugo(&["solve", "cases/furnace-box.toml", "-o", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary = String::from_utf8_lossy(&o.stdout);
+    assert!(summary.contains("floor centre") && summary.contains("imbalance"), "{summary}");
+    assert!(!out.with_extension("h5.tmp").exists());
+
+    let file = hdf5::File::open(&out).unwrap();
+    let luminance = file.dataset("field/luminance").unwrap().read_dyn::<f64>().unwrap();
+    assert_eq!(luminance.shape(), &[600, 1, 1]);
+    assert!(luminance.iter().all(|l| (l / 5.0 - 1.0).abs() < 1e-3));
+    let emission = file.dataset("field/emission").unwrap().read_dyn::<f64>().unwrap();
+    assert!(emission.iter().all(|&l| l == 1.0));
+    assert_eq!(file.dataset("mesh/points").unwrap().shape(), vec![600, 3]);
+    assert_eq!(file.dataset("mesh/normals").unwrap().shape(), vec![600, 3]);
+    let areas = file.dataset("mesh/areas").unwrap().read_1d::<f64>().unwrap();
+    assert!((areas.sum() - 6.0).abs() < 1e-12);
+    let solid = file.dataset("directions/solid_angle").unwrap().read_1d::<f64>().unwrap();
+    assert!((solid[0] - 2.0 * std::f64::consts::PI).abs() < 1e-15);
+    let history = file.dataset("solver/residual_history").unwrap().read_1d::<f64>().unwrap();
+    assert!(*history.last().unwrap() <= 1e-10 && history.len() > 10);
+    let probes = file.dataset("probes/luminance").unwrap().read_1d::<f64>().unwrap();
+    let e = file.dataset("probes/illuminance").unwrap().read_1d::<f64>().unwrap();
+    for (l, e) in probes.iter().zip(e.iter()) {
+        assert!((l / 5.0 - 1.0).abs() < 1e-3, "probe luminance {l}");
+        assert!((e / (5.0 * std::f64::consts::PI) - 1.0).abs() < 1e-3, "probe illuminance {e}");
+    }
+    let iterations: f64 = file.attr("iterations").unwrap().read_scalar().unwrap();
+    assert_eq!(iterations as usize + 1, history.len());
+    let text: hdf5::types::VarLenUnicode = file.attr("scene_text").unwrap().read_scalar().unwrap();
+    assert!(text.as_str().contains("furnace"));
+    let emitted: f64 = file.attr("flux_emitted").unwrap().read_scalar().unwrap();
+    assert!((emitted - 6.0 * std::f64::consts::PI).abs() < 1e-9);
+}
+
+#[test]
+fn a_misspelled_key_fails_naming_file_table_and_key() {
+    let case = scratch("bad").join("bad.toml");
+    let text = std::fs::read_to_string("cases/furnace-box.toml").unwrap().replace("reflectance", "reflectanse");
+    std::fs::write(&case, text).unwrap();
+    let err = assert_clean_failure(&ugo(&["solve", case.to_str().unwrap()]));
+    assert!(err.contains("bad.toml") && err.contains("[[material]]") && err.contains("reflectanse"), "{err}");
+}
+
+#[test]
+fn a_missing_case_file_fails_cleanly() {
+    let err = assert_clean_failure(&ugo(&["info", "cases/no-such-case.toml"]));
+    assert!(err.contains("no-such-case.toml"), "{err}");
+}
+
+#[test]
+fn a_kernel_over_the_memory_limit_is_refused_before_assembly() {
+    let err = assert_clean_failure(&ugo(&["solve", "cases/cornell-box.toml", "--memory-limit", "0.01"]));
+    assert!(err.contains("GiB") && err.contains("patch_size") && err.contains("non-zeros"), "{err}");
+}
+
+#[test]
+fn a_lossless_closed_room_is_reported_divergent() {
+    let case = scratch("lossless").join("lossless.toml");
+    let text =
+        std::fs::read_to_string("cases/furnace-box.toml").unwrap().replace("reflectance = 0.8", "reflectance = 1.0");
+    std::fs::write(&case, text).unwrap();
+    let err =
+        assert_clean_failure(&ugo(&["solve", case.to_str().unwrap(), "--patch-size", "0.25", "-o", "/dev/null/x.h5"]));
+    assert!(err.contains("spectral radius"), "{err}");
+}
+
+#[test]
+fn info_estimates_before_assembly() {
+    let o = ugo(&["info", "cases/cornell-box.toml"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("patches N") && text.contains("kernel memory") && text.contains("short block, top"),
+        "{text}"
+    );
+}

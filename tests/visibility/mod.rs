@@ -1,0 +1,51 @@
+//! Visibility queries on the axis-aligned Cornell box (the layout that defeats compressed nodes).
+
+use glam::DVec3;
+use std::path::Path;
+use ugo::geometry::Mesh;
+use ugo::scene::Scene;
+use ugo::visibility::{NO_FACE, Visibility};
+
+fn cornell() -> Mesh {
+    let scene = Scene::load(Path::new("cases/cornell-box.toml")).unwrap();
+    Mesh::build(&scene, 0.05)
+}
+
+#[test]
+fn axis_aligned_rays_find_every_face_below_them() {
+    // Regression: obvhs's CWBVH lost these hits on the unrotated room; the default must not.
+    let mesh = cornell();
+    let v = Visibility::build(&mesh);
+    for p in &mesh.patches {
+        let hit = v.closest_hit(p.centroid + 1e-3 * p.normal, -p.normal, NO_FACE).expect("a hit");
+        assert_eq!(hit.face, p.face);
+        assert!((hit.distance - 1e-3).abs() < 1e-6, "{}", hit.distance);
+    }
+}
+
+#[test]
+fn the_tall_block_hides_the_floor_behind_it_and_nothing_hides_the_open_room() {
+    let mesh = cornell();
+    let v = Visibility::build(&mesh);
+    // From above the tall block's top, straight down to the floor under it: blocked.
+    assert!(!v.visible(DVec3::new(0.37, 0.5, 0.35), DVec3::new(0.37, 0.0, 0.35), [NO_FACE, NO_FACE]));
+    // Across the empty front of the room, wall to wall: clear, both ways.
+    let (a, b) = (DVec3::new(0.001, 0.4, 0.05), DVec3::new(0.55, 0.4, 0.05));
+    assert!(v.visible(a, b, [NO_FACE, NO_FACE]) && v.visible(b, a, [NO_FACE, NO_FACE]));
+}
+
+#[test]
+fn a_ray_through_a_shared_edge_does_not_slip_between_triangles() {
+    // The diagonal of every quad and the edges between patches are crossed exactly here
+    // (inside the floor: its outer rim borders nothing).
+    let mesh = cornell();
+    let v = Visibility::build(&mesh);
+    for p in mesh.patches.iter().filter(|p| p.normal.y > 0.99) {
+        let interior = |c: &DVec3| c.x > 0.01 && c.x < 0.54 && c.z > 0.01 && c.z < 0.55;
+        for &corner in p.polygon.vertices().iter().filter(|c| interior(c)) {
+            let top = corner + DVec3::Y * 0.2;
+            let hit = v.closest_hit(top, -DVec3::Y, NO_FACE);
+            assert!(hit.is_some(), "lost the floor at {corner}");
+        }
+    }
+}
