@@ -1,6 +1,7 @@
 //! The one integration-test crate of ugo; its folders mirror `src/`.
 
 mod cli;
+mod directions;
 mod kernel;
 mod scene;
 mod solve;
