@@ -106,8 +106,11 @@ impl DirectionSet {
             let sin_mid = (1.0 - cos_mid * cos_mid).sqrt();
             for s in 0..count {
                 let phi = TAU * (s as f64 + 0.5) / count as f64;
-                let direction =
-                    if cos_top == 1.0 && count == 1 { DVec3::Z } else { DVec3::new(sin_mid * phi.cos(), sin_mid * phi.sin(), cos_mid) };
+                let direction = if cos_top == 1.0 && count == 1 {
+                    DVec3::Z
+                } else {
+                    DVec3::new(sin_mid * phi.cos(), sin_mid * phi.sin(), cos_mid)
+                };
                 cells.push(Cell {
                     direction,
                     solid_angle: TAU * (cos_top - cos_bottom) / count as f64,
@@ -150,7 +153,8 @@ impl DirectionSet {
     /// the surface otherwise.
     #[inline]
     pub fn lookup(&self, local: DVec3) -> usize {
-        let (z, offset) = if local.z < 0.0 { (-local.z, if self.sphere { self.cells.len() / 2 } else { 0 }) } else { (local.z, 0) };
+        let (z, offset) =
+            if local.z < 0.0 { (-local.z, if self.sphere { self.cells.len() / 2 } else { 0 }) } else { (local.z, 0) };
         let r = self.rings.partition_point(|ring| ring.cos_bottom >= z).min(self.rings.len() - 1);
         let ring = &self.rings[r];
         if ring.count == 1 {

@@ -1,8 +1,8 @@
 //! Energy balance of a solved field, in lumens.
 //!
 //! Per patch: emitted `Φe = A Σ_k μ_k L0(k)`, outgoing `Φ = A Σ_k μ_k L(k)`, incident
-//! `A E` with `E = π Σ_d (G x)_d`, absorbed `A π Σ_d (G x)_d (1 − a(d))` with `a` the
-//! material's directional albedo. Escaped flux is what leaves the surfaces and arrives
+//! `A E` with `E = π Σ_d (G x)_d`, absorbed `A π Σ_d (G x)_d (1 − a(d) − t(d))` with `a` and `t`
+//! the material's directional reflectance and transmittance. Escaped flux is what leaves the surfaces and arrives
 //! nowhere, `Σ Φ − Σ A E`. The imbalance `Φe − absorbed − escaped` is the flux-weighted
 //! residual of the solve: zero for an exact solution of a conservative kernel.
 
@@ -46,7 +46,10 @@ impl EnergyBalance {
             outgoing += weighted(&x[range.clone()]);
             incident += p.area * std::f64::consts::PI * gx[range.clone()].iter().sum::<f64>();
             let absorbed: f64 = (0..k)
-                .map(|d| p.area * std::f64::consts::PI * gx[i * k + d] * (1.0 - block.albedo(d, &kernel.directions)))
+                .map(|d| {
+                    let (reflected, transmitted) = block.albedo(d, &kernel.directions);
+                    p.area * std::f64::consts::PI * gx[i * k + d] * (1.0 - reflected - transmitted)
+                })
                 .sum();
             b.surface_emitted[p.surface as usize] += emitted;
             b.surface_absorbed[p.surface as usize] += absorbed;

@@ -23,6 +23,10 @@ pub struct Discretize {
     /// Largest kernel memory allowed, GiB (default: half the machine's RAM).
     #[arg(long)]
     memory_limit: Option<f64>,
+    /// Direction cells per patch: a count K (equal solid angle), `klems` or `tregenza`
+    /// (default: the case's `directions`, else 1).
+    #[arg(long)]
+    directions: Option<String>,
 }
 
 #[derive(Subcommand)]

@@ -14,10 +14,12 @@ use std::time::Instant;
 use thiserror::Error;
 
 /// How a scene is discretized.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct ModelOptions {
     /// Target patch edge length, m.
     pub patch_size: f64,
+    /// Direction cells of every patch.
+    pub directions: DirectionSet,
     /// Largest kernel memory allowed, bytes.
     pub memory_limit: u64,
     pub quadrature: Quadrature,
@@ -28,6 +30,7 @@ impl ModelOptions {
     pub fn of(scene: &Scene) -> ModelOptions {
         ModelOptions {
             patch_size: scene.discretization.patch_size,
+            directions: DirectionSet::named(&scene.discretization.directions).unwrap_or_else(DirectionSet::single),
             memory_limit: crate::kernel::memory::default_limit(),
             quadrature: Quadrature::default(),
         }
@@ -38,11 +41,12 @@ impl ModelOptions {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ModelError {
     #[error(
-        "the kernel would need about {need:.2} GiB ({nonzeros:.3e} non-zeros for {patches} patches × {cells} \
+        "the {what} would need about {need:.2} GiB ({nonzeros:.3e} non-zeros for {patches} patches × {cells} \
          cells), over the limit of {limit:.2} GiB. Ways out: a coarser patch_size (memory grows as \
-         patch_size⁻⁴), fewer direction cells, or a higher --memory-limit if the machine has the RAM"
+         patch_size⁻⁴), fewer direction cells, the factored operator instead of the explicit product, \
+         or a higher --memory-limit if the machine has the RAM"
     )]
-    TooLarge { need: f64, limit: f64, nonzeros: f64, patches: usize, cells: usize },
+    TooLarge { what: &'static str, need: f64, limit: f64, nonzeros: f64, patches: usize, cells: usize },
 }
 
 /// Timings and counts of the assembly.
@@ -84,10 +88,11 @@ impl Model {
     ) -> Result<Model, ModelError> {
         let t = Instant::now();
         let mesh = Mesh::build(scene, options.patch_size);
-        let directions = DirectionSet::single();
-        let estimate = Estimate::of(&mesh, directions.len());
+        let directions = options.directions.clone();
+        let estimate = Estimate::of(&mesh, &directions);
         if estimate.peak_bytes() > options.memory_limit as f64 {
             return Err(ModelError::TooLarge {
+                what: "kernel G",
                 need: estimate.peak_bytes() / GIB,
                 limit: options.memory_limit as f64 / GIB,
                 nonzeros: estimate.nonzeros,
@@ -102,12 +107,14 @@ impl Model {
         let t = Instant::now();
         let n = mesh.len() as u64;
         start(n * n.saturating_sub(1) / 2);
-        let Transport { g, balance, pairs, rays } = assemble(&mesh, &visibility, &options.quadrature, step);
+        let Transport { g, balance, pairs, rays } =
+            assemble(&mesh, &visibility, &directions, &options.quadrature, step);
         let blocks = scene.materials.iter().map(|m| Block::of(&m.model, &directions)).collect();
         let patch_material = mesh.patches.iter().map(|p| p.material).collect();
         let k = directions.len();
         let l0 = mesh.emission.iter().flat_map(|&l| std::iter::repeat_n(l, k)).collect();
-        let kernel = Kernel { g, directions, blocks, patch_material };
+        let twin = mesh.patches.iter().map(|p| p.twin).collect();
+        let kernel = Kernel { g, directions, blocks, patch_material, twin };
         let stats = AssemblyStats {
             mesh_seconds,
             bvh_seconds,

@@ -10,7 +10,7 @@ use ugo::model::Model;
 pub fn run(case: &Path, d: &Discretize) -> Result<()> {
     let (scene, options) = load(case, d)?;
     let mesh = Model::mesh(&scene, &options);
-    let estimate = Estimate::of(&mesh, 1);
+    let estimate = Estimate::of(&mesh, &options.directions);
     let areas = mesh.surface_areas(scene.surfaces.len());
     println!("ugo info: {} ({})", scene.name, case.display());
     println!("  patch size         {:>12} m", options.patch_size);
@@ -20,7 +20,7 @@ pub fn run(case: &Path, d: &Discretize) -> Result<()> {
         println!("    {:<24} {:>6} patches  {:>10.4} m²", s.name, n, a);
     }
     println!("  patches N          {:>12}", estimate.patches);
-    println!("  direction cells K  {:>12}", estimate.cells);
+    println!("  direction cells K  {:>12}   ({})", estimate.cells, options.directions.name());
     println!("  unknowns           {:>12}", estimate.unknowns);
     println!(
         "  facing pairs       {:>12.0}{}",

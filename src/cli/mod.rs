@@ -7,6 +7,7 @@ pub mod solve;
 use crate::Discretize;
 use anyhow::{Result, bail};
 use std::path::Path;
+use ugo::directions::DirectionSet;
 use ugo::model::ModelOptions;
 use ugo::scene::Scene;
 
@@ -20,6 +21,12 @@ pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
         }
         options.patch_size = h;
         scene.discretization.patch_size = h;
+    }
+    if let Some(name) = &d.directions {
+        options.directions = DirectionSet::named(name).ok_or_else(|| {
+            anyhow::anyhow!("--directions must be a cell count ≥ 1, \"klems\" or \"tregenza\", got \"{name}\"")
+        })?;
+        scene.discretization.directions = name.clone();
     }
     if let Some(gib) = d.memory_limit {
         if !(gib.is_finite() && gib > 0.0) {

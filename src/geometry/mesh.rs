@@ -4,6 +4,7 @@
 //! material, emitted luminance) and the rule for `inside` (normals flipped) and
 //! `two_sided` (a second patch, back to back, on the same geometric face).
 
+use super::frame::Frame;
 use super::polygon::ConvexPolygon;
 use super::tessellate::tessellate;
 use crate::scene::{Emission, Scene};
@@ -27,9 +28,20 @@ pub struct Patch {
     pub material: u32,
     /// Geometric face: the two patches of a two-sided element share it.
     pub face: u32,
+    /// The patch on the other side of a two-sided element, or [`NO_TWIN`].
+    pub twin: u32,
 }
 
+/// Marks a patch without a back-to-back twin.
+pub const NO_TWIN: u32 = u32::MAX;
+
 impl Patch {
+    /// The local frame `(t, b, N)`.
+    #[inline]
+    pub fn frame(&self) -> Frame {
+        Frame { tangent: self.tangent, bitangent: self.bitangent, normal: self.normal }
+    }
+
     /// The patch of `polygon` with its derived quantities.
     pub fn from_polygon(polygon: ConvexPolygon, surface: u32, material: u32, face: u32) -> Patch {
         let normal = polygon.normal();
@@ -45,6 +57,7 @@ impl Patch {
             surface,
             material,
             face,
+            twin: NO_TWIN,
         }
     }
 }
@@ -71,9 +84,13 @@ impl Mesh {
                 if surface.inside {
                     element = element.reversed();
                 }
+                let front = patches.len() as u32;
                 patches.push(Patch::from_polygon(element, s as u32, surface.material as u32, faces));
                 if surface.two_sided {
-                    patches.push(Patch::from_polygon(element.reversed(), s as u32, surface.material as u32, faces));
+                    let mut back = Patch::from_polygon(element.reversed(), s as u32, surface.material as u32, faces);
+                    back.twin = front;
+                    patches[front as usize].twin = front + 1;
+                    patches.push(back);
                 }
                 faces += 1;
             }

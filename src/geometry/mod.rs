@@ -1,9 +1,11 @@
 //! Geometry: convex polygons, tessellation of shapes, and the patch mesh (`design.md` §2).
 
+mod frame;
 mod mesh;
 mod polygon;
 mod tessellate;
 
-pub use mesh::{Mesh, Patch};
+pub use frame::Frame;
+pub use mesh::{Mesh, NO_TWIN, Patch};
 pub use polygon::{ConvexPolygon, MAX_CLIPPED};
 pub use tessellate::tessellate;

@@ -52,6 +52,7 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     let file = hdf5::File::create(path)?;
     write_mesh(&file.create_group("mesh")?, s)?;
     write_directions(&file.create_group("directions")?, s)?;
+    write_materials(&file.create_group("materials")?, s)?;
 
     let field = file.create_group("field")?;
     dataset(&field, "luminance", &s.field.luminance)?;
@@ -97,6 +98,16 @@ fn write_directions(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
     dataset(g, "projected", &Array1::from_iter(cells.iter().map(|c| c.projected)))
 }
 
+fn write_materials(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
+    let blocks = &s.model.kernel.blocks;
+    let k = s.model.kernel.cells();
+    strings(g, "name", s.scene.materials.iter().map(|m| m.name.as_str()))?;
+    let reflect = Array3::from_shape_fn((blocks.len(), k, k), |(m, a, b)| blocks[m].at(a, b));
+    dataset(g, "reflection", &reflect)?;
+    let transmit = Array3::from_shape_fn((blocks.len(), k, k), |(m, a, b)| blocks[m].transmit_at(a, b).unwrap_or(0.0));
+    dataset(g, "transmission", &transmit)
+}
+
 fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
     let n = probes.len();
     strings(g, "name", probes.iter().map(|p| p.name.as_str()))?;
@@ -113,6 +124,7 @@ fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
     text(file, "scene_file", &s.scene.path.display().to_string())?;
     text(file, "scene_text", &s.scene.source)?;
     text(file, "version", env!("CARGO_PKG_VERSION"))?;
+    text(file, "directions", s.model.kernel.directions.name())?;
     text(file, "units", "luminance cd/m2, illuminance lx, flux lm, lengths m")?;
     let numbers: [(&str, f64); 17] = [
         ("tolerance", s.params.tolerance),

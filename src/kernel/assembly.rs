@@ -1,17 +1,20 @@
-//! Assembly of the transport matrix `G` (`design.md` §3) for the one-cell direction set:
-//! `G_ij = F_ij` with occlusion, exactly reciprocal and closed after balancing.
+//! Assembly of the transport matrix `G` (`design.md` §3): `G[(i,d),(j,m)] = F_ij^{d,m}`
+//! with occlusion, exactly reciprocal and closed after balancing.
 //!
 //! Every unordered pair of mutually facing patches is visited once, in parallel over
-//! rows: both exchange-area estimates ([`pair_integral`] over `i` and over `j`), the
+//! rows: both exchange-area estimates (integrated over `i` and over `j`, split by cells
+//! when `K > 1`), their mean (so `A_i F_ij^{d,m} = A_j F_ji^{m,d}` holds exactly), the
 //! shared visibility fraction, and both patches' base-rule closure contributions. The
-//! balanced exchange areas `T` become `G_ij = T_ij / A_i`. A row's closure target is its
-//! base-rule closure where that agrees with the adaptive row sum to `1e-3` (so closed
-//! convex rooms close to round-off), else the adaptive row sum (patches crossed by a
-//! contact line, such as a floor patch partly under a block).
+//! exchange areas are then balanced at the patch level and become
+//! `G[(i,d),(j,m)] = D_i D_j T_ij^{d,m} / A_i`. A row's closure target is its base-rule
+//! closure where that agrees with the adaptive row sum to `1e-3` (so closed convex rooms
+//! close to round-off), else the adaptive row sum (patches crossed by a contact line, such
+//! as a floor patch partly under a block).
 
 use super::balance::{BalanceReport, balance};
-use super::form_factor::{Quadrature, pair_integral};
+use super::form_factor::{Binning, PairIntegral, Quadrature, binned_pair_integral, pair_integral};
 use super::occlusion::{POINTS, sample_points, visible_fraction};
+use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch};
 use crate::visibility::{NO_BLOCKER, Visibility};
 use rayon::prelude::*;
@@ -20,7 +23,7 @@ use sprs::CsMat;
 /// The assembled transport matrix and what it cost.
 #[derive(Debug, Clone)]
 pub struct Transport {
-    /// `G`, `N × N` (one direction cell).
+    /// `G`, `N·K × N·K`.
     pub g: CsMat<f64>,
     pub balance: BalanceReport,
     /// Unordered patch pairs that face each other and were integrated.
@@ -29,101 +32,205 @@ pub struct Transport {
     pub rays: usize,
 }
 
-/// The base-rule closure is exact (to round-off) where no occluder or contact line
-/// crosses the patch's view; where it differs from the adaptive row sum by more than
-/// this, something it cannot resolve does, and the adaptive sum is the target instead.
+/// The base-rule closure is trusted where it agrees with the adaptive row sum to this.
 const TRUSTED_CLOSURE: f64 = 1e-3;
 
-/// One row's share of the pair work: `(j, T_ij, base closure of j towards i)`.
+/// One exchanging pair `(i, j)`, `i < j`: its cell pieces `(d, m, T)` in `RowWork::cells`.
+struct Pair {
+    j: u32,
+    first: u32,
+    count: u32,
+    total: f64,
+    base_j: f64,
+}
+
+/// One row's share of the pair work.
+#[derive(Default)]
 struct RowWork {
-    entries: Vec<(u32, f64, f64)>,
+    pairs: Vec<Pair>,
+    cells: Vec<(u16, u16, f64)>,
     closure: f64,
-    pairs: usize,
+    visited: usize,
     rays: usize,
 }
 
-/// Assembles `G`. `progress` is called with the number of pairs just finished.
+/// Assembles `G` for `directions`. `progress` is called with the number of pairs just finished.
 pub fn assemble(
     mesh: &Mesh,
     visibility: &Visibility,
+    directions: &DirectionSet,
     quadrature: &Quadrature,
     progress: &(dyn Fn(u64) + Sync),
 ) -> Transport {
     let n = mesh.len();
+    let k = directions.len();
     let points: Vec<[glam::DVec3; POINTS]> = mesh.patches.par_iter().map(sample_points).collect();
+    let binning = (k > 1).then(|| Binning::new(directions));
     let work: Vec<RowWork> = (0..n)
         .into_par_iter()
         .map(|i| {
-            let row = row_work(mesh, visibility, quadrature, &points, i);
+            let row = row_work(mesh, visibility, quadrature, binning.as_ref(), &points, i);
             progress((n - i - 1) as u64);
             row
         })
         .collect();
 
+    let d = balanced_scaling(mesh, &work);
+    let g = sparse_rows(mesh, k, &work, &d.0);
+    Transport { g, balance: d.1, pairs: work.iter().map(|w| w.visited).sum(), rays: work.iter().map(|w| w.rays).sum() }
+}
+
+/// Patch-level scaling `D` that makes the exchange areas closed (see the module doc).
+fn balanced_scaling(mesh: &Mesh, work: &[RowWork]) -> (Vec<f64>, BalanceReport) {
+    let n = mesh.len();
     let mut targets: Vec<f64> = work.iter().map(|w| w.closure).collect();
     let mut rows: Vec<Vec<(u32, f64)>> = vec![Vec::new(); n];
     for (i, w) in work.iter().enumerate() {
-        for &(j, t, base_j) in &w.entries {
-            rows[j as usize].push((i as u32, t));
-            targets[j as usize] += base_j;
+        for p in &w.pairs {
+            rows[i].push((p.j, p.total));
+            rows[p.j as usize].push((i as u32, p.total));
+            targets[p.j as usize] += p.base_j;
         }
     }
-    for (i, w) in work.iter().enumerate() {
-        rows[i].extend(w.entries.iter().map(|&(j, t, _)| (j, t)));
-    }
-    let pairs = work.iter().map(|w| w.pairs).sum::<usize>();
-    let rays = work.iter().map(|w| w.rays).sum::<usize>();
-    drop(work);
-
     for (i, row) in rows.iter().enumerate() {
         let adaptive: f64 = row.iter().map(|&(_, t)| t).sum();
         if (targets[i] - adaptive).abs() > TRUSTED_CLOSURE * adaptive {
             targets[i] = adaptive;
         }
     }
-    let (d, report) = balance(&rows, &targets);
-    let mut indptr = Vec::with_capacity(n + 1);
-    let (mut indices, mut data) = (Vec::new(), Vec::new());
-    indptr.push(0);
-    for (i, row) in rows.iter().enumerate() {
-        for &(j, t) in row {
-            indices.push(j as usize);
-            data.push(d[i] * t * d[j as usize] / mesh.patches[i].area);
+    balance(&rows, &targets)
+}
+
+/// CSR rows `(i,d)` of `G` from the pair pieces, scaled by `D`.
+fn sparse_rows(mesh: &Mesh, k: usize, work: &[RowWork], d: &[f64]) -> CsMat<f64> {
+    let rows = mesh.len() * k;
+    let mut counts = vec![0usize; rows + 1];
+    for (i, w) in work.iter().enumerate() {
+        for p in &w.pairs {
+            for &(cd, cm, _) in &w.cells[p.first as usize..(p.first + p.count) as usize] {
+                counts[i * k + cd as usize + 1] += 1;
+                counts[p.j as usize * k + cm as usize + 1] += 1;
+            }
         }
-        indptr.push(indices.len());
     }
-    Transport { g: CsMat::new((n, n), indptr, indices, data), balance: report, pairs, rays }
+    for r in 0..rows {
+        counts[r + 1] += counts[r];
+    }
+    let indptr = counts.clone();
+    let mut fill = counts;
+    let mut entries = vec![(0usize, 0.0f64); indptr[rows]];
+    for (i, w) in work.iter().enumerate() {
+        for p in &w.pairs {
+            let j = p.j as usize;
+            let scale = d[i] * d[j];
+            for &(cd, cm, t) in &w.cells[p.first as usize..(p.first + p.count) as usize] {
+                let (ri, rj) = (i * k + cd as usize, j * k + cm as usize);
+                entries[fill[ri]] = (rj, scale * t / mesh.patches[i].area);
+                fill[ri] += 1;
+                entries[fill[rj]] = (ri, scale * t / mesh.patches[j].area);
+                fill[rj] += 1;
+            }
+        }
+    }
+    let mut chunks: Vec<&mut [(usize, f64)]> = Vec::with_capacity(rows);
+    let mut rest = entries.as_mut_slice();
+    for r in 0..rows {
+        let (row, tail) = rest.split_at_mut(indptr[r + 1] - indptr[r]);
+        chunks.push(row);
+        rest = tail;
+    }
+    chunks.par_iter_mut().for_each(|row| row.sort_unstable_by_key(|e| e.0));
+    let (indices, data) = entries.into_iter().unzip();
+    CsMat::new((rows, rows), indptr, indices, data)
 }
 
 fn row_work(
     mesh: &Mesh,
     visibility: &Visibility,
     q: &Quadrature,
+    binning: Option<&Binning>,
     points: &[[glam::DVec3; POINTS]],
     i: usize,
 ) -> RowWork {
     let a = &mesh.patches[i];
-    let mut row = RowWork { entries: Vec::new(), closure: 0.0, pairs: 0, rays: 0 };
+    let mut row = RowWork::default();
     let mut blocker = NO_BLOCKER;
+    let (mut from_a, mut from_b) = (Vec::new(), Vec::new());
     for j in i + 1..mesh.len() {
         let b = &mesh.patches[j];
         if !facing(a, b) {
             continue;
         }
-        let (ab, ba) = (pair_integral(a, b, q), pair_integral(b, a, q));
+        let (ab, ba) = exchange(a, b, q, binning, &mut from_a, &mut from_b);
         if ab.adaptive <= 0.0 && ba.adaptive <= 0.0 {
             continue;
         }
-        row.pairs += 1;
+        row.visited += 1;
         let visible = visible_fraction(visibility, a, &points[i], b, &points[j], &mut blocker);
         row.rays += visible.rays;
         let v = visible.fraction;
-        if v > 0.0 {
-            row.entries.push((j as u32, 0.5 * (ab.adaptive + ba.adaptive) * v, ba.base * v));
-            row.closure += ab.base * v;
+        if v <= 0.0 {
+            continue;
         }
+        let first = row.cells.len() as u32;
+        let total = match binning {
+            None => {
+                let t = 0.5 * (ab.adaptive + ba.adaptive) * v;
+                row.cells.push((0, 0, t));
+                t
+            }
+            Some(_) => merge_pieces(&from_a, &from_b, v, &mut row.cells),
+        };
+        let count = row.cells.len() as u32 - first;
+        row.pairs.push(Pair { j: j as u32, first, count, total, base_j: ba.base * v });
+        row.closure += ab.base * v;
     }
     row
+}
+
+/// Both directions' integrals of a pair; binned pieces land in `from_a` (`(d at a, m at b)`)
+/// and `from_b` (`(d at b, m at a)`).
+fn exchange(
+    a: &Patch,
+    b: &Patch,
+    q: &Quadrature,
+    binning: Option<&Binning>,
+    from_a: &mut Vec<(u16, u16, f64)>,
+    from_b: &mut Vec<(u16, u16, f64)>,
+) -> (PairIntegral, PairIntegral) {
+    match binning {
+        None => (pair_integral(a, b, q), pair_integral(b, a, q)),
+        Some(bins) => {
+            from_a.clear();
+            from_b.clear();
+            (binned_pair_integral(a, b, q, bins, from_a), binned_pair_integral(b, a, q, bins, from_b))
+        }
+    }
+}
+
+/// Symmetric cell pieces `T^{d,m} = v (S_ab^{d,m} + S_ba^{m,d}) / 2`, merged by cell pair
+/// and appended to `cells`; returns their sum.
+fn merge_pieces(
+    from_a: &[(u16, u16, f64)],
+    from_b: &[(u16, u16, f64)],
+    v: f64,
+    cells: &mut Vec<(u16, u16, f64)>,
+) -> f64 {
+    let start = cells.len();
+    cells.extend(from_a.iter().map(|&(d, m, t)| (d, m, 0.5 * v * t)));
+    cells.extend(from_b.iter().map(|&(d, m, t)| (m, d, 0.5 * v * t)));
+    cells[start..].sort_unstable_by_key(|&(d, m, _)| (d, m));
+    let mut write = start;
+    for read in start..cells.len() {
+        if write > start && cells[write - 1].0 == cells[read].0 && cells[write - 1].1 == cells[read].1 {
+            cells[write - 1].2 += cells[read].2;
+        } else {
+            cells[write] = cells[read];
+            write += 1;
+        }
+    }
+    cells.truncate(write);
+    cells[start..].iter().map(|c| c.2).sum()
 }
 
 /// True when some part of each patch lies strictly in front of the other.

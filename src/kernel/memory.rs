@@ -1,12 +1,14 @@
 //! Memory estimate of the kernel before any assembly, and the default limit.
 //!
-//! The number of non-zeros of `G` is the number of ordered pairs of patches that face
-//! each other (counted exactly up to 4,000 patches, else from a fixed sample of pairs)
-//! times `K²`; occlusion can only lower it, so the estimate is an upper bound up to the
-//! sampling error.
+//! The number of non-zeros of `G` is twice the number of unordered pairs of patches that
+//! face each other (counted exactly up to 4,000 patches, else from a fixed sample of
+//! pairs) times the cell pairs `(d, m)` one pair of patches spreads over: about
+//! `(1 + Ω_j/ω)(1 + Ω_i/ω)`, with `Ω` the solid angle one patch subtends at the other and
+//! `ω = 2π/K` a cell's, at most `K²`. Occlusion can only lower it.
 
 use super::assembly::facing;
-use crate::geometry::Mesh;
+use crate::directions::DirectionSet;
+use crate::geometry::{Mesh, Patch};
 use rayon::prelude::*;
 
 /// Bytes per stored non-zero of a CSR matrix (f64 value, usize column index).
@@ -33,12 +35,13 @@ pub struct Estimate {
 }
 
 impl Estimate {
-    pub fn of(mesh: &Mesh, cells: usize) -> Estimate {
+    pub fn of(mesh: &Mesh, directions: &DirectionSet) -> Estimate {
         let n = mesh.len();
-        let (facing_pairs, sampled) =
-            if n <= 4000 { (count_facing(mesh) as f64, false) } else { (sample_facing(mesh), true) };
-        let k2 = (cells * cells) as f64;
-        let nonzeros = 2.0 * facing_pairs * k2;
+        let cells = directions.len();
+        let sampled = n > 4000;
+        let (facing_pairs, pieces) = if sampled { sample_facing(mesh, cells) } else { count_facing(mesh, cells) };
+        let k2 = pieces / facing_pairs.max(1.0);
+        let nonzeros = 2.0 * pieces;
         let kernel_bytes = nonzeros * BYTES_PER_NONZERO as f64 + 8.0 * (n * cells + 1) as f64;
         Estimate {
             patches: n,
@@ -46,7 +49,7 @@ impl Estimate {
             unknowns: n * cells,
             facing_pairs,
             nonzeros,
-            assembly_bytes: kernel_bytes + facing_pairs * k2 * BYTES_PER_PAIR_ASSEMBLY as f64,
+            assembly_bytes: kernel_bytes + facing_pairs * k2.max(1.0) * BYTES_PER_PAIR_ASSEMBLY as f64,
             kernel_bytes,
             sampled,
         }
@@ -58,23 +61,47 @@ impl Estimate {
     }
 }
 
-fn count_facing(mesh: &Mesh) -> usize {
+/// Facing unordered pairs and their estimated cell pieces, counted over all pairs.
+fn count_facing(mesh: &Mesh, cells: usize) -> (f64, f64) {
     let p = &mesh.patches;
-    (0..p.len()).into_par_iter().map(|i| (i + 1..p.len()).filter(|&j| facing(&p[i], &p[j])).count()).sum()
+    (0..p.len())
+        .into_par_iter()
+        .map(|i| {
+            (i + 1..p.len())
+                .filter(|&j| facing(&p[i], &p[j]))
+                .fold((0.0, 0.0), |(n, s), j| (n + 1.0, s + pieces(&p[i], &p[j], cells)))
+        })
+        .reduce(|| (0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
 }
 
-fn sample_facing(mesh: &Mesh) -> f64 {
+/// The same from a fixed sample of pairs, scaled to all pairs.
+fn sample_facing(mesh: &Mesh, cells: usize) -> (f64, f64) {
     const SAMPLES: u64 = 2_000_000;
     let n = mesh.len() as u64;
-    let hits: u64 = (0..SAMPLES)
+    let (hits, sum) = (0..SAMPLES)
         .into_par_iter()
         .map(|s| {
             let h = splitmix(s);
             let (i, j) = ((h % n) as usize, ((h >> 32) % n) as usize);
-            (i != j && facing(&mesh.patches[i], &mesh.patches[j])) as u64
+            let (a, b) = (&mesh.patches[i], &mesh.patches[j]);
+            if i != j && facing(a, b) { (1.0, pieces(a, b, cells)) } else { (0.0, 0.0) }
         })
-        .sum();
-    hits as f64 / SAMPLES as f64 * (n * (n - 1) / 2) as f64
+        .reduce(|| (0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
+    let scale = (n * (n - 1) / 2) as f64 / SAMPLES as f64;
+    (hits * scale, sum * scale)
+}
+
+/// Estimated cell pairs `(d, m)` that the exchange between `a` and `b` spreads over.
+fn pieces(a: &Patch, b: &Patch, cells: usize) -> f64 {
+    if cells == 1 {
+        return 1.0;
+    }
+    let cell = std::f64::consts::TAU / cells as f64;
+    let r = b.centroid - a.centroid;
+    let r2 = r.length_squared();
+    let seen = |p: &Patch, dir: glam::DVec3| (p.area * p.normal.dot(dir).abs() / r2).min(std::f64::consts::TAU);
+    let dir = r / r2.sqrt();
+    ((1.0 + seen(b, dir) / cell) * (1.0 + seen(a, dir) / cell)).min((cells * cells) as f64)
 }
 
 fn splitmix(mut z: u64) -> u64 {

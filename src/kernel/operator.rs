@@ -6,6 +6,8 @@
 
 use crate::brdf::Block;
 use crate::directions::DirectionSet;
+use crate::geometry::NO_TWIN;
+use crate::model::ModelError;
 use rayon::prelude::*;
 use sprs::{CsMat, TriMat};
 
@@ -24,6 +26,9 @@ pub struct Kernel {
     pub blocks: Vec<Block>,
     /// Material of each patch.
     pub patch_material: Vec<u32>,
+    /// The back-to-back twin of each patch of a two-sided surface ([`crate::geometry::NO_TWIN`]
+    /// otherwise): transmission carries light arriving at the twin to this patch.
+    pub twin: Vec<u32>,
 }
 
 impl Kernel {
@@ -42,32 +47,80 @@ impl Kernel {
         spmv(&self.g, x, y);
     }
 
-    /// `y = B z`, block by block.
+    /// `y = B z`, block by block: reflection of what arrives at the patch, plus
+    /// transmission of what arrives at its twin.
     pub fn apply_materials(&self, z: &[f64], y: &mut [f64]) {
         let k = self.cells();
-        y.par_chunks_mut(k).zip(z.par_chunks(k)).zip(self.patch_material.par_iter()).for_each(|((yi, zi), &m)| {
-            self.blocks[m as usize].apply(zi, yi);
+        y.par_chunks_mut(k).enumerate().for_each(|(i, yi)| {
+            let block = &self.blocks[self.patch_material[i] as usize];
+            block.apply(&z[i * k..(i + 1) * k], yi);
+            let twin = self.twin[i] as usize;
+            if block.transmits() && twin != NO_TWIN as usize {
+                block.apply_transmit(&z[twin * k..(twin + 1) * k], yi);
+            }
         });
     }
 
-    /// The explicit product `B·G` as one sparse matrix.
-    pub fn explicit(&self) -> CsMat<f64> {
+    /// Upper bound of the non-zeros of the explicit product `B·G`: each row `(i,d)` of `G`
+    /// spreads over the `K` outgoing cells of `i` (and of its twin, when it transmits).
+    pub fn explicit_nonzeros(&self) -> f64 {
+        let k = self.cells();
+        (0..self.g.rows())
+            .map(|row| {
+                let i = row / k;
+                let twin = self.twin[i];
+                let spread = if twin != NO_TWIN && self.blocks[self.patch_material[twin as usize] as usize].transmits()
+                {
+                    2
+                } else {
+                    1
+                };
+                (self.g.outer_view(row).map_or(0, |r| r.nnz()) * k * spread) as f64
+            })
+            .sum()
+    }
+
+    /// The explicit product `B·G` as one sparse matrix, refused (with the estimate) when
+    /// its upper-bound size exceeds `limit` bytes.
+    pub fn explicit(&self, limit: u64) -> Result<CsMat<f64>, ModelError> {
+        let nonzeros = self.explicit_nonzeros();
+        // triplets (24 bytes) and the CSR copy (16 bytes) live together while converting
+        let need = nonzeros * (24.0 + super::memory::BYTES_PER_NONZERO as f64);
+        if need > limit as f64 {
+            let gib = (1u64 << 30) as f64;
+            return Err(ModelError::TooLarge {
+                what: "explicit product B·G",
+                need: need / gib,
+                limit: limit as f64 / gib,
+                nonzeros,
+                patches: self.patches(),
+                cells: self.cells(),
+            });
+        }
         let k = self.cells();
         let n = self.g.rows();
-        let mut tri = TriMat::with_capacity((n, n), self.g.nnz() * k);
+        let mut tri = TriMat::with_capacity((n, n), nonzeros as usize);
         for (row, vec) in self.g.outer_iterator().enumerate() {
             let (i, d) = (row / k, row % k);
-            let block = &self.blocks[self.patch_material[i] as usize];
-            for (col, &value) in vec.iter() {
+            let mut spread = |target: usize, value_of: &dyn Fn(usize) -> f64| {
                 for out in 0..k {
-                    let b = block.at(out, d);
+                    let b = value_of(out);
                     if b != 0.0 {
-                        tri.add_triplet(i * k + out, col, b * value);
+                        for (col, &g) in vec.iter() {
+                            tri.add_triplet(target * k + out, col, b * g);
+                        }
                     }
                 }
+            };
+            let block = &self.blocks[self.patch_material[i] as usize];
+            spread(i, &|out| block.at(out, d));
+            let twin = self.twin[i];
+            if twin != NO_TWIN {
+                let back = &self.blocks[self.patch_material[twin as usize] as usize];
+                spread(twin as usize, &|out| back.transmit_at(out, d).unwrap_or(0.0));
             }
         }
-        tri.to_csr()
+        Ok(tri.to_csr())
     }
 }
 

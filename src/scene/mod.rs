@@ -34,6 +34,8 @@ pub struct Scene {
 pub struct Discretization {
     /// Target edge length of the patches, m.
     pub patch_size: f64,
+    /// Direction set: a cell count (`"64"`), `"klems"` or `"tregenza"` (default `"1"`).
+    pub directions: String,
 }
 
 /// `[solver]`: the iteration's stopping rule.
@@ -58,11 +60,23 @@ pub struct Material {
     pub model: MaterialModel,
 }
 
-/// The closed set of material models.
+/// The closed set of material models, as luminance factors `ρ = π f_r` (`design.md` §1).
 #[derive(Debug, Clone, PartialEq)]
 pub enum MaterialModel {
-    /// Ideal diffuse reflector, `ρ ≡ reflectance` (0 ≤ reflectance ≤ 1).
-    Lambert { reflectance: f64 },
+    /// Ideal diffuse reflector and (on a two-sided surface) diffuse transmitter:
+    /// `ρ ≡ reflectance` on the incident side, `τ ≡ transmittance` on the other;
+    /// `reflectance + transmittance ≤ 1`.
+    Lambert { reflectance: f64, transmittance: f64 },
+    /// Normalized modified Phong (Lafortune & Willems 1994):
+    /// `ρ = diffuse + specular · (n + 2)/2 · cosⁿα`, `α` between the outgoing direction
+    /// and the mirror image of the incoming one; `diffuse + specular ≤ 1`.
+    Phong { diffuse: f64, specular: f64, exponent: f64 },
+    /// Ideal specular reflector of reflectance `reflectance`.
+    Mirror { reflectance: f64 },
+    /// GGX (Trowbridge–Reitz) microfacet reflection with the height-correlated Smith
+    /// masking-shadowing term and no Fresnel factor, plus a diffuse part:
+    /// `ρ = diffuse + specular · π D(h) G₂ / (4 cosθ cosθ')`, width `roughness` (α).
+    Ggx { diffuse: f64, specular: f64, roughness: f64 },
 }
 
 /// Lambertian self-emission of a surface.

@@ -36,6 +36,15 @@ pub struct RawSceneInfo {
 #[serde(deny_unknown_fields)]
 pub struct RawDiscretization {
     pub patch_size: f64,
+    pub directions: Option<RawDirections>,
+}
+
+/// `directions = 64` or `directions = "klems"`.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+pub enum RawDirections {
+    Count(u64),
+    Name(String),
 }
 
 /// `[solver]`.
@@ -54,7 +63,11 @@ pub struct RawMaterial {
     pub name: String,
     #[serde(rename = "type")]
     pub model: String,
-    pub reflectance: f64,
+    pub reflectance: Option<f64>,
+    pub transmittance: Option<f64>,
+    pub specular: Option<f64>,
+    pub exponent: Option<f64>,
+    pub roughness: Option<f64>,
 }
 
 /// `[[surface]]`: the common keys plus every shape's keys, each optional.

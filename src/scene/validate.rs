@@ -6,11 +6,12 @@
 //! naming the table (`[[surface]] "floor" (#3)`) and the key.
 
 use super::schema::{
-    RawDiscretization, RawEmission, RawMaterial, RawProbe, RawScene, RawSceneInfo, RawSolver, RawSurface,
+    RawDirections, RawDiscretization, RawEmission, RawMaterial, RawProbe, RawScene, RawSceneInfo, RawSolver, RawSurface,
 };
 use super::{
     Discretization, Emission, Material, MaterialModel, Probe, Scene, SceneError, Shape, SolverSettings, Surface,
 };
+use crate::directions::DirectionSet;
 use glam::DVec3;
 use std::path::Path;
 
@@ -118,7 +119,17 @@ fn discretization(path: &Path, raw: Option<RawDiscretization>) -> Result<Discret
     let at = Context::new(path, "[discretization]");
     let raw = raw.ok_or_else(|| at.error("", "the table [discretization] is required"))?;
     let patch_size = at.positive("patch_size", raw.patch_size)?;
-    Ok(Discretization { patch_size })
+    let directions = match raw.directions {
+        None => "1".to_string(),
+        Some(RawDirections::Count(k)) => k.to_string(),
+        Some(RawDirections::Name(name)) => name,
+    };
+    if DirectionSet::named(&directions).is_none() {
+        let message =
+            format!("unknown direction set \"{directions}\"; give a cell count ≥ 1, \"klems\" or \"tregenza\"");
+        return Err(at.error("directions", message));
+    }
+    Ok(Discretization { patch_size, directions })
 }
 
 fn solver(path: &Path, raw: Option<RawSolver>) -> Result<SolverSettings, SceneError> {
@@ -165,19 +176,80 @@ fn materials(path: &Path, raw: &[RawMaterial]) -> Result<Vec<Material>, SceneErr
     unique_names(path, "material", raw.iter().map(|m| m.name.as_str()))?;
     let material = |(index, m): (usize, &RawMaterial)| {
         let at = Context::item(path, "material", &m.name, index);
-        if m.model != "lambert" {
-            let message = format!("unknown material type \"{}\"; known: \"lambert\"", m.model);
-            return Err(at.error("type", message));
-        }
-        let reflectance = at.non_negative("reflectance", m.reflectance)?;
-        if reflectance > 1.0 {
-            let message = format!("must be at most 1, got {reflectance}");
-            return Err(at.error("reflectance", message));
-        }
-        let model = MaterialModel::Lambert { reflectance };
-        Ok(Material { name: m.name.clone(), model })
+        Ok(Material { name: m.name.clone(), model: material_model(&at, m)? })
     };
     raw.iter().enumerate().map(material).collect()
+}
+
+/// Keys each material type takes (the first is required where noted below).
+const MATERIAL_KEYS: [(&str, &[&str]); 4] = [
+    ("lambert", &["reflectance", "transmittance"]),
+    ("phong", &["reflectance", "specular", "exponent"]),
+    ("mirror", &["reflectance"]),
+    ("ggx", &["reflectance", "specular", "roughness"]),
+];
+
+fn material_model(at: &Context, m: &RawMaterial) -> Result<MaterialModel, SceneError> {
+    let Some((_, keys)) = MATERIAL_KEYS.iter().find(|(name, _)| *name == m.model) else {
+        let known: Vec<String> = MATERIAL_KEYS.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+        return Err(at.error("type", format!("unknown material type \"{}\"; known: {}", m.model, known.join(", "))));
+    };
+    let given = [
+        ("reflectance", m.reflectance),
+        ("transmittance", m.transmittance),
+        ("specular", m.specular),
+        ("exponent", m.exponent),
+        ("roughness", m.roughness),
+    ];
+    for (key, value) in given {
+        if value.is_some() && !keys.contains(&key) {
+            let message = format!("a \"{}\" material takes only {}", m.model, keys.join(", "));
+            return Err(at.error(key, message));
+        }
+    }
+    let fraction = |key: &str, value: Option<f64>| -> Result<f64, SceneError> {
+        let v = at.non_negative(key, value.unwrap_or(0.0))?;
+        if v > 1.0 {
+            return Err(at.error(key, format!("must be at most 1, got {v}")));
+        }
+        Ok(v)
+    };
+    let required = |key: &str, value: Option<f64>| {
+        value.ok_or_else(|| at.error(key, format!("a \"{}\" material needs `{key}`", m.model)))
+    };
+    let reflectance = fraction("reflectance", Some(required("reflectance", m.reflectance)?))?;
+    let sum_at_most_one = |key: &str, other: f64| {
+        if reflectance + other > 1.0 + 1e-12 {
+            return Err(at.error(key, format!("reflectance + {key} = {} exceeds 1", reflectance + other)));
+        }
+        Ok(())
+    };
+    Ok(match m.model.as_str() {
+        "lambert" => {
+            let transmittance = fraction("transmittance", m.transmittance)?;
+            sum_at_most_one("transmittance", transmittance)?;
+            MaterialModel::Lambert { reflectance, transmittance }
+        }
+        "phong" => {
+            let specular = fraction("specular", Some(required("specular", m.specular)?))?;
+            sum_at_most_one("specular", specular)?;
+            let exponent = at.non_negative("exponent", required("exponent", m.exponent)?)?;
+            if exponent > 1e5 {
+                return Err(at.error("exponent", format!("must be at most 100000, got {exponent}")));
+            }
+            MaterialModel::Phong { diffuse: reflectance, specular, exponent }
+        }
+        "mirror" => MaterialModel::Mirror { reflectance },
+        _ => {
+            let specular = fraction("specular", Some(required("specular", m.specular)?))?;
+            sum_at_most_one("specular", specular)?;
+            let roughness = fraction("roughness", Some(required("roughness", m.roughness)?))?;
+            if roughness < 1e-3 {
+                return Err(at.error("roughness", format!("must be at least 0.001 (use a mirror), got {roughness}")));
+            }
+            MaterialModel::Ggx { diffuse: reflectance, specular, roughness }
+        }
+    })
 }
 
 fn probes(path: &Path, raw: &[RawProbe]) -> Result<Vec<Probe>, SceneError> {
@@ -217,11 +289,19 @@ fn surface(at: &Context, s: &RawSurface, materials: &[Material]) -> Result<Surfa
         let message = format!("unknown material \"{}\"; known: {}", s.material, known.join(", "));
         at.error("material", message)
     })?;
+    let two_sided = s.two_sided.unwrap_or(false);
+    if let MaterialModel::Lambert { transmittance, .. } = materials[material].model
+        && transmittance > 0.0
+        && !two_sided
+    {
+        let message = format!("material \"{}\" transmits light, so the surface must be two_sided = true", s.material);
+        return Err(at.error("two_sided", message));
+    }
     Ok(Surface {
         name: s.name.clone(),
         shape: shape(at, s)?,
         material,
-        two_sided: s.two_sided.unwrap_or(false),
+        two_sided,
         inside: s.inside.unwrap_or(false),
         emission: s.emission.as_ref().map(|e| emission(at, e)).transpose()?,
     })

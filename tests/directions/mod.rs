@@ -5,7 +5,8 @@ use std::f64::consts::{PI, TAU};
 use ugo::directions::DirectionSet;
 
 fn sets() -> Vec<DirectionSet> {
-    let mut v: Vec<DirectionSet> = [1, 2, 3, 7, 16, 64, 128, 145, 500].into_iter().map(DirectionSet::hemisphere).collect();
+    let mut v: Vec<DirectionSet> =
+        [1, 2, 3, 7, 16, 64, 128, 145, 500].into_iter().map(DirectionSet::hemisphere).collect();
     v.extend([DirectionSet::klems(), DirectionSet::tregenza(), DirectionSet::sphere(2), DirectionSet::sphere(128)]);
     v
 }
@@ -24,7 +25,8 @@ fn sphere_points(n: usize) -> impl Iterator<Item = DVec3> {
 #[test]
 fn cells_cover_the_hemisphere_or_sphere() {
     for set in sets() {
-        let (omega, mu): (f64, f64) = set.cells().iter().fold((0.0, 0.0), |(a, b), c| (a + c.solid_angle, b + c.projected));
+        let (omega, mu): (f64, f64) =
+            set.cells().iter().fold((0.0, 0.0), |(a, b), c| (a + c.solid_angle, b + c.projected));
         let (omega_total, mu_total) = if set.is_sphere() { (2.0 * TAU, TAU) } else { (TAU, PI) };
         assert!((omega - omega_total).abs() < 1e-12, "{}: Σω = {omega}", set.name());
         assert!((mu - mu_total).abs() < 1e-12, "{}: Σμ = {mu}", set.name());
@@ -87,7 +89,12 @@ fn lookup_is_contiguous_and_proportional_to_solid_angle() {
         let per_sr = n as f64 / (2.0 * TAU);
         for (k, c) in set.cells().iter().enumerate() {
             let expected = c.solid_angle * per_sr;
-            assert!((hits[k] as f64 - expected).abs() < 5.0 * expected.sqrt() + 5.0, "{} cell {k}: {} vs {expected}", set.name(), hits[k]);
+            assert!(
+                (hits[k] as f64 - expected).abs() < 5.0 * expected.sqrt() + 5.0,
+                "{} cell {k}: {} vs {expected}",
+                set.name(),
+                hits[k]
+            );
         }
     }
 }

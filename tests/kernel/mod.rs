@@ -1,2 +1,3 @@
 mod assembly;
+mod cells;
 mod form_factor;

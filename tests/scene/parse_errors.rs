@@ -71,9 +71,9 @@ vertices = [
 
 #[test]
 fn missing_required_key_is_named() {
-    let text = format!("{}{LAMP}", BASE.replace("reflectance = 0.75\n", ""));
+    let text = format!("{}{LAMP}", BASE.replace("patch_size = ", "patch_sise = "));
     let error = rejected(&text);
-    assert_error(&error, "[[material]] #1", "reflectance", &["missing field"]);
+    assert_error(&error, "[discretization]", "patch_sise", &["unknown field"]);
 }
 
 #[test]

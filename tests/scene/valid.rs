@@ -108,8 +108,8 @@ fn header_tables_are_read() {
     assert_eq!(
         reflectances,
         [
-            ("white", &MaterialModel::Lambert { reflectance: 0.75 }),
-            ("black", &MaterialModel::Lambert { reflectance: 0.0 }),
+            ("white", &MaterialModel::Lambert { reflectance: 0.75, transmittance: 0.0 }),
+            ("black", &MaterialModel::Lambert { reflectance: 0.0, transmittance: 0.0 }),
         ]
     );
 }
@@ -189,7 +189,7 @@ fn optional_keys_take_their_defaults() {
 fn integers_are_accepted_as_numbers() {
     let text = BASE.replace("0.75", "1").replace("0.1", "1");
     let scene = parse(&format!("{text}{}", super::LAMP)).expect("valid scene");
-    assert_eq!(scene.materials[0].model, MaterialModel::Lambert { reflectance: 1.0 });
+    assert_eq!(scene.materials[0].model, MaterialModel::Lambert { reflectance: 1.0, transmittance: 0.0 });
     assert_eq!(scene.discretization.patch_size, 1.0);
 }
 

@@ -51,8 +51,29 @@ fn infinite_coordinate_is_rejected() {
 
 #[test]
 fn unknown_material_type_is_rejected() {
-    let error = rejected(&format!("{}{LAMP}", BASE.replace("lambert", "phong")));
-    assert_error(&error, "[[material]] \"white\" (#1)", "type", &["phong", "lambert"]);
+    let error = rejected(&format!("{}{LAMP}", BASE.replace("lambert", "velvet")));
+    assert_error(&error, "[[material]] \"white\" (#1)", "type", &["velvet", "lambert", "phong", "mirror", "ggx"]);
+}
+
+#[test]
+fn a_missing_material_key_is_named() {
+    let text = format!("{}{LAMP}", BASE.replace("reflectance = 0.75\n", ""));
+    let error = rejected(&text);
+    assert_error(&error, "[[material]] \"white\" (#1)", "reflectance", &["needs"]);
+}
+
+#[test]
+fn a_key_of_another_material_type_is_named() {
+    let text = format!("{}{LAMP}", BASE.replace("reflectance = 0.75\n", "reflectance = 0.75\nexponent = 10\n"));
+    let error = rejected(&text);
+    assert_error(&error, "[[material]] \"white\" (#1)", "exponent", &["lambert", "reflectance, transmittance"]);
+}
+
+#[test]
+fn reflectance_and_transmittance_may_not_exceed_one() {
+    let text = format!("{}{LAMP}", BASE.replace("reflectance = 0.75\n", "reflectance = 0.75\ntransmittance = 0.5\n"));
+    let error = rejected(&text);
+    assert_error(&error, "[[material]] \"white\" (#1)", "transmittance", &["exceeds 1"]);
 }
 
 #[test]

@@ -2,11 +2,12 @@
 
 use glam::DVec3;
 use std::path::PathBuf;
+use ugo::directions::DirectionSet;
 use ugo::model::{Model, ModelOptions};
 use ugo::scene::{Discretization, Emission, Material, MaterialModel, Scene, Shape, SolverSettings, Surface};
 
 pub fn lambert(name: &str, reflectance: f64) -> Material {
-    Material { name: name.into(), model: MaterialModel::Lambert { reflectance } }
+    Material { name: name.into(), model: MaterialModel::Lambert { reflectance, transmittance: 0.0 } }
 }
 
 pub fn surface(name: &str, shape: Shape, material: usize, inside: bool, emission: Option<Emission>) -> Surface {
@@ -19,7 +20,7 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         source: String::new(),
         name: "test".into(),
         description: String::new(),
-        discretization: Discretization { patch_size },
+        discretization: Discretization { patch_size, directions: "1".into() },
         solver: SolverSettings::default(),
         materials,
         surfaces,
@@ -39,4 +40,17 @@ pub fn furnace(side: f64, reflectance: f64, luminance: f64, patch_size: f64) -> 
 
 pub fn build(scene: &Scene) -> Model {
     Model::build(scene, &ModelOptions::of(scene), &|_| {}, &|_| {}).expect("model fits in memory")
+}
+
+/// The model of `scene` with another direction set.
+pub fn build_with(scene: &Scene, directions: DirectionSet) -> Model {
+    let options = ModelOptions { directions, ..ModelOptions::of(scene) };
+    Model::build(scene, &options, &|_| {}, &|_| {}).expect("model fits in memory")
+}
+
+/// A closed cube of `material`, every face emitting `luminance`.
+pub fn furnace_of(material: MaterialModel, luminance: f64, patch_size: f64) -> Scene {
+    let mut s = furnace(1.0, 0.5, luminance, patch_size);
+    s.materials[0].model = material;
+    s
 }
