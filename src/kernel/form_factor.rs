@@ -10,13 +10,12 @@
 //! all targets with the same points, it gives the patch's closure exactly (up to
 //! visibility), which the assembly uses to balance the kernel.
 //!
-//! Split by cells, the target seen from each point `x` of the adaptive rule (refined at
-//! most two levels) is cut into triangles
+//! Split by cells, the target seen from each base-rule point `x` is cut into triangles
 //! until each looks smaller than `κ` times a cell's angular size from `x` (at most 4
 //! levels); each piece's exact contour integral goes to the cell `d` of its direction at
 //! `s` and the cell `m` of the opposite direction at `t`. The pieces partition the
 //! target; scaled to the adaptive total, the cells sum to the whole form factor to
-//! round-off, and only the split between cells rests on the coarser rule.
+//! round-off, and only the split between cells rests on the coarser base rule.
 
 use super::contour::point_to_polygon;
 use crate::directions::DirectionSet;
@@ -55,9 +54,6 @@ impl<'a> Binning<'a> {
     }
 }
 
-/// Most levels of refinement of the source points that distribute a pair over cells.
-const DISTRIBUTION_DEPTH: u32 = 0;
-
 /// Most levels of splitting a target into pieces for binning.
 const MAX_PIECE_DEPTH: u32 = 4;
 
@@ -82,8 +78,7 @@ pub fn pair_integral(s: &Patch, t: &Patch, q: &Quadrature) -> PairIntegral {
 
 /// Like [`pair_integral`], and also pushes `(d, m, A_s F_st^{d,m})` pieces onto `bins`
 /// (unmerged: one cell pair may appear several times). The pieces carry the adaptive
-/// total, distributed over cell pairs as the points of the adaptive rule, refined at most
-/// two levels, see the target.
+/// total, distributed over cell pairs as the base rule's points see the target.
 pub fn binned_pair_integral(
     s: &Patch,
     t: &Patch,
@@ -97,10 +92,9 @@ pub fn binned_pair_integral(
     }
     let start = bins.len();
     let frame = s.frame();
-    let coarse = Quadrature { max_depth: DISTRIBUTION_DEPTH, ..*q };
     let mut seen = 0.0;
     for tri in s.polygon.triangles() {
-        seen += refine(&tri, t, &coarse, 0, None, &mut |x, w| {
+        seen += three_point(&tri, &mut |x, w| {
             t.polygon.triangles().map(|piece| split_piece(x, &frame, t, &piece, binning, w, 0, bins)).sum()
         });
     }

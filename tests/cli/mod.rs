@@ -105,3 +105,37 @@ fn info_estimates_before_assembly() {
         "{text}"
     );
 }
+
+#[test]
+fn direction_cells_reach_the_hdf5_file() {
+    let out = scratch("cells").join("furnace16.h5");
+    let o = ugo(&[
+        "solve",
+        "cases/furnace-box.toml",
+        "--directions",
+        "16",
+        "--patch-size",
+        "0.25",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let file = hdf5::File::open(&out).unwrap();
+    let luminance = file.dataset("field/luminance").unwrap().read_dyn::<f64>().unwrap();
+    assert_eq!(luminance.shape(), &[96, 16, 1]);
+    assert!(luminance.iter().all(|l| (l / 5.0 - 1.0).abs() < 1e-3));
+    let blocks = file.dataset("materials/reflection").unwrap().read_dyn::<f64>().unwrap();
+    assert_eq!(blocks.shape(), &[1, 16, 16]);
+    assert!(blocks.iter().all(|&r| (r - 0.8).abs() < 1e-15));
+    let solid = file.dataset("directions/solid_angle").unwrap().read_1d::<f64>().unwrap();
+    assert!((solid.sum() - 2.0 * std::f64::consts::PI).abs() < 1e-12);
+    assert_eq!(file.dataset("directions/vectors").unwrap().shape(), vec![16, 3]);
+    let name: hdf5::types::VarLenUnicode = file.attr("directions").unwrap().read_scalar().unwrap();
+    assert_eq!(name.as_str(), "16");
+}
+
+#[test]
+fn an_unknown_direction_set_fails_cleanly() {
+    let err = assert_clean_failure(&ugo(&["info", "cases/furnace-box.toml", "--directions", "fibonacci"]));
+    assert!(err.contains("--directions") && err.contains("klems"), "{err}");
+}
