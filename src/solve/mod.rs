@@ -3,10 +3,26 @@
 //! Every method reports the same relative residual `‖L0 + Kx − x‖₂ / ‖L0‖₂` for every
 //! iterate, the number of kernel applications and the wall time, so methods compare fairly.
 
+mod bicgstab;
+mod direct;
+mod gauss_seidel;
+mod gmres;
+mod history;
+mod method;
 mod neumann;
+pub mod norms;
+pub mod orders;
+mod southwell;
 
+pub use bicgstab::bicgstab;
+pub use direct::direct;
+pub use gauss_seidel::gauss_seidel;
+pub use gmres::gmres;
+pub use method::{Method, solve};
 pub use neumann::successive_approximation;
+pub use southwell::southwell;
 
+use history::History;
 use thiserror::Error;
 
 /// Stopping rule shared by the iterative methods.
@@ -26,6 +42,10 @@ pub struct SolveInfo {
     pub applications: usize,
     /// Relative residual of iterate `n` at index `n` (the last one is the returned one's).
     pub residual_history: Vec<f64>,
+    /// Kernel applications spent when each residual was recorded.
+    pub application_history: Vec<usize>,
+    /// Seconds since the start when each residual was recorded.
+    pub time_history: Vec<f64>,
     pub seconds: f64,
 }
 
@@ -53,6 +73,22 @@ pub enum SolveError {
          would be needed (raise max_iterations or the tolerance)"
     )]
     NoConvergence { iterations: usize, residual: f64, tolerance: f64, ratio: f64, needed: f64 },
+    #[error(
+        "{method} stagnated: the residual stayed at {residual:.3e} over the last restart cycle \
+         ({iterations} iterations); raise the restart length or use the direct solver"
+    )]
+    Stagnation { method: &'static str, iterations: usize, residual: f64 },
+    #[error("{method} broke down after {iterations} iterations ({why}); use GMRES or the direct solver")]
+    Breakdown { method: &'static str, iterations: usize, why: &'static str },
+    #[error("{0}")]
+    TooLarge(String),
+    #[error(
+        "{method} returned a solution {growth:.1e} times larger than the emission: I − K is singular \
+         or nearly so (spectral radius ≥ 1, e.g. a closed scene whose reflectances are all 1)"
+    )]
+    Singular { method: &'static str, growth: f64 },
+    #[error("{method} needs {needs}")]
+    Unsupported { method: &'static str, needs: &'static str },
 }
 
 pub(crate) fn norm(x: &[f64]) -> f64 {

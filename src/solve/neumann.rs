@@ -4,9 +4,8 @@
 //! Divergence is detected from the residual ratio: for `ρ(K) ≥ 1` it tends to a value
 //! `≥ 1` instead of `ρ(K) < 1`, and the method stops with a clear error rather than loop.
 
-use super::{SolveError, SolveInfo, SolveParams, norm};
+use super::{History, SolveError, SolveInfo, SolveParams};
 use crate::kernel::LinOp;
-use std::time::Instant;
 
 /// Iterations over which the residual ratio is averaged to detect divergence.
 const WINDOW: usize = 10;
@@ -19,14 +18,13 @@ pub fn successive_approximation(
     params: &SolveParams,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
-    let start = Instant::now();
-    let scale = norm(l0);
+    let mut history = History::new(l0);
+    let scale = history.scale;
     if scale == 0.0 {
         return Err(SolveError::NoSource);
     }
     let mut x = l0.to_vec();
     let mut next = vec![0.0; l0.len()];
-    let mut history = Vec::new();
     for n in 0..=params.max_iterations {
         kernel.apply(&x, &mut next);
         let mut sq = 0.0;
@@ -34,27 +32,19 @@ pub fn successive_approximation(
             *y += l;
             sq += (*y - xi) * (*y - xi);
         }
-        let residual = sq.sqrt() / scale;
-        history.push(residual);
+        let residual = history.record(sq.sqrt() / scale, n + 1);
         progress(n, residual);
         if residual <= params.tolerance {
-            let info = SolveInfo {
-                method: "successive approximation",
-                iterations: n,
-                applications: n + 1,
-                residual_history: history,
-                seconds: start.elapsed().as_secs_f64(),
-            };
-            return Ok((x, info));
+            return Ok((x, history.finish("successive approximation", n)));
         }
-        let ratio = mean_ratio(&history);
+        let ratio = history.mean_ratio(WINDOW);
         if n >= 2 * WINDOW && ratio > 1.0 - 1e-6 {
             return Err(SolveError::Diverges { ratio, iterations: n, residual });
         }
         std::mem::swap(&mut x, &mut next);
     }
-    let residual = history.last().copied().unwrap_or(f64::NAN);
-    let ratio = mean_ratio(&history);
+    let residual = history.last();
+    let ratio = history.mean_ratio(WINDOW);
     let needed = if ratio < 1.0 { (params.tolerance / residual).ln() / ratio.ln() } else { f64::INFINITY };
     Err(SolveError::NoConvergence {
         iterations: params.max_iterations,
@@ -63,14 +53,4 @@ pub fn successive_approximation(
         ratio,
         needed: needed.ceil(),
     })
-}
-
-/// Geometric mean of the last `WINDOW` residual ratios.
-fn mean_ratio(history: &[f64]) -> f64 {
-    if history.len() <= WINDOW {
-        return f64::NAN;
-    }
-    let last = history[history.len() - 1];
-    let first = history[history.len() - 1 - WINDOW];
-    (last / first).powf(1.0 / WINDOW as f64)
 }

@@ -1,3 +1,4 @@
 mod furnace;
+mod methods;
 mod plates;
 mod sphere;

@@ -1,0 +1,62 @@
+//! Direct solution of `(I − K) x = L0` by LU with partial pivoting (faer): dense up to
+//! [`DENSE_MAX`] unknowns, sparse LU of the explicit matrix beyond. faer's dense LU was
+//! measured against nalgebra's with `ugo bench --lu` (`docs/experiments.md`). The memory
+//! of the factors is checked before factoring: `8 n²` bytes dense; for the sparse LU its
+//! fill-in is bounded by the same `8 n²`, which is what is checked.
+
+use super::history::residual_norm;
+use super::{History, SolveError, SolveInfo};
+use crate::kernel::{Explicit, LinOp};
+use faer::linalg::solvers::Solve;
+use faer::sparse::{SparseColMat, Triplet};
+use faer::{Col, Mat};
+
+/// Above this many unknowns the LU is sparse.
+pub const DENSE_MAX: usize = 8000;
+
+/// Solves `x = L0 + K x` by LU of `I − K`; refuses (with the estimate) when the factors
+/// could exceed `limit` bytes.
+pub fn direct(k: &Explicit, l0: &[f64], limit: u64) -> Result<(Vec<f64>, SolveInfo), SolveError> {
+    let n = k.dim();
+    let mut history = History::new(l0);
+    if history.scale == 0.0 {
+        return Err(SolveError::NoSource);
+    }
+    let need = 8.0 * (n as f64) * (n as f64) * 2.0;
+    if need > limit as f64 {
+        let gib = (1u64 << 30) as f64;
+        return Err(SolveError::TooLarge(format!(
+            "the LU factors of {n} unknowns could need {:.2} GiB, over the limit of {:.2} GiB; use GMRES \
+             (matrix-free), a coarser patch_size or fewer direction cells",
+            need / gib,
+            limit as f64 / gib
+        )));
+    }
+    let rhs = Col::<f64>::from_fn(n, |i| l0[i]);
+    let (x, method): (Col<f64>, &'static str) = if n <= DENSE_MAX {
+        let mut a = Mat::<f64>::identity(n, n);
+        for (i, row) in k.0.outer_iterator().enumerate() {
+            for (j, &v) in row.iter() {
+                a[(i, j)] -= v;
+            }
+        }
+        (a.partial_piv_lu().solve(&rhs), "direct (dense LU)")
+    } else {
+        let mut triplets: Vec<Triplet<usize, usize, f64>> = (0..n).map(|i| Triplet::new(i, i, 1.0)).collect();
+        for (i, row) in k.0.outer_iterator().enumerate() {
+            triplets.extend(row.iter().map(|(j, &v)| Triplet::new(i, j, -v)));
+        }
+        let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &triplets)
+            .map_err(|_| SolveError::TooLarge("cannot build the sparse matrix I − K".into()))?;
+        let lu = a.sp_lu().map_err(|_| SolveError::Breakdown {
+            method: "sparse LU",
+            iterations: 0,
+            why: "the factorization failed (singular I − K?)",
+        })?;
+        (lu.solve(&rhs), "direct (sparse LU)")
+    };
+    let x: Vec<f64> = (0..n).map(|i| x[i]).collect();
+    let mut scratch = vec![0.0; n];
+    history.record(residual_norm(k, l0, &x, &mut scratch) / history.scale, 1);
+    Ok((x, history.finish(method, 0)))
+}

@@ -1,0 +1,99 @@
+//! The closed set of solvers, selected by name (`--method`, `--methods`), dispatched once.
+
+use super::{SolveError, SolveInfo, SolveParams, norm};
+use super::{bicgstab, direct, gauss_seidel, gmres, southwell, successive_approximation};
+use crate::kernel::{Explicit, Factored, Kernel};
+
+/// A method of `design.md` §4.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// Successive approximation (reflection orders).
+    Neumann,
+    GaussSeidel,
+    /// Progressive refinement, one-cell case only.
+    Southwell,
+    /// Restarted GMRES(m).
+    Gmres {
+        restart: usize,
+    },
+    Bicgstab,
+    /// LU of `I − K`.
+    Direct,
+}
+
+/// Default GMRES restart length.
+pub const RESTART: usize = 30;
+
+impl Method {
+    /// All names `parse` accepts.
+    pub const NAMES: &'static str = "neumann, gauss-seidel, southwell, gmres (or gmres:M), bicgstab, direct";
+
+    pub fn parse(name: &str) -> Option<Method> {
+        Some(match name {
+            "neumann" | "successive" => Method::Neumann,
+            "gauss-seidel" => Method::GaussSeidel,
+            "southwell" => Method::Southwell,
+            "gmres" => Method::Gmres { restart: RESTART },
+            "bicgstab" => Method::Bicgstab,
+            "direct" => Method::Direct,
+            other => {
+                let m = other.strip_prefix("gmres:")?.parse::<usize>().ok().filter(|&m| m >= 1)?;
+                Method::Gmres { restart: m }
+            }
+        })
+    }
+
+    /// Short name for tables and files.
+    pub fn name(&self) -> String {
+        match self {
+            Method::Neumann => "neumann".into(),
+            Method::GaussSeidel => "gauss-seidel".into(),
+            Method::Southwell => "southwell".into(),
+            Method::Gmres { restart } => format!("gmres({restart})"),
+            Method::Bicgstab => "bicgstab".into(),
+            Method::Direct => "direct".into(),
+        }
+    }
+
+    /// True when the method needs the explicit product `B·G`.
+    pub fn needs_explicit(&self) -> bool {
+        matches!(self, Method::GaussSeidel | Method::Southwell | Method::Direct)
+    }
+}
+
+/// Solves `x = L0 + K x` with `method`. `explicit` must be given when
+/// [`Method::needs_explicit`]; `areas` are the patch areas (Southwell); `limit` bounds the
+/// direct solver's memory, bytes.
+pub fn solve(
+    method: Method,
+    kernel: &Kernel,
+    explicit: Option<&Explicit>,
+    areas: &[f64],
+    l0: &[f64],
+    params: &SolveParams,
+    limit: u64,
+    progress: &mut dyn FnMut(usize, f64),
+) -> Result<(Vec<f64>, SolveInfo), SolveError> {
+    let factored = Factored::new(kernel);
+    let explicit = || explicit.ok_or(SolveError::Unsupported { method: "this method", needs: "the explicit kernel" });
+    let (x, info) = match method {
+        Method::Neumann => successive_approximation(&factored, l0, params, progress)?,
+        Method::GaussSeidel => gauss_seidel(explicit()?, l0, params, progress)?,
+        Method::Southwell => {
+            let cells = if kernel.cells() == 1 { areas } else { &[] };
+            southwell(explicit()?, cells, l0, params, progress)?
+        }
+        Method::Gmres { restart } => gmres(&factored, l0, params, restart, progress)?,
+        Method::Bicgstab => bicgstab(&factored, l0, params, progress)?,
+        Method::Direct => direct(explicit()?, l0, limit)?,
+    };
+    let growth = norm(&x) / norm(l0);
+    if !(growth <= MAX_GROWTH) {
+        return Err(SolveError::Singular { method: info.method, growth });
+    }
+    Ok((x, info))
+}
+
+/// `‖x‖/‖L0‖` beyond which `I − K` is taken as singular: no physical scene amplifies its
+/// emission 10¹⁰ times, and double precision cannot resolve such a solution anyway.
+const MAX_GROWTH: f64 = 1e10;
