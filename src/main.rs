@@ -1,8 +1,9 @@
-//! The `ugo` command line (`design.md` §6): `solve`, `info`, `bench`.
+//! The `ugo` command line (`design.md` §6): `solve`, `norms`, `compare`, `info`, `bench`.
 
 mod cli;
 
 use clap::{Parser, Subcommand};
+use cli::solve::Job;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -46,6 +47,45 @@ enum Command {
         /// Most iterations (default: the case's `[solver]`).
         #[arg(long)]
         max_iterations: Option<usize>,
+        /// Method: neumann, gauss-seidel, southwell, gmres[:M], bicgstab, direct (default: the case's).
+        #[arg(long)]
+        method: Option<String>,
+        /// Reflection orders whose partial sums go to /orders (default 1,8,64 with neumann).
+        #[arg(long, value_delimiter = ',')]
+        orders: Option<Vec<usize>>,
+        /// Also compute the norms of K (needs the explicit product).
+        #[arg(long)]
+        norms: bool,
+    },
+    /// Norms of K, its spectral radius, cond(I − K) and the predicted Neumann iterations.
+    Norms {
+        case: PathBuf,
+        /// Output HDF5 file (default: `<case>-norms.h5`).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        #[command(flatten)]
+        discretize: Discretize,
+        #[arg(long)]
+        tolerance: Option<f64>,
+    },
+    /// Solve with several methods side by side: table, convergence plot, histories in HDF5.
+    Compare {
+        case: PathBuf,
+        /// Comma-separated methods.
+        #[arg(long, value_delimiter = ',', default_value = "neumann,gauss-seidel,gmres,bicgstab,direct")]
+        methods: Vec<String>,
+        /// Output HDF5 file (default: `<case>-compare.h5`).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// Convergence plot (default: `<case>-compare.png`).
+        #[arg(long)]
+        plot: Option<PathBuf>,
+        #[command(flatten)]
+        discretize: Discretize,
+        #[arg(long)]
+        tolerance: Option<f64>,
+        #[arg(long)]
+        max_iterations: Option<usize>,
     },
     /// Patches, unknowns, and the kernel's estimated size, before any assembly.
     Info {
@@ -69,8 +109,41 @@ enum Command {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Solve { case, output, discretize, tolerance, max_iterations } => {
-            cli::solve::run(&case, output, &discretize, tolerance, max_iterations)
+        Command::Solve { case, output, discretize, tolerance, max_iterations, method, orders, norms } => {
+            cli::methods(method.as_slice()).and_then(|methods| {
+                let job = Job { methods, tolerance, max_iterations, orders, norms, output, suffix: "", plot: None };
+                cli::solve::run(&case, &discretize, job)
+            })
+        }
+        Command::Norms { case, output, discretize, tolerance } => {
+            let job = Job {
+                methods: vec![ugo::solve::Method::Neumann],
+                tolerance,
+                max_iterations: None,
+                orders: None,
+                norms: true,
+                output,
+                suffix: "-norms",
+                plot: None,
+            };
+            cli::solve::run(&case, &discretize, job)
+        }
+        Command::Compare { case, methods, output, plot, discretize, tolerance, max_iterations } => {
+            cli::methods(&methods).and_then(|methods| {
+                let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+                let plot = Some(plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-compare.png"))));
+                let job = Job {
+                    methods,
+                    tolerance,
+                    max_iterations,
+                    orders: None,
+                    norms: false,
+                    output,
+                    suffix: "-compare",
+                    plot,
+                };
+                cli::solve::run(&case, &discretize, job)
+            })
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench { case, discretize, rays } => cli::bench::run(&case, &discretize, rays),

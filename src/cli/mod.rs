@@ -57,3 +57,14 @@ pub fn bytes(b: f64) -> String {
         format!("{:.1} MiB", b / (1u64 << 20) as f64)
     }
 }
+
+/// Methods by name, with the known names in the error.
+pub fn methods(names: &[String]) -> Result<Vec<ugo::solve::Method>> {
+    names
+        .iter()
+        .map(|n| {
+            ugo::solve::Method::parse(n)
+                .ok_or_else(|| anyhow::anyhow!("unknown method \"{n}\"; known: {}", ugo::solve::Method::NAMES))
+        })
+        .collect()
+}

@@ -1,5 +1,7 @@
-//! `ugo solve CASE -o OUT.h5`: mesh, assemble, solve by successive approximation, read
-//! the probes, check the energy balance, write HDF5 and print a summary.
+//! The solve pipeline shared by `ugo solve`, `ugo norms` and `ugo compare`: mesh,
+//! assemble, run one or more methods on `x = L0 + K x`, read the probes, check the energy
+//! balance, optionally record reflection orders and norms, write HDF5 (and a plot), and
+//! print a summary.
 
 use super::{bar, bytes, load};
 use crate::Discretize;
@@ -8,86 +10,160 @@ use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 use ugo::energy::EnergyBalance;
 use ugo::field::Field;
-use ugo::io::{Solution, write_solution};
-use ugo::kernel::{Factored, LinOp};
+use ugo::io::{Run, Solution, convergence_plot, write_solution};
+use ugo::kernel::{Explicit, Factored};
 use ugo::model::Model;
 use ugo::probe::read_probes;
-use ugo::solve::{SolveParams, successive_approximation};
+use ugo::solve::norms::Norms;
+use ugo::solve::orders::{OrderRecord, reflection_orders};
+use ugo::solve::{Method, SolveParams, solve};
 
-pub fn run(
-    case: &Path,
-    output: Option<PathBuf>,
-    d: &Discretize,
-    tolerance: Option<f64>,
-    max_iterations: Option<usize>,
-) -> Result<()> {
+/// What one command asks of the pipeline.
+pub struct Job {
+    /// Methods to run; empty means the case's `[solver] method`.
+    pub methods: Vec<Method>,
+    pub tolerance: Option<f64>,
+    pub max_iterations: Option<usize>,
+    /// Reflection orders whose partial sums are recorded (`None`: 1, 8, 64 for `neumann`).
+    pub orders: Option<Vec<usize>>,
+    pub norms: bool,
+    pub output: Option<PathBuf>,
+    /// Suffix of the default output name (`cornell-box{suffix}.h5`).
+    pub suffix: &'static str,
+    pub plot: Option<PathBuf>,
+}
+
+pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let (scene, options) = load(case, d)?;
     let params = SolveParams {
-        tolerance: tolerance.unwrap_or(scene.solver.tolerance),
-        max_iterations: max_iterations.unwrap_or(scene.solver.max_iterations),
+        tolerance: job.tolerance.unwrap_or(scene.solver.tolerance),
+        max_iterations: job.max_iterations.unwrap_or(scene.solver.max_iterations),
     };
     if !(params.tolerance > 0.0 && params.tolerance < 1.0) {
         bail!("--tolerance must lie in (0, 1), got {}", params.tolerance);
     }
-    let output = output
-        .unwrap_or_else(|| PathBuf::from(format!("{}.h5", case.file_stem().unwrap_or_default().to_string_lossy())));
+    let methods = if job.methods.is_empty() {
+        vec![Method::parse(&scene.solver.method).context("the case's [solver] method")?]
+    } else {
+        job.methods.clone()
+    };
+    let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+    let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}{}.h5", job.suffix)));
 
     let assembly = bar(0, "assembly");
     let model = Model::build(&scene, &options, &|total| assembly.set_length(total), &|done| assembly.inc(done))?;
     assembly.finish_and_clear();
 
-    let kernel = Factored::new(&model.kernel);
-    let solving = bar(params.max_iterations as u64, "solve");
-    let (x, info) = successive_approximation(&kernel, &model.l0, &params, &mut |n, r| {
-        solving.set_position(n as u64);
-        solving.set_message(format!("{r:.1e}"));
-    })?;
-    solving.finish_and_clear();
+    let explicit = if job.norms || methods.iter().any(Method::needs_explicit) {
+        Some(Explicit(model.kernel.explicit(options.memory_limit)?))
+    } else {
+        None
+    };
+    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+    let mut runs: Vec<(Run, Vec<f64>)> = Vec::new();
+    for method in &methods {
+        let solving = bar(params.max_iterations as u64, &method.name());
+        let result = solve(
+            *method,
+            &model.kernel,
+            explicit.as_ref(),
+            &areas,
+            &model.l0,
+            &params,
+            options.memory_limit,
+            &mut |n, r| {
+                solving.set_position(n as u64);
+                solving.set_message(format!("{} {r:.1e}", method.name()));
+            },
+        );
+        solving.finish_and_clear();
+        match result {
+            Ok((x, info)) => runs.push((Run { name: method.name(), info, difference: 0.0 }, x)),
+            Err(e) if methods.len() > 1 => eprintln!("ugo: {} failed: {e}", method.name()),
+            Err(e) => return Err(e.into()),
+        }
+    }
+    if runs.is_empty() {
+        bail!("every method failed");
+    }
+    let reference = runs.iter().position(|(r, _)| r.name == "direct").unwrap_or_else(|| {
+        (0..runs.len()).min_by(|&a, &b| runs[a].0.info.residual().total_cmp(&runs[b].0.info.residual())).unwrap_or(0)
+    });
+    let x = runs[reference].1.clone();
+    let scale = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    for (run, y) in &mut runs {
+        run.difference = y.iter().zip(&x).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / scale;
+    }
+    let runs: Vec<Run> = runs.into_iter().map(|(r, _)| r).collect();
 
     let k = model.kernel.cells();
     let field = Field::from_unknowns(&x, k);
-    let mut gx = vec![0.0; kernel.dim()];
+    let mut gx = vec![0.0; x.len()];
     model.kernel.apply_transport(&x, &mut gx);
     let illuminance: Vec<f64> = gx.chunks(k).map(|c| PI * c.iter().sum::<f64>()).collect();
     let energy = EnergyBalance::of(&model.mesh, &model.kernel, &model.l0, &x, scene.surfaces.len());
     let probes = read_probes(&scene.probes, &model, &field);
+    let orders = order_record(&job, &methods, &model);
+    let norms = explicit.as_ref().filter(|_| job.norms).map(Norms::of);
     let solution = Solution {
         scene: &scene,
         model: &model,
         field: &field,
         illuminance: &illuminance,
         params: &params,
-        info: &info,
+        info: &runs[reference].info,
         energy: &energy,
         probes: &probes,
+        orders: orders.as_ref(),
+        runs: &runs,
+        norms: norms.as_ref(),
     };
     write_solution(&output, &solution).with_context(|| format!("writing {}", output.display()))?;
     summary(&solution, &output);
+    if let Some(norms) = &norms {
+        print_norms(norms, &params, &runs);
+    }
+    if runs.len() > 1 {
+        print_comparison(&runs);
+    }
+    if let Some(plot) = &job.plot {
+        convergence_plot(plot, &format!("{}: convergence of every method", scene.name), &runs)
+            .map_err(|e| anyhow::anyhow!("writing {}: {e}", plot.display()))?;
+        println!("  plot               {}", plot.display());
+    }
     Ok(())
+}
+
+fn order_record(job: &Job, methods: &[Method], model: &Model) -> Option<OrderRecord> {
+    let orders = match &job.orders {
+        Some(o) => o.clone(),
+        None if methods.contains(&Method::Neumann) => vec![1, 8, 64],
+        None => return None,
+    };
+    Some(reflection_orders(&Factored::new(&model.kernel), &model.l0, &orders))
 }
 
 fn summary(s: &Solution, output: &Path) {
     let m = s.model;
     let st = &m.stats;
     let g = &m.kernel.g;
-    println!("ugo solve: {} ({})", s.scene.name, s.scene.path.display());
+    println!("ugo: {} ({})", s.scene.name, s.scene.path.display());
     println!("  patches N          {:>12}", m.mesh.len());
-    println!("  direction cells K  {:>12}", m.kernel.cells());
+    println!("  direction cells K  {:>12}   ({})", m.kernel.cells(), m.kernel.directions.name());
     println!("  unknowns           {:>12}", g.rows());
     println!("  non-zeros of G     {:>12}   ({})", g.nnz(), bytes(g.nnz() as f64 * 16.0));
+    let assembly = st.mesh_seconds + st.bvh_seconds + st.kernel_seconds;
     println!(
-        "  assembly           {:>12.3} s   ({} pairs, {} occlusion rays, balance correction {:.1e})",
-        st.mesh_seconds + st.bvh_seconds + st.kernel_seconds,
-        st.pairs,
-        st.rays,
-        st.balance.max_correction
+        "  assembly           {assembly:>12.3} s   ({} pairs, {} occlusion rays, balance correction {:.1e})",
+        st.pairs, st.rays, st.balance.max_correction
     );
+    let i = s.info;
     println!(
         "  solve              {:>12.3} s   ({}, {} iterations, residual {:.2e})",
-        s.info.seconds,
-        s.info.method,
-        s.info.iterations,
-        s.info.residual()
+        i.seconds,
+        i.method,
+        i.iterations,
+        i.residual()
     );
     let e = s.energy;
     println!("  flux emitted       {:>12.4} lm", e.emitted);
@@ -101,4 +177,49 @@ fn summary(s: &Solution, output: &Path) {
         }
     }
     println!("  written            {}", output.display());
+}
+
+fn print_norms(n: &Norms, params: &SolveParams, runs: &[Run]) {
+    let observed = runs.iter().find(|r| r.name == "neumann").map_or("-".to_string(), |r| r.info.iterations.to_string());
+    println!("  norms of K");
+    println!("    ‖K‖₁             {:>12.6}", n.one);
+    println!("    ‖K‖∞             {:>12.6}", n.infinity);
+    println!("    ‖K‖_F            {:>12.6}", n.frobenius);
+    println!(
+        "    ‖K‖₂             {:>12.6}   ({} power iterations{})",
+        n.two.value,
+        n.two.iterations,
+        converged(n.two.converged)
+    );
+    let r = &n.spectral_radius;
+    println!("    ρ(K)             {:>12.6}   ({} power iterations{})", r.value, r.iterations, converged(r.converged));
+    println!("    cond∞(I − K)     {:>12.4}", n.condition_infinity);
+    println!(
+        "    Neumann iterations to {:.0e}: predicted {:.1}, observed {observed}",
+        params.tolerance,
+        n.predicted_iterations(params.tolerance)
+    );
+}
+
+fn converged(ok: bool) -> &'static str {
+    if ok { "" } else { ", NOT converged" }
+}
+
+fn print_comparison(runs: &[Run]) {
+    println!(
+        "  {:<14} {:>10} {:>13} {:>10} {:>12} {:>14}",
+        "method", "iterations", "applications", "time s", "residual", "max rel. diff"
+    );
+    for r in runs {
+        let i = &r.info;
+        println!(
+            "  {:<14} {:>10} {:>13} {:>10.3} {:>12.2e} {:>14.2e}",
+            r.name,
+            i.iterations,
+            i.applications,
+            i.seconds,
+            i.residual(),
+            r.difference
+        );
+    }
 }

@@ -2,7 +2,9 @@
 //!
 //! Layout: `/mesh/{points,normals,areas,surface_id,material_id,vertices,vertex_count,
 //! surface_names,material_names}`, `/directions/{vectors,solid_angle,projected}`,
-//! `/field/{luminance,emission,illuminance}`, `/solver/residual_history`,
+//! `/field/{luminance,emission,illuminance}`, `/solver/{residual_history,applications,seconds}`,
+//! `/compare/<method>/…` (the same histories per method, `ugo compare`),
+//! `/orders/{orders,term_norms,partial_sums}` (the reflection-order record), `/norms` (attributes),
 //! `/energy/{surface_emitted,surface_absorbed}`,
 //! `/probes/{name,position,normal,luminance,illuminance}`, and attributes on the root for
 //! method, tolerance, iterations, timings, energy totals, the scene text and the version.
@@ -13,6 +15,8 @@ use crate::field::Field;
 use crate::model::Model;
 use crate::probe::ProbeReading;
 use crate::scene::Scene;
+use crate::solve::norms::Norms;
+use crate::solve::orders::OrderRecord;
 use crate::solve::{SolveInfo, SolveParams};
 use hdf5::types::VarLenUnicode;
 use ndarray::{Array1, Array2, Array3};
@@ -29,6 +33,21 @@ pub struct Solution<'a> {
     pub info: &'a SolveInfo,
     pub energy: &'a EnergyBalance,
     pub probes: &'a [ProbeReading],
+    /// The reflection-order record, when taken.
+    pub orders: Option<&'a OrderRecord>,
+    /// Every method run on the system (one for `solve`, several for `compare`).
+    pub runs: &'a [Run],
+    /// Norms of the kernel, when computed.
+    pub norms: Option<&'a Norms>,
+}
+
+/// One method's solve of the system, for comparison.
+#[derive(Debug, Clone)]
+pub struct Run {
+    pub name: String,
+    pub info: SolveInfo,
+    /// Largest relative difference from the reference solution, `max |x − x_ref| / max |x_ref|`.
+    pub difference: f64,
 }
 
 /// Writes `solution` to `path` (through `path.tmp`, renamed when complete).
@@ -62,7 +81,22 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     dataset(&field, "illuminance", &Array1::from(s.illuminance.to_vec()))?;
 
     let solver = file.create_group("solver")?;
-    dataset(&solver, "residual_history", &Array1::from(s.info.residual_history.clone()))?;
+    write_history(&solver, s.info)?;
+    if s.runs.len() > 1 {
+        let compare = file.create_group("compare")?;
+        for run in s.runs {
+            let g = compare.create_group(&run.name)?;
+            write_history(&g, &run.info)?;
+            g.new_attr::<f64>().create("max_relative_difference")?.write_scalar(&run.difference)?;
+            g.new_attr::<f64>().create("seconds")?.write_scalar(&run.info.seconds)?;
+        }
+    }
+    if let Some(orders) = s.orders {
+        write_orders(&file.create_group("orders")?, orders, s.model.kernel.cells())?;
+    }
+    if let Some(norms) = s.norms {
+        write_norms(&file.create_group("norms")?, norms, s.params.tolerance)?;
+    }
 
     let energy = file.create_group("energy")?;
     dataset(&energy, "surface_emitted", &Array1::from(s.energy.surface_emitted.clone()))?;
@@ -96,6 +130,43 @@ fn write_directions(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
     dataset(g, "vectors", &Array2::from_shape_fn((cells.len(), 3), |(k, c)| cells[k].direction[c]))?;
     dataset(g, "solid_angle", &Array1::from_iter(cells.iter().map(|c| c.solid_angle)))?;
     dataset(g, "projected", &Array1::from_iter(cells.iter().map(|c| c.projected)))
+}
+
+fn write_history(g: &hdf5::Group, info: &SolveInfo) -> hdf5::Result<()> {
+    dataset(g, "residual_history", &Array1::from(info.residual_history.clone()))?;
+    let applications: Vec<u64> = info.application_history.iter().map(|&a| a as u64).collect();
+    dataset(g, "applications", &Array1::from(applications))?;
+    dataset(g, "seconds", &Array1::from(info.time_history.clone()))
+}
+
+fn write_orders(g: &hdf5::Group, orders: &OrderRecord, k: usize) -> hdf5::Result<()> {
+    dataset(g, "term_norms", &Array1::from(orders.term_norms.clone()))?;
+    let which: Vec<u64> = orders.partial_sums.iter().map(|(n, _)| *n as u64).collect();
+    dataset(g, "orders", &Array1::from(which))?;
+    let n = orders.partial_sums.first().map_or(0, |(_, x)| x.len() / k);
+    let sums = ndarray::Array4::from_shape_fn((orders.partial_sums.len(), n, k, 1), |(o, i, c, _)| {
+        orders.partial_sums[o].1[i * k + c]
+    });
+    dataset(g, "partial_sums", &sums)
+}
+
+fn write_norms(g: &hdf5::Group, norms: &Norms, tolerance: f64) -> hdf5::Result<()> {
+    let values = [
+        ("one", norms.one),
+        ("infinity", norms.infinity),
+        ("frobenius", norms.frobenius),
+        ("two", norms.two.value),
+        ("two_iterations", norms.two.iterations as f64),
+        ("spectral_radius", norms.spectral_radius.value),
+        ("spectral_radius_iterations", norms.spectral_radius.iterations as f64),
+        ("spectral_radius_converged", norms.spectral_radius.converged as u8 as f64),
+        ("condition_infinity", norms.condition_infinity),
+        ("predicted_neumann_iterations", norms.predicted_iterations(tolerance)),
+    ];
+    for (name, value) in values {
+        g.new_attr::<f64>().create(name)?.write_scalar(&value)?;
+    }
+    Ok(())
 }
 
 fn write_materials(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {

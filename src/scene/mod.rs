@@ -38,9 +38,11 @@ pub struct Discretization {
     pub directions: String,
 }
 
-/// `[solver]`: the iteration's stopping rule.
+/// `[solver]`: the method and its stopping rule.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SolverSettings {
+    /// A name `solve::Method::parse` accepts (default `"neumann"`).
+    pub method: String,
     /// Relative residual `‖L0 + Kx − x‖₂/‖L0‖₂` at which the iteration stops.
     pub tolerance: f64,
     /// The iteration gives up (with an error) after this many kernel applications.
@@ -49,7 +51,7 @@ pub struct SolverSettings {
 
 impl Default for SolverSettings {
     fn default() -> Self {
-        SolverSettings { tolerance: 1e-8, max_iterations: 10_000 }
+        SolverSettings { method: "neumann".into(), tolerance: 1e-8, max_iterations: 10_000 }
     }
 }
 

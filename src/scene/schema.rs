@@ -51,6 +51,7 @@ pub enum RawDirections {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawSolver {
+    pub method: Option<String>,
     pub tolerance: Option<f64>,
     pub max_iterations: Option<i64>,
 }

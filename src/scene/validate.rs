@@ -12,6 +12,7 @@ use super::{
     Discretization, Emission, Material, MaterialModel, Probe, Scene, SceneError, Shape, SolverSettings, Surface,
 };
 use crate::directions::DirectionSet;
+use crate::solve::Method;
 use glam::DVec3;
 use std::path::Path;
 
@@ -148,7 +149,12 @@ fn solver(path: &Path, raw: Option<RawSolver>) -> Result<SolverSettings, SceneEr
             .filter(|&n| n >= 1)
             .ok_or_else(|| at.error("max_iterations", format!("must be at least 1, got {n}")))?,
     };
-    Ok(SolverSettings { tolerance, max_iterations })
+    let method = raw.method.unwrap_or(default.method);
+    if Method::parse(&method).is_none() {
+        let message = format!("unknown method \"{method}\"; known: {}", Method::NAMES);
+        return Err(at.error("method", message));
+    }
+    Ok(SolverSettings { method, tolerance, max_iterations })
 }
 
 /// Names must be non-empty and unique among the `[[kind]]` tables.
