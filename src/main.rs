@@ -103,6 +103,9 @@ enum Command {
         /// Occlusion rays per configuration.
         #[arg(long, default_value_t = 2_000_000)]
         rays: usize,
+        /// Also time dense LU (faer against nalgebra) at these sizes.
+        #[arg(long, value_delimiter = ',')]
+        lu: Vec<usize>,
     },
 }
 
@@ -146,7 +149,7 @@ fn main() -> ExitCode {
             })
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
-        Command::Bench { case, discretize, rays } => cli::bench::run(&case, &discretize, rays),
+        Command::Bench { case, discretize, rays, lu } => cli::bench::run(&case, &discretize, rays, &lu),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -17,7 +17,10 @@ use ugo::kernel::facing;
 use ugo::model::Model;
 use ugo::visibility::{BuildPreset, NO_FACE, Visibility, VisibilityOptions};
 
-pub fn run(case: &Path, d: &Discretize, rays: usize) -> Result<()> {
+pub fn run(case: &Path, d: &Discretize, rays: usize, lu: &[usize]) -> Result<()> {
+    for &n in lu {
+        dense_lu(n);
+    }
     let (scene, options) = load(case, d)?;
     let mesh = Model::mesh(&scene, &options);
     let segments = segments(&mesh, rays);
@@ -82,4 +85,34 @@ fn segments(mesh: &ugo::geometry::Mesh, count: usize) -> Vec<(DVec3, DVec3, [u32
         out.push((pa, pb, [a.face, b.face]));
     }
     out
+}
+
+/// Times the dense LU (factor and solve) of an `n × n` matrix like `I − K` in faer and in
+/// nalgebra, and checks both residuals.
+fn dense_lu(n: usize) {
+    let entry = |i: usize, j: usize| {
+        let h = ((i * 7919 + j * 104_729) % 1000) as f64 / 1000.0;
+        if i == j { 1.0 } else { -0.8 * h / n as f64 }
+    };
+    let b: Vec<f64> = (0..n).map(|i| 1.0 + (i % 3) as f64).collect();
+    let residual = |x: &[f64]| {
+        (0..n).map(|i| (0..n).map(|j| entry(i, j) * x[j]).sum::<f64>() - b[i]).map(f64::abs).fold(0.0, f64::max)
+    };
+    let t = Instant::now();
+    let a = faer::Mat::<f64>::from_fn(n, n, entry);
+    let x = faer::linalg::solvers::Solve::solve(&a.partial_piv_lu(), faer::Col::<f64>::from_fn(n, |i| b[i]));
+    let faer_seconds = t.elapsed().as_secs_f64();
+    let faer_x: Vec<f64> = (0..n).map(|i| x[i]).collect();
+    let t = Instant::now();
+    let a = nalgebra::DMatrix::<f64>::from_fn(n, n, entry);
+    let x = a.lu().solve(&nalgebra::DVector::from_column_slice(&b)).unwrap_or_else(|| nalgebra::DVector::zeros(n));
+    let nalgebra_seconds = t.elapsed().as_secs_f64();
+    let flops = 2.0 / 3.0 * (n as f64).powi(3);
+    println!(
+        "dense LU n = {n}: faer {faer_seconds:.3} s ({:.1} GFLOP/s, residual {:.1e}), nalgebra {nalgebra_seconds:.3} s ({:.1} GFLOP/s, residual {:.1e})",
+        flops / faer_seconds / 1e9,
+        residual(&faer_x),
+        flops / nalgebra_seconds / 1e9,
+        residual(x.as_slice())
+    );
 }

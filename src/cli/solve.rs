@@ -120,6 +120,9 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     };
     write_solution(&output, &solution).with_context(|| format!("writing {}", output.display()))?;
     summary(&solution, &output);
+    if let Some(orders) = &orders {
+        print_orders(orders, &x);
+    }
     if let Some(norms) = &norms {
         print_norms(norms, &params, &runs);
     }
@@ -199,6 +202,17 @@ fn print_norms(n: &Norms, params: &SolveParams, runs: &[Run]) {
         params.tolerance,
         n.predicted_iterations(params.tolerance)
     );
+}
+
+fn print_orders(orders: &OrderRecord, x: &[f64]) {
+    let l0 = orders.term_norms[0];
+    println!("  reflection orders  ‖KⁿL0‖/‖L0‖, and the partial sum's distance from the solution ‖x − Σ_(m≤n) KᵐL0‖/‖x‖");
+    let norm = |v: &mut dyn Iterator<Item = f64>| v.map(|e| e * e).sum::<f64>().sqrt();
+    let scale = norm(&mut x.iter().copied());
+    for (n, sum) in &orders.partial_sums {
+        let deficit = norm(&mut sum.iter().zip(x).map(|(s, x)| x - s)) / scale;
+        println!("    n = {n:<4} term {:>10.3e}   distance {:>10.3e}", orders.term_norms[*n] / l0, deficit);
+    }
 }
 
 fn converged(ok: bool) -> &'static str {
