@@ -1,3 +1,7 @@
 mod furnace;
+mod lambert_cells;
+mod material_furnaces;
+mod mirror;
+mod opal;
 mod plates;
 mod sphere;
