@@ -107,6 +107,17 @@ fn info_estimates_before_assembly() {
 }
 
 #[test]
+fn every_bundled_case_is_valid_and_estimated() {
+    let mut cases: Vec<PathBuf> = std::fs::read_dir("cases").unwrap().map(|e| e.unwrap().path()).collect();
+    cases.retain(|p| p.extension().is_some_and(|e| e == "toml"));
+    assert!(cases.len() >= 7, "{cases:?}");
+    for case in &cases {
+        let o = ugo(&["info", case.to_str().unwrap()]);
+        assert!(o.status.success(), "{}: {}", case.display(), stderr(&o));
+    }
+}
+
+#[test]
 fn direction_cells_reach_the_hdf5_file() {
     let out = scratch("cells").join("furnace16.h5");
     let o = ugo(&[

@@ -1,5 +1,6 @@
 //! Parallel plates: direct illuminance through the whole pipeline, mean and at a probe.
 
+use crate::support::corner_factor;
 use glam::DVec3;
 use std::f64::consts::PI;
 use std::path::Path;
@@ -9,13 +10,6 @@ use ugo::model::{Model, ModelOptions};
 use ugo::probe::read_probes;
 use ugo::scene::Scene;
 use ugo::solve::{SolveParams, successive_approximation};
-
-/// Differential element to a parallel rectangle with a corner over it (references.md item 1).
-fn corner_factor(a: f64, b: f64, c: f64) -> f64 {
-    let (x, y) = (a / c, b / c);
-    let (sx, sy) = ((1.0 + x * x).sqrt(), (1.0 + y * y).sqrt());
-    (x / sx * (y / sx).atan() + y / sy * (x / sy).atan()) / (2.0 * PI)
-}
 
 #[test]
 fn receiver_illuminance_is_pi_l_f() {

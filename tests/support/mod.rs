@@ -3,8 +3,10 @@
 use glam::DVec3;
 use std::path::PathBuf;
 use ugo::directions::DirectionSet;
+use ugo::kernel::Factored;
 use ugo::model::{Model, ModelOptions};
 use ugo::scene::{Discretization, Emission, Material, MaterialModel, Scene, Shape, SolverSettings, Surface};
+use ugo::solve::{SolveParams, successive_approximation};
 
 pub fn lambert(name: &str, reflectance: f64) -> Material {
     Material { name: name.into(), model: MaterialModel::Lambert { reflectance, transmittance: 0.0 } }
@@ -53,4 +55,60 @@ pub fn furnace_of(material: MaterialModel, luminance: f64, patch_size: f64) -> S
     let mut s = furnace(1.0, 0.5, luminance, patch_size);
     s.materials[0].model = material;
     s
+}
+
+pub fn material(name: &str, model: MaterialModel) -> Material {
+    Material { name: name.into(), model }
+}
+
+/// The parallelogram `origin + s·u + t·v`, facing `u × v`.
+pub fn rectangle(origin: [f64; 3], u: [f64; 3], v: [f64; 3]) -> Shape {
+    Shape::Rectangle { origin: DVec3::from(origin), edge_u: DVec3::from(u), edge_v: DVec3::from(v) }
+}
+
+/// `x = L0 + K x` by successive approximation to a relative residual of 1e-10.
+pub fn solve(model: &Model) -> Vec<f64> {
+    let params = SolveParams { tolerance: 1e-10, max_iterations: 10_000 };
+    successive_approximation(&Factored::new(&model.kernel), &model.l0, &params, &mut |_, _| {}).expect("converges").0
+}
+
+/// `G x`: the light arriving at every (patch, cell); `E_i = π Σ_d (G x)_{i,d}`.
+pub fn arriving(model: &Model, x: &[f64]) -> Vec<f64> {
+    let mut gx = vec![0.0; x.len()];
+    model.kernel.apply_transport(x, &mut gx);
+    gx
+}
+
+/// Differential element to a parallel rectangle `a × b` at distance `c` with a corner
+/// over the element (references.md, configuration factors item 1).
+pub fn corner_factor(a: f64, b: f64, c: f64) -> f64 {
+    let (x, y) = (a / c, b / c);
+    let (sx, sy) = ((1.0 + x * x).sqrt(), (1.0 + y * y).sqrt());
+    (x / sx * (y / sx).atan() + y / sy * (x / sy).atan()) / (2.0 * std::f64::consts::PI)
+}
+
+/// Nodes and weights of the 4-point Gauss–Legendre rule on [−1, 1].
+const GAUSS_4: [(f64, f64); 4] = [
+    (-0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+    (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+    (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+    (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+];
+
+/// Mean of `f(s, t)` over `[s0, s1] × [t0, t1]`: 4-point Gauss–Legendre on an `n × n` grid.
+pub fn mean_over(s: (f64, f64), t: (f64, f64), n: usize, f: impl Fn(f64, f64) -> f64) -> f64 {
+    let (hs, ht) = ((s.1 - s.0) / n as f64, (t.1 - t.0) / n as f64);
+    let mut sum = 0.0;
+    for a in 0..n {
+        for b in 0..n {
+            for (u, wu) in GAUSS_4 {
+                for (v, wv) in GAUSS_4 {
+                    let x = s.0 + hs * (a as f64 + 0.5 + 0.5 * u);
+                    let y = t.0 + ht * (b as f64 + 0.5 + 0.5 * v);
+                    sum += 0.25 * wu * wv * f(x, y);
+                }
+            }
+        }
+    }
+    sum / (n * n) as f64
 }
