@@ -157,8 +157,8 @@ fn summary(s: &Solution, output: &Path) {
     println!("  non-zeros of G     {:>12}   ({})", g.nnz(), bytes(g.nnz() as f64 * 16.0));
     let assembly = st.mesh_seconds + st.bvh_seconds + st.kernel_seconds;
     println!(
-        "  assembly           {assembly:>12.3} s   ({} pairs, {} occlusion rays, balance correction {:.1e})",
-        st.pairs, st.rays, st.balance.max_correction
+        "  assembly           {assembly:>12.3} s   ({} pairs, {} occlusion rays, balance correction {:.1e} in {} sweeps)",
+        st.pairs, st.rays, st.balance.max_correction, st.balance.iterations
     );
     let i = s.info;
     println!(
@@ -206,7 +206,9 @@ fn print_norms(n: &Norms, params: &SolveParams, runs: &[Run]) {
 
 fn print_orders(orders: &OrderRecord, x: &[f64]) {
     let l0 = orders.term_norms[0];
-    println!("  reflection orders  ‖KⁿL0‖/‖L0‖, and the partial sum's distance from the solution ‖x − Σ_(m≤n) KᵐL0‖/‖x‖");
+    println!(
+        "  reflection orders  ‖KⁿL0‖/‖L0‖, and the partial sum's distance from the solution ‖x − Σ_(m≤n) KᵐL0‖/‖x‖"
+    );
     let norm = |v: &mut dyn Iterator<Item = f64>| v.map(|e| e * e).sum::<f64>().sqrt();
     let scale = norm(&mut x.iter().copied());
     for (n, sum) in &orders.partial_sums {

@@ -5,11 +5,9 @@
 //! rows: both exchange-area estimates (integrated over `i` and over `j`, split by cells
 //! when `K > 1`), their mean (so `A_i F_ij^{d,m} = A_j F_ji^{m,d}` holds exactly), the
 //! shared visibility fraction, and both patches' base-rule closure contributions. The
-//! exchange areas are then balanced at the patch level and become
-//! `G[(i,d),(j,m)] = D_i D_j T_ij^{d,m} / A_i`. A row's closure target is its base-rule
-//! closure where that agrees with the adaptive row sum to `1e-3` (so closed convex rooms
-//! close to round-off), else the adaptive row sum (patches crossed by a contact line, such
-//! as a floor patch partly under a block).
+//! exchange areas are then balanced row by row, `(patch, cell)`, and become
+//! `G[(i,d),(j,m)] = D_(i,d) D_(j,m) T_ij^{d,m} / A_i` (see [`cell_targets`] for what each
+//! row must carry).
 
 use super::balance::{BalanceReport, balance};
 use super::form_factor::{Binning, PairIntegral, Quadrature, binned_pair_integral, pair_integral};
@@ -40,7 +38,6 @@ struct Pair {
     j: u32,
     first: u32,
     count: u32,
-    total: f64,
     base_j: f64,
 }
 
@@ -75,34 +72,60 @@ pub fn assemble(
         })
         .collect();
 
-    let d = balanced_scaling(mesh, &work);
-    let g = sparse_rows(mesh, k, &work, &d.0);
-    Transport { g, balance: d.1, pairs: work.iter().map(|w| w.visited).sum(), rays: work.iter().map(|w| w.rays).sum() }
+    let exchange = sparse_rows(mesh, k, &work);
+    let targets = cell_targets(mesh, directions, &work, &exchange);
+    let (d, report) = balance(&exchange, &targets);
+    let mut g = exchange;
+    let areas: Vec<f64> = mesh.patches.iter().map(|p| p.area).collect();
+    for (r, mut row) in g.outer_iterator_mut().enumerate() {
+        for (c, v) in row.iter_mut() {
+            *v *= d[r] * d[c] / areas[r / k];
+        }
+    }
+    Transport {
+        g,
+        balance: report,
+        pairs: work.iter().map(|w| w.visited).sum(),
+        rays: work.iter().map(|w| w.rays).sum(),
+    }
 }
 
-/// Patch-level scaling `D` that makes the exchange areas closed (see the module doc).
-fn balanced_scaling(mesh: &Mesh, work: &[RowWork]) -> (Vec<f64>, BalanceReport) {
-    let n = mesh.len();
-    let mut targets: Vec<f64> = work.iter().map(|w| w.closure).collect();
-    let mut rows: Vec<Vec<(u32, f64)>> = vec![Vec::new(); n];
-    for (i, w) in work.iter().enumerate() {
+/// The closure each row `(i,d)` must carry. A patch's closure is its base-rule closure
+/// where that agrees with its adaptive row sum to `1e-3`, else the adaptive sum. A patch
+/// that closes completely (to `1e-9`: nothing escapes from it) sees the whole hemisphere
+/// covered, so each of its cells carries exactly `A_i μ_d/π`; elsewhere the patch's
+/// closure is shared among its cells as the binning distributed it.
+fn cell_targets(mesh: &Mesh, directions: &DirectionSet, work: &[RowWork], exchange: &CsMat<f64>) -> Vec<f64> {
+    let k = directions.len();
+    let mut closure: Vec<f64> = work.iter().map(|w| w.closure).collect();
+    for w in work {
         for p in &w.pairs {
-            rows[i].push((p.j, p.total));
-            rows[p.j as usize].push((i as u32, p.total));
-            targets[p.j as usize] += p.base_j;
+            closure[p.j as usize] += p.base_j;
         }
     }
-    for (i, row) in rows.iter().enumerate() {
-        let adaptive: f64 = row.iter().map(|&(_, t)| t).sum();
-        if (targets[i] - adaptive).abs() > TRUSTED_CLOSURE * adaptive {
-            targets[i] = adaptive;
+    let row_sums: Vec<f64> = exchange.outer_iterator().map(|r| r.data().iter().sum()).collect();
+    let mut targets = vec![0.0; row_sums.len()];
+    for (i, patch) in mesh.patches.iter().enumerate() {
+        let cells = &row_sums[i * k..(i + 1) * k];
+        let adaptive: f64 = cells.iter().sum();
+        let trusted = (closure[i] - adaptive).abs() <= TRUSTED_CLOSURE * adaptive;
+        let total = if trusted { closure[i] } else { adaptive };
+        let closed = trusted && (closure[i] - patch.area).abs() <= 1e-9 * patch.area;
+        for (c, target) in targets[i * k..(i + 1) * k].iter_mut().enumerate() {
+            *target = if closed {
+                patch.area * directions.cells()[c].projected / std::f64::consts::PI
+            } else if adaptive > 0.0 {
+                total * cells[c] / adaptive
+            } else {
+                0.0
+            };
         }
     }
-    balance(&rows, &targets)
+    targets
 }
 
-/// CSR rows `(i,d)` of `G` from the pair pieces, scaled by `D`.
-fn sparse_rows(mesh: &Mesh, k: usize, work: &[RowWork], d: &[f64]) -> CsMat<f64> {
+/// The symmetric exchange areas `T[(i,d),(j,m)]` as CSR rows over `(patch, cell)`.
+fn sparse_rows(mesh: &Mesh, k: usize, work: &[RowWork]) -> CsMat<f64> {
     let rows = mesh.len() * k;
     let mut counts = vec![0usize; rows + 1];
     for (i, w) in work.iter().enumerate() {
@@ -122,12 +145,11 @@ fn sparse_rows(mesh: &Mesh, k: usize, work: &[RowWork], d: &[f64]) -> CsMat<f64>
     for (i, w) in work.iter().enumerate() {
         for p in &w.pairs {
             let j = p.j as usize;
-            let scale = d[i] * d[j];
             for &(cd, cm, t) in &w.cells[p.first as usize..(p.first + p.count) as usize] {
                 let (ri, rj) = (i * k + cd as usize, j * k + cm as usize);
-                entries[fill[ri]] = (rj, scale * t / mesh.patches[i].area);
+                entries[fill[ri]] = (rj, t);
                 fill[ri] += 1;
-                entries[fill[rj]] = (ri, scale * t / mesh.patches[j].area);
+                entries[fill[rj]] = (ri, t);
                 fill[rj] += 1;
             }
         }
@@ -173,16 +195,12 @@ fn row_work(
             continue;
         }
         let first = row.cells.len() as u32;
-        let total = match binning {
-            None => {
-                let t = 0.5 * (ab.adaptive + ba.adaptive) * v;
-                row.cells.push((0, 0, t));
-                t
-            }
+        match binning {
+            None => row.cells.push((0, 0, 0.5 * (ab.adaptive + ba.adaptive) * v)),
             Some(_) => merge_pieces(&from_a, &from_b, v, &mut row.cells),
-        };
+        }
         let count = row.cells.len() as u32 - first;
-        row.pairs.push(Pair { j: j as u32, first, count, total, base_j: ba.base * v });
+        row.pairs.push(Pair { j: j as u32, first, count, base_j: ba.base * v });
         row.closure += ab.base * v;
     }
     row
@@ -209,13 +227,8 @@ fn exchange(
 }
 
 /// Symmetric cell pieces `T^{d,m} = v (S_ab^{d,m} + S_ba^{m,d}) / 2`, merged by cell pair
-/// and appended to `cells`; returns their sum.
-fn merge_pieces(
-    from_a: &[(u16, u16, f64)],
-    from_b: &[(u16, u16, f64)],
-    v: f64,
-    cells: &mut Vec<(u16, u16, f64)>,
-) -> f64 {
+/// and appended to `cells`.
+fn merge_pieces(from_a: &[(u16, u16, f64)], from_b: &[(u16, u16, f64)], v: f64, cells: &mut Vec<(u16, u16, f64)>) {
     let start = cells.len();
     cells.extend(from_a.iter().map(|&(d, m, t)| (d, m, 0.5 * v * t)));
     cells.extend(from_b.iter().map(|&(d, m, t)| (m, d, 0.5 * v * t)));
@@ -230,7 +243,6 @@ fn merge_pieces(
         }
     }
     cells.truncate(write);
-    cells[start..].iter().map(|c| c.2).sum()
 }
 
 /// True when some part of each patch lies strictly in front of the other.

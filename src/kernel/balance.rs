@@ -1,37 +1,41 @@
-//! Reciprocity-and-closure balancing of the exchange areas `T_ij = A_i F_ij`.
+//! Reciprocity-and-closure balancing of the exchange areas `T[(i,d),(j,m)] = A_i F_ij^{d,m}`.
 //!
-//! The quadrature gives two estimates of one exchange area, `A_i F_ij` (integrated over
-//! `i`) and `A_j F_ji` (over `j`); their mean `T` is symmetric. Each patch also knows its
-//! closure `c_i = A_i Σ_j F_ij` from a target-independent rule, which is exact (to round-off)
-//! in a closed convex enclosure. A symmetric diagonal scaling `D T D` with row sums `c`
-//! (symmetric Sinkhorn–Knopp; Knight, SIAM J. Matrix Anal. Appl. 29 (2008)) makes the
-//! kernel exactly reciprocal and closed, hence exactly energy conserving, while moving
-//! each entry by no more than the quadrature's own error (reported as `max_correction`).
+//! The quadrature gives two estimates of one exchange area (integrated over `i` and over
+//! `j`); their mean `T` is symmetric. Each row also has a target: the closure it must
+//! carry. A symmetric diagonal scaling `D T D` with those row sums (symmetric
+//! Sinkhorn–Knopp in Gauss–Seidel sweeps, `D_r ← target_r / Σ_c T_rc D_c`, rows of `T`
+//! having no diagonal; Knight, SIAM J. Matrix Anal. Appl. 29 (2008)) makes the kernel exactly reciprocal and closed, hence exactly energy
+//! conserving, while moving each entry only as far as the targets demand (reported as
+//! `max_correction`).
+
+use sprs::CsMat;
 
 /// How far balancing moved the exchange areas.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BalanceReport {
-    /// `max_i |D_i² − 1|`: the largest relative change of a patch's row.
+    /// `max |D_r² − 1|`: the largest relative change of a row.
     pub max_correction: f64,
-    /// Largest relative row-sum mismatch left, `max_i |(D T D 1)_i / c_i − 1|`.
+    /// Largest relative row-sum mismatch left, `max |(D T D 1)_r / target_r − 1|`.
     pub residual: f64,
     pub iterations: usize,
 }
 
-/// Finds `D` with `D_i Σ_j T_ij D_j = c_i`. `rows[i]` lists `(j, T_ij)` for every
-/// `j ≠ i` (both triangles of the symmetric matrix).
-pub fn balance(rows: &[Vec<(u32, f64)>], targets: &[f64]) -> (Vec<f64>, BalanceReport) {
-    let n = rows.len();
+/// Finds `D` with `D_r Σ_c T_rc D_c = target_r` for the symmetric matrix `t`; rows with a
+/// zero sum or target keep `D_r = 1`.
+pub fn balance(t: &CsMat<f64>, targets: &[f64]) -> (Vec<f64>, BalanceReport) {
+    let n = t.rows();
     let mut d = vec![1.0; n];
     let mut report = BalanceReport::default();
-    let row_sum = |d: &[f64], i: usize| rows[i].iter().map(|&(j, t)| t * d[j as usize]).sum::<f64>();
-    for iteration in 1..=200 {
+    let (indptr, indices, data) = (t.indptr(), t.indices(), t.data());
+    let indptr = indptr.raw_storage();
+    for iteration in 1..=MAX_SWEEPS {
         let mut worst: f64 = 0.0;
-        for i in 0..n {
-            let s = row_sum(&d, i);
-            if s > 0.0 && targets[i] > 0.0 {
-                worst = worst.max((d[i] * s / targets[i] - 1.0).abs());
-                d[i] = (d[i] * targets[i] / s).sqrt();
+        for r in 0..n {
+            let (lo, hi) = (indptr[r], indptr[r + 1]);
+            let s: f64 = indices[lo..hi].iter().zip(&data[lo..hi]).map(|(&c, &v)| v * d[c]).sum();
+            if s > 0.0 && targets[r] > 0.0 {
+                worst = worst.max((d[r] * s / targets[r] - 1.0).abs());
+                d[r] = targets[r] / s;
             }
         }
         report.iterations = iteration;
@@ -43,3 +47,6 @@ pub fn balance(rows: &[Vec<(u32, f64)>], targets: &[f64]) -> (Vec<f64>, BalanceR
     report.max_correction = d.iter().map(|x| (x * x - 1.0).abs()).fold(0.0, f64::max);
     (d, report)
 }
+
+/// Sweeps before balancing gives up (it reports the residual it reached).
+const MAX_SWEEPS: usize = 1000;

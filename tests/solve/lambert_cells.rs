@@ -2,9 +2,11 @@
 //! `cases/cornell-box.toml` (0.08 m patches, 519 patches) solved with `K = 1` and with
 //! `K = 128` cells gives the same luminance for every patch in every cell.
 //!
-//! The blocks are constant in the cells (`ρ̄ ≡ r`) and the cells of each pair of patches
-//! sum to its one-cell form factor to round-off, so only summation order differs.
-//! Measured: max relative difference 2.7e-15, rms 3.3e-16, over every (patch, cell).
+//! The blocks are constant in the cells (`ρ̄ ≡ r`) and, before balancing, the cells of
+//! each pair of patches sum to its one-cell form factor to round-off. Balancing row by
+//! `(patch, cell)` then moves exchange between pairs by up to the binning's error where a
+//! patch is fully enclosed, so the two differ at the level of that discretization error.
+//! Measured: max relative difference 4.5e-4, over every (patch, cell).
 
 use crate::support::{build_with, solve};
 use std::path::Path;
@@ -31,5 +33,5 @@ fn lambertian_cornell_box_is_the_same_with_one_and_with_128_cells() {
     let rms = (squares / count as f64).sqrt();
     eprintln!("cornell, K = 1 against K = {CELLS}: {} patches lit, max {worst:.1e}, rms {rms:.1e}", count / CELLS);
     assert!(one.len() > 500 && count > 500 * CELLS);
-    assert!(worst < 1e-12, "max relative difference {worst}");
+    assert!(worst < 1e-3, "max relative difference {worst}");
 }

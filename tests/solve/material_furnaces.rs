@@ -39,19 +39,6 @@ fn range(x: &[f64]) -> (f64, f64) {
     x.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &l| (lo.min(l), hi.max(l)))
 }
 
-/// Rescales every cell row `(i,d)` of `G` to carry exactly `μ_d/π` (a closed room).
-fn close_cell_rows(model: &mut Model) {
-    let k = model.kernel.cells();
-    let mu: Vec<f64> = model.kernel.directions.cells().iter().map(|c| c.projected / PI).collect();
-    let indptr = model.kernel.g.indptr().raw_storage().to_vec();
-    let data = model.kernel.g.data_mut();
-    for (row, span) in indptr.windows(2).enumerate() {
-        let values = &mut data[span[0]..span[1]];
-        let sum: f64 = values.iter().sum();
-        values.iter_mut().for_each(|v| *v *= mu[row % k] / sum);
-    }
-}
-
 #[test]
 fn lambert_furnace_is_five_in_every_cell() {
     for k in [1, 16] {
@@ -63,18 +50,16 @@ fn lambert_furnace_is_five_in_every_cell() {
 }
 
 #[test]
-fn mirror_furnace_is_exact_up_to_the_cell_split_of_g() {
+fn mirror_furnace_is_exact_in_every_cell() {
+    // Exact because the balanced kernel gives every cell of a closed room exactly its
+    // projected solid angle (before cell balancing, the binning's split left the values
+    // between 4.22 and 6.16 at K = 64).
     let mirror = MaterialModel::Mirror { reflectance: 0.8 };
-    let (_, x) = furnace(mirror.clone(), 1);
-    assert!(worst(&x, 5.0) < 1e-9, "K = 1: {}", worst(&x, 5.0));
-    for (k, bound) in [(16, 0.10), (64, 0.25)] {
-        let (mut model, x) = furnace(mirror.clone(), k);
-        let ((lo, hi), raw) = (range(&x), worst(&x, 5.0));
-        close_cell_rows(&mut model);
-        let closed = worst(&solve(&model), 5.0);
-        eprintln!("mirror furnace, K = {k}: L in [{lo:.6}, {hi:.6}], worst {raw:.3}; cell rows closed: {closed:.2e}");
-        assert!(raw < bound, "K = {k}: {raw}");
-        assert!(closed < 1e-9, "K = {k}, closed cell rows: {closed}");
+    for k in [1, 16, 64] {
+        let (_, x) = furnace(mirror.clone(), k);
+        let w = worst(&x, 5.0);
+        eprintln!("mirror furnace, K = {k}: worst relative error {w:.2e}");
+        assert!(w < 1e-9, "K = {k}: {w}");
     }
 }
 
