@@ -157,8 +157,13 @@ fn summary(s: &Solution, output: &Path) {
     println!("  non-zeros of G     {:>12}   ({})", g.nnz(), bytes(g.nnz() as f64 * 16.0));
     let assembly = st.mesh_seconds + st.bvh_seconds + st.kernel_seconds;
     println!(
-        "  assembly           {assembly:>12.3} s   ({} pairs, {} occlusion rays, balance correction {:.1e} in {} sweeps)",
-        st.pairs, st.rays, st.balance.max_correction, st.balance.iterations
+        "  assembly           {assembly:>12.3} s   ({} pairs, {} occlusion rays, balanced by {}: correction {:.1e}, {} sweeps, row error {:.0e})",
+        st.pairs,
+        st.rays,
+        if st.balance.by_cell { "cell" } else { "patch" },
+        st.balance.max_correction,
+        st.balance.iterations,
+        st.balance.residual
     );
     let i = s.info;
     println!(

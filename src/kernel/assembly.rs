@@ -73,8 +73,11 @@ pub fn assemble(
         .collect();
 
     let exchange = sparse_rows(mesh, k, &work);
-    let targets = cell_targets(mesh, directions, &work, &exchange);
-    let (d, report) = balance(&exchange, &targets);
+    let (mut d, mut report) = balance(&exchange, &cell_targets(mesh, directions, &work, &exchange, true));
+    report.by_cell = true;
+    if report.residual > BALANCED || report.max_correction > MOST_CORRECTION {
+        (d, report) = balance(&exchange, &cell_targets(mesh, directions, &work, &exchange, false));
+    }
     let mut g = exchange;
     let areas: Vec<f64> = mesh.patches.iter().map(|p| p.area).collect();
     for (r, mut row) in g.outer_iterator_mut().enumerate() {
@@ -90,12 +93,26 @@ pub fn assemble(
     }
 }
 
+/// Row-sum mismatch up to which balancing counts as converged.
+const BALANCED: f64 = 1e-9;
+/// Largest row correction (`|D² − 1|`) accepted from balancing by cell.
+const MOST_CORRECTION: f64 = 3.0;
+
 /// The closure each row `(i,d)` must carry. A patch's closure is its base-rule closure
-/// where that agrees with its adaptive row sum to `1e-3`, else the adaptive sum. A patch
-/// that closes completely (to `1e-9`: nothing escapes from it) sees the whole hemisphere
-/// covered, so each of its cells carries exactly `A_i μ_d/π`; elsewhere the patch's
-/// closure is shared among its cells as the binning distributed it.
-fn cell_targets(mesh: &Mesh, directions: &DirectionSet, work: &[RowWork], exchange: &CsMat<f64>) -> Vec<f64> {
+/// where that agrees with its adaptive row sum to `1e-3`, else the adaptive sum. With
+/// `by_cell`, a patch that closes completely (to `1e-9`: nothing escapes from it) sees
+/// the whole hemisphere covered, so each of its cells carries exactly `A_i μ_d/π`;
+/// elsewhere (and always without `by_cell`) the patch's closure is shared among its cells
+/// as the binning distributed it. Balancing by cell is tried first; where its targets
+/// contradict each other (an enclosed patch that exchanges only with open ones, say) it
+/// does not converge, and the kernel is balanced by patch instead (reported).
+fn cell_targets(
+    mesh: &Mesh,
+    directions: &DirectionSet,
+    work: &[RowWork],
+    exchange: &CsMat<f64>,
+    by_cell: bool,
+) -> Vec<f64> {
     let k = directions.len();
     let mut closure: Vec<f64> = work.iter().map(|w| w.closure).collect();
     for w in work {
@@ -110,7 +127,7 @@ fn cell_targets(mesh: &Mesh, directions: &DirectionSet, work: &[RowWork], exchan
         let adaptive: f64 = cells.iter().sum();
         let trusted = (closure[i] - adaptive).abs() <= TRUSTED_CLOSURE * adaptive;
         let total = if trusted { closure[i] } else { adaptive };
-        let closed = trusted && (closure[i] - patch.area).abs() <= 1e-9 * patch.area;
+        let closed = by_cell && trusted && (closure[i] - patch.area).abs() <= 1e-9 * patch.area;
         for (c, target) in targets[i * k..(i + 1) * k].iter_mut().enumerate() {
             *target = if closed {
                 patch.area * directions.cells()[c].projected / std::f64::consts::PI

@@ -18,6 +18,9 @@ pub struct BalanceReport {
     /// Largest relative row-sum mismatch left, `max |(D T D 1)_r / target_r − 1|`.
     pub residual: f64,
     pub iterations: usize,
+    /// True when every enclosed patch's cells carry exactly their projected solid angle
+    /// (balanced by `(patch, cell)`); false when balanced by patch only.
+    pub by_cell: bool,
 }
 
 /// Finds `D` with `D_r Σ_c T_rc D_c = target_r` for the symmetric matrix `t`; rows with a

@@ -2,9 +2,9 @@
 //!
 //! The number of non-zeros of `G` is twice the number of unordered pairs of patches that
 //! face each other (counted exactly up to 4,000 patches, else from a fixed sample of
-//! pairs) times the cell pairs `(d, m)` one pair of patches spreads over: about
-//! `(1 + Ω_j/ω)(1 + Ω_i/ω)`, with `Ω` the solid angle one patch subtends at the other and
-//! `ω = 2π/K` a cell's, at most `K²`. Occlusion can only lower it.
+//! pairs) times the cell pairs `(d, m)` one pair of patches spreads over: a patch seen
+//! under solid angle `Ω` overlaps about `(1 + √(Ω/ω))²` cells of solid angle `ω = 2π/K` on
+//! each side, at most `K²` pairs in all. Occlusion can only lower it.
 
 use super::assembly::facing;
 use crate::directions::DirectionSet;
@@ -101,7 +101,8 @@ fn pieces(a: &Patch, b: &Patch, cells: usize) -> f64 {
     let r2 = r.length_squared();
     let seen = |p: &Patch, dir: glam::DVec3| (p.area * p.normal.dot(dir).abs() / r2).min(std::f64::consts::TAU);
     let dir = r / r2.sqrt();
-    ((1.0 + seen(b, dir) / cell) * (1.0 + seen(a, dir) / cell)).min((cells * cells) as f64)
+    let spread = |omega: f64| (1.0 + (omega / cell).sqrt()).powi(2);
+    (spread(seen(b, dir)) * spread(seen(a, dir))).min((cells * cells) as f64)
 }
 
 fn splitmix(mut z: u64) -> u64 {

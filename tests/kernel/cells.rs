@@ -84,3 +84,16 @@ fn an_explicit_product_over_the_limit_is_refused_with_the_estimate() {
     let err = model.kernel.explicit(1 << 10).unwrap_err().to_string();
     assert!(err.contains("explicit product") && err.contains("factored operator") && err.contains("GiB"), "{err}");
 }
+
+#[test]
+fn the_memory_estimate_bounds_the_assembled_kernel() {
+    let mut scene = ugo::scene::Scene::load(std::path::Path::new("cases/glossy-cornell.toml")).unwrap();
+    scene.discretization.patch_size = 0.1;
+    for set in [DirectionSet::single(), DirectionSet::hemisphere(64)] {
+        let model = build_with(&scene, set.clone());
+        let estimate = ugo::kernel::Estimate::of(&model.mesh, &set);
+        let actual = model.kernel.g.nnz() as f64;
+        eprintln!("K = {}: estimated {:.0} non-zeros, assembled {actual}", set.len(), estimate.nonzeros);
+        assert!(estimate.nonzeros >= actual && estimate.nonzeros < 3.0 * actual, "{} vs {actual}", estimate.nonzeros);
+    }
+}

@@ -16,7 +16,6 @@
 //!   3.539…3.685, 3.548…3.678.
 
 use crate::support::{build_with, furnace_of, solve};
-use std::f64::consts::PI;
 use ugo::directions::DirectionSet;
 use ugo::model::Model;
 use ugo::scene::MaterialModel;
