@@ -63,7 +63,7 @@ impl DirectionSet {
 
     /// `K` cells (even) of equal solid angle `4π/K` over the whole sphere.
     pub fn sphere(k: usize) -> DirectionSet {
-        assert!(k >= 2 && k % 2 == 0, "a sphere set has an even number of cells");
+        assert!(k >= 2 && k.is_multiple_of(2), "a sphere set has an even number of cells");
         DirectionSet::from_rings(format!("sphere {k}"), &equal_area_rings(k / 2), true)
     }
 

@@ -16,7 +16,7 @@ use ugo::model::Model;
 use ugo::probe::read_probes;
 use ugo::solve::norms::Norms;
 use ugo::solve::orders::{OrderRecord, reflection_orders};
-use ugo::solve::{Method, SolveParams, solve};
+use ugo::solve::{Method, SolveParams, System, solve};
 
 /// What one command asks of the pipeline.
 pub struct Job {
@@ -63,19 +63,11 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let mut runs: Vec<(Run, Vec<f64>)> = Vec::new();
     for method in &methods {
         let solving = bar(params.max_iterations as u64, &method.name());
-        let result = solve(
-            *method,
-            &model.kernel,
-            explicit.as_ref(),
-            &areas,
-            &model.l0,
-            &params,
-            options.memory_limit,
-            &mut |n, r| {
-                solving.set_position(n as u64);
-                solving.set_message(format!("{} {r:.1e}", method.name()));
-            },
-        );
+        let system = System { kernel: &model.kernel, explicit: explicit.as_ref(), areas: &areas, l0: &model.l0 };
+        let result = solve(*method, &system, &params, options.memory_limit, &mut |n, r| {
+            solving.set_position(n as u64);
+            solving.set_message(format!("{} {r:.1e}", method.name()));
+        });
         solving.finish_and_clear();
         match result {
             Ok((x, info)) => runs.push((Run { name: method.name(), info, difference: 0.0 }, x)),

@@ -6,6 +6,9 @@ use crate::io::Run;
 use plotters::prelude::*;
 use std::path::Path;
 
+/// The horizontal coordinate of a run's `i`-th record.
+type Abscissa = dyn Fn(&Run, usize) -> f64;
+
 const FONT: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
 
 /// Writes the three-panel convergence plot of `runs` to `path` (PNG).
@@ -16,7 +19,7 @@ pub fn convergence_plot(path: &Path, title: &str, runs: &[Run]) -> Result<(), St
     let (top, body) = root.split_vertically(50);
     top.titled(title, ("sans-serif", 26)).map_err(|e| e.to_string())?;
     let panels = body.split_evenly((1, 3));
-    let axes: [(&str, &dyn Fn(&Run, usize) -> f64); 3] = [
+    let axes: [(&str, &Abscissa); 3] = [
         ("iterations", &|_, i| i as f64),
         ("kernel applications", &|r, i| r.info.application_history[i] as f64),
         ("wall time, s", &|r, i| r.info.time_history[i]),

@@ -2,7 +2,7 @@
 //! applications per iteration. Breakdown (`ρ = 0` or `ω = 0`) is reported, not hidden.
 
 use super::history::residual_norm;
-use super::{History, SolveError, SolveInfo, SolveParams};
+use super::{History, SolveError, SolveInfo, SolveParams, dot};
 use crate::kernel::LinOp;
 
 /// Solves `x = L0 + K x` by BiCGSTAB.
@@ -69,8 +69,4 @@ pub fn bicgstab(
         ratio: f64::NAN,
         needed: f64::NAN,
     })
-}
-
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }

@@ -4,7 +4,7 @@
 //! 0.1 % is reported as stagnation.
 
 use super::history::residual_norm;
-use super::{History, SolveError, SolveInfo, SolveParams};
+use super::{History, SolveError, SolveInfo, SolveParams, dot};
 use crate::kernel::LinOp;
 
 /// Solves `x = L0 + K x` by GMRES with restart length `restart`.
@@ -107,8 +107,4 @@ pub fn gmres(
             return Err(SolveError::Stagnation { method: "GMRES", iterations, residual: reached });
         }
     }
-}
-
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }

@@ -61,19 +61,25 @@ impl Method {
     }
 }
 
-/// Solves `x = L0 + K x` with `method`. `explicit` must be given when
-/// [`Method::needs_explicit`]; `areas` are the patch areas (Southwell); `limit` bounds the
-/// direct solver's memory, bytes.
+/// The system `x = L0 + K x` as the methods need it.
+pub struct System<'a> {
+    pub kernel: &'a Kernel,
+    /// The explicit product, required when [`Method::needs_explicit`].
+    pub explicit: Option<&'a Explicit>,
+    /// Patch areas (Southwell's choice of shooter).
+    pub areas: &'a [f64],
+    pub l0: &'a [f64],
+}
+
+/// Solves `system` with `method`; `limit` bounds the direct solver's memory, bytes.
 pub fn solve(
     method: Method,
-    kernel: &Kernel,
-    explicit: Option<&Explicit>,
-    areas: &[f64],
-    l0: &[f64],
+    system: &System,
     params: &SolveParams,
     limit: u64,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
+    let System { kernel, explicit, areas, l0 } = *system;
     let factored = Factored::new(kernel);
     let explicit = || explicit.ok_or(SolveError::Unsupported { method: "this method", needs: "the explicit kernel" });
     let (x, info) = match method {
@@ -88,7 +94,7 @@ pub fn solve(
         Method::Direct => direct(explicit()?, l0, limit)?,
     };
     let growth = norm(&x) / norm(l0);
-    if !(growth <= MAX_GROWTH) {
+    if growth.is_nan() || growth > MAX_GROWTH {
         return Err(SolveError::Singular { method: info.method, growth });
     }
     Ok((x, info))

@@ -18,7 +18,7 @@ pub use bicgstab::bicgstab;
 pub use direct::direct;
 pub use gauss_seidel::gauss_seidel;
 pub use gmres::gmres;
-pub use method::{Method, solve};
+pub use method::{Method, System, solve};
 pub use neumann::successive_approximation;
 pub use southwell::southwell;
 
@@ -92,5 +92,9 @@ pub enum SolveError {
 }
 
 pub(crate) fn norm(x: &[f64]) -> f64 {
-    x.iter().map(|v| v * v).sum::<f64>().sqrt()
+    dot(x, x).sqrt()
+}
+
+pub(crate) fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
