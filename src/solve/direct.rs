@@ -17,6 +17,15 @@ pub const DENSE_MAX: usize = 8000;
 /// Solves `x = L0 + K x` by LU of `I − K`; refuses (with the estimate) when the factors
 /// could exceed `limit` bytes.
 pub fn direct(k: &Explicit, l0: &[f64], limit: u64) -> Result<(Vec<f64>, SolveInfo), SolveError> {
+    lu(k, l0, limit, k.dim() > DENSE_MAX)
+}
+
+/// [`direct`] with the sparse LU whatever the size (to compare the two paths).
+pub fn direct_sparse(k: &Explicit, l0: &[f64], limit: u64) -> Result<(Vec<f64>, SolveInfo), SolveError> {
+    lu(k, l0, limit, true)
+}
+
+fn lu(k: &Explicit, l0: &[f64], limit: u64, sparse: bool) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = k.dim();
     let mut history = History::new(l0);
     if history.scale == 0.0 {
@@ -33,7 +42,7 @@ pub fn direct(k: &Explicit, l0: &[f64], limit: u64) -> Result<(Vec<f64>, SolveIn
         )));
     }
     let rhs = Col::<f64>::from_fn(n, |i| l0[i]);
-    let (x, method): (Col<f64>, &'static str) = if n <= DENSE_MAX {
+    let (x, method): (Col<f64>, &'static str) = if !sparse {
         let mut a = Mat::<f64>::identity(n, n);
         for (i, row) in k.0.outer_iterator().enumerate() {
             for (j, &v) in row.iter() {

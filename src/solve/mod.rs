@@ -15,7 +15,7 @@ pub mod orders;
 mod southwell;
 
 pub use bicgstab::bicgstab;
-pub use direct::direct;
+pub use direct::{direct, direct_sparse};
 pub use gauss_seidel::gauss_seidel;
 pub use gmres::gmres;
 pub use method::{Method, System, solve};

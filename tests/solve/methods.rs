@@ -112,3 +112,14 @@ fn a_direct_solve_over_the_limit_is_refused_with_the_estimate() {
     let err = solve(Method::Direct, &system, &TIGHT, 1 << 20, &mut |_, _| {}).unwrap_err();
     assert!(matches!(err, SolveError::TooLarge(_)) && err.to_string().contains("GMRES"), "{err}");
 }
+
+#[test]
+fn sparse_and_dense_lu_agree() {
+    let model = glossy_model();
+    let explicit = Explicit(model.kernel.explicit(u64::MAX).unwrap());
+    let (dense, _) = ugo::solve::direct(&explicit, &model.l0, u64::MAX).unwrap();
+    let (sparse, info) = ugo::solve::direct_sparse(&explicit, &model.l0, u64::MAX).unwrap();
+    assert_eq!(info.method, "direct (sparse LU)");
+    assert!(relative_difference(&sparse, &dense) < 1e-12);
+    assert!(info.residual() < 1e-13);
+}
