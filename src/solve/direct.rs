@@ -1,5 +1,6 @@
 //! Direct solution of `(I − K) x = L0` by LU with partial pivoting (faer): dense up to
-//! [`DENSE_MAX`] unknowns, sparse LU of the explicit matrix beyond. faer's dense LU was
+//! [`DENSE_MAX`] unknowns when at least [`DENSE_FILL`] of the matrix is non-zero, sparse LU
+//! of the explicit matrix otherwise. faer's dense LU was
 //! measured against nalgebra's with `ugo bench --lu` (`docs/experiments.md`). The memory
 //! of the factors is checked before factoring: `8 n²` bytes dense; for the sparse LU its
 //! fill-in is bounded by the same `8 n²`, which is what is checked.
@@ -13,11 +14,17 @@ use faer::{Col, Mat};
 
 /// Above this many unknowns the LU is sparse.
 pub const DENSE_MAX: usize = 8000;
+/// Below this fraction of non-zeros the LU is sparse (measured with `ugo compare
+/// --methods direct,direct-sparse`: dense 1.8× faster at 70 % fill, sparse 1.4× faster at
+/// 8 %; `docs/solvers.md`).
+pub const DENSE_FILL: f64 = 0.2;
 
 /// Solves `x = L0 + K x` by LU of `I − K`; refuses (with the estimate) when the factors
 /// could exceed `limit` bytes.
 pub fn direct(k: &Explicit, l0: &[f64], limit: u64) -> Result<(Vec<f64>, SolveInfo), SolveError> {
-    lu(k, l0, limit, k.dim() > DENSE_MAX)
+    let n = k.dim() as f64;
+    let fill = k.0.nnz() as f64 / (n * n);
+    lu(k, l0, limit, k.dim() > DENSE_MAX || fill < DENSE_FILL)
 }
 
 /// [`direct`] with the sparse LU whatever the size (to compare the two paths).

@@ -1,7 +1,7 @@
 //! The closed set of solvers, selected by name (`--method`, `--methods`), dispatched once.
 
 use super::{SolveError, SolveInfo, SolveParams, norm};
-use super::{bicgstab, direct, gauss_seidel, gmres, southwell, successive_approximation};
+use super::{bicgstab, direct, direct_sparse, gauss_seidel, gmres, southwell, successive_approximation};
 use crate::kernel::{Explicit, Factored, Kernel};
 
 /// A method of `design.md` §4.
@@ -17,8 +17,10 @@ pub enum Method {
         restart: usize,
     },
     Bicgstab,
-    /// LU of `I − K`.
+    /// LU of `I − K`: dense up to `direct::DENSE_MAX` unknowns, sparse beyond.
     Direct,
+    /// Sparse LU of `I − K` whatever the size.
+    DirectSparse,
 }
 
 /// Default GMRES restart length.
@@ -26,7 +28,8 @@ pub const RESTART: usize = 30;
 
 impl Method {
     /// All names `parse` accepts.
-    pub const NAMES: &'static str = "neumann, gauss-seidel, southwell, gmres (or gmres:M), bicgstab, direct";
+    pub const NAMES: &'static str =
+        "neumann, gauss-seidel, southwell, gmres (or gmres:M), bicgstab, direct, direct-sparse";
 
     pub fn parse(name: &str) -> Option<Method> {
         Some(match name {
@@ -36,6 +39,7 @@ impl Method {
             "gmres" => Method::Gmres { restart: RESTART },
             "bicgstab" => Method::Bicgstab,
             "direct" => Method::Direct,
+            "direct-sparse" => Method::DirectSparse,
             other => {
                 let m = other.strip_prefix("gmres:")?.parse::<usize>().ok().filter(|&m| m >= 1)?;
                 Method::Gmres { restart: m }
@@ -52,12 +56,13 @@ impl Method {
             Method::Gmres { restart } => format!("gmres({restart})"),
             Method::Bicgstab => "bicgstab".into(),
             Method::Direct => "direct".into(),
+            Method::DirectSparse => "direct-sparse".into(),
         }
     }
 
     /// True when the method needs the explicit product `B·G`.
     pub fn needs_explicit(&self) -> bool {
-        matches!(self, Method::GaussSeidel | Method::Southwell | Method::Direct)
+        matches!(self, Method::GaussSeidel | Method::Southwell | Method::Direct | Method::DirectSparse)
     }
 }
 
@@ -92,6 +97,7 @@ pub fn solve(
         Method::Gmres { restart } => gmres(&factored, l0, params, restart, progress)?,
         Method::Bicgstab => bicgstab(&factored, l0, params, progress)?,
         Method::Direct => direct(explicit()?, l0, limit)?,
+        Method::DirectSparse => direct_sparse(explicit()?, l0, limit)?,
     };
     let growth = norm(&x) / norm(l0);
     if growth.is_nan() || growth > MAX_GROWTH {
