@@ -14,6 +14,7 @@ pub mod io;
 pub mod kernel;
 pub mod model;
 pub mod probe;
+pub mod render;
 pub mod scene;
 pub mod solve;
 pub mod visibility;

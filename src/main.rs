@@ -1,4 +1,4 @@
-//! The `ugo` command line (`design.md` §6): `solve`, `norms`, `compare`, `info`, `bench`.
+//! The `ugo` command line (`design.md` §6): `solve`, `norms`, `compare`, `render`, `info`, `bench`.
 
 mod cli;
 
@@ -87,6 +87,20 @@ enum Command {
         #[arg(long)]
         max_iterations: Option<usize>,
     },
+    /// Camera images (linear EXR, tone-mapped PNG) of a solution written by `solve`.
+    Render {
+        /// The HDF5 file of a solve.
+        solution: PathBuf,
+        /// Render only this camera (repeatable; default: every camera of the stored scene).
+        #[arg(long = "camera")]
+        cameras: Vec<String>,
+        /// Luminance shown as white in the PNG, cd/m² (default: the 99th percentile).
+        #[arg(long)]
+        exposure: Option<f64>,
+        /// Folder for the images.
+        #[arg(short, long, default_value = ".")]
+        output: PathBuf,
+    },
     /// Patches, unknowns, and the kernel's estimated size, before any assembly.
     Info {
         case: PathBuf,
@@ -147,6 +161,9 @@ fn main() -> ExitCode {
                 };
                 cli::solve::run(&case, &discretize, job)
             })
+        }
+        Command::Render { solution, cameras, exposure, output } => {
+            cli::render::run(&solution, &cameras, exposure, &output)
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench { case, discretize, rays, lu } => cli::bench::run(&case, &discretize, rays, &lu),

@@ -4,6 +4,7 @@ mod brdf;
 mod cli;
 mod directions;
 mod kernel;
+mod render;
 mod scene;
 mod solve;
 mod support;

@@ -2,6 +2,7 @@
 
 pub mod bench;
 pub mod info;
+pub mod render;
 pub mod solve;
 
 use crate::Discretize;

@@ -1,7 +1,7 @@
 //! The HDF5 file of one solve (`design.md` §8), readable with h5py or h5dump alone.
 //!
-//! Layout: `/mesh/{points,normals,areas,surface_id,material_id,vertices,vertex_count,
-//! surface_names,material_names}`, `/directions/{vectors,solid_angle,projected}`,
+//! Layout: `/mesh/{points,normals,areas,surface_id,material_id,vertices,vertex_count,face,
+//! twin,surface_names,material_names}`, `/directions/{vectors,solid_angle,projected}`,
 //! `/field/{luminance,emission,illuminance}`, `/solver/{residual_history,applications,seconds}`,
 //! `/compare/<method>/…` (the same histories per method, `ugo compare`),
 //! `/orders/{orders,term_norms,partial_sums}` (the reflection-order record), `/norms` (attributes),
@@ -121,6 +121,8 @@ fn write_mesh(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
     });
     dataset(g, "vertices", &vertices)?;
     dataset(g, "vertex_count", &Array1::from_iter(p.iter().map(|q| q.polygon.vertices().len() as u8)))?;
+    dataset(g, "face", &Array1::from_iter(p.iter().map(|q| q.face)))?;
+    dataset(g, "twin", &Array1::from_iter(p.iter().map(|q| q.twin)))?;
     strings(g, "surface_names", s.scene.surfaces.iter().map(|x| x.name.as_str()))?;
     strings(g, "material_names", s.scene.materials.iter().map(|x| x.name.as_str()))
 }

@@ -1,7 +1,32 @@
-//! Output files: the HDF5 dump of a solve (`design.md` §8) and convergence plots.
+//! Files: the HDF5 dump of a solve (`design.md` §8) written and read back,
+//! convergence plots, and rendered images (linear EXR, tone-mapped PNG).
 
+mod exr_file;
 mod hdf5_file;
 mod plot;
+mod png_file;
+mod read;
 
+pub use exr_file::write_exr;
 pub use hdf5_file::{Run, Solution, write_solution};
 pub use plot::convergence_plot;
+pub use png_file::{auto_exposure, srgb, write_png};
+pub use read::{StoredSolution, read_solution};
+
+use std::path::{Path, PathBuf};
+
+/// Runs `write` on `path.tmp` and renames it to `path` when it succeeds; removes the
+/// temporary file when it fails.
+fn atomic(path: &Path, write: impl FnOnce(&Path) -> anyhow::Result<()>) -> anyhow::Result<()> {
+    let mut tmp = path.as_os_str().to_owned();
+    tmp.push(".tmp");
+    let tmp = PathBuf::from(tmp);
+    match write(&tmp) {
+        Ok(()) => std::fs::rename(&tmp, path)
+            .map_err(|e| anyhow::anyhow!("cannot rename {} to {}: {e}", tmp.display(), path.display())),
+        Err(e) => {
+            let _ = std::fs::remove_file(&tmp);
+            Err(e)
+        }
+    }
+}

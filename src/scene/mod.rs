@@ -27,6 +27,7 @@ pub struct Scene {
     pub materials: Vec<Material>,
     pub surfaces: Vec<Surface>,
     pub probes: Vec<Probe>,
+    pub cameras: Vec<Camera>,
 }
 
 /// `[discretization]`: how finely surfaces are meshed.
@@ -128,6 +129,22 @@ pub struct Probe {
     pub position: DVec3,
     /// Unit normal of the sensor's receiving side.
     pub normal: DVec3,
+}
+
+/// `[[camera]]`: a pinhole camera for `ugo render`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Camera {
+    pub name: String,
+    pub position: DVec3,
+    pub look_at: DVec3,
+    /// Unit vector giving the image's upward direction (not parallel to the view).
+    pub up: DVec3,
+    /// Vertical field of view, degrees, in (0, 180).
+    pub fov_deg: f64,
+    /// Image width and height, pixels.
+    pub resolution: [usize; 2],
+    /// Primary rays per pixel (stratified).
+    pub samples: usize,
 }
 
 impl Scene {

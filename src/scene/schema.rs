@@ -21,6 +21,8 @@ pub struct RawScene {
     pub surface: Vec<RawSurface>,
     #[serde(default)]
     pub probe: Vec<RawProbe>,
+    #[serde(default)]
+    pub camera: Vec<RawCamera>,
 }
 
 /// `[scene]`.
@@ -111,6 +113,19 @@ pub struct RawProbe {
     pub name: String,
     pub position: [f64; 3],
     pub normal: [f64; 3],
+}
+
+/// `[[camera]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCamera {
+    pub name: String,
+    pub position: [f64; 3],
+    pub look_at: [f64; 3],
+    pub up: Option<[f64; 3]>,
+    pub fov_deg: Option<f64>,
+    pub resolution: Option<[i64; 2]>,
+    pub samples: Option<i64>,
 }
 
 /// Parses case text into the raw tables.

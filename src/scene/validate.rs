@@ -6,10 +6,11 @@
 //! naming the table (`[[surface]] "floor" (#3)`) and the key.
 
 use super::schema::{
-    RawDirections, RawDiscretization, RawEmission, RawMaterial, RawProbe, RawScene, RawSceneInfo, RawSolver, RawSurface,
+    RawCamera, RawDirections, RawDiscretization, RawEmission, RawMaterial, RawProbe, RawScene, RawSceneInfo, RawSolver,
+    RawSurface,
 };
 use super::{
-    Discretization, Emission, Material, MaterialModel, Probe, Scene, SceneError, Shape, SolverSettings, Surface,
+    Camera, Discretization, Emission, Material, MaterialModel, Probe, Scene, SceneError, Shape, SolverSettings, Surface,
 };
 use crate::directions::DirectionSet;
 use crate::solve::Method;
@@ -34,6 +35,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene) -> Result<Scene, Sce
     let materials = materials(path, &raw.material)?;
     let surfaces = surfaces(path, &raw.surface, &materials)?;
     let probes = probes(path, &raw.probe)?;
+    let cameras = cameras(path, &raw.camera)?;
     Ok(Scene {
         path: path.to_path_buf(),
         source,
@@ -44,6 +46,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene) -> Result<Scene, Sce
         materials,
         surfaces,
         probes,
+        cameras,
     })
 }
 
@@ -267,6 +270,40 @@ fn probes(path: &Path, raw: &[RawProbe]) -> Result<Vec<Probe>, SceneError> {
         Ok(Probe { name: p.name.clone(), position, normal })
     };
     raw.iter().enumerate().map(probe).collect()
+}
+
+fn cameras(path: &Path, raw: &[RawCamera]) -> Result<Vec<Camera>, SceneError> {
+    unique_names(path, "camera", raw.iter().map(|c| c.name.as_str()))?;
+    raw.iter().enumerate().map(|(index, c)| camera(&Context::item(path, "camera", &c.name, index), c)).collect()
+}
+
+fn camera(at: &Context, c: &RawCamera) -> Result<Camera, SceneError> {
+    let position = at.point("position", c.position)?;
+    let look_at = at.point("look_at", c.look_at)?;
+    let view = (look_at - position)
+        .try_normalize()
+        .ok_or_else(|| at.error("look_at", format!("must differ from position {}", show(position))))?;
+    let up = at.direction("up", c.up.unwrap_or([0.0, 1.0, 0.0]))?;
+    if view.cross(up).length() < REL_TOL {
+        return Err(at.error("up", format!("must not be parallel to the view direction, got {}", show(up))));
+    }
+    let fov_deg = at.finite("fov_deg", c.fov_deg.unwrap_or(40.0))?;
+    if fov_deg <= 0.0 || fov_deg >= 180.0 {
+        return Err(at.error("fov_deg", format!("must be greater than 0 and less than 180, got {fov_deg}")));
+    }
+    let [w, h] = c.resolution.unwrap_or([512, 512]);
+    let pixels = |n: i64| usize::try_from(n).ok().filter(|&n| (1..=16384).contains(&n));
+    let (Some(w), Some(h)) = (pixels(w), pixels(h)) else {
+        return Err(at.error("resolution", format!("must be two pixel counts from 1 to 16384, got [{w}, {h}]")));
+    };
+    let samples = match c.samples {
+        None => 4,
+        Some(n) => usize::try_from(n)
+            .ok()
+            .filter(|n| (1..=4096).contains(n))
+            .ok_or_else(|| at.error("samples", format!("must be from 1 to 4096, got {n}")))?,
+    };
+    Ok(Camera { name: c.name.clone(), position, look_at, up, fov_deg, resolution: [w, h], samples })
 }
 
 fn surfaces(path: &Path, raw: &[RawSurface], materials: &[Material]) -> Result<Vec<Surface>, SceneError> {

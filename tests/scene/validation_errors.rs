@@ -271,3 +271,26 @@ fn non_positive_mesh_scale_is_rejected() {
     assert_error(&error, S, "scale", &["greater than 0"]);
     assert_eq!(error.file(), Path::new(CASE));
 }
+
+/// A `[[camera]]` named `c` at the origin looking down −z, with extra keys.
+fn camera(keys: &str) -> String {
+    lit(&format!("\n[[camera]]\nname = \"c\"\nposition = [0, 0, 1]\nlook_at = [0, 0, 0]\n{keys}\n"))
+}
+
+#[test]
+fn camera_defaults_and_rules() {
+    let scene = parse(&camera("")).unwrap();
+    let c = &scene.cameras[0];
+    assert_eq!((c.fov_deg, c.resolution, c.samples, c.up), (40.0, [512, 512], 4, glam::DVec3::Y));
+    let at = "[[camera]] \"c\" (#1)";
+    assert_error(&rejected(&camera("fov_deg = 180")), at, "fov_deg", &["less than 180"]);
+    assert_error(&rejected(&camera("up = [0, 0, 2]")), at, "up", &["parallel"]);
+    assert_error(&rejected(&camera("resolution = [0, 10]")), at, "resolution", &["pixel counts"]);
+    assert_error(&rejected(&camera("samples = 0")), at, "samples", &["from 1"]);
+    let blind = lit("\n[[camera]]\nname = \"c\"\nposition = [0, 0, 0]\nlook_at = [0, 0, 0]\n");
+    assert_error(&rejected(&blind), at, "look_at", &["differ"]);
+    let twice = format!("{}{}", camera(""), "\n[[camera]]\nname = \"c\"\nposition = [0, 0, 1]\nlook_at = [0, 0, 0]\n");
+    assert_error(&rejected(&twice), "[[camera]] \"c\" (#2)", "name", &["duplicate"]);
+    let typo = rejected(&camera("fov = 30"));
+    assert!(typo.to_string().contains("unknown field `fov`"), "{typo}");
+}

@@ -27,6 +27,7 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         materials,
         surfaces,
         probes: Vec::new(),
+        cameras: Vec::new(),
     }
 }
 

@@ -1,0 +1,64 @@
+//! `ugo render OUT.h5`: camera images of a stored solution, linear EXR and sRGB PNG.
+
+use anyhow::{Result, bail};
+use std::path::Path;
+use std::time::Instant;
+use ugo::io::{auto_exposure, read_solution, write_exr, write_png};
+use ugo::render::{LitScene, render};
+use ugo::scene::Camera;
+
+pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path) -> Result<()> {
+    if let Some(l) = exposure
+        && !(l.is_finite() && l > 0.0)
+    {
+        bail!("--exposure must be a positive luminance in cd/m², got {l}");
+    }
+    let stored = read_solution(file)?;
+    let cameras = chosen(&stored.scene.cameras, names, &stored.scene.path)?;
+    let case = stored.scene.path.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+    let lit = LitScene::new(stored.mesh, stored.directions, stored.luminance);
+    std::fs::create_dir_all(dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
+    for camera in cameras {
+        let start = Instant::now();
+        let image = render(&lit, camera);
+        let seconds = start.elapsed().as_secs_f64();
+        let stem = dir.join(format!("{case}-{}", file_name(&camera.name)));
+        let (exr, png) = (stem.with_extension("exr"), stem.with_extension("png"));
+        write_exr(&exr, &image)?;
+        let white = exposure.unwrap_or_else(|| auto_exposure(&image));
+        write_png(&png, &image, white)?;
+        let (lo, hi) = image.range();
+        println!(
+            "ugo render: camera \"{}\" {}×{}, {} samples/pixel, {seconds:.2} s",
+            camera.name, image.width, image.height, camera.samples
+        );
+        println!("  luminance {lo:.4e} .. {hi:.4e} cd/m², white at {white:.4e} cd/m²");
+        println!("  {}\n  {}", exr.display(), png.display());
+    }
+    Ok(())
+}
+
+/// The cameras asked for (all when none are named).
+fn chosen<'a>(cameras: &'a [Camera], names: &[String], case: &Path) -> Result<Vec<&'a Camera>> {
+    if cameras.is_empty() {
+        bail!("the stored scene ({}) has no [[camera]]; add one to the case and solve again", case.display());
+    }
+    if names.is_empty() {
+        return Ok(cameras.iter().collect());
+    }
+    let known = || cameras.iter().map(|c| format!("\"{}\"", c.name)).collect::<Vec<_>>().join(", ");
+    names
+        .iter()
+        .map(|n| {
+            cameras
+                .iter()
+                .find(|c| &c.name == n)
+                .ok_or_else(|| anyhow::anyhow!("unknown camera \"{n}\"; known: {}", known()))
+        })
+        .collect()
+}
+
+/// A camera name made safe for a file name.
+fn file_name(name: &str) -> String {
+    name.chars().map(|c| if c.is_alphanumeric() || c == '-' || c == '_' { c } else { '_' }).collect()
+}

@@ -1,0 +1,34 @@
+//! The luminance image of one camera: rayon over rows, samples averaged per pixel.
+
+use super::{LitScene, Projection};
+use crate::scene::Camera;
+use rayon::prelude::*;
+
+/// A luminance image, cd/m², row-major from the top-left pixel.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Image {
+    pub width: usize,
+    pub height: usize,
+    pub luminance: Vec<f64>,
+}
+
+impl Image {
+    /// Smallest and largest pixel luminance, cd/m².
+    pub fn range(&self) -> (f64, f64) {
+        self.luminance.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &l| (lo.min(l), hi.max(l)))
+    }
+}
+
+/// Renders `camera`'s view of `scene`.
+pub fn render(scene: &LitScene, camera: &Camera) -> Image {
+    let view = Projection::of(camera);
+    let (width, height) = (view.width, view.height);
+    let mut luminance = vec![0.0; width * height];
+    luminance.par_chunks_mut(width).enumerate().for_each(|(py, row)| {
+        for (px, pixel) in row.iter_mut().enumerate() {
+            let sum: f64 = (0..view.samples).map(|s| scene.luminance_along(view.eye, view.sample(px, py, s))).sum();
+            *pixel = sum / view.samples as f64;
+        }
+    });
+    Image { width, height, luminance }
+}

@@ -1,0 +1,91 @@
+//! `ugo render` end to end on the Cornell box, the EXR read back, and clear failures.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use ugo::io::write_exr;
+use ugo::render::Image;
+
+fn ugo(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ugo")).args(args).output().expect("ugo runs")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("ugo-render-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn text(o: &Output) -> String {
+    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
+}
+
+/// The luminance channel `Y` of an EXR file.
+fn read_exr(path: &Path) -> (usize, usize, Vec<f32>) {
+    let image = exr::prelude::read_first_flat_layer_from_file(path).unwrap();
+    let layer = &image.layer_data;
+    let channel = layer.channel_data.list.iter().find(|c| c.name == *"Y").expect("a Y channel");
+    let values = channel.sample_data.values_as_f32().collect();
+    (layer.size.0, layer.size.1, values)
+}
+
+#[test]
+fn exr_round_trip_keeps_every_value() {
+    let path = scratch("exr").join("ramp.exr");
+    let luminance: Vec<f64> = (0..6 * 4).map(|i| (i as f64 * 0.37).powi(3) + 0.125).collect();
+    let image = Image { width: 6, height: 4, luminance };
+    write_exr(&path, &image).unwrap();
+    let (w, h, values) = read_exr(&path);
+    assert_eq!((w, h), (6, 4));
+    let expected: Vec<f32> = image.luminance.iter().map(|&l| l as f32).collect();
+    assert_eq!(values, expected);
+    assert!(!path.with_extension("exr.tmp").exists());
+}
+
+#[test]
+fn render_draws_the_cornell_box_from_its_camera() {
+    let dir = scratch("cornell");
+    let case = std::fs::read_to_string("cases/cornell-box.toml").unwrap();
+    let case = case.replace("fov_deg = 39.3", "fov_deg = 39.3\nresolution = [64, 64]\nsamples = 1");
+    let case_path = dir.join("cornell-box.toml");
+    std::fs::write(&case_path, case).unwrap();
+    let h5 = dir.join("cornell.h5");
+    let o = ugo(&["solve", case_path.to_str().unwrap(), "--patch-size", "0.1", "-o", h5.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o));
+
+    let images = dir.join("images");
+    let o = ugo(&["render", h5.to_str().unwrap(), "-o", images.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o));
+    let (exr, png) = (images.join("cornell-box-camera.exr"), images.join("cornell-box-camera.png"));
+    assert!(text(&o).contains("cornell-box-camera.png"), "{}", text(&o));
+    let (w, h, values) = read_exr(&exr);
+    assert_eq!((w, h), (64, 64));
+    // The light (10,000 cd/m² plus what it reflects) is the brightest thing in view.
+    let max = values.iter().cloned().fold(0.0f32, f32::max);
+    assert!((10_000.0..11_000.0).contains(&max), "brightest pixel {max}");
+    // The walls are lit: the middle of the image (the back wall) is neither black nor the light.
+    let centre = values[32 * 64 + 32];
+    assert!(centre > 1.0 && centre < 5_000.0, "centre {centre}");
+    let png_image = image::open(&png).unwrap();
+    assert_eq!((png_image.width(), png_image.height()), (64, 64));
+    let note = std::fs::read_to_string(images.join("cornell-box-camera.png.txt")).unwrap();
+    assert!(note.contains("exposure") && note.contains("cd/m2"), "{note}");
+
+    let o = ugo(&["render", h5.to_str().unwrap(), "--camera", "nope", "-o", images.to_str().unwrap()]);
+    assert!(!o.status.success() && !text(&o).contains("panicked"));
+    assert!(text(&o).contains("unknown camera \"nope\"; known: \"camera\""), "{}", text(&o));
+}
+
+#[test]
+fn render_fails_clearly_on_a_missing_or_foreign_file() {
+    let dir = scratch("bad");
+    let missing = dir.join("missing.h5");
+    let o = ugo(&["render", missing.to_str().unwrap()]);
+    assert!(!o.status.success() && !text(&o).contains("panicked"), "{}", text(&o));
+    assert!(text(&o).contains("ugo: error: cannot open"), "{}", text(&o));
+    let foreign = dir.join("foreign.h5");
+    std::fs::write(&foreign, "not an HDF5 file").unwrap();
+    let o = ugo(&["render", foreign.to_str().unwrap()]);
+    assert!(!o.status.success() && !text(&o).contains("panicked"), "{}", text(&o));
+    let o = ugo(&["render", missing.to_str().unwrap(), "--exposure=-1"]);
+    assert!(text(&o).contains("--exposure"), "{}", text(&o));
+}

@@ -1,0 +1,4 @@
+//! `ugo render`: pixels of known scenes, the EXR file read back, the command end to end.
+
+mod cli;
+mod pixels;
