@@ -1,18 +1,9 @@
 //! The `ugo` binary end to end: a solve written to HDF5 and read back, and every
 //! failure a clear message with a non-zero exit, never a panic.
 
+use crate::support::{scratch, ugo};
 use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn ugo(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ugo")).args(args).output().expect("ugo runs")
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("ugo-cli-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+use std::process::Output;
 
 fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()

@@ -1,19 +1,10 @@
 //! `ugo render` end to end on the Cornell box, the EXR read back, and clear failures.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use crate::support::{scratch, ugo};
+use std::path::Path;
+use std::process::Output;
 use ugo::io::write_exr;
 use ugo::render::Image;
-
-fn ugo(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ugo")).args(args).output().expect("ugo runs")
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("ugo-render-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 fn text(o: &Output) -> String {
     format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))

@@ -113,3 +113,15 @@ pub fn mean_over(s: (f64, f64), t: (f64, f64), n: usize, f: impl Fn(f64, f64) ->
     }
     sum / (n * n) as f64
 }
+
+/// Runs the `ugo` binary.
+pub fn ugo(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_ugo")).args(args).output().expect("ugo runs")
+}
+
+/// A fresh scratch folder for one test, unique to this process.
+pub fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("ugo-test-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temporary folder");
+    dir
+}
