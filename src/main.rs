@@ -100,6 +100,9 @@ enum Command {
         /// Folder for the images.
         #[arg(short, long, default_value = ".")]
         output: PathBuf,
+        /// Also write a false-colour map with a legend in cd/m²: `log` or `linear`.
+        #[arg(long, value_name = "SCALE")]
+        false_colour: Option<String>,
     },
     /// Patches, unknowns, and the kernel's estimated size, before any assembly.
     Info {
@@ -162,8 +165,8 @@ fn main() -> ExitCode {
                 cli::solve::run(&case, &discretize, job)
             })
         }
-        Command::Render { solution, cameras, exposure, output } => {
-            cli::render::run(&solution, &cameras, exposure, &output)
+        Command::Render { solution, cameras, exposure, output, false_colour } => {
+            cli::render::run(&solution, &cameras, exposure, &output, false_colour.as_deref())
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench { case, discretize, rays, lu } => cli::bench::run(&case, &discretize, rays, &lu),

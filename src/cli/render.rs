@@ -1,13 +1,20 @@
-//! `ugo render OUT.h5`: camera images of a stored solution, linear EXR and sRGB PNG.
+//! `ugo render OUT.h5`: camera images of a stored solution, linear EXR and sRGB PNG, and
+//! optionally a false-colour map with a legend in cd/m².
 
 use anyhow::{Result, bail};
 use std::path::Path;
 use std::time::Instant;
-use ugo::io::{auto_exposure, read_solution, write_exr, write_png};
+use ugo::io::{Scale, auto_exposure, read_solution, write_exr, write_false_colour, write_png};
 use ugo::render::{LitScene, render};
 use ugo::scene::Camera;
 
-pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path) -> Result<()> {
+pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path, false_colour: Option<&str>) -> Result<()> {
+    let scale = match false_colour {
+        None => None,
+        Some("log") => Some(Scale::Log),
+        Some("linear") => Some(Scale::Linear),
+        Some(other) => bail!("--false-colour takes `log` or `linear`, got \"{other}\""),
+    };
     if let Some(l) = exposure
         && !(l.is_finite() && l > 0.0)
     {
@@ -34,6 +41,11 @@ pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path) -> 
         );
         println!("  luminance {lo:.4e} .. {hi:.4e} cd/m², white at {white:.4e} cd/m²");
         println!("  {}\n  {}", exr.display(), png.display());
+        if let Some(scale) = scale {
+            let map = dir.join(format!("{case}-{}-false.png", file_name(&camera.name)));
+            write_false_colour(&map, &image, scale)?;
+            println!("  {}", map.display());
+        }
     }
     Ok(())
 }

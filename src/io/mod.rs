@@ -1,13 +1,15 @@
 //! Files: the HDF5 dump of a solve (`design.md` §8) written and read back,
-//! convergence plots, and rendered images (linear EXR, tone-mapped PNG).
+//! convergence plots, and rendered images (linear EXR, tone-mapped PNG, false colour).
 
 mod exr_file;
+mod false_colour;
 mod hdf5_file;
 mod plot;
 mod png_file;
 mod read;
 
 pub use exr_file::write_exr;
+pub use false_colour::{LEGEND_WIDTH, Scale, colour, position, write_false_colour};
 pub use hdf5_file::{Run, Solution, write_solution};
 pub use plot::convergence_plot;
 pub use png_file::{auto_exposure, srgb, write_png};

@@ -75,7 +75,8 @@ fn draw_panel(
     Ok(())
 }
 
-fn register_font() {
+/// Makes the bundled DejaVu Sans the "sans-serif" font of plotters (once).
+pub(crate) fn register_font() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| {
         let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, FONT);

@@ -1,0 +1,104 @@
+//! False-colour PNG maps of luminance with a legend in cd/m² (linear or logarithmic
+//! scale), the map lighting engineers read values off.
+//!
+//! Colours run dark blue → blue → cyan → green → yellow → red over the scale; pixels
+//! below its bottom are drawn in the bottom colour, above its top in the top colour.
+
+use super::atomic;
+use crate::render::Image;
+use anyhow::{Result, anyhow};
+use plotters::prelude::*;
+use std::path::Path;
+
+/// How luminance maps onto the colour scale.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Scale {
+    Linear,
+    /// Four decades below the top (or down to the smallest positive pixel).
+    Log,
+}
+
+/// Width of the legend beside the image, pixels.
+pub const LEGEND_WIDTH: u32 = 170;
+
+const STOPS: [(f64, (u8, u8, u8)); 6] = [
+    (0.0, (20, 20, 90)),
+    (0.2, (30, 80, 220)),
+    (0.4, (40, 200, 220)),
+    (0.6, (60, 200, 70)),
+    (0.8, (240, 220, 40)),
+    (1.0, (220, 30, 30)),
+];
+
+/// The colour of a position `t ∈ [0, 1]` on the scale.
+pub fn colour(t: f64) -> RGBColor {
+    let t = t.clamp(0.0, 1.0);
+    let i = STOPS.iter().position(|s| s.0 >= t).unwrap_or(STOPS.len() - 1).max(1);
+    let ((t0, a), (t1, b)) = (STOPS[i - 1], STOPS[i]);
+    let f = (t - t0) / (t1 - t0);
+    let mix = |x: u8, y: u8| (x as f64 + f * (y as f64 - x as f64)).round() as u8;
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// The scale's bottom and top for `image`, cd/m².
+pub fn bounds(image: &Image, scale: Scale) -> (f64, f64) {
+    let (_, hi) = image.range();
+    let top = if hi > 0.0 { hi } else { 1.0 };
+    match scale {
+        Scale::Linear => (0.0, top),
+        Scale::Log => {
+            let smallest = image.luminance.iter().copied().filter(|&l| l > 0.0).fold(f64::INFINITY, f64::min);
+            (smallest.max(top * 1e-4).min(top / 10.0), top)
+        }
+    }
+}
+
+/// Position of luminance `l` on the scale `[lo, hi]`.
+pub fn position(l: f64, lo: f64, hi: f64, scale: Scale) -> f64 {
+    match scale {
+        Scale::Linear => (l - lo) / (hi - lo),
+        Scale::Log => (l.max(lo).ln() - lo.ln()) / (hi.ln() - lo.ln()),
+    }
+}
+
+/// Writes the false-colour map of `image` with its legend to `path` (PNG).
+pub fn write_false_colour(path: &Path, image: &Image, scale: Scale) -> Result<()> {
+    let (lo, hi) = bounds(image, scale);
+    atomic(path, |tmp| {
+        let tmp_png = tmp.with_extension("tmp.png");
+        draw(&tmp_png, image, scale, lo, hi).map_err(|e| anyhow!("writing {}: {e}", path.display()))?;
+        std::fs::rename(&tmp_png, tmp).map_err(|e| anyhow!("writing {}: {e}", path.display()))
+    })
+}
+
+fn draw(path: &Path, image: &Image, scale: Scale, lo: f64, hi: f64) -> Result<(), Box<dyn std::error::Error>> {
+    super::plot::register_font();
+    let (w, h) = (image.width as u32, image.height.max(240) as u32);
+    let root = BitMapBackend::new(path, (w + LEGEND_WIDTH, h)).into_drawing_area();
+    root.fill(&WHITE)?;
+    for y in 0..image.height {
+        for x in 0..image.width {
+            let l = image.luminance[y * image.width + x];
+            root.draw_pixel((x as i32, y as i32), &colour(position(l, lo, hi, scale)))?;
+        }
+    }
+    let (bar_x, bar_top, bar_bottom) = (w as i32 + 20, 30, h as i32 - 30);
+    for y in bar_top..=bar_bottom {
+        let t = (bar_bottom - y) as f64 / (bar_bottom - bar_top) as f64;
+        root.draw(&Rectangle::new([(bar_x, y), (bar_x + 30, y + 1)], colour(t).filled()))?;
+    }
+    let style = ("sans-serif", 14).into_font().color(&BLACK);
+    root.draw(&Text::new("cd/m²", (bar_x, 8), style.clone()))?;
+    for k in 0..=5 {
+        let t = k as f64 / 5.0;
+        let value = match scale {
+            Scale::Linear => lo + t * (hi - lo),
+            Scale::Log => (lo.ln() + t * (hi.ln() - lo.ln())).exp(),
+        };
+        let y = bar_bottom - (t * (bar_bottom - bar_top) as f64) as i32;
+        root.draw(&PathElement::new(vec![(bar_x + 30, y), (bar_x + 36, y)], BLACK))?;
+        root.draw(&Text::new(format!("{value:.3e}"), (bar_x + 40, y - 7), style.clone()))?;
+    }
+    root.present()?;
+    Ok(())
+}
