@@ -30,7 +30,7 @@ demo: build
 	./target/release/ugo info $(DEMO_CASE)
 	./target/release/ugo solve $(DEMO_CASE) -o $(DEMO_OUT)
 	h5dump -H $(DEMO_OUT)
-	./target/release/ugo render $(DEMO_OUT) -o out --false-colour log
+	./target/release/ugo render $(DEMO_OUT) -o out --false-colour log --orders 1,8,64
 
 test: deps
 	$(CARGO) test --release

@@ -103,6 +103,9 @@ enum Command {
         /// Also write a false-colour map with a legend in cd/m²: `log` or `linear`.
         #[arg(long, value_name = "SCALE")]
         false_colour: Option<String>,
+        /// Also write the reflection-order pictures for these recorded orders, side by side.
+        #[arg(long, value_delimiter = ',')]
+        orders: Vec<usize>,
     },
     /// Patches, unknowns, and the kernel's estimated size, before any assembly.
     Info {
@@ -165,8 +168,9 @@ fn main() -> ExitCode {
                 cli::solve::run(&case, &discretize, job)
             })
         }
-        Command::Render { solution, cameras, exposure, output, false_colour } => {
-            cli::render::run(&solution, &cameras, exposure, &output, false_colour.as_deref())
+        Command::Render { solution, cameras, exposure, output, false_colour, orders } => {
+            let extras = cli::render::Extras { false_colour: false_colour.as_deref(), orders: &orders };
+            cli::render::run(&solution, &cameras, exposure, &output, &extras)
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench { case, discretize, rays, lu } => cli::bench::run(&case, &discretize, rays, &lu),

@@ -1,15 +1,23 @@
 //! `ugo render OUT.h5`: camera images of a stored solution, linear EXR and sRGB PNG, and
-//! optionally a false-colour map with a legend in cd/m².
+//! optionally a false-colour map with a legend in cd/m² and the reflection-order pictures.
 
 use anyhow::{Result, bail};
 use std::path::Path;
 use std::time::Instant;
-use ugo::io::{Scale, auto_exposure, read_solution, write_exr, write_false_colour, write_png};
+use ugo::io::{Scale, auto_exposure, read_solution, write_exr, write_false_colour, write_png, write_triptych};
 use ugo::render::{LitScene, render};
 use ugo::scene::Camera;
 
-pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path, false_colour: Option<&str>) -> Result<()> {
-    let scale = match false_colour {
+/// The optional pictures beside the camera images.
+pub struct Extras<'a> {
+    /// `log` or `linear`: also a false-colour map.
+    pub false_colour: Option<&'a str>,
+    /// Reflection orders for the side-by-side order pictures.
+    pub orders: &'a [usize],
+}
+
+pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path, extras: &Extras) -> Result<()> {
+    let scale = match extras.false_colour {
         None => None,
         Some("log") => Some(Scale::Log),
         Some("linear") => Some(Scale::Linear),
@@ -23,7 +31,8 @@ pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path, fal
     let stored = read_solution(file)?;
     let cameras = chosen(&stored.scene.cameras, names, &stored.scene.path)?;
     let case = stored.scene.path.file_stem().unwrap_or_default().to_string_lossy().into_owned();
-    let lit = LitScene::new(stored.mesh, stored.directions, stored.luminance);
+    let orders = chosen_orders(&stored.orders, extras.orders)?;
+    let mut lit = LitScene::new(stored.mesh, stored.directions, stored.luminance);
     std::fs::create_dir_all(dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
     for camera in cameras {
         let start = Instant::now();
@@ -46,8 +55,37 @@ pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path, fal
             write_false_colour(&map, &image, scale)?;
             println!("  {}", map.display());
         }
+        if !orders.is_empty() {
+            let solved = std::mem::take(&mut lit.luminance);
+            let mut panels = Vec::with_capacity(orders.len());
+            for (n, sum) in &orders {
+                lit.luminance = sum.clone();
+                let caption = if *n == 1 { "after 1 reflection".to_string() } else { format!("after {n} reflections") };
+                panels.push((caption, render(&lit, camera)));
+            }
+            lit.luminance = solved;
+            let path = dir.join(format!("{case}-{}-orders.png", file_name(&camera.name)));
+            write_triptych(&path, &panels, white)?;
+            println!("  {}", path.display());
+        }
     }
     Ok(())
+}
+
+/// The recorded partial sums for the orders asked for.
+fn chosen_orders(recorded: &[(usize, Vec<f64>)], wanted: &[usize]) -> Result<Vec<(usize, Vec<f64>)>> {
+    wanted
+        .iter()
+        .map(|n| {
+            recorded.iter().find(|(m, _)| m == n).cloned().ok_or_else(|| {
+                let known: Vec<String> = recorded.iter().map(|(m, _)| m.to_string()).collect();
+                anyhow::anyhow!(
+                    "order {n} was not recorded (recorded: {}); solve with --orders to record it",
+                    if known.is_empty() { "none".to_string() } else { known.join(", ") }
+                )
+            })
+        })
+        .collect()
 }
 
 /// The cameras asked for (all when none are named).

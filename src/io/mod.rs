@@ -7,6 +7,7 @@ mod hdf5_file;
 mod plot;
 mod png_file;
 mod read;
+mod triptych;
 
 pub use exr_file::write_exr;
 pub use false_colour::{LEGEND_WIDTH, Scale, colour, position, write_false_colour};
@@ -14,6 +15,7 @@ pub use hdf5_file::{Run, Solution, write_solution};
 pub use plot::convergence_plot;
 pub use png_file::{auto_exposure, srgb, write_png};
 pub use read::{StoredSolution, read_solution};
+pub use triptych::{CAPTION_HEIGHT, write_triptych};
 
 use std::path::{Path, PathBuf};
 

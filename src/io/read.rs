@@ -17,6 +17,8 @@ pub struct StoredSolution {
     pub directions: DirectionSet,
     /// Luminance of patch `i` in cell `k` at `i·K + k`, cd/m².
     pub luminance: Vec<f64>,
+    /// `(n, Σ_{m≤n} KᵐL0)` from `/orders`, when the solve recorded reflection orders.
+    pub orders: Vec<(usize, Vec<f64>)>,
 }
 
 /// Opens `path` and reads the scene, mesh, direction set and luminance field.
@@ -46,7 +48,18 @@ fn read_from(file: &hdf5::File) -> Result<StoredSolution> {
     let faces = patches.iter().map(|p| p.face as usize + 1).max().unwrap_or(0);
     let mesh = Mesh { patches, emission, faces };
     let luminance: Vec<f64> = luminance.iter().copied().collect();
-    Ok(StoredSolution { scene, mesh, directions, luminance })
+    let orders = if file.group("orders").is_ok() { orders(file, n * k)? } else { Vec::new() };
+    Ok(StoredSolution { scene, mesh, directions, luminance, orders })
+}
+
+/// The partial sums of `/orders/{orders,partial_sums}`, each `size` long.
+fn orders(file: &hdf5::File, size: usize) -> Result<Vec<(usize, Vec<f64>)>> {
+    let which = file.dataset("orders/orders")?.read_raw::<u64>()?;
+    let sums = file.dataset("orders/partial_sums")?.read_raw::<f64>()?;
+    if sums.len() != which.len() * size {
+        bail!("/orders/partial_sums holds {} values, expected {} orders × {size}", sums.len(), which.len());
+    }
+    Ok(which.iter().zip(sums.chunks(size)).map(|(&n, sum)| (n as usize, sum.to_vec())).collect())
 }
 
 /// The patches from `/mesh/{vertices,vertex_count,surface_id,material_id}` and, when

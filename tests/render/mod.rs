@@ -1,5 +1,5 @@
 //! `ugo render`: pixels of known scenes, the EXR file read back, the command end to end.
 
 mod cli;
-mod false_colour;
+mod pictures;
 mod pixels;
