@@ -30,6 +30,17 @@ pub struct Discretize {
     directions: Option<String>,
 }
 
+/// Options that override the case file's `[solver]` stopping rule.
+#[derive(clap::Args, Clone, Debug)]
+pub struct Stopping {
+    /// Relative residual at which the iteration stops (default: the case's `[solver]`).
+    #[arg(long)]
+    tolerance: Option<f64>,
+    /// Most iterations (default: the case's `[solver]`).
+    #[arg(long)]
+    max_iterations: Option<usize>,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Mesh, assemble and solve a case; write the luminance field to HDF5.
@@ -41,12 +52,8 @@ enum Command {
         output: Option<PathBuf>,
         #[command(flatten)]
         discretize: Discretize,
-        /// Relative residual at which the iteration stops (default: the case's `[solver]`).
-        #[arg(long)]
-        tolerance: Option<f64>,
-        /// Most iterations (default: the case's `[solver]`).
-        #[arg(long)]
-        max_iterations: Option<usize>,
+        #[command(flatten)]
+        stopping: Stopping,
         /// Method: neumann, gauss-seidel, southwell, gmres[:M], bicgstab, direct (default: the case's).
         #[arg(long)]
         method: Option<String>,
@@ -65,8 +72,8 @@ enum Command {
         output: Option<PathBuf>,
         #[command(flatten)]
         discretize: Discretize,
-        #[arg(long)]
-        tolerance: Option<f64>,
+        #[command(flatten)]
+        stopping: Stopping,
     },
     /// Solve with several methods side by side: table, convergence plot, histories in HDF5.
     Compare {
@@ -82,10 +89,8 @@ enum Command {
         plot: Option<PathBuf>,
         #[command(flatten)]
         discretize: Discretize,
-        #[arg(long)]
-        tolerance: Option<f64>,
-        #[arg(long)]
-        max_iterations: Option<usize>,
+        #[command(flatten)]
+        stopping: Stopping,
     },
     /// Camera images (linear EXR, tone-mapped PNG) of a solution written by `solve`.
     Render {
@@ -132,17 +137,23 @@ enum Command {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Solve { case, output, discretize, tolerance, max_iterations, method, orders, norms } => {
-            cli::methods(method.as_slice()).and_then(|methods| {
-                let job = Job { methods, tolerance, max_iterations, orders, norms, output, suffix: "", plot: None };
-                cli::solve::run(&case, &discretize, job)
-            })
-        }
-        Command::Norms { case, output, discretize, tolerance } => {
+        Command::Solve {
+            case,
+            output,
+            discretize,
+            stopping: Stopping { tolerance, max_iterations },
+            method,
+            orders,
+            norms,
+        } => cli::methods(method.as_slice()).and_then(|methods| {
+            let job = Job { methods, tolerance, max_iterations, orders, norms, output, suffix: "", plot: None };
+            cli::solve::run(&case, &discretize, job)
+        }),
+        Command::Norms { case, output, discretize, stopping: Stopping { tolerance, max_iterations } } => {
             let job = Job {
                 methods: vec![ugo::solve::Method::Neumann],
                 tolerance,
-                max_iterations: None,
+                max_iterations,
                 orders: None,
                 norms: true,
                 output,
@@ -151,23 +162,28 @@ fn main() -> ExitCode {
             };
             cli::solve::run(&case, &discretize, job)
         }
-        Command::Compare { case, methods, output, plot, discretize, tolerance, max_iterations } => {
-            cli::methods(&methods).and_then(|methods| {
-                let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
-                let plot = Some(plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-compare.png"))));
-                let job = Job {
-                    methods,
-                    tolerance,
-                    max_iterations,
-                    orders: None,
-                    norms: false,
-                    output,
-                    suffix: "-compare",
-                    plot,
-                };
-                cli::solve::run(&case, &discretize, job)
-            })
-        }
+        Command::Compare {
+            case,
+            methods,
+            output,
+            plot,
+            discretize,
+            stopping: Stopping { tolerance, max_iterations },
+        } => cli::methods(&methods).and_then(|methods| {
+            let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+            let plot = Some(plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-compare.png"))));
+            let job = Job {
+                methods,
+                tolerance,
+                max_iterations,
+                orders: None,
+                norms: false,
+                output,
+                suffix: "-compare",
+                plot,
+            };
+            cli::solve::run(&case, &discretize, job)
+        }),
         Command::Render { solution, cameras, exposure, output, false_colour, orders } => {
             let extras = cli::render::Extras { false_colour: false_colour.as_deref(), orders: &orders };
             cli::render::run(&solution, &cameras, exposure, &output, &extras)

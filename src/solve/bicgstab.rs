@@ -13,11 +13,8 @@ pub fn bicgstab(
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = l0.len();
-    let mut history = History::new(l0);
+    let mut history = History::start(l0)?;
     let scale = history.scale;
-    if scale == 0.0 {
-        return Err(SolveError::NoSource);
-    }
     let a = |v: &[f64], out: &mut [f64]| {
         kernel.apply(v, out);
         out.iter_mut().zip(v).for_each(|(o, vi)| *o = vi - *o);

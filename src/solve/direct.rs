@@ -34,10 +34,7 @@ pub fn direct_sparse(k: &Explicit, l0: &[f64], limit: u64) -> Result<(Vec<f64>, 
 
 fn lu(k: &Explicit, l0: &[f64], limit: u64, sparse: bool) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = k.dim();
-    let mut history = History::new(l0);
-    if history.scale == 0.0 {
-        return Err(SolveError::NoSource);
-    }
+    let mut history = History::start(l0)?;
     let need = 8.0 * (n as f64) * (n as f64) * 2.0;
     if need > limit as f64 {
         let gib = (1u64 << 30) as f64;

@@ -14,11 +14,8 @@ pub fn gauss_seidel(
     params: &SolveParams,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
-    let mut history = History::new(l0);
+    let mut history = History::start(l0)?;
     let scale = history.scale;
-    if scale == 0.0 {
-        return Err(SolveError::NoSource);
-    }
     let m = &k.0;
     let (indptr, indices, data) = (m.indptr(), m.indices(), m.data());
     let indptr = indptr.raw_storage();

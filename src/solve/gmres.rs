@@ -17,11 +17,8 @@ pub fn gmres(
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = l0.len();
     let m = restart.max(1);
-    let mut history = History::new(l0);
+    let mut history = History::start(l0)?;
     let scale = history.scale;
-    if scale == 0.0 {
-        return Err(SolveError::NoSource);
-    }
     let mut x = l0.to_vec();
     let mut w = vec![0.0; n];
     let mut applications = 0;

@@ -1,7 +1,7 @@
 //! The record every solver keeps: relative residual, kernel applications and time per
 //! iterate, so that methods compare on the same axes.
 
-use super::{SolveInfo, norm};
+use super::{SolveError, SolveInfo, norm};
 use std::time::Instant;
 
 pub struct History {
@@ -14,14 +14,13 @@ pub struct History {
 }
 
 impl History {
-    pub fn new(l0: &[f64]) -> History {
-        History {
-            start: Instant::now(),
-            scale: norm(l0),
-            residuals: Vec::new(),
-            applications: Vec::new(),
-            times: Vec::new(),
+    /// Starts the record of a solve of `x = L0 + K x`; a zero source has nothing to solve.
+    pub fn start(l0: &[f64]) -> Result<History, SolveError> {
+        let scale = norm(l0);
+        if scale == 0.0 {
+            return Err(SolveError::NoSource);
         }
+        Ok(History { start: Instant::now(), scale, residuals: Vec::new(), applications: Vec::new(), times: Vec::new() })
     }
 
     /// Records the relative residual of the current iterate; returns it.

@@ -18,11 +18,8 @@ pub fn successive_approximation(
     params: &SolveParams,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
-    let mut history = History::new(l0);
+    let mut history = History::start(l0)?;
     let scale = history.scale;
-    if scale == 0.0 {
-        return Err(SolveError::NoSource);
-    }
     let mut x = l0.to_vec();
     let mut next = vec![0.0; l0.len()];
     for n in 0..=params.max_iterations {

@@ -20,11 +20,8 @@ pub fn southwell(
     if areas.len() != n {
         return Err(SolveError::Unsupported { method: "Southwell", needs: "one direction cell (K = 1)" });
     }
-    let mut history = History::new(l0);
+    let mut history = History::start(l0)?;
     let scale = history.scale;
-    if scale == 0.0 {
-        return Err(SolveError::NoSource);
-    }
     let columns = k.0.to_csc();
     let mut x = l0.to_vec();
     let mut unshot = l0.to_vec();
