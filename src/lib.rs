@@ -3,13 +3,14 @@
 //! The modules follow the data flow of `design.md` §6: [`scene`] (case files) →
 //! [`geometry`] (patches) and [`visibility`] (BVH) → [`directions`], [`brdf`] and
 //! [`kernel`] (`K = B·G`) → [`model`] (the linear system) → [`solve`] → [`field`],
-//! [`energy`], [`probe`] → [`io`] (HDF5).
+//! [`energy`], [`probe`], [`grid`] → [`io`] (HDF5).
 
 pub mod brdf;
 pub mod directions;
 pub mod energy;
 pub mod field;
 pub mod geometry;
+pub mod grid;
 pub mod io;
 pub mod kernel;
 pub mod model;

@@ -43,12 +43,22 @@ pub fn read_probes(probes: &[Probe], model: &Model, field: &Field) -> Vec<ProbeR
     probes.iter().map(|p| read(p, model, field)).collect()
 }
 
-fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
-    let (p, n) = (probe.position, probe.normal);
+/// Illuminance, lx, on a receiver at `p` facing the unit `n` (on a surface or in free space).
+pub fn illuminance_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> f64 {
+    PI * incident_at(model, field, p, n).1.iter().sum::<f64>()
+}
+
+/// The patch `p` lies on (if any) and the light arriving at `p` per cell of its frame.
+fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (Option<usize>, Vec<f64>) {
     let patch = patch_under(model, p, n);
     let frame = patch.map_or_else(|| Frame::around(n), |i| model.mesh.patches[i].frame());
     let ignore = patch.map_or(NO_FACE, |i| model.mesh.patches[i].face);
-    let incident = gather(model, field, p, &frame, ignore);
+    (patch, gather(model, field, p, &frame, ignore))
+}
+
+fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
+    let (p, n) = (probe.position, probe.normal);
+    let (patch, incident) = incident_at(model, field, p, n);
     let illuminance = PI * incident.iter().sum::<f64>();
     let luminance = match patch {
         Some(i) => outgoing(model, field, i, p, n, &incident),

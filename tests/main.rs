@@ -3,6 +3,7 @@
 mod brdf;
 mod cli;
 mod directions;
+mod grid;
 mod kernel;
 mod render;
 mod scene;

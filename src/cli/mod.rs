@@ -69,3 +69,8 @@ pub fn methods(names: &[String]) -> Result<Vec<ugo::solve::Method>> {
         })
         .collect()
 }
+
+/// A table name (camera, grid) made safe for a file name.
+fn file_name(name: &str) -> String {
+    name.chars().map(|c| if c.is_alphanumeric() || c == '-' || c == '_' { c } else { '_' }).collect()
+}

@@ -1,6 +1,7 @@
 //! `ugo render OUT.h5`: camera images of a stored solution, linear EXR and sRGB PNG, and
 //! optionally a false-colour map with a legend in cd/m² and the reflection-order pictures.
 
+use super::file_name;
 use anyhow::{Result, bail};
 use std::path::Path;
 use std::time::Instant;
@@ -52,7 +53,7 @@ pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path, ext
         println!("  {}\n  {}", exr.display(), png.display());
         if let Some(scale) = scale {
             let map = dir.join(format!("{case}-{}-false.png", file_name(&camera.name)));
-            write_false_colour(&map, &image, scale)?;
+            write_false_colour(&map, &image, scale, "cd/m²")?;
             println!("  {}", map.display());
         }
         if !orders.is_empty() {
@@ -106,9 +107,4 @@ fn chosen<'a>(cameras: &'a [Camera], names: &[String], case: &Path) -> Result<Ve
                 .ok_or_else(|| anyhow::anyhow!("unknown camera \"{n}\"; known: {}", known()))
         })
         .collect()
-}
-
-/// A camera name made safe for a file name.
-fn file_name(name: &str) -> String {
-    name.chars().map(|c| if c.is_alphanumeric() || c == '-' || c == '_' { c } else { '_' }).collect()
 }

@@ -3,14 +3,15 @@
 //! balance, optionally record reflection orders and norms, write HDF5 (and a plot), and
 //! print a summary.
 
-use super::{bar, bytes, load};
+use super::{bar, bytes, file_name, load};
 use crate::Discretize;
 use anyhow::{Context, Result, bail};
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 use ugo::energy::EnergyBalance;
 use ugo::field::Field;
-use ugo::io::{Run, Solution, convergence_plot, write_solution};
+use ugo::grid::{GridReading, read_grids};
+use ugo::io::{Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_solution};
 use ugo::kernel::{Explicit, Factored};
 use ugo::model::Model;
 use ugo::probe::read_probes;
@@ -95,6 +96,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let illuminance: Vec<f64> = gx.chunks(k).map(|c| PI * c.iter().sum::<f64>()).collect();
     let energy = EnergyBalance::of(&model.mesh, &model.kernel, &model.l0, &x, scene.surfaces.len());
     let probes = read_probes(&scene.probes, &model, &field);
+    let grids = read_grids(&scene.grids, &model, &field);
     let orders = order_record(&job, &methods, &model);
     let norms = explicit.as_ref().filter(|_| job.norms).map(Norms::of);
     let solution = Solution {
@@ -106,12 +108,14 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         info: &runs[reference].info,
         energy: &energy,
         probes: &probes,
+        grids: &grids,
         orders: orders.as_ref(),
         runs: &runs,
         norms: norms.as_ref(),
     };
     write_solution(&output, &solution).with_context(|| format!("writing {}", output.display()))?;
     summary(&solution, &output);
+    write_grids(&grids, &output)?;
     if let Some(orders) = &orders {
         print_orders(orders, &x);
     }
@@ -177,6 +181,25 @@ fn summary(s: &Solution, output: &Path) {
         }
     }
     println!("  written            {}", output.display());
+}
+
+/// Each grid's CSV and false-colour map beside the HDF5 file, `<stem>-<grid>.{csv,png}`.
+fn write_grids(grids: &[GridReading], output: &Path) -> Result<()> {
+    if grids.is_empty() {
+        return Ok(());
+    }
+    println!("  grids                      E_avg lx     E_min lx     E_max lx      U0");
+    let stem = output.with_extension("");
+    for g in grids {
+        let st = g.stats();
+        println!("    {:<22} {:>12.4} {:>12.4} {:>12.4} {:>7.4}", g.grid.name, st.average, st.min, st.max, st.u0);
+        let base = format!("{}-{}", stem.display(), file_name(&g.grid.name));
+        let (csv, png) = (PathBuf::from(format!("{base}.csv")), PathBuf::from(format!("{base}.png")));
+        write_grid_csv(&csv, g)?;
+        write_grid_map(&png, g)?;
+        println!("      {}\n      {}", csv.display(), png.display());
+    }
+    Ok(())
 }
 
 fn print_norms(n: &Norms, params: &SolveParams, runs: &[Run]) {

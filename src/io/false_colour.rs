@@ -1,5 +1,6 @@
-//! False-colour PNG maps of luminance with a legend in cd/m² (linear or logarithmic
-//! scale), the map lighting engineers read values off.
+//! False-colour PNG maps with a legend in physical units (cd/m² for luminance images, lx
+//! for illuminance grids; linear or logarithmic scale), the maps lighting engineers read
+//! values off.
 //!
 //! Colours run dark blue → blue → cyan → green → yellow → red over the scale; pixels
 //! below its bottom are drawn in the bottom colour, above its top in the top colour.
@@ -61,17 +62,23 @@ pub fn position(l: f64, lo: f64, hi: f64, scale: Scale) -> f64 {
     }
 }
 
-/// Writes the false-colour map of `image` with its legend to `path` (PNG).
-pub fn write_false_colour(path: &Path, image: &Image, scale: Scale) -> Result<()> {
+/// Writes the false-colour map of `image` with its legend in `unit` to `path` (PNG).
+pub fn write_false_colour(path: &Path, image: &Image, scale: Scale, unit: &str) -> Result<()> {
     let (lo, hi) = bounds(image, scale);
     atomic(path, |tmp| {
         let tmp_png = tmp.with_extension("tmp.png");
-        draw(&tmp_png, image, scale, lo, hi).map_err(|e| anyhow!("writing {}: {e}", path.display()))?;
+        draw(&tmp_png, image, scale, (lo, hi), unit).map_err(|e| anyhow!("writing {}: {e}", path.display()))?;
         std::fs::rename(&tmp_png, tmp).map_err(|e| anyhow!("writing {}: {e}", path.display()))
     })
 }
 
-fn draw(path: &Path, image: &Image, scale: Scale, lo: f64, hi: f64) -> Result<(), Box<dyn std::error::Error>> {
+fn draw(
+    path: &Path,
+    image: &Image,
+    scale: Scale,
+    (lo, hi): (f64, f64),
+    unit: &str,
+) -> Result<(), Box<dyn std::error::Error>> {
     super::plot::register_font();
     let (w, h) = (image.width as u32, image.height.max(240) as u32);
     let root = BitMapBackend::new(path, (w + LEGEND_WIDTH, h)).into_drawing_area();
@@ -88,7 +95,7 @@ fn draw(path: &Path, image: &Image, scale: Scale, lo: f64, hi: f64) -> Result<()
         root.draw(&Rectangle::new([(bar_x, y), (bar_x + 30, y + 1)], colour(t).filled()))?;
     }
     let style = ("sans-serif", 14).into_font().color(&BLACK);
-    root.draw(&Text::new("cd/m²", (bar_x, 8), style.clone()))?;
+    root.draw(&Text::new(unit.to_string(), (bar_x, 8), style.clone()))?;
     for k in 0..=5 {
         let t = k as f64 / 5.0;
         let value = match scale {
@@ -97,8 +104,21 @@ fn draw(path: &Path, image: &Image, scale: Scale, lo: f64, hi: f64) -> Result<()
         };
         let y = bar_bottom - (t * (bar_bottom - bar_top) as f64) as i32;
         root.draw(&PathElement::new(vec![(bar_x + 30, y), (bar_x + 36, y)], BLACK))?;
-        root.draw(&Text::new(format!("{value:.3e}"), (bar_x + 40, y - 7), style.clone()))?;
+        root.draw(&Text::new(label(value), (bar_x + 40, y - 7), style.clone()))?;
     }
     root.present()?;
     Ok(())
+}
+
+/// A legend value with four significant digits, plainly written where that is short.
+fn label(value: f64) -> String {
+    let magnitude = value.abs();
+    if value == 0.0 {
+        "0".to_string()
+    } else if (0.01..1e5).contains(&magnitude) {
+        let decimals = (3 - magnitude.log10().floor() as i32).max(0) as usize;
+        format!("{value:.decimals$}")
+    } else {
+        format!("{value:.3e}")
+    }
 }

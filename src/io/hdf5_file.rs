@@ -6,12 +6,14 @@
 //! `/compare/<method>/…` (the same histories per method, `ugo compare`),
 //! `/orders/{orders,term_norms,partial_sums}` (the reflection-order record), `/norms` (attributes),
 //! `/energy/{surface_emitted,surface_absorbed}`,
-//! `/probes/{name,position,normal,luminance,illuminance}`, and attributes on the root for
+//! `/probes/{name,position,normal,luminance,illuminance}`,
+//! `/grids/<name>/{points,illuminance}` (with the statistics as attributes), and attributes on the root for
 //! method, tolerance, iterations, timings, energy totals, the scene text and the version.
 //! The file is written under a temporary name and renamed when complete.
 
 use crate::energy::EnergyBalance;
 use crate::field::Field;
+use crate::grid::GridReading;
 use crate::model::Model;
 use crate::probe::ProbeReading;
 use crate::scene::Scene;
@@ -33,6 +35,7 @@ pub struct Solution<'a> {
     pub info: &'a SolveInfo,
     pub energy: &'a EnergyBalance,
     pub probes: &'a [ProbeReading],
+    pub grids: &'a [GridReading],
     /// The reflection-order record, when taken.
     pub orders: Option<&'a OrderRecord>,
     /// Every method run on the system (one for `solve`, several for `compare`).
@@ -103,6 +106,10 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     dataset(&energy, "surface_absorbed", &Array1::from(s.energy.surface_absorbed.clone()))?;
 
     write_probes(&file.create_group("probes")?, s.probes)?;
+    let grids = file.create_group("grids")?;
+    for grid in s.grids {
+        write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
+    }
     write_attributes(&file, s)
 }
 
@@ -188,6 +195,20 @@ fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
     dataset(g, "normal", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].normal[c]))?;
     dataset(g, "luminance", &Array1::from_iter(probes.iter().map(|p| p.luminance)))?;
     dataset(g, "illuminance", &Array1::from_iter(probes.iter().map(|p| p.illuminance)))
+}
+
+/// Points and illuminance as `nv × nu` arrays (row `b` runs along `edge_u`).
+fn write_grid(g: &hdf5::Group, grid: &GridReading) -> hdf5::Result<()> {
+    let [nu, nv] = grid.grid.resolution;
+    dataset(g, "points", &Array3::from_shape_fn((nv, nu, 3), |(b, a, c)| grid.points[b * nu + a][c]))?;
+    dataset(g, "illuminance", &Array2::from_shape_fn((nv, nu), |(b, a)| grid.illuminance[b * nu + a]))?;
+    let st = grid.stats();
+    let n = grid.grid.normal;
+    g.new_attr::<f64>().shape(3).create("normal")?.write_raw(&[n.x, n.y, n.z])?;
+    for (name, value) in [("E_avg", st.average), ("E_min", st.min), ("E_max", st.max), ("U0", st.u0)] {
+        g.new_attr::<f64>().create(name)?.write_scalar(&value)?;
+    }
+    Ok(())
 }
 
 fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {

@@ -28,6 +28,7 @@ pub struct Scene {
     pub surfaces: Vec<Surface>,
     pub probes: Vec<Probe>,
     pub cameras: Vec<Camera>,
+    pub grids: Vec<Grid>,
 }
 
 /// `[discretization]`: how finely surfaces are meshed.
@@ -145,6 +146,32 @@ pub struct Camera {
     pub resolution: [usize; 2],
     /// Primary rays per pixel (stratified).
     pub samples: usize,
+}
+
+/// `[[grid]]`: an illuminance calculation grid, the parallelogram
+/// `origin + s·edge_u + t·edge_v` divided into `resolution = [nu, nv]` equal cells with a
+/// calculation point at the centre of each.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Grid {
+    pub name: String,
+    pub origin: DVec3,
+    pub edge_u: DVec3,
+    pub edge_v: DVec3,
+    /// Unit normal of the receiving side, `±(edge_u × edge_v)`.
+    pub normal: DVec3,
+    pub resolution: [usize; 2],
+}
+
+impl Grid {
+    /// The calculation points, row by row along `edge_u`, rows stepping along `edge_v`.
+    pub fn points(&self) -> Vec<DVec3> {
+        let [nu, nv] = self.resolution;
+        let at = |a: usize, n: usize| (a as f64 + 0.5) / n as f64;
+        (0..nv)
+            .flat_map(|b| (0..nu).map(move |a| (a, b)))
+            .map(|(a, b)| self.origin + self.edge_u * at(a, nu) + self.edge_v * at(b, nv))
+            .collect()
+    }
 }
 
 impl Scene {

@@ -23,6 +23,8 @@ pub struct RawScene {
     pub probe: Vec<RawProbe>,
     #[serde(default)]
     pub camera: Vec<RawCamera>,
+    #[serde(default)]
+    pub grid: Vec<RawGrid>,
 }
 
 /// `[scene]`.
@@ -126,6 +128,18 @@ pub struct RawCamera {
     pub fov_deg: Option<f64>,
     pub resolution: Option<[i64; 2]>,
     pub samples: Option<i64>,
+}
+
+/// `[[grid]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawGrid {
+    pub name: String,
+    pub origin: [f64; 3],
+    pub edge_u: [f64; 3],
+    pub edge_v: [f64; 3],
+    pub resolution: [i64; 2],
+    pub normal: Option<[f64; 3]>,
 }
 
 /// Parses case text into the raw tables.

@@ -294,3 +294,25 @@ fn camera_defaults_and_rules() {
     let typo = rejected(&camera("fov = 30"));
     assert!(typo.to_string().contains("unknown field `fov`"), "{typo}");
 }
+
+/// A `[[grid]]` named `g`, 2 × 1 m in the floor plane, with extra keys.
+fn grid(keys: &str) -> String {
+    let table = "\n[[grid]]\nname = \"g\"\norigin = [0, 0, 0]\nedge_u = [2, 0, 0]\nedge_v = [0, 0, 1]\n";
+    lit(&format!("{table}{keys}\n"))
+}
+
+#[test]
+fn grid_defaults_and_rules() {
+    let scene = parse(&grid("resolution = [4, 2]")).unwrap();
+    let g = &scene.grids[0];
+    assert_eq!((g.resolution, g.normal), ([4, 2], glam::DVec3::NEG_Y), "the normal defaults to edge_u × edge_v");
+    let up = parse(&grid("resolution = [4, 2]\nnormal = [0, 3, 0]")).unwrap();
+    assert_eq!(up.grids[0].normal, glam::DVec3::Y);
+    let at = "[[grid]] \"g\" (#1)";
+    assert_error(&rejected(&grid("resolution = [0, 2]")), at, "resolution", &["from 1 to 1000", "[0, 2]"]);
+    assert_error(&rejected(&grid("resolution = [4, 2]\nnormal = [1, 1, 0]")), at, "normal", &["perpendicular"]);
+    let flat = grid("resolution = [4, 2]").replace("edge_v = [0, 0, 1]", "edge_v = [4, 0, 0]");
+    assert_error(&rejected(&flat), at, "edge_v", &["parallel"]);
+    let missing = rejected(&grid(""));
+    assert!(missing.to_string().contains("missing field `resolution`"), "{missing}");
+}

@@ -28,6 +28,7 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         surfaces,
         probes: Vec::new(),
         cameras: Vec::new(),
+        grids: Vec::new(),
     }
 }
 

@@ -1,0 +1,52 @@
+//! Illuminance calculation grids (`[[grid]]`): the illuminance `E = π Σ_d I_d` (lx) at
+//! the centre of every grid cell, gathered from the solved field exactly as a probe's
+//! (`probe.rs`, `design.md` §5), and the statistics lighting designers judge a
+//! lighting scheme by: average, minimum, maximum and the uniformity `U0 = E_min/E_avg`.
+
+use crate::field::Field;
+use crate::model::Model;
+use crate::probe::illuminance_at;
+use crate::scene::Grid;
+use glam::DVec3;
+
+/// One grid's calculation points and their illuminance, row by row along `edge_u`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GridReading {
+    pub grid: Grid,
+    pub points: Vec<DVec3>,
+    /// lx, one value per point.
+    pub illuminance: Vec<f64>,
+}
+
+/// Summary of a grid's illuminance, lx (and `u0`, dimensionless).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GridStats {
+    pub average: f64,
+    pub min: f64,
+    pub max: f64,
+    /// Uniformity `E_min / E_avg` (0 when the average is 0).
+    pub u0: f64,
+}
+
+impl GridReading {
+    /// The illuminance at every calculation point of `grid`.
+    pub fn of(grid: &Grid, model: &Model, field: &Field) -> GridReading {
+        let points = grid.points();
+        let illuminance = points.iter().map(|&p| illuminance_at(model, field, p, grid.normal)).collect();
+        GridReading { grid: grid.clone(), points, illuminance }
+    }
+
+    /// Every point has the same weight: the cells are equal.
+    pub fn stats(&self) -> GridStats {
+        let e = &self.illuminance;
+        let average = e.iter().sum::<f64>() / e.len() as f64;
+        let min = e.iter().copied().fold(f64::INFINITY, f64::min);
+        let max = e.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        GridStats { average, min, max, u0: if average > 0.0 { min / average } else { 0.0 } }
+    }
+}
+
+/// Reads every grid of a scene from a solved field.
+pub fn read_grids(grids: &[Grid], model: &Model, field: &Field) -> Vec<GridReading> {
+    grids.iter().map(|g| GridReading::of(g, model, field)).collect()
+}

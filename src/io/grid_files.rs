@@ -1,0 +1,50 @@
+//! The files of an illuminance grid (`[[grid]]`): a CSV of every calculation point with
+//! its illuminance in lx, and a false-colour map with a legend in lx, `edge_u` to the
+//! right and `edge_v` up.
+
+use super::{Scale, atomic, write_false_colour};
+use crate::grid::GridReading;
+use crate::render::Image;
+use anyhow::{Result, anyhow};
+use std::io::Write;
+use std::path::Path;
+
+/// The map's longer side, pixels (each grid cell is drawn as a square block).
+const MAP_SIZE: usize = 480;
+
+/// `u,v,x,y,z,E_lx` per point (`u`, `v` the cell indices), statistics in `#` comments.
+pub fn write_grid_csv(path: &Path, grid: &GridReading) -> Result<()> {
+    let [nu, _] = grid.grid.resolution;
+    let st = grid.stats();
+    let mut text = format!(
+        "# grid \"{}\", illuminance in lx on the side facing {:?}\n\
+         # E_avg {:.6e}, E_min {:.6e}, E_max {:.6e}, U0 {:.6}\nu,v,x,y,z,E_lx\n",
+        grid.grid.name,
+        grid.grid.normal.to_array(),
+        st.average,
+        st.min,
+        st.max,
+        st.u0
+    );
+    for (i, (p, e)) in grid.points.iter().zip(&grid.illuminance).enumerate() {
+        text += &format!("{},{},{:.9},{:.9},{:.9},{:.9e}\n", i % nu, i / nu, p.x, p.y, p.z, e);
+    }
+    atomic(path, |tmp| {
+        let mut file = std::fs::File::create(tmp).map_err(|e| anyhow!("cannot create {}: {e}", tmp.display()))?;
+        file.write_all(text.as_bytes()).map_err(|e| anyhow!("writing {}: {e}", path.display()))
+    })
+}
+
+/// The false-colour map of the grid's illuminance on a linear scale from 0, in lx.
+pub fn write_grid_map(path: &Path, grid: &GridReading) -> Result<()> {
+    let [nu, nv] = grid.grid.resolution;
+    let block = (MAP_SIZE / nu.max(nv)).max(1);
+    let (width, height) = (nu * block, nv * block);
+    let luminance = (0..width * height)
+        .map(|i| {
+            let (x, y) = (i % width, i / width);
+            grid.illuminance[(nv - 1 - y / block) * nu + x / block]
+        })
+        .collect();
+    write_false_colour(path, &Image { width, height, luminance }, Scale::Linear, "lx")
+}
