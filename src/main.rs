@@ -111,6 +111,13 @@ enum Command {
         /// Also write the reflection-order pictures for these recorded orders, side by side.
         #[arg(long, value_delimiter = ',')]
         orders: Vec<usize>,
+        /// `flat` (the stored patch values), `smooth` (interpolated across each surface's
+        /// patches) or `gather` (one more reflection at every hit point).
+        #[arg(long, default_value = "flat")]
+        shading: String,
+        /// Final-gather rays per pixel (with `--shading gather`).
+        #[arg(long, default_value_t = 64)]
+        gather_rays: usize,
     },
     /// Patches, unknowns, and the kernel's estimated size, before any assembly.
     Info {
@@ -184,9 +191,15 @@ fn main() -> ExitCode {
             };
             cli::solve::run(&case, &discretize, job)
         }),
-        Command::Render { solution, cameras, exposure, output, false_colour, orders } => {
-            let extras = cli::render::Extras { false_colour: false_colour.as_deref(), orders: &orders };
-            cli::render::run(&solution, &cameras, exposure, &output, &extras)
+        Command::Render { solution, cameras, exposure, output, false_colour, orders, shading, gather_rays } => {
+            let look = cli::render::Look {
+                exposure,
+                false_colour: false_colour.as_deref(),
+                orders: &orders,
+                shading: &shading,
+                gather_rays,
+            };
+            cli::render::run(&solution, &cameras, &output, &look)
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench { case, discretize, rays, lu } => cli::bench::run(&case, &discretize, rays, &lu),

@@ -6,19 +6,33 @@ use anyhow::{Result, bail};
 use std::path::Path;
 use std::time::Instant;
 use ugo::io::{Scale, auto_exposure, read_solution, write_exr, write_false_colour, write_png, write_triptych};
-use ugo::render::{LitScene, render};
+use ugo::render::{Shading, render};
 use ugo::scene::Camera;
 
-/// The optional pictures beside the camera images.
-pub struct Extras<'a> {
+/// How the images look and which pictures accompany them.
+pub struct Look<'a> {
+    /// Luminance shown as white, cd/m² (default: the 99th percentile).
+    pub exposure: Option<f64>,
     /// `log` or `linear`: also a false-colour map.
     pub false_colour: Option<&'a str>,
     /// Reflection orders for the side-by-side order pictures.
     pub orders: &'a [usize],
+    /// `flat`, `smooth` or `gather`.
+    pub shading: &'a str,
+    /// Final-gather rays per pixel.
+    pub gather_rays: usize,
 }
 
-pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path, extras: &Extras) -> Result<()> {
-    let scale = match extras.false_colour {
+pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()> {
+    let exposure = look.exposure;
+    let shading = match look.shading {
+        "flat" => Shading::Flat,
+        "smooth" => Shading::Smooth,
+        "gather" if (1..=65_536).contains(&look.gather_rays) => Shading::Gather { rays: look.gather_rays },
+        "gather" => bail!("--gather-rays must be from 1 to 65536, got {}", look.gather_rays),
+        other => bail!("--shading takes `flat`, `smooth` or `gather`, got \"{other}\""),
+    };
+    let scale = match look.false_colour {
         None => None,
         Some("log") => Some(Scale::Log),
         Some("linear") => Some(Scale::Linear),
@@ -30,12 +44,13 @@ pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path, ext
         bail!("--exposure must be a positive luminance in cd/m², got {l}");
     }
     let stored = read_solution(file)?;
-    let cameras = chosen(&stored.scene.cameras, names, &stored.scene.path)?;
+    let cameras: Vec<Camera> = chosen(&stored.scene.cameras, names, &stored.scene.path)?.into_iter().cloned().collect();
     let case = stored.scene.path.file_stem().unwrap_or_default().to_string_lossy().into_owned();
-    let orders = chosen_orders(&stored.orders, extras.orders)?;
-    let mut lit = LitScene::new(stored.mesh, stored.directions, stored.luminance);
+    let orders = chosen_orders(&stored.orders, look.orders)?;
+    let mut lit = stored.into_lit();
+    lit.set_shading(shading);
     std::fs::create_dir_all(dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
-    for camera in cameras {
+    for camera in &cameras {
         let start = Instant::now();
         let image = render(&lit, camera);
         let seconds = start.elapsed().as_secs_f64();
@@ -46,8 +61,12 @@ pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path, ext
         write_png(&png, &image, white)?;
         let (lo, hi) = image.range();
         println!(
-            "ugo render: camera \"{}\" {}×{}, {} samples/pixel, {seconds:.2} s",
-            camera.name, image.width, image.height, camera.samples
+            "ugo render: camera \"{}\" {}×{}, {} samples/pixel, {} shading, {seconds:.2} s",
+            camera.name,
+            image.width,
+            image.height,
+            camera.samples,
+            describe(shading)
         );
         println!("  luminance {lo:.4e} .. {hi:.4e} cd/m², white at {white:.4e} cd/m²");
         println!("  {}\n  {}", exr.display(), png.display());
@@ -57,6 +76,10 @@ pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path, ext
             println!("  {}", map.display());
         }
         if !orders.is_empty() {
+            // A gather from the sum of n orders would show n + 1: the panels are drawn smooth.
+            if let Shading::Gather { .. } = shading {
+                lit.set_shading(Shading::Smooth);
+            }
             let solved = std::mem::take(&mut lit.luminance);
             let mut panels = Vec::with_capacity(orders.len());
             for (n, sum) in &orders {
@@ -65,12 +88,21 @@ pub fn run(file: &Path, names: &[String], exposure: Option<f64>, dir: &Path, ext
                 panels.push((caption, render(&lit, camera)));
             }
             lit.luminance = solved;
+            lit.set_shading(shading);
             let path = dir.join(format!("{case}-{}-orders.png", file_name(&camera.name)));
             write_triptych(&path, &panels, white)?;
             println!("  {}", path.display());
         }
     }
     Ok(())
+}
+
+fn describe(shading: Shading) -> String {
+    match shading {
+        Shading::Flat => "flat".into(),
+        Shading::Smooth => "smooth".into(),
+        Shading::Gather { rays } => format!("final-gather ({rays} rays/pixel)"),
+    }
 }
 
 /// The recorded partial sums for the orders asked for.

@@ -1,8 +1,10 @@
 //! Reading a solve back from its HDF5 file (the layout of `hdf5_file.rs`): the stored
 //! scene, the patch geometry and the luminance field, enough to look at the result again.
 
+use crate::brdf::Block;
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Mesh, NO_TWIN, Patch};
+use crate::render::LitScene;
 use crate::scene::Scene;
 use anyhow::{Context, Result, anyhow, bail};
 use glam::DVec3;
@@ -19,6 +21,15 @@ pub struct StoredSolution {
     pub luminance: Vec<f64>,
     /// `(n, Σ_{m≤n} KᵐL0)` from `/orders`, when the solve recorded reflection orders.
     pub orders: Vec<(usize, Vec<f64>)>,
+}
+
+impl StoredSolution {
+    /// The solution ready for rendering (flat shading), with the material blocks of its
+    /// scene on its direction set.
+    pub fn into_lit(self) -> LitScene {
+        let blocks = self.scene.materials.iter().map(|m| Block::of(&m.model, &self.directions)).collect();
+        LitScene::new(self.mesh, self.directions, self.luminance, blocks)
+    }
 }
 
 /// Opens `path` and reads the scene, mesh, direction set and luminance field.

@@ -5,6 +5,7 @@
 //! stratified in both axes (N-rooks: sample `s` sits in column stratum `s` and in a
 //! shuffled row stratum), jittered by a hash of the pixel so images are reproducible.
 
+use super::random::Rng;
 use crate::scene::Camera;
 use glam::DVec3;
 
@@ -50,11 +51,10 @@ impl Projection {
     /// Direction of sample `s` (of [`Projection::samples`]) of pixel `(px, py)`.
     pub fn sample(&self, px: usize, py: usize, s: usize) -> DVec3 {
         let n = self.samples as u64;
-        let mut state = ((py * self.width + px) as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ 0x5DEE_CE66;
-        let shift = splitmix(&mut state) % n;
-        let mut jitter = splitmix(&mut state.wrapping_add(s as u64 + 1));
-        let jx = unit(splitmix(&mut jitter));
-        let jy = unit(splitmix(&mut jitter));
+        let pixel = (py * self.width + px) as u64;
+        let shift = Rng::new(pixel).next_u64() % n;
+        let mut jitter = Rng::new(pixel ^ ((s as u64 + 1) << 40));
+        let (jx, jy) = (jitter.unit(), jitter.unit());
         // Row strata are a shuffled permutation: a stride coprime to n, then a shift.
         let stride = if n.is_multiple_of(7) { 1 } else { 7 };
         let row = (s as u64 * stride + shift) % n;
@@ -62,17 +62,4 @@ impl Projection {
         let y = py as f64 + (row as f64 + jy) / n as f64;
         self.direction(x, y)
     }
-}
-
-fn splitmix(state: &mut u64) -> u64 {
-    *state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-    let mut z = *state;
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^ (z >> 31)
-}
-
-/// A number in [0, 1) from 53 random bits.
-fn unit(bits: u64) -> f64 {
-    (bits >> 11) as f64 / (1u64 << 53) as f64
 }

@@ -1,6 +1,7 @@
-//! The luminance image of one camera: rayon over rows, samples averaged per pixel.
+//! The luminance image of one camera: rayon over rows, samples averaged per pixel; a
+//! final gather's rays per pixel are spread over the pixel's samples.
 
-use super::{LitScene, Projection};
+use super::{LitScene, Projection, Rng, Shading};
 use crate::scene::Camera;
 use rayon::prelude::*;
 
@@ -23,10 +24,17 @@ impl Image {
 pub fn render(scene: &LitScene, camera: &Camera) -> Image {
     let view = Projection::of(camera);
     let (width, height) = (view.width, view.height);
+    let rays = match scene.shading() {
+        Shading::Gather { rays } => rays.div_ceil(view.samples),
+        _ => 0,
+    };
     let mut luminance = vec![0.0; width * height];
     luminance.par_chunks_mut(width).enumerate().for_each(|(py, row)| {
         for (px, pixel) in row.iter_mut().enumerate() {
-            let sum: f64 = (0..view.samples).map(|s| scene.luminance_along(view.eye, view.sample(px, py, s))).sum();
+            let mut rng = Rng::new(((py * width + px) as u64) << 20 | 0xA5);
+            let sum: f64 = (0..view.samples)
+                .map(|s| scene.luminance_along(view.eye, view.sample(px, py, s), rays, &mut rng))
+                .sum();
             *pixel = sum / view.samples as f64;
         }
     });

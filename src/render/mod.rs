@@ -1,13 +1,18 @@
 //! Camera images of a solved luminance field (`ugo render`).
 //!
-//! A pixel holds the luminance (cd/m²) a pinhole camera sees through it: the stored
-//! luminance of the first patch along each primary ray, in the direction cell pointing
-//! back at the eye, averaged over the pixel's samples. Nothing is re-solved or gathered.
+//! A pixel holds the luminance (cd/m²) a pinhole camera sees through it: the luminance
+//! leaving the first surface along each primary ray towards the eye, averaged over the
+//! pixel's samples, shaded flat (the stored patch value), smooth (interpolated between
+//! patches of one surface) or by a final gather (one more reflection at the hit point).
 
 mod camera;
+mod gather;
 mod image;
 mod lit;
+mod random;
+mod smooth;
 
 pub use camera::Projection;
 pub use image::{Image, render};
-pub use lit::LitScene;
+pub use lit::{LitScene, Shading};
+pub use random::Rng;

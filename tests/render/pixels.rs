@@ -2,13 +2,15 @@
 //! the back of a one-sided surface is black, a miss is 0 cd/m², and the white furnace
 //! (solved by `ugo solve`) is 5 cd/m² everywhere.
 
+use crate::support::{build, corner_factor, solve};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use ugo::brdf::Block;
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
 use ugo::io::read_solution;
-use ugo::render::{LitScene, render};
+use ugo::render::{LitScene, Projection, Shading, render};
 use ugo::scene::{Camera, Scene};
 
 fn camera(position: [f64; 3], look_at: [f64; 3], fov_deg: f64, size: usize) -> Camera {
@@ -34,7 +36,8 @@ fn emitter(two_sided: bool) -> LitScene {
     let scene = Scene::parse(Path::new("lamp.toml"), text).expect("valid scene");
     let mesh = Mesh::build(&scene, 0.25);
     let luminance = mesh.emission.clone();
-    LitScene::new(mesh, DirectionSet::single(), luminance)
+    let blocks = vec![Block::of(&scene.materials[0].model, &DirectionSet::single())];
+    LitScene::new(mesh, DirectionSet::single(), luminance, blocks)
 }
 
 #[test]
@@ -72,12 +75,88 @@ fn the_furnace_box_renders_five_candela_per_square_metre_everywhere() {
     let stored = read_solution(&out).unwrap();
     let camera = stored.scene.cameras[0].clone();
     assert_eq!(camera.name, "inside");
-    let lit = LitScene::new(stored.mesh, stored.directions, stored.luminance);
-    let image = render(&lit, &camera);
-    assert_eq!(image.luminance.len(), 32 * 32);
-    for l in &image.luminance {
-        assert!((l - 5.0).abs() < 1e-6, "pixel luminance {l}");
+    let mut lit = stored.into_lit();
+    for shading in [Shading::Flat, Shading::Smooth, Shading::Gather { rays: 8 }] {
+        lit.set_shading(shading);
+        let image = render(&lit, &camera);
+        assert_eq!(image.luminance.len(), 32 * 32);
+        for l in &image.luminance {
+            assert!((l - 5.0).abs() < 1e-6, "{shading:?}: pixel luminance {l}");
+        }
     }
+}
+
+/// A black 1 × 1 m lamp of 1000 cd/m² 1 m above a 3 × 3 m floor of reflectance 0.5.
+const LAMP_OVER_FLOOR: &str = r#"
+[discretization]
+patch_size = 0.25
+[[material]]
+name = "black"
+type = "lambert"
+reflectance = 0.0
+[[material]]
+name = "grey"
+type = "lambert"
+reflectance = 0.5
+[[surface]]
+name = "lamp"
+shape = "rectangle"
+material = "black"
+origin = [0.0, 1.0, 0.0]
+edge_u = [1.0, 0.0, 0.0]
+edge_v = [0.0, 0.0, 1.0]
+emission = { luminance = 1000.0 }
+[[surface]]
+name = "floor"
+shape = "rectangle"
+material = "grey"
+origin = [-1.0, 0.0, -1.0]
+edge_u = [0.0, 0.0, 3.0]
+edge_v = [3.0, 0.0, 0.0]
+"#;
+
+/// The floor's exact luminance at `(x, 0, z)`: `ρ L F` with `F` the point-to-lamp factor.
+fn floor_luminance(x: f64, z: f64) -> f64 {
+    let f = |a: f64, b: f64| a.signum() * b.signum() * corner_factor(a.abs(), b.abs(), 1.0);
+    0.5 * 1000.0 * (f(1.0 - x, 1.0 - z) - f(-x, 1.0 - z) - f(1.0 - x, -z) + f(-x, -z))
+}
+
+#[test]
+fn the_final_gather_shows_the_exact_point_luminance_and_smoothing_beats_flat() {
+    let scene = Scene::parse(Path::new("lamp.toml"), LAMP_OVER_FLOOR.to_string()).unwrap();
+    let model = build(&scene);
+    let x = solve(&model);
+    let blocks = model.kernel.blocks.clone();
+    let mut lit = LitScene::new(model.mesh, DirectionSet::single(), x, blocks);
+    // Looking straight down at the floor from under the lamp, one sample per pixel.
+    let mut camera = camera([0.5, 0.9, 0.7], [0.5, 0.0, 0.7], 70.0, 24);
+    (camera.up, camera.samples) = (DVec3::Z, 1);
+    let view = Projection::of(&camera);
+    let mut errors = Vec::new();
+    for shading in [Shading::Flat, Shading::Smooth, Shading::Gather { rays: 4 }] {
+        lit.set_shading(shading);
+        let image = render(&lit, &camera);
+        let mut sum = 0.0;
+        for py in 0..24 {
+            for px in 0..24 {
+                let d = view.sample(px, py, 0);
+                let q = view.eye + d * (-view.eye.y / d.y);
+                let exact = floor_luminance(q.x, q.z);
+                sum += (image.luminance[py * 24 + px] / exact - 1.0).powi(2);
+                if let Shading::Gather { .. } = shading {
+                    let l = image.luminance[py * 24 + px];
+                    assert!((l / exact - 1.0).abs() < 1e-6, "pixel ({px}, {py}) at {q}: {l} vs {exact}");
+                }
+            }
+        }
+        errors.push((sum / 576.0).sqrt());
+    }
+    let [flat, smooth, gather] = errors[..] else { unreachable!() };
+    eprintln!(
+        "rms relative error against the exact floor luminance: flat {flat:.3e}, smooth {smooth:.3e}, gather {gather:.3e}"
+    );
+    assert!(smooth < 0.7 * flat, "rms relative error: flat {flat:.3e}, smooth {smooth:.3e}");
+    assert!(gather < 1e-6 && flat > 1e-2, "rms relative error: flat {flat:.3e}, gather {gather:.3e}");
 }
 
 /// A two-sided grey plate under a lamp, with a camera below it.
@@ -138,7 +217,8 @@ fn files_without_face_records_pair_back_to_back_twins() {
     assert_eq!(links(&paired.mesh), recorded);
 
     // From below, the plate's lower twin is seen: lit only by what the plate transmits (nothing).
-    let lit = LitScene::new(stored.mesh, stored.directions, stored.luminance);
-    let image = render(&lit, &stored.scene.cameras[0]);
+    let camera = stored.scene.cameras[0].clone();
+    let lit = stored.into_lit();
+    let image = render(&lit, &camera);
     assert!(image.luminance.iter().all(|&l| l == 0.0), "{:?}", image.luminance);
 }

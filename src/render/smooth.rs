@@ -1,0 +1,94 @@
+//! Smooth shading: the flat patch values interpolated across the patches of one surface.
+//!
+//! Each corner of a patch holds the area-weighted mean of `L(j, k_j)` over the patches `j`
+//! of the same surface, facing the same side, that share that vertex (`k_j` the cell of
+//! patch `j` holding the direction to the eye); a hit point interpolates its patch's
+//! corners with Wachspress coordinates (barycentric on triangles, bilinear on
+//! parallelograms). Surfaces are not blended into each other, so corners between walls
+//! stay sharp. This is a picture of the field, not a better solution: the gather is.
+
+use super::LitScene;
+use crate::geometry::Mesh;
+use glam::DVec3;
+use std::collections::HashMap;
+
+/// The patches around every vertex of every patch.
+pub struct Corners {
+    /// Vertex ids of each patch's corners (in polygon order).
+    corner: Vec<[u32; 4]>,
+    /// Patches sharing each vertex id.
+    around: Vec<Vec<u32>>,
+}
+
+impl Corners {
+    pub fn of(mesh: &Mesh) -> Corners {
+        let quantum = 1e-7 * mesh.extent().max(f64::MIN_POSITIVE);
+        let mut ids: HashMap<(u32, bool, [i64; 3]), u32> = HashMap::new();
+        let mut around: Vec<Vec<u32>> = Vec::new();
+        let mut corner = Vec::with_capacity(mesh.len());
+        for (i, p) in mesh.patches.iter().enumerate() {
+            let mut slots = [u32::MAX; 4];
+            // Back-to-back twins share vertices but not sides: the side is part of the key.
+            let side = p.twin != crate::geometry::NO_TWIN && p.twin < i as u32;
+            for (slot, v) in slots.iter_mut().zip(p.polygon.vertices()) {
+                let key = (p.surface, side, (*v / quantum).round().as_i64vec3().to_array());
+                let next = around.len() as u32;
+                let id = *ids.entry(key).or_insert(next);
+                if id == next {
+                    around.push(Vec::new());
+                }
+                around[id as usize].push(i as u32);
+                *slot = id;
+            }
+            corner.push(slots);
+        }
+        Corners { corner, around }
+    }
+
+    /// The interpolated luminance of `patch` at `q` towards the unit direction `towards`.
+    pub fn smooth(&self, lit: &LitScene, patch: usize, q: DVec3, towards: DVec3) -> f64 {
+        let p = &lit.mesh.patches[patch];
+        let v = p.polygon.vertices();
+        let weights = wachspress(v, p.normal, q);
+        let mut sum = 0.0;
+        for (c, w) in weights.iter().take(v.len()).enumerate() {
+            if *w == 0.0 {
+                continue;
+            }
+            let (mut value, mut area) = (0.0, 0.0);
+            for &j in &self.around[self.corner[patch][c] as usize] {
+                let a = lit.mesh.patches[j as usize].area;
+                value += a * lit.flat(j as usize, towards);
+                area += a;
+            }
+            sum += w * value / area;
+        }
+        sum
+    }
+}
+
+/// Wachspress coordinates of `q` in the convex polygon `v` (3 or 4 vertices) of normal
+/// `n`, written without divisions so that points on an edge are exact; points slightly
+/// outside are clamped onto the polygon.
+fn wachspress(v: &[DVec3], n: DVec3, q: DVec3) -> [f64; 4] {
+    let m = v.len();
+    let area = |a: DVec3, b: DVec3, c: DVec3| 0.5 * n.dot((b - a).cross(c - a));
+    // edge[j]: the triangle (q, v_j, v_j+1); corner[j]: the triangle (v_j-1, v_j, v_j+1).
+    let mut edge = [0.0; 4];
+    let mut weights = [0.0; 4];
+    for j in 0..m {
+        edge[j] = area(q, v[j], v[(j + 1) % m]).max(0.0);
+    }
+    for (j, w) in weights.iter_mut().enumerate().take(m) {
+        let corner = area(v[(j + m - 1) % m], v[j], v[(j + 1) % m]);
+        let others: f64 = (0..m).filter(|&k| k != j && k != (j + m - 1) % m).map(|k| edge[k]).product();
+        *w = corner * others;
+    }
+    let total: f64 = weights.iter().sum();
+    if total > 0.0 {
+        weights.iter_mut().for_each(|w| *w /= total);
+    } else {
+        weights[..m].fill(1.0 / m as f64);
+    }
+    weights
+}
