@@ -80,3 +80,43 @@ fn render_fails_clearly_on_a_missing_or_foreign_file() {
     let o = ugo(&["render", missing.to_str().unwrap(), "--exposure=-1"]);
     assert!(text(&o).contains("--exposure"), "{}", text(&o));
 }
+
+/// Every bundled case, coarsened (patch size, direction cells) so that the test is quick.
+const CASES: [(&str, &str, &str); 7] = [
+    ("cornell-box", "0.1", "1"),
+    ("furnace-box", "0.25", "1"),
+    ("glossy-cornell", "0.1", "16"),
+    ("integrating-sphere", "0.35", "1"),
+    ("mirror-room", "0.6", "16"),
+    ("opal-diffuser", "0.25", "1"),
+    ("parallel-plates", "0.25", "1"),
+];
+
+#[test]
+fn every_case_has_a_camera_and_renders_finite_lit_pixels() {
+    let dir = scratch("cases");
+    let mut listed: Vec<String> = std::fs::read_dir("cases")
+        .unwrap()
+        .filter_map(|e| e.ok()?.file_name().into_string().ok()?.strip_suffix(".toml").map(String::from))
+        .collect();
+    listed.sort();
+    assert_eq!(listed, CASES.map(|c| c.0.to_string()), "the table lists every case");
+    for (case, patch, cells) in CASES {
+        let h5 = dir.join(format!("{case}.h5"));
+        let path = format!("cases/{case}.toml");
+        let o = ugo(&["solve", &path, "--patch-size", patch, "--directions", cells, "-o", h5.to_str().unwrap()]);
+        assert!(o.status.success(), "{case}: {}", text(&o));
+        let images = dir.join(case);
+        let o = ugo(&["render", h5.to_str().unwrap(), "--shading", "smooth", "-o", images.to_str().unwrap()]);
+        assert!(o.status.success(), "{case}: {}", text(&o));
+        let exr = std::fs::read_dir(&images)
+            .unwrap()
+            .filter_map(|e| Some(e.ok()?.path()))
+            .find(|p| p.extension().is_some_and(|x| x == "exr"))
+            .unwrap_or_else(|| panic!("{case}: no image"));
+        let (_, _, values) = read_exr(&exr);
+        assert!(values.iter().all(|v| v.is_finite() && *v >= 0.0), "{case}: a NaN, infinite or negative pixel");
+        let lit = values.iter().filter(|&&v| v > 0.0).count();
+        assert!(lit > values.len() / 10, "{case}: only {lit} of {} pixels lit", values.len());
+    }
+}
