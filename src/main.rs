@@ -118,6 +118,8 @@ enum Command {
         /// Final-gather rays per pixel (with `--shading gather`).
         #[arg(long, default_value_t = 64)]
         gather_rays: usize,
+        #[command(flatten)]
+        view: cli::render::CameraOptions,
     },
     /// Patches, unknowns, and the kernel's estimated size, before any assembly.
     Info {
@@ -191,8 +193,9 @@ fn main() -> ExitCode {
             };
             cli::solve::run(&case, &discretize, job)
         }),
-        Command::Render { solution, cameras, exposure, output, false_colour, orders, shading, gather_rays } => {
+        Command::Render { solution, cameras, exposure, output, false_colour, orders, shading, gather_rays, view } => {
             let look = cli::render::Look {
+                view,
                 exposure,
                 false_colour: false_colour.as_deref(),
                 orders: &orders,

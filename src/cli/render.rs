@@ -7,10 +7,61 @@ use std::path::Path;
 use std::time::Instant;
 use ugo::io::{Scale, auto_exposure, read_solution, write_exr, write_false_colour, write_png, write_triptych};
 use ugo::render::{Shading, render};
-use ugo::scene::Camera;
+use ugo::scene::{Camera, RawCamera};
+
+/// A camera given on the command line (named `cli`), instead of the stored scene's.
+#[derive(Debug, clap::Args)]
+pub struct CameraOptions {
+    /// Eye position `x,y,z`, m: render from this camera (with --look-at).
+    #[arg(long, value_delimiter = ',', requires = "look_at")]
+    position: Option<Vec<f64>>,
+    /// Point looked at, `x,y,z`, m.
+    #[arg(long, value_delimiter = ',', requires = "position")]
+    look_at: Option<Vec<f64>>,
+    /// Up direction `x,y,z` (default 0,1,0).
+    #[arg(long, value_delimiter = ',', requires = "position")]
+    up: Option<Vec<f64>>,
+    /// Vertical field of view, degrees (default 40).
+    #[arg(long, requires = "position")]
+    fov_deg: Option<f64>,
+    /// Image size `width,height`, pixels (default 512,512).
+    #[arg(long, value_delimiter = ',', requires = "position")]
+    resolution: Option<Vec<i64>>,
+    /// Primary rays per pixel (default 4).
+    #[arg(long, requires = "position")]
+    samples: Option<i64>,
+}
+
+impl CameraOptions {
+    /// The command-line camera, if one was given.
+    fn camera(&self) -> Result<Option<Camera>> {
+        let (Some(position), Some(look_at)) = (&self.position, &self.look_at) else { return Ok(None) };
+        let xyz = |flag: &str, v: &Vec<f64>| match v[..] {
+            [x, y, z] => Ok([x, y, z]),
+            _ => Err(anyhow::anyhow!("{flag} takes three numbers x,y,z, got {} values", v.len())),
+        };
+        let resolution = match self.resolution.as_deref() {
+            None => None,
+            Some(&[w, h]) => Some([w, h]),
+            Some(other) => bail!("--resolution takes two numbers width,height, got {} values", other.len()),
+        };
+        let keys = RawCamera {
+            name: "cli".into(),
+            position: xyz("--position", position)?,
+            look_at: xyz("--look-at", look_at)?,
+            up: self.up.as_ref().map(|v| xyz("--up", v)).transpose()?,
+            fov_deg: self.fov_deg,
+            resolution,
+            samples: self.samples,
+        };
+        Ok(Some(Camera::from_keys(&keys, "the command line")?))
+    }
+}
 
 /// How the images look and which pictures accompany them.
 pub struct Look<'a> {
+    /// A camera from the command line (rendered instead of the stored ones).
+    pub view: CameraOptions,
     /// Luminance shown as white, cd/m² (default: the 99th percentile).
     pub exposure: Option<f64>,
     /// `log` or `linear`: also a false-colour map.
@@ -44,7 +95,11 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
         bail!("--exposure must be a positive luminance in cd/m², got {l}");
     }
     let stored = read_solution(file)?;
-    let cameras: Vec<Camera> = chosen(&stored.scene.cameras, names, &stored.scene.path)?.into_iter().cloned().collect();
+    let cameras: Vec<Camera> = match look.view.camera()? {
+        Some(camera) if names.is_empty() => vec![camera],
+        Some(_) => bail!("give either --camera NAME or a camera by --position and --look-at, not both"),
+        None => chosen(&stored.scene.cameras, names, &stored.scene.path)?.into_iter().cloned().collect(),
+    };
     let case = stored.scene.path.file_stem().unwrap_or_default().to_string_lossy().into_owned();
     let orders = chosen_orders(&stored.orders, look.orders)?;
     let mut lit = stored.into_lit();

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use ugo::energy::EnergyBalance;
 use ugo::field::Field;
 use ugo::grid::{GridReading, read_grids};
-use ugo::io::{Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_solution};
+use ugo::io::{Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution};
 use ugo::kernel::{Explicit, Factored};
 use ugo::model::Model;
 use ugo::probe::read_probes;
@@ -116,6 +116,11 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     write_solution(&output, &solution).with_context(|| format!("writing {}", output.display()))?;
     summary(&solution, &output);
     write_grids(&grids, &output)?;
+    if !probes.is_empty() {
+        let csv = PathBuf::from(format!("{}-probes.csv", output.with_extension("").display()));
+        write_probes_csv(&csv, &probes)?;
+        println!("  probes             {}", csv.display());
+    }
     if let Some(orders) = &orders {
         print_orders(orders, &x);
     }

@@ -3,20 +3,20 @@
 
 mod exr_file;
 mod false_colour;
-mod grid_files;
 mod hdf5_file;
 mod plot;
 mod png_file;
 mod read;
+mod readings;
 mod triptych;
 
 pub use exr_file::write_exr;
 pub use false_colour::{LEGEND_WIDTH, Scale, colour, position, write_false_colour};
-pub use grid_files::{write_grid_csv, write_grid_map};
 pub use hdf5_file::{Run, Solution, write_solution};
 pub use plot::convergence_plot;
 pub use png_file::{auto_exposure, srgb, write_png};
 pub use read::{StoredSolution, read_solution};
+pub use readings::{write_grid_csv, write_grid_map, write_probes_csv};
 pub use triptych::{CAPTION_HEIGHT, write_triptych};
 
 use std::path::{Path, PathBuf};

@@ -9,6 +9,7 @@ mod schema;
 mod validate;
 
 pub use error::SceneError;
+pub use schema::RawCamera;
 
 use glam::DVec3;
 use std::path::{Path, PathBuf};
@@ -160,6 +161,14 @@ pub struct Grid {
     /// Unit normal of the receiving side, `±(edge_u × edge_v)`.
     pub normal: DVec3,
     pub resolution: [usize; 2],
+}
+
+impl Camera {
+    /// A camera given outside a case file (e.g. on the command line, `source` says where),
+    /// checked by the rules of a `[[camera]]` table.
+    pub fn from_keys(keys: &RawCamera, source: &str) -> Result<Camera, SceneError> {
+        validate::camera_from_keys(keys, source)
+    }
 }
 
 impl Grid {

@@ -313,6 +313,11 @@ fn cameras(path: &Path, raw: &[RawCamera]) -> Result<Vec<Camera>, SceneError> {
     raw.iter().enumerate().map(|(index, c)| camera(&Context::item(path, "camera", &c.name, index), c)).collect()
 }
 
+/// `Camera::from_keys`: the table rules with `source` in place of a file.
+pub fn camera_from_keys(keys: &RawCamera, source: &str) -> Result<Camera, SceneError> {
+    camera(&Context::new(Path::new(source), "camera options"), keys)
+}
+
 fn camera(at: &Context, c: &RawCamera) -> Result<Camera, SceneError> {
     let position = at.point("position", c.position)?;
     let look_at = at.point("look_at", c.look_at)?;

@@ -1,6 +1,6 @@
 //! Illuminance grids: the gathered illuminance under a Lambertian rectangle against the
 //! closed-form point-to-rectangle factor, the statistics, and `ugo solve` writing the
-//! CSV and the map.
+//! CSVs (grid and probes) and the map.
 
 use crate::support::{build, corner_factor, lambert, rectangle, scene, scratch, solve, surface, ugo};
 use glam::DVec3;
@@ -103,6 +103,11 @@ edge_u = [2.0, 0.0, 0.0]
 edge_v = [0.0, 0.0, 2.0]
 resolution = [6, 3]
 normal = [0.0, 1.0, 0.0]
+
+[[probe]]
+name = "under a corner"
+position = [1.0, 0.0, 1.0]
+normal = [0.0, 1.0, 0.0]
 "#;
 
 #[test]
@@ -129,6 +134,11 @@ fn solve_writes_each_grid_as_csv_and_a_map_in_lux() {
     assert!(csv.contains("# E_avg") && csv.contains("U0"), "{csv}");
     let map = image::open(dir.join("lamp-work_plane.png")).unwrap();
     assert!(map.width() > 400 && map.height() >= 240);
+    let probes = std::fs::read_to_string(dir.join("lamp-probes.csv")).unwrap();
+    let probe: Vec<&str> = probes.lines().nth(1).unwrap().split(',').collect();
+    assert_eq!(probe[0], "\"under a corner\"");
+    let e: f64 = probe[8].parse().unwrap();
+    assert!((e / (PI * 1000.0 * corner_factor(1.0, 1.0, 1.0)) - 1.0).abs() < 1e-3, "{probes}");
     let file = hdf5::File::open(&h5).unwrap();
     let e = file.dataset("grids/work plane/illuminance").unwrap().read_2d::<f64>().unwrap();
     assert_eq!(e.shape(), [3, 6]);

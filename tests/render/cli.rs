@@ -120,3 +120,26 @@ fn every_case_has_a_camera_and_renders_finite_lit_pixels() {
         assert!(lit > values.len() / 10, "{case}: only {lit} of {} pixels lit", values.len());
     }
 }
+
+#[test]
+fn a_camera_given_on_the_command_line_renders_and_is_checked_like_a_table() {
+    let dir = scratch("cli-camera");
+    let h5 = dir.join("furnace.h5");
+    let o = ugo(&["solve", "cases/furnace-box.toml", "--patch-size", "0.25", "-o", h5.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o));
+    let h5 = h5.to_str().unwrap();
+    let out = dir.join("images");
+    let view = ["--position", "0.5,0.5,0.5", "--look-at", "0.2,0.3,1", "--resolution", "16,8", "--samples", "2"];
+    let o = ugo(&[&["render", h5, "-o", out.to_str().unwrap()], &view[..]].concat());
+    assert!(o.status.success(), "{}", text(&o));
+    let (w, h, values) = read_exr(&out.join("furnace-box-cli.exr"));
+    assert_eq!((w, h), (16, 8));
+    assert!(values.iter().all(|&l| (l - 5.0).abs() < 1e-5), "{values:?}");
+    let o = ugo(&["render", h5, "--position", "0.5,0.5,0.5", "--look-at", "0.5,0.5,1", "--fov-deg", "200"]);
+    assert!(!o.status.success() && !text(&o).contains("panicked"));
+    assert!(text(&o).contains("the command line") && text(&o).contains("fov_deg"), "{}", text(&o));
+    let o = ugo(&["render", h5, "--camera", "inside", "--position", "0.5,0.5,0.5", "--look-at", "0.5,0.5,1"]);
+    assert!(!o.status.success() && text(&o).contains("not both"), "{}", text(&o));
+    let o = ugo(&["render", h5, "--position", "0.5,0.5,0.5"]);
+    assert!(!o.status.success() && text(&o).contains("--look-at"), "{}", text(&o));
+}

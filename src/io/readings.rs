@@ -1,9 +1,11 @@
-//! The files of an illuminance grid (`[[grid]]`): a CSV of every calculation point with
-//! its illuminance in lx, and a false-colour map with a legend in lx, `edge_u` to the
-//! right and `edge_v` up.
+//! The lighting-engineering tables of a solve: for an illuminance grid (`[[grid]]`) a CSV
+//! of every calculation point with its illuminance in lx and a false-colour map with a
+//! legend in lx (`edge_u` to the right, `edge_v` up); for the probes a CSV of their
+//! luminance and illuminance.
 
 use super::{Scale, atomic, write_false_colour};
 use crate::grid::GridReading;
+use crate::probe::ProbeReading;
 use crate::render::Image;
 use anyhow::{Result, anyhow};
 use std::io::Write;
@@ -29,6 +31,24 @@ pub fn write_grid_csv(path: &Path, grid: &GridReading) -> Result<()> {
     for (i, (p, e)) in grid.points.iter().zip(&grid.illuminance).enumerate() {
         text += &format!("{},{},{:.9},{:.9},{:.9},{:.9e}\n", i % nu, i / nu, p.x, p.y, p.z, e);
     }
+    write_text(path, &text)
+}
+
+/// `name,x,y,z,nx,ny,nz,L_cd_m2,E_lx` per probe.
+pub fn write_probes_csv(path: &Path, probes: &[ProbeReading]) -> Result<()> {
+    let mut text = String::from("name,x,y,z,nx,ny,nz,L_cd_m2,E_lx\n");
+    for p in probes {
+        let (x, n) = (p.position, p.normal);
+        let name = p.name.replace('"', "\"\"");
+        text += &format!(
+            "\"{name}\",{:.9},{:.9},{:.9},{:.9},{:.9},{:.9},{:.9e},{:.9e}\n",
+            x.x, x.y, x.z, n.x, n.y, n.z, p.luminance, p.illuminance
+        );
+    }
+    write_text(path, &text)
+}
+
+fn write_text(path: &Path, text: &str) -> Result<()> {
     atomic(path, |tmp| {
         let mut file = std::fs::File::create(tmp).map_err(|e| anyhow!("cannot create {}: {e}", tmp.display()))?;
         file.write_all(text.as_bytes()).map_err(|e| anyhow!("writing {}: {e}", path.display()))
