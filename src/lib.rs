@@ -5,6 +5,7 @@
 //! [`kernel`] (`K = B·G`) → [`model`] (the linear system) → [`solve`] → [`field`],
 //! [`energy`], [`probe`], [`grid`] → [`io`] (HDF5).
 
+pub mod basis;
 pub mod brdf;
 pub mod directions;
 pub mod energy;

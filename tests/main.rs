@@ -1,5 +1,6 @@
 //! The one integration-test crate of ugo; its folders mirror `src/`.
 
+mod basis;
 mod brdf;
 mod cli;
 mod directions;

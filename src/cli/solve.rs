@@ -61,10 +61,11 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         None
     };
     let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+    let factored = Factored::new(&model.kernel);
     let mut runs: Vec<(Run, Vec<f64>)> = Vec::new();
     for method in &methods {
         let solving = bar(params.max_iterations as u64, &method.name());
-        let system = System { kernel: &model.kernel, explicit: explicit.as_ref(), areas: &areas, l0: &model.l0 };
+        let system = System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &model.l0);
         let result = solve(*method, &system, &params, options.memory_limit, &mut |n, r| {
             solving.set_position(n as u64);
             solving.set_message(format!("{} {r:.1e}", method.name()));

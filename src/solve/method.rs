@@ -2,7 +2,7 @@
 
 use super::{SolveError, SolveInfo, SolveParams, norm};
 use super::{bicgstab, direct, direct_sparse, gauss_seidel, gmres, southwell, successive_approximation};
-use crate::kernel::{Explicit, Factored, Kernel};
+use crate::kernel::{Explicit, Factored, Kernel, LinOp};
 
 /// A method of `design.md` §4.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -68,12 +68,28 @@ impl Method {
 
 /// The system `x = L0 + K x` as the methods need it.
 pub struct System<'a> {
-    pub kernel: &'a Kernel,
-    /// The explicit product, required when [`Method::needs_explicit`].
+    /// `K` applied matrix-free (the factored operator, or a reduced one).
+    pub operator: &'a dyn LinOp,
+    /// The explicit matrix of the same operator, required when [`Method::needs_explicit`].
     pub explicit: Option<&'a Explicit>,
-    /// Patch areas (Southwell's choice of shooter).
+    /// The weight of each unknown for Southwell's choice of shooter: the patch areas of a
+    /// one-cell (radiosity) system; empty where Southwell does not apply.
     pub areas: &'a [f64],
     pub l0: &'a [f64],
+}
+
+impl<'a> System<'a> {
+    /// The full angular system of `kernel` through its factored operator `factored`.
+    pub fn of(
+        kernel: &Kernel,
+        factored: &'a Factored,
+        explicit: Option<&'a Explicit>,
+        areas: &'a [f64],
+        l0: &'a [f64],
+    ) -> Self {
+        let areas = if kernel.cells() == 1 { areas } else { &[] };
+        System { operator: factored, explicit, areas, l0 }
+    }
 }
 
 /// Solves `system` with `method`; `limit` bounds the direct solver's memory, bytes.
@@ -84,18 +100,14 @@ pub fn solve(
     limit: u64,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
-    let System { kernel, explicit, areas, l0 } = *system;
-    let factored = Factored::new(kernel);
+    let System { operator, explicit, areas, l0 } = *system;
     let explicit = || explicit.ok_or(SolveError::Unsupported { method: "this method", needs: "the explicit kernel" });
     let (x, info) = match method {
-        Method::Neumann => successive_approximation(&factored, l0, params, progress)?,
+        Method::Neumann => successive_approximation(operator, l0, params, progress)?,
         Method::GaussSeidel => gauss_seidel(explicit()?, l0, params, progress)?,
-        Method::Southwell => {
-            let cells = if kernel.cells() == 1 { areas } else { &[] };
-            southwell(explicit()?, cells, l0, params, progress)?
-        }
-        Method::Gmres { restart } => gmres(&factored, l0, params, restart, progress)?,
-        Method::Bicgstab => bicgstab(&factored, l0, params, progress)?,
+        Method::Southwell => southwell(explicit()?, areas, l0, params, progress)?,
+        Method::Gmres { restart } => gmres(operator, l0, params, restart, progress)?,
+        Method::Bicgstab => bicgstab(operator, l0, params, progress)?,
         Method::Direct => direct(explicit()?, l0, limit)?,
         Method::DirectSparse => direct_sparse(explicit()?, l0, limit)?,
     };

@@ -13,7 +13,8 @@ const TIGHT: SolveParams = SolveParams { tolerance: 1e-12, max_iterations: 5000 
 
 fn run(model: &Model, explicit: &Explicit, method: Method) -> Result<Vec<f64>, SolveError> {
     let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
-    let system = System { kernel: &model.kernel, explicit: Some(explicit), areas: &areas, l0: &model.l0 };
+    let factored = Factored::new(&model.kernel);
+    let system = System::of(&model.kernel, &factored, Some(explicit), &areas, &model.l0);
     solve(method, &system, &TIGHT, u64::MAX, &mut |_, _| {}).map(|r| r.0)
 }
 
@@ -108,7 +109,8 @@ fn a_direct_solve_over_the_limit_is_refused_with_the_estimate() {
     let model = glossy_model();
     let explicit = Explicit(model.kernel.explicit(u64::MAX).unwrap());
     let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
-    let system = System { kernel: &model.kernel, explicit: Some(&explicit), areas: &areas, l0: &model.l0 };
+    let factored = Factored::new(&model.kernel);
+    let system = System::of(&model.kernel, &factored, Some(&explicit), &areas, &model.l0);
     let err = solve(Method::Direct, &system, &TIGHT, 1 << 20, &mut |_, _| {}).unwrap_err();
     assert!(matches!(err, SolveError::TooLarge(_)) && err.to_string().contains("GMRES"), "{err}");
 }

@@ -1,0 +1,5 @@
+//! Kernel factorization: the harmonics themselves, then SH and SVD solutions against the
+//! full angular solution.
+
+mod harmonics;
+mod reduced;
