@@ -27,3 +27,12 @@ for h in 0.1 0.07 0.05 0.04 0.03; do
   $ugo compare cases/cornell-box.toml --patch-size "$h" --methods neumann,gmres,bicgstab,direct \
     -o "$out/cornell-$h-compare.h5" --plot "$out/cornell-$h-compare.png" | grep -E "patches N|assembly|^  (neumann|gmres|bicgstab|direct)"
 done
+
+echo "## factored angular bases against the full angular solution (glossy Cornell box, K = 64)"
+for n in 10 50 200; do
+  sed -E "s/^exponent = .*/exponent = $n/" cases/glossy-cornell.toml > "$out/glossy-n$n.toml"
+  echo "### Phong floor exponent $n"
+  $ugo compare "$out/glossy-n$n.toml" --methods gmres --tolerance 1e-10 \
+    --bases full,sh:0,sh:1,sh:2,sh:3,sh:4,sh:5,sh:6,sh:7,svd:1,svd:4,svd:9,svd:16,svd:25,svd:36,svd:49,svd:64 \
+    --plot "$out/glossy-n$n-bases.png" | tail -n +2
+done

@@ -63,6 +63,8 @@ enum Command {
         /// Also compute the norms of K (needs the explicit product).
         #[arg(long)]
         norms: bool,
+        #[command(flatten)]
+        basis: cli::basis::BasisOptions,
     },
     /// Norms of K, its spectral radius, cond(I − K) and the predicted Neumann iterations.
     Norms {
@@ -91,6 +93,12 @@ enum Command {
         discretize: Discretize,
         #[command(flatten)]
         stopping: Stopping,
+        #[command(flatten)]
+        basis: cli::basis::BasisOptions,
+        /// Instead of methods, compare angular bases (`full`, `sh:L`, `svd:R`), each solved
+        /// with the first of --methods, against the full angular solution.
+        #[arg(long, value_delimiter = ',', conflicts_with = "basis")]
+        bases: Vec<String>,
     },
     /// Camera images (linear EXR, tone-mapped PNG) of a solution written by `solve`.
     Render {
@@ -154,8 +162,10 @@ fn main() -> ExitCode {
             method,
             orders,
             norms,
+            basis,
         } => cli::methods(method.as_slice()).and_then(|methods| {
-            let job = Job { methods, tolerance, max_iterations, orders, norms, output, suffix: "", plot: None };
+            let basis = basis.choice()?;
+            let job = Job { methods, tolerance, max_iterations, orders, norms, output, suffix: "", plot: None, basis };
             cli::solve::run(&case, &discretize, job)
         }),
         Command::Norms { case, output, discretize, stopping: Stopping { tolerance, max_iterations } } => {
@@ -168,6 +178,7 @@ fn main() -> ExitCode {
                 output,
                 suffix: "-norms",
                 plot: None,
+                basis: None,
             };
             cli::solve::run(&case, &discretize, job)
         }
@@ -178,9 +189,21 @@ fn main() -> ExitCode {
             plot,
             discretize,
             stopping: Stopping { tolerance, max_iterations },
+            basis,
+            bases,
         } => cli::methods(&methods).and_then(|methods| {
             let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+            if !bases.is_empty() {
+                let plot = plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-bases.png")));
+                let params = ugo::solve::SolveParams {
+                    tolerance: tolerance.unwrap_or(1e-10),
+                    max_iterations: max_iterations.unwrap_or(10_000),
+                };
+                let method = methods.first().copied().unwrap_or(ugo::solve::Method::Gmres { restart: 30 });
+                return cli::basis::study(&case, &discretize, &bases, method, params, &plot);
+            }
             let plot = Some(plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-compare.png"))));
+            let basis = basis.choice()?;
             let job = Job {
                 methods,
                 tolerance,
@@ -190,6 +213,7 @@ fn main() -> ExitCode {
                 output,
                 suffix: "-compare",
                 plot,
+                basis,
             };
             cli::solve::run(&case, &discretize, job)
         }),

@@ -1,5 +1,6 @@
 //! The subcommands, one file each, and what they share.
 
+pub mod basis;
 pub mod bench;
 pub mod info;
 pub mod render;

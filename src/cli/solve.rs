@@ -8,11 +8,14 @@ use crate::Discretize;
 use anyhow::{Context, Result, bail};
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
+use ugo::basis::{Basis, Factorization, Reduced};
 use ugo::energy::EnergyBalance;
 use ugo::field::Field;
 use ugo::grid::{GridReading, read_grids};
-use ugo::io::{Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution};
-use ugo::kernel::{Explicit, Factored};
+use ugo::io::{
+    BasisRecord, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
+};
+use ugo::kernel::{Explicit, Factored, LinOp};
 use ugo::model::Model;
 use ugo::probe::read_probes;
 use ugo::solve::norms::Norms;
@@ -32,6 +35,8 @@ pub struct Job {
     /// Suffix of the default output name (`cornell-box{suffix}.h5`).
     pub suffix: &'static str,
     pub plot: Option<PathBuf>,
+    /// Solve for the coefficients of this angular basis instead of the cell values.
+    pub basis: Option<Basis>,
 }
 
 pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
@@ -55,8 +60,15 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let model = Model::build(&scene, &options, &|total| assembly.set_length(total), &|done| assembly.inc(done))?;
     assembly.finish_and_clear();
 
+    let factors =
+        job.basis.map(|b| Factorization::new(b, &model.kernel.blocks, &model.kernel.directions)).transpose()?;
+    let reduced = factors.as_ref().map(|f| Reduced::new(&model.kernel, f));
+    let source = reduced.as_ref().map(|r| r.source(&model.l0));
     let explicit = if job.norms || methods.iter().any(Method::needs_explicit) {
-        Some(Explicit(model.kernel.explicit(options.memory_limit)?))
+        Some(Explicit(match &reduced {
+            Some(r) => r.explicit(options.memory_limit)?,
+            None => model.kernel.explicit(options.memory_limit)?,
+        }))
     } else {
         None
     };
@@ -65,7 +77,10 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let mut runs: Vec<(Run, Vec<f64>)> = Vec::new();
     for method in &methods {
         let solving = bar(params.max_iterations as u64, &method.name());
-        let system = System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &model.l0);
+        let system = match (&reduced, &source) {
+            (Some(r), Some(s)) => System { operator: r, explicit: explicit.as_ref(), areas: &[], l0: s },
+            _ => System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &model.l0),
+        };
         let result = solve(*method, &system, &params, options.memory_limit, &mut |n, r| {
             solving.set_position(n as u64);
             solving.set_message(format!("{} {r:.1e}", method.name()));
@@ -83,10 +98,20 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let reference = runs.iter().position(|(r, _)| r.name == "direct").unwrap_or_else(|| {
         (0..runs.len()).min_by(|&a, &b| runs[a].0.info.residual().total_cmp(&runs[b].0.info.residual())).unwrap_or(0)
     });
-    let x = runs[reference].1.clone();
+    let coefficients = runs[reference].1.clone();
+    let x = match &reduced {
+        Some(r) => r.field(&model.l0, &coefficients),
+        None => coefficients.clone(),
+    };
+    let basis = factors.as_ref().map(|f| BasisRecord {
+        factors: f,
+        coefficients: &coefficients,
+        full_residual: full_residual(&factored, &model.l0, &x),
+    });
+    let x_ref = &runs[reference].1.clone();
     let scale = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     for (run, y) in &mut runs {
-        run.difference = y.iter().zip(&x).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / scale;
+        run.difference = y.iter().zip(x_ref).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / scale;
     }
     let runs: Vec<Run> = runs.into_iter().map(|(r, _)| r).collect();
 
@@ -113,6 +138,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         orders: orders.as_ref(),
         runs: &runs,
         norms: norms.as_ref(),
+        basis: basis.as_ref(),
     };
     write_solution(&output, &solution).with_context(|| format!("writing {}", output.display()))?;
     summary(&solution, &output);
@@ -140,6 +166,9 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
 }
 
 fn order_record(job: &Job, methods: &[Method], model: &Model) -> Option<OrderRecord> {
+    if job.basis.is_some() {
+        return None;
+    }
     let orders = match &job.orders {
         Some(o) => o.clone(),
         None if methods.contains(&Method::Neumann) => vec![1, 8, 64],
@@ -175,6 +204,15 @@ fn summary(s: &Solution, output: &Path) {
         i.iterations,
         i.residual()
     );
+    if let Some(b) = s.basis {
+        println!(
+            "  basis              {:>12}   ({} coefficients per patch, rank {}; residual of the field in the full system {:.2e})",
+            b.factors.basis.name(),
+            b.factors.m,
+            b.factors.rank,
+            b.full_residual
+        );
+    }
     let e = s.energy;
     println!("  flux emitted       {:>12.4} lm", e.emitted);
     println!("  flux absorbed      {:>12.4} lm", e.absorbed);
@@ -206,6 +244,14 @@ fn write_grids(grids: &[GridReading], output: &Path) -> Result<()> {
         println!("      {}\n      {}", csv.display(), png.display());
     }
     Ok(())
+}
+
+/// `‖L0 + K x − x‖₂ / ‖L0‖₂` in the full angular system.
+pub fn full_residual(k: &Factored, l0: &[f64], x: &[f64]) -> f64 {
+    let mut kx = vec![0.0; x.len()];
+    k.apply(x, &mut kx);
+    let norm = |v: &mut dyn Iterator<Item = f64>| v.map(|e| e * e).sum::<f64>().sqrt();
+    norm(&mut kx.iter().zip(l0).zip(x).map(|((k, l), x)| l + k - x)) / norm(&mut l0.iter().copied())
 }
 
 fn print_norms(n: &Norms, params: &SolveParams, runs: &[Run]) {

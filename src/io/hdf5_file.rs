@@ -6,11 +6,13 @@
 //! `/compare/<method>/…` (the same histories per method, `ugo compare`),
 //! `/orders/{orders,term_norms,partial_sums}` (the reflection-order record), `/norms` (attributes),
 //! `/energy/{surface_emitted,surface_absorbed}`,
-//! `/probes/{name,position,normal,luminance,illuminance}`,
+//! `/probes/{name,position,normal,luminance,illuminance}`, `/basis/{coefficients,psi,front,back}`
+//! (a solve in a factored angular basis),
 //! `/grids/<name>/{points,illuminance}` (with the statistics as attributes), and attributes on the root for
 //! method, tolerance, iterations, timings, energy totals, the scene text and the version.
 //! The file is written under a temporary name and renamed when complete.
 
+use crate::basis::{Factorization, MaterialFactor};
 use crate::energy::EnergyBalance;
 use crate::field::Field;
 use crate::grid::GridReading;
@@ -42,6 +44,17 @@ pub struct Solution<'a> {
     pub runs: &'a [Run],
     /// Norms of the kernel, when computed.
     pub norms: Option<&'a Norms>,
+    /// The angular basis of a reduced solve, when one was used.
+    pub basis: Option<&'a BasisRecord<'a>>,
+}
+
+/// A solve in a factored angular basis: the factors and the coefficients solved for.
+pub struct BasisRecord<'a> {
+    pub factors: &'a Factorization,
+    /// `c[i·M + n]`; the field is `L0 + Ψ c`.
+    pub coefficients: &'a [f64],
+    /// `‖L0 + K x − x‖₂ / ‖L0‖₂` of the reconstructed field in the full system.
+    pub full_residual: f64,
 }
 
 /// One method's solve of the system, for comparison.
@@ -96,6 +109,9 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     }
     if let Some(orders) = s.orders {
         write_orders(&file.create_group("orders")?, orders, s.model.kernel.cells())?;
+    }
+    if let Some(basis) = s.basis {
+        write_basis(&file.create_group("basis")?, basis)?;
     }
     if let Some(norms) = s.norms {
         write_norms(&file.create_group("norms")?, norms, s.params.tolerance)?;
@@ -188,6 +204,25 @@ fn write_materials(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
     dataset(g, "transmission", &transmit)
 }
 
+/// `/basis/{coefficients (N × M), psi, front, back (materials × K × M)}` and attributes.
+fn write_basis(g: &hdf5::Group, b: &BasisRecord) -> hdf5::Result<()> {
+    let f = b.factors;
+    let (m, k, count) = (f.m, f.k, f.materials.len());
+    let n = b.coefficients.len() / m.max(1);
+    dataset(g, "coefficients", &Array2::from_shape_fn((n, m), |(i, c)| b.coefficients[i * m + c]))?;
+    let stack = |pick: fn(&MaterialFactor) -> Option<&Vec<f64>>| {
+        Array3::from_shape_fn((count, k, m), |(a, r, c)| pick(&f.materials[a]).map_or(0.0, |v| v[r * m + c]))
+    };
+    dataset(g, "psi", &stack(|x| Some(&x.psi)))?;
+    dataset(g, "front", &stack(|x| Some(&x.front)))?;
+    dataset(g, "back", &stack(|x| x.back.as_ref()))?;
+    text_attr(g, "basis", &f.basis.name())?;
+    for (name, value) in [("m", m as f64), ("rank", f.rank as f64), ("full_residual", b.full_residual)] {
+        g.new_attr::<f64>().create(name)?.write_scalar(&value)?;
+    }
+    Ok(())
+}
+
 fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
     let n = probes.len();
     strings(g, "name", probes.iter().map(|p| p.name.as_str()))?;
@@ -259,7 +294,11 @@ fn strings<'a>(g: &hdf5::Group, name: &str, items: impl Iterator<Item = &'a str>
 }
 
 fn text(file: &hdf5::File, name: &str, value: &str) -> hdf5::Result<()> {
-    file.new_attr::<VarLenUnicode>().shape(()).create(name)?.write_scalar(&unicode(value)?)
+    text_attr(file, name, value)
+}
+
+fn text_attr(location: &hdf5::Location, name: &str, value: &str) -> hdf5::Result<()> {
+    location.new_attr::<VarLenUnicode>().shape(()).create(name)?.write_scalar(&unicode(value)?)
 }
 
 fn unicode(s: &str) -> hdf5::Result<VarLenUnicode> {

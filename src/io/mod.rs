@@ -12,8 +12,8 @@ mod triptych;
 
 pub use exr_file::write_exr;
 pub use false_colour::{LEGEND_WIDTH, Scale, colour, position, write_false_colour};
-pub use hdf5_file::{Run, Solution, write_solution};
-pub use plot::convergence_plot;
+pub use hdf5_file::{BasisRecord, Run, Solution, write_solution};
+pub use plot::{convergence_plot, register_font};
 pub use png_file::{auto_exposure, srgb, write_png};
 pub use read::{StoredSolution, read_solution};
 pub use readings::{write_grid_csv, write_grid_map, write_probes_csv};

@@ -76,7 +76,7 @@ fn draw_panel(
 }
 
 /// Makes the bundled DejaVu Sans the "sans-serif" font of plotters (once).
-pub(crate) fn register_font() {
+pub fn register_font() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| {
         let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, FONT);
