@@ -135,20 +135,8 @@ enum Command {
         #[command(flatten)]
         discretize: Discretize,
     },
-    /// Throughput of the visibility queries on a case (occlusion rays per second).
-    Bench {
-        /// The case to measure on (default: the bundled Cornell box).
-        #[arg(default_value = "cases/cornell-box.toml")]
-        case: PathBuf,
-        #[command(flatten)]
-        discretize: Discretize,
-        /// Occlusion rays per configuration.
-        #[arg(long, default_value_t = 2_000_000)]
-        rays: usize,
-        /// Also time dense LU (faer against nalgebra) at these sizes.
-        #[arg(long, value_delimiter = ',')]
-        lu: Vec<usize>,
-    },
+    /// Throughput of every stage against the machine's limits (table and JSON).
+    Bench(cli::bench::BenchOptions),
 }
 
 fn main() -> ExitCode {
@@ -229,7 +217,7 @@ fn main() -> ExitCode {
             cli::render::run(&solution, &cameras, &output, &look)
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
-        Command::Bench { case, discretize, rays, lu } => cli::bench::run(&case, &discretize, rays, &lu),
+        Command::Bench(options) => cli::bench::run(&options),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -141,3 +141,45 @@ fn an_unknown_direction_set_fails_cleanly() {
     let err = assert_clean_failure(&ugo(&["info", "cases/furnace-box.toml", "--directions", "fibonacci"]));
     assert!(err.contains("--directions") && err.contains("klems"), "{err}");
 }
+
+#[test]
+fn bench_reports_every_figure_as_json_and_exports_the_peer_data() {
+    let dir = scratch("bench");
+    let (json, export) = (dir.join("bench.json"), dir.join("peers"));
+    let o = ugo(&[
+        "bench",
+        "--patch-size",
+        "0.1",
+        "--rays",
+        "20000",
+        "--scaling",
+        "0.2,0.15",
+        "--json",
+        json.to_str().unwrap(),
+        "--export",
+        export.to_str().unwrap(),
+    ]);
+    let text = String::from_utf8_lossy(&o.stdout).into_owned() + &String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{text}");
+    let report: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    for key in [
+        "occlusion_rays_per_second",
+        "triad_bytes_per_second",
+        "assembly_pairs_per_second",
+        "spmv_bytes_per_second",
+        "factored_apply_seconds",
+        "assembly_speedup",
+    ] {
+        assert!(report[key].as_f64().is_some_and(|v| v > 0.0), "{key}: {}", report[key]);
+    }
+    let steps = report["scaling"].as_array().unwrap();
+    assert_eq!(steps.len(), 3, "two sizes and the case's own");
+    assert!(report["scaling_exponent"].as_f64().unwrap().is_finite());
+    let meta: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(export.join("meta.json")).unwrap()).unwrap();
+    let size = |name: &str| std::fs::metadata(export.join(name)).unwrap().len();
+    assert_eq!(size("rays.f32"), 20000 * 8 * 4);
+    assert_eq!(size("visible.u8"), 20000);
+    assert_eq!(size("triangles.f32"), meta["triangles"].as_u64().unwrap() * 36);
+    assert_eq!(size("csr_data.f64"), meta["nnz"].as_u64().unwrap() * 8);
+}

@@ -1,36 +1,30 @@
-//! `ugo bench`: throughput of the visibility queries, per BVH layout, on a case.
-//!
-//! Rays join random points of random facing patch pairs, as in the kernel assembly.
-//! Each layout (binary or compressed wide BVH, obvhs build preset, scene turned by a
-//! generic rotation or not) traces the same rays on all cores. A correctness column
-//! counts the axis-aligned rays, one dropped onto every patch along its normal, that
-//! failed to find that patch ("lost").
+//! The visibility part of `ugo bench`: occlusion rays like the assembly's (segments
+//! between stratified points of random facing patch pairs) through the default layout,
+//! and optionally through every layout (binary or compressed wide BVH, obvhs build
+//! preset, scene turned by a generic rotation or not) with a correctness column counting
+//! the axis-aligned rays, one dropped onto every patch along its normal, that failed to
+//! find that patch ("lost"). Also the dense-LU timings of `--lu`.
 
-use super::load;
-use crate::Discretize;
-use anyhow::Result;
 use glam::DVec3;
 use rayon::prelude::*;
-use std::path::Path;
 use std::time::Instant;
+use ugo::geometry::Mesh;
 use ugo::kernel::facing;
-use ugo::model::Model;
 use ugo::visibility::{BuildPreset, NO_FACE, Visibility, VisibilityOptions};
 
-pub fn run(case: &Path, d: &Discretize, rays: usize, lu: &[usize]) -> Result<()> {
-    for &n in lu {
-        dense_lu(n);
-    }
-    let (scene, options) = load(case, d)?;
-    let mesh = Model::mesh(&scene, &options);
-    let segments = segments(&mesh, rays);
-    println!(
-        "ugo bench: {} ({} patches, {} rays per layout, {} threads)",
-        scene.name,
-        mesh.len(),
-        segments.len(),
-        rayon::current_num_threads()
-    );
+/// A segment between two faces, ignoring both.
+pub type Segment = (DVec3, DVec3, [u32; 2]);
+
+/// Occlusion rays per second through `visibility` (all threads of the current pool).
+pub fn rays_per_second(visibility: &Visibility, segments: &[Segment]) -> f64 {
+    let t = Instant::now();
+    let seen: usize = segments.par_iter().map(|(a, b, f)| visibility.visible(*a, *b, *f) as usize).sum();
+    std::hint::black_box(seen);
+    segments.len() as f64 / t.elapsed().as_secs_f64()
+}
+
+/// Every layout on the same segments, as a table.
+pub fn all_layouts(mesh: &Mesh, segments: &[Segment]) {
     println!(
         "  {:<8} {:<7} {:<7} {:>10} {:>14} {:>9} {:>6}",
         "bvh", "preset", "rotated", "build ms", "rays/s", "visible", "lost"
@@ -60,11 +54,10 @@ pub fn run(case: &Path, d: &Discretize, rays: usize, lu: &[usize]) -> Result<()>
             }
         }
     }
-    Ok(())
 }
 
-/// `count` segments between interior points of random facing patch pairs.
-fn segments(mesh: &ugo::geometry::Mesh, count: usize) -> Vec<(DVec3, DVec3, [u32; 2])> {
+/// `count` segments between interior points of random facing patch pairs (reproducible).
+pub fn segments(mesh: &Mesh, count: usize) -> Vec<Segment> {
     let n = mesh.len() as u64;
     let mut state = 0x2545_F491_4F6C_DD1Du64;
     let mut next = move || {
@@ -89,7 +82,7 @@ fn segments(mesh: &ugo::geometry::Mesh, count: usize) -> Vec<(DVec3, DVec3, [u32
 
 /// Times the dense LU (factor and solve) of an `n × n` matrix like `I − K` in faer and in
 /// nalgebra, and checks both residuals.
-fn dense_lu(n: usize) {
+pub fn dense_lu(n: usize) {
     let entry = |i: usize, j: usize| {
         let h = ((i * 7919 + j * 104_729) % 1000) as f64 / 1000.0;
         if i == j { 1.0 } else { -0.8 * h / n as f64 }

@@ -1,0 +1,162 @@
+//! `ugo bench`: the throughput of every stage next to the machine's limit, as a table
+//! and as JSON (issue 9, `docs/performance.md`): occlusion rays per second (all BVH
+//! layouts with `--layouts`), form-factor pairs per second during assembly and its
+//! speed-up from one thread to all, the sparse product in GB/s of matrix traffic against
+//! a STREAM-like triad measured in the same run, the time per application of the
+//! factored operator, and assemble-and-solve time and peak memory over several patch
+//! sizes with the fitted growth exponent. `--export DIR` writes the same rays and matrix
+//! for the peers (Embree, scipy).
+
+mod bandwidth;
+mod export;
+mod layouts;
+mod scaling;
+
+use super::load;
+use crate::Discretize;
+use anyhow::{Context, Result};
+use serde_json::json;
+use std::path::PathBuf;
+use ugo::kernel::Factored;
+use ugo::model::Model;
+use ugo::visibility::Visibility;
+
+/// What `ugo bench` measures.
+#[derive(Debug, clap::Args)]
+pub struct BenchOptions {
+    /// The case to measure on (default: the bundled Cornell box).
+    #[arg(default_value = "cases/cornell-box.toml")]
+    case: PathBuf,
+    #[command(flatten)]
+    discretize: Discretize,
+    /// Occlusion rays to time.
+    #[arg(long, default_value_t = 2_000_000)]
+    rays: usize,
+    /// Also time every BVH layout (with a correctness column).
+    #[arg(long)]
+    layouts: bool,
+    /// Patch sizes of the scaling curve, m (default: 2.5, 2, 1.5 and 1.25 times the case's).
+    #[arg(long, value_delimiter = ',')]
+    scaling: Vec<f64>,
+    /// Also time dense LU (faer against nalgebra) at these sizes.
+    #[arg(long, value_delimiter = ',')]
+    lu: Vec<usize>,
+    /// Write the figures as JSON here.
+    #[arg(long)]
+    json: Option<PathBuf>,
+    /// Write the rays, triangles and matrix for `docs/peers/peers.py` into this folder.
+    #[arg(long)]
+    export: Option<PathBuf>,
+}
+
+pub fn run(o: &BenchOptions) -> Result<()> {
+    for &n in &o.lu {
+        layouts::dense_lu(n);
+    }
+    let (scene, options) = load(&o.case, &o.discretize)?;
+    let threads = rayon::current_num_threads();
+    println!("ugo bench: {} ({} threads)", scene.name, threads);
+
+    let mesh = Model::mesh(&scene, &options);
+    let segments = layouts::segments(&mesh, o.rays);
+    let visibility = Visibility::build(&mesh);
+    let rays = layouts::rays_per_second(&visibility, &segments).max(layouts::rays_per_second(&visibility, &segments));
+    println!(
+        "  occlusion rays        {rays:>12.3e} rays/s   ({} patches, {} rays, default BVH)",
+        mesh.len(),
+        segments.len()
+    );
+    if o.layouts {
+        layouts::all_layouts(&mesh, &segments);
+    }
+
+    let triad = bandwidth::triad();
+    println!("  memory bandwidth      {:>12.2} GB/s     (STREAM-like triad, 3 × 256 MiB)", triad / 1e9);
+
+    let (full, model) = scaling::step(&scene, &options, options.patch_size)?;
+    let pairs_rate = full.pairs as f64 / model.stats.kernel_seconds;
+    println!(
+        "  assembly              {:>12.3e} pairs/s  ({} facing pairs, {} occlusion rays in {:.2} s: {:.3e} rays/s)",
+        pairs_rate,
+        full.pairs,
+        model.stats.rays,
+        model.stats.kernel_seconds,
+        model.stats.rays as f64 / model.stats.kernel_seconds
+    );
+    let g = &model.kernel.g;
+    let spmv = bandwidth::spmv_seconds(g);
+    let traffic = bandwidth::matrix_bytes(g) / spmv;
+    println!(
+        "  sparse product G x    {:>12.2} GB/s     ({:.0} % of the triad; {} non-zeros, {:.1} B each, {:.2} ms)",
+        traffic / 1e9,
+        100.0 * traffic / triad,
+        g.nnz(),
+        bandwidth::matrix_bytes(g) / g.nnz() as f64,
+        spmv * 1e3
+    );
+    let factored = bandwidth::apply_seconds(&Factored::new(&model.kernel));
+    println!(
+        "  factored K x = B(G x) {:>12.2} ms       ({:.3e} unknowns/s)",
+        factored * 1e3,
+        model.l0.len() as f64 / factored
+    );
+
+    let small = options.patch_size * 2.0;
+    let one = scaling::assembly_with_threads(&scene, &options, small, 1)?;
+    let all = scaling::assembly_with_threads(&scene, &options, small, threads)?;
+    println!(
+        "  assembly speed-up     {:>12.2}×        (1 → {threads} threads at patch size {small}: {one:.2} s → {all:.2} s)",
+        one / all
+    );
+
+    let sizes = if o.scaling.is_empty() {
+        [2.5, 2.0, 1.5, 1.25].map(|f| f * options.patch_size).to_vec()
+    } else {
+        o.scaling.clone()
+    };
+    let mut steps = Vec::new();
+    for h in sizes {
+        steps.push(scaling::step(&scene, &options, h)?.0);
+    }
+    steps.push(full);
+    steps.sort_by(|a, b| a.patches.cmp(&b.patches));
+    let exponent = scaling::exponent(&steps);
+    println!("  scaling (assemble + solve, Neumann to 1e-8), time ∝ N^{exponent:.2}");
+    println!(
+        "    {:>10} {:>9} {:>11} {:>11} {:>10} {:>9} {:>11}",
+        "patch m", "patches", "pairs", "non-zeros", "assembly s", "solve s", "+peak MiB"
+    );
+    for s in &steps {
+        let peak = s.peak_bytes.map_or("-".into(), |b| format!("{:.0}", b / (1u64 << 20) as f64));
+        println!(
+            "    {:>10.4} {:>9} {:>11} {:>11} {:>10.2} {:>9.3} {:>11}",
+            s.patch_size, s.patches, s.pairs, s.nonzeros, s.assembly_seconds, s.solve_seconds, peak
+        );
+    }
+    let report = json!({
+        "case": scene.name,
+        "threads": threads,
+        "occlusion_rays_per_second": rays,
+        "triad_bytes_per_second": triad,
+        "assembly_pairs_per_second": pairs_rate,
+        "assembly_rays_per_second": model.stats.rays as f64 / model.stats.kernel_seconds,
+        "spmv_bytes_per_second": traffic,
+        "spmv_fraction_of_triad": traffic / triad,
+        "bytes_per_nonzero": bandwidth::matrix_bytes(g) / g.nnz() as f64,
+        "factored_apply_seconds": factored,
+        "assembly_speedup": one / all,
+        "scaling": steps,
+        "scaling_exponent": exponent,
+    });
+    if let Some(path) = &o.json {
+        std::fs::write(path, serde_json::to_string_pretty(&report)?)
+            .with_context(|| format!("writing {}", path.display()))?;
+        println!("  json                  {}", path.display());
+    }
+    if let Some(dir) = &o.export {
+        let meta = json!({ "ugo_occlusion_rays_per_second": rays, "ugo_spmv_seconds": spmv, "threads": threads });
+        export::export(dir, &mesh, &visibility, &segments, g, meta)?;
+        println!("  exported              {} (run docs/peers/peers.py {})", dir.display(), dir.display());
+    }
+    Ok(())
+}
