@@ -33,7 +33,7 @@ pub fn all_layouts(mesh: &Mesh, segments: &[Segment]) {
         for preset in [BuildPreset::Fast, BuildPreset::Medium, BuildPreset::Slow] {
             for rotate in [false, true] {
                 let t = Instant::now();
-                let v = Visibility::build_with(&mesh, VisibilityOptions { wide, rotate, preset });
+                let v = Visibility::build_with(mesh, VisibilityOptions { wide, rotate, preset });
                 let build = t.elapsed().as_secs_f64();
                 let t = Instant::now();
                 let seen: usize = segments.par_iter().map(|(a, b, f)| v.visible(*a, *b, *f) as usize).sum();

@@ -119,7 +119,7 @@ pub fn run(o: &BenchOptions) -> Result<()> {
         steps.push(scaling::step(&scene, &options, h)?.0);
     }
     steps.push(full);
-    steps.sort_by(|a, b| a.patches.cmp(&b.patches));
+    steps.sort_by_key(|s| s.patches);
     let exponent = scaling::exponent(&steps);
     println!("  scaling (assemble + solve, Neumann to 1e-8), time ∝ N^{exponent:.2}");
     println!(
