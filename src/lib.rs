@@ -19,4 +19,5 @@ pub mod probe;
 pub mod render;
 pub mod scene;
 pub mod solve;
+pub mod trace;
 pub mod visibility;

@@ -1,4 +1,5 @@
-//! The `ugo` command line (`design.md` §6): `solve`, `norms`, `compare`, `render`, `info`, `bench`.
+//! The `ugo` command line (`design.md` §6): `solve`, `norms`, `compare`, `render`, `trace`,
+//! `agree`, `info`, `bench`.
 
 mod cli;
 
@@ -99,6 +100,62 @@ enum Command {
         /// with the first of --methods, against the full angular solution.
         #[arg(long, value_delimiter = ',', conflicts_with = "basis")]
         bases: Vec<String>,
+        /// Also trace a forward Monte Carlo estimate of the field with this many photons
+        /// and show every method's agreement with it (in standard errors).
+        #[arg(long)]
+        photons: Option<u64>,
+        /// Seed of that estimate.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+    },
+    /// Monte Carlo references: backward path tracing of cameras (mean and standard-error
+    /// EXR images, cd/m²) or, with --forward, light tracing into the (patch, cell) bins (HDF5).
+    Trace {
+        /// The case file (TOML).
+        case: PathBuf,
+        /// Trace only this camera (repeatable; default: every camera of the case).
+        #[arg(long = "camera")]
+        cameras: Vec<String>,
+        /// Paths per pixel (backward).
+        #[arg(long, default_value_t = 64)]
+        spp: usize,
+        /// Forward light tracing into the (patch, direction cell) bins instead of cameras.
+        #[arg(long)]
+        forward: bool,
+        /// Photons (forward).
+        #[arg(long, default_value_t = 1_000_000)]
+        photons: u64,
+        /// Seed of the random streams: the same seed and counts give the same result.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Keep only light reflected at most this many times (a truncated Neumann sum).
+        #[arg(long)]
+        max_order: Option<usize>,
+        /// Folder for the images (backward, default `.`) or the HDF5 file (forward,
+        /// default `<case>-forward.h5`).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        #[command(flatten)]
+        discretize: Discretize,
+    },
+    /// A solution against a Monte Carlo reference (forward HDF5 or traced EXR), in standard errors.
+    Agree {
+        /// The HDF5 file of a solve.
+        solution: PathBuf,
+        /// `ugo trace --forward`'s HDF5 file, or `ugo trace`'s mean image `X.exr` (with `X-stderr.exr`).
+        reference: PathBuf,
+        /// The camera of a traced image (default: the one camera of its size).
+        #[arg(long)]
+        camera: Option<String>,
+        /// Stratified rays per pixel for rendering the solution.
+        #[arg(long, default_value_t = 64)]
+        samples: usize,
+        /// Shading of the rendered solution: `flat`, `smooth` or `gather` (see `ugo render`).
+        #[arg(long, default_value = "flat")]
+        shading: String,
+        /// Final-gather rays per pixel (with --shading gather).
+        #[arg(long, default_value_t = 256)]
+        gather_rays: usize,
     },
     /// Camera images (linear EXR, tone-mapped PNG) of a solution written by `solve`.
     Render {
@@ -153,7 +210,19 @@ fn main() -> ExitCode {
             basis,
         } => cli::methods(method.as_slice()).and_then(|methods| {
             let basis = basis.choice()?;
-            let job = Job { methods, tolerance, max_iterations, orders, norms, output, suffix: "", plot: None, basis };
+            let job = Job {
+                methods,
+                tolerance,
+                max_iterations,
+                orders,
+                norms,
+                output,
+                suffix: "",
+                plot: None,
+                basis,
+                photons: None,
+                seed: 1,
+            };
             cli::solve::run(&case, &discretize, job)
         }),
         Command::Norms { case, output, discretize, stopping: Stopping { tolerance, max_iterations } } => {
@@ -167,6 +236,8 @@ fn main() -> ExitCode {
                 suffix: "-norms",
                 plot: None,
                 basis: None,
+                photons: None,
+                seed: 1,
             };
             cli::solve::run(&case, &discretize, job)
         }
@@ -179,6 +250,8 @@ fn main() -> ExitCode {
             stopping: Stopping { tolerance, max_iterations },
             basis,
             bases,
+            photons,
+            seed,
         } => cli::methods(&methods).and_then(|methods| {
             let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
             if !bases.is_empty() {
@@ -202,6 +275,8 @@ fn main() -> ExitCode {
                 suffix: "-compare",
                 plot,
                 basis,
+                photons,
+                seed,
             };
             cli::solve::run(&case, &discretize, job)
         }),
@@ -215,6 +290,16 @@ fn main() -> ExitCode {
                 gather_rays,
             };
             cli::render::run(&solution, &cameras, &output, &look)
+        }
+        Command::Trace { case, cameras, spp, forward, photons, seed, max_order, output, discretize } => {
+            let options = ugo::trace::TraceOptions { seed, max_order };
+            let job = cli::trace::TraceJob { cameras, spp, photons: forward.then_some(photons), options, output };
+            cli::trace::run(&case, &discretize, &job)
+        }
+        Command::Agree { solution, reference, camera, samples, shading, gather_rays } => {
+            let rendering =
+                cli::agree::Rendering { camera: camera.as_deref(), samples, shading: &shading, gather_rays };
+            cli::agree::run(&solution, &reference, &rendering)
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench(options) => cli::bench::run(&options),

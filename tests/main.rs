@@ -10,4 +10,5 @@ mod render;
 mod scene;
 mod solve;
 mod support;
+mod trace;
 mod visibility;

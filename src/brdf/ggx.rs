@@ -2,6 +2,7 @@
 //! (Heitz 2014) and no Fresnel factor, plus a diffuse part:
 //! `ρ = k_d + k_s π D(h) G₂(l,l') / (4 cosθ cosθ')`. The specular part is integrated by
 //! sampling visible-normal-free `D(h) cosθ_h` on a fixed stratified grid and reflecting.
+//! The same half-vector sampling serves the Monte Carlo estimators (`crate::trace`).
 
 use super::cells::{Accumulator, stratified};
 use crate::directions::DirectionSet;
@@ -11,27 +12,51 @@ use std::f64::consts::{PI, TAU};
 const STRATA_IN: usize = 12;
 const STRATA_LOBE: usize = 48;
 
+/// The half vector sampled from `D(h) cosθ_h` at `u ∈ [0, 1)` and azimuth `phi`; `a2 = α²`.
+#[inline]
+pub fn half_vector(a2: f64, u: f64, phi: f64) -> DVec3 {
+    let cos_h = ((1.0 - u) / (1.0 + (a2 - 1.0) * u)).sqrt();
+    let sin_h = (1.0 - cos_h * cos_h).max(0.0).sqrt();
+    DVec3::new(sin_h * phi.cos(), sin_h * phi.sin(), cos_h)
+}
+
+/// The Trowbridge–Reitz distribution `D(h)` at `cosθ_h`.
+pub fn distribution(a2: f64, cos_h: f64) -> f64 {
+    let t = (a2 - 1.0) * cos_h * cos_h + 1.0;
+    a2 / (PI * t * t)
+}
+
+/// Height-correlated Smith masking-shadowing `G₂ = 1/(1 + Λ(θ) + Λ(θ'))`.
+#[inline]
+pub fn masking(a2: f64, cos_out: f64, cos_in: f64) -> f64 {
+    let lambda = |c: f64| (-1.0 + (1.0 + a2 * (1.0 - c * c) / (c * c)).sqrt()) / 2.0;
+    1.0 / (1.0 + lambda(cos_out) + lambda(cos_in))
+}
+
+/// The luminance factor `ρ(l, l')` of local directions above the surface.
+pub fn luminance_factor(diffuse: f64, specular: f64, alpha: f64, l: DVec3, l_in: DVec3) -> f64 {
+    let h = (l + l_in).normalize();
+    let a2 = alpha * alpha;
+    diffuse + specular * PI * distribution(a2, h.z) * masking(a2, l.z, l_in.z) / (4.0 * l.z * l_in.z)
+}
+
 pub fn block(diffuse: f64, specular: f64, alpha: f64, directions: &DirectionSet) -> Vec<f64> {
     let k = directions.len();
     let mut acc = Accumulator::new(k);
     let a2 = alpha * alpha;
-    let lambda = |c: f64| (-1.0 + (1.0 + a2 * (1.0 - c * c) / (c * c)).sqrt()) / 2.0;
     for d in 0..k {
         for (l_in, w_in) in stratified(directions, d, STRATA_IN) {
             for i in 0..STRATA_LOBE {
                 let u = (i as f64 + 0.5) / STRATA_LOBE as f64;
-                let cos_h = ((1.0 - u) / (1.0 + (a2 - 1.0) * u)).sqrt();
-                let sin_h = (1.0 - cos_h * cos_h).max(0.0).sqrt();
                 for j in 0..STRATA_LOBE {
-                    let phi = TAU * (j as f64 + 0.5) / STRATA_LOBE as f64;
-                    let h = DVec3::new(sin_h * phi.cos(), sin_h * phi.sin(), cos_h);
+                    let h = half_vector(a2, u, TAU * (j as f64 + 0.5) / STRATA_LOBE as f64);
                     let l = 2.0 * l_in.dot(h) * h - l_in;
                     if l.z <= 0.0 || l_in.dot(h) <= 0.0 {
                         continue;
                     }
                     // pdf(l) = D cos_h / (4 |l·h|); ρ cosθ / pdf = k_s π G₂ |l·h| / (cosθ' cos_h)
-                    let g2 = 1.0 / (1.0 + lambda(l.z) + lambda(l_in.z));
-                    let value = specular * PI * g2 * l_in.dot(h) / (l_in.z * cos_h);
+                    let g2 = masking(a2, l.z, l_in.z);
+                    let value = specular * PI * g2 * l_in.dot(h) / (l_in.z * h.z);
                     acc.add(directions.lookup(l), d, value * w_in / (STRATA_LOBE * STRATA_LOBE) as f64);
                 }
             }

@@ -11,12 +11,16 @@
 //! has a second block for light arriving on the other side of a two-sided surface
 //! (incoming cell in the back patch's frame). Blocks are shared by every patch of one
 //! material (isotropic models in local frames). Materials never see the scene file.
+//! The continuous models' formulas and lobe samplers (`phong`, `ggx`) are public: the Monte
+//! Carlo estimators of `crate::trace` use them.
 
 mod cells;
-mod ggx;
+pub mod ggx;
 mod lambert;
 mod mirror;
-mod phong;
+pub mod phong;
+
+pub use cells::mirror as mirror_image;
 
 use crate::directions::DirectionSet;
 use crate::scene::MaterialModel;

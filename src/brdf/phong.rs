@@ -1,6 +1,7 @@
 //! Normalized modified Phong (Lafortune & Willems 1994): `ρ = k_d + k_s (n+2)/2 cosⁿα`.
 //! The glossy lobe is integrated by sampling `cosⁿα` around the mirror direction
 //! (pdf `(n+1)/(2π) cosⁿα`) on a fixed stratified grid, so exponents up to 10⁵ are resolved.
+//! The same lobe sampling serves the Monte Carlo estimators (`crate::trace`).
 
 use super::cells::{Accumulator, mirror, stratified};
 use crate::directions::DirectionSet;
@@ -9,6 +10,23 @@ use std::f64::consts::{PI, TAU};
 
 const STRATA_IN: usize = 12;
 const STRATA_LOBE: usize = 48;
+
+/// The luminance factor `ρ(l, l')` of local directions on the same side of the surface.
+pub fn luminance_factor(diffuse: f64, specular: f64, exponent: f64, l: DVec3, l_in: DVec3) -> f64 {
+    let cos_a = l.dot(mirror(l_in));
+    diffuse + if cos_a > 0.0 { specular * (exponent + 2.0) / 2.0 * cos_a.powf(exponent) } else { 0.0 }
+}
+
+/// `cos α` of the lobe sample at `u ∈ [0, 1)`: the inverse of the lobe's distribution.
+#[inline]
+pub fn lobe_cos(exponent: f64, u: f64) -> f64 {
+    u.powf(1.0 / (exponent + 1.0))
+}
+
+/// Density per solid angle of lobe directions at angle `α` from the mirror direction.
+pub fn lobe_pdf(exponent: f64, cos_a: f64) -> f64 {
+    if cos_a > 0.0 { (exponent + 1.0) / TAU * cos_a.powf(exponent) } else { 0.0 }
+}
 
 pub fn block(diffuse: f64, specular: f64, exponent: f64, directions: &DirectionSet) -> Vec<f64> {
     let k = directions.len();
@@ -19,7 +37,7 @@ pub fn block(diffuse: f64, specular: f64, exponent: f64, directions: &DirectionS
             let (t, b) = r.any_orthonormal_pair();
             for i in 0..STRATA_LOBE {
                 let u = (i as f64 + 0.5) / STRATA_LOBE as f64;
-                let cos_a = u.powf(1.0 / (exponent + 1.0));
+                let cos_a = lobe_cos(exponent, u);
                 let sin_a = (1.0 - cos_a * cos_a).max(0.0).sqrt();
                 for j in 0..STRATA_LOBE {
                     let phi = TAU * (j as f64 + 0.5) / STRATA_LOBE as f64;

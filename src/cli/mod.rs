@@ -1,10 +1,12 @@
 //! The subcommands, one file each, and what they share.
 
+pub mod agree;
 pub mod basis;
 pub mod bench;
 pub mod info;
 pub mod render;
 pub mod solve;
+pub mod trace;
 
 use crate::Discretize;
 use anyhow::{Result, bail};
@@ -72,6 +74,6 @@ pub fn methods(names: &[String]) -> Result<Vec<ugo::solve::Method>> {
 }
 
 /// A table name (camera, grid) made safe for a file name.
-fn file_name(name: &str) -> String {
+pub fn file_name(name: &str) -> String {
     name.chars().map(|c| if c.is_alphanumeric() || c == '-' || c == '_' { c } else { '_' }).collect()
 }

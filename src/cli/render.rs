@@ -76,13 +76,7 @@ pub struct Look<'a> {
 
 pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()> {
     let exposure = look.exposure;
-    let shading = match look.shading {
-        "flat" => Shading::Flat,
-        "smooth" => Shading::Smooth,
-        "gather" if (1..=65_536).contains(&look.gather_rays) => Shading::Gather { rays: look.gather_rays },
-        "gather" => bail!("--gather-rays must be from 1 to 65536, got {}", look.gather_rays),
-        other => bail!("--shading takes `flat`, `smooth` or `gather`, got \"{other}\""),
-    };
+    let shading = parse_shading(look.shading, look.gather_rays)?;
     let scale = match look.false_colour {
         None => None,
         Some("log") => Some(Scale::Log),
@@ -152,7 +146,19 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
     Ok(())
 }
 
-fn describe(shading: Shading) -> String {
+/// `--shading` and `--gather-rays` as a [`Shading`]; shared with `ugo agree`.
+pub fn parse_shading(name: &str, gather_rays: usize) -> Result<Shading> {
+    Ok(match name {
+        "flat" => Shading::Flat,
+        "smooth" => Shading::Smooth,
+        "gather" if (1..=65_536).contains(&gather_rays) => Shading::Gather { rays: gather_rays },
+        "gather" => bail!("--gather-rays must be from 1 to 65536, got {gather_rays}"),
+        other => bail!("--shading takes `flat`, `smooth` or `gather`, got \"{other}\""),
+    })
+}
+
+/// The shading's name as printed; shared with `ugo agree`.
+pub fn describe(shading: Shading) -> String {
     match shading {
         Shading::Flat => "flat".into(),
         Shading::Smooth => "smooth".into(),
@@ -176,8 +182,8 @@ fn chosen_orders(recorded: &[(usize, Vec<f64>)], wanted: &[usize]) -> Result<Vec
         .collect()
 }
 
-/// The cameras asked for (all when none are named).
-fn chosen<'a>(cameras: &'a [Camera], names: &[String], case: &Path) -> Result<Vec<&'a Camera>> {
+/// The cameras asked for (all when none are named); shared with `ugo trace`.
+pub fn chosen<'a>(cameras: &'a [Camera], names: &[String], case: &Path) -> Result<Vec<&'a Camera>> {
     if cameras.is_empty() {
         bail!("the stored scene ({}) has no [[camera]]; add one to the case and solve again", case.display());
     }

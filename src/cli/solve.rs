@@ -1,7 +1,8 @@
 //! The solve pipeline shared by `ugo solve`, `ugo norms` and `ugo compare`: mesh,
 //! assemble, run one or more methods on `x = L0 + K x`, read the probes, check the energy
 //! balance, optionally record reflection orders and norms, write HDF5 (and a plot), and
-//! print a summary.
+//! print a summary; `compare --photons P` adds each method's agreement with a forward Monte
+//! Carlo estimate of the same discretization.
 
 use super::{bar, bytes, file_name, load};
 use crate::Discretize;
@@ -18,9 +19,11 @@ use ugo::io::{
 use ugo::kernel::{Explicit, Factored, LinOp};
 use ugo::model::Model;
 use ugo::probe::read_probes;
+use ugo::scene::Scene;
 use ugo::solve::norms::Norms;
 use ugo::solve::orders::{OrderRecord, reflection_orders};
 use ugo::solve::{Method, SolveParams, System, solve};
+use ugo::trace::{Agreement, TraceOptions, World, agreement, trace_photons};
 
 /// What one command asks of the pipeline.
 pub struct Job {
@@ -37,6 +40,10 @@ pub struct Job {
     pub plot: Option<PathBuf>,
     /// Solve for the coefficients of this angular basis instead of the cell values.
     pub basis: Option<Basis>,
+    /// Photons of a forward Monte Carlo reference to compare every method with (`compare`).
+    pub photons: Option<u64>,
+    /// Seed of that reference.
+    pub seed: u64,
 }
 
 pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
@@ -113,6 +120,12 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     for (run, y) in &mut runs {
         run.difference = y.iter().zip(x_ref).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / scale;
     }
+    let reference_mc = job.photons.map(|p| {
+        // each run's field (a reduced solve holds basis coefficients)
+        let fields: Vec<Vec<f64>> =
+            runs.iter().map(|(_, y)| reduced.as_ref().map_or_else(|| y.clone(), |r| r.field(&model.l0, y))).collect();
+        forward_reference(&scene, &model, p, job.seed, &fields)
+    });
     let runs: Vec<Run> = runs.into_iter().map(|(r, _)| r).collect();
 
     let k = model.kernel.cells();
@@ -154,8 +167,8 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     if let Some(norms) = &norms {
         print_norms(norms, &params, &runs);
     }
-    if runs.len() > 1 {
-        print_comparison(&runs);
+    if runs.len() > 1 || reference_mc.is_some() {
+        print_comparison(&runs, reference_mc.as_ref());
     }
     if let Some(plot) = &job.plot {
         convergence_plot(plot, &format!("{}: convergence of every method", scene.name), &runs)
@@ -293,21 +306,51 @@ fn converged(ok: bool) -> &'static str {
     if ok { "" } else { ", NOT converged" }
 }
 
-fn print_comparison(runs: &[Run]) {
+/// The forward Monte Carlo estimate of the same discretization, and each run's agreement with it.
+struct MonteCarlo {
+    photons: u64,
+    seconds: f64,
+    agreements: Vec<Agreement>,
+}
+
+fn forward_reference(scene: &Scene, model: &Model, photons: u64, seed: u64, fields: &[Vec<f64>]) -> MonteCarlo {
+    let world = World::new(scene, model.mesh.clone());
+    let progress = bar(photons, "photons");
+    let options = TraceOptions { seed, max_order: None };
+    let estimate = trace_photons(&world, &model.kernel.directions, photons, &options, &|n| progress.inc(n));
+    progress.finish_and_clear();
+    let agreements = fields.iter().map(|x| agreement(x, &estimate.luminance, &estimate.luminance_error)).collect();
+    MonteCarlo { photons, seconds: estimate.seconds, agreements }
+}
+
+fn print_comparison(runs: &[Run], mc: Option<&MonteCarlo>) {
+    let extra =
+        if mc.is_some() { format!(" {:>8} {:>8} {:>11}", "rms z", "max |z|", "rel. L1") } else { String::new() };
     println!(
-        "  {:<14} {:>10} {:>13} {:>10} {:>12} {:>14}",
+        "  {:<14} {:>10} {:>13} {:>10} {:>12} {:>14}{extra}",
         "method", "iterations", "applications", "time s", "residual", "max rel. diff"
     );
-    for r in runs {
+    for (n, r) in runs.iter().enumerate() {
         let i = &r.info;
+        let extra = mc.map_or(String::new(), |mc| {
+            let a = &mc.agreements[n];
+            format!(" {:>8.3} {:>8.2} {:>11.3e}", a.rms_z, a.max_abs_z, a.relative_l1)
+        });
         println!(
-            "  {:<14} {:>10} {:>13} {:>10.3} {:>12.2e} {:>14.2e}",
+            "  {:<14} {:>10} {:>13} {:>10.3} {:>12.2e} {:>14.2e}{extra}",
             r.name,
             i.iterations,
             i.applications,
             i.seconds,
             i.residual(),
             r.difference
+        );
+    }
+    if let Some(mc) = mc {
+        println!(
+            "  {:<14} {:>10} {:>13} {:>10.3}   (z: each method against this forward Monte Carlo estimate, \
+             {} photons)",
+            "forward MC", "-", "-", mc.seconds, mc.photons
         );
     }
 }

@@ -1,4 +1,5 @@
-//! Linear OpenEXR images in cd/m²: one 32-bit float channel `Y` (luminance).
+//! Linear OpenEXR images in cd/m²: one 32-bit float channel `Y` (luminance), written and
+//! read back (`ugo agree` compares traced images with rendered ones).
 
 use crate::render::Image;
 use anyhow::{Result, anyhow};
@@ -7,10 +8,15 @@ use std::path::Path;
 
 /// Writes `image` to `path` (through `path.tmp`, renamed when complete).
 pub fn write_exr(path: &Path, image: &Image) -> Result<()> {
+    write_exr_as(path, image, "luminance, cd/m2 (ugo render)")
+}
+
+/// [`write_exr`] with another description in the layer's comments.
+pub fn write_exr_as(path: &Path, image: &Image, comments: &str) -> Result<()> {
     let samples: Vec<f32> = image.luminance.iter().map(|&l| l as f32).collect();
     let channel = AnyChannel::new("Y", FlatSamples::F32(samples));
     let mut attributes = LayerAttributes::named("luminance");
-    attributes.comments = Some("luminance, cd/m2 (ugo render)".into());
+    attributes.comments = Some(comments.into());
     let layer = Layer::new(
         (image.width, image.height),
         attributes,
@@ -23,4 +29,19 @@ pub fn write_exr(path: &Path, image: &Image) -> Result<()> {
             .to_file(tmp)
             .map_err(|e| anyhow!("cannot write {}: {e}", tmp.display()))
     })
+}
+
+/// The channel `Y` of the first layer of an EXR file, as an image in cd/m².
+pub fn read_exr(path: &Path) -> Result<Image> {
+    let image = exr::prelude::read_first_flat_layer_from_file(path)
+        .map_err(|e| anyhow!("cannot read {} as OpenEXR: {e}", path.display()))?;
+    let layer = &image.layer_data;
+    let channel = layer
+        .channel_data
+        .list
+        .iter()
+        .find(|c| c.name == *"Y")
+        .ok_or_else(|| anyhow!("{} has no luminance channel Y", path.display()))?;
+    let luminance = channel.sample_data.values_as_f32().map(f64::from).collect();
+    Ok(Image { width: layer.size.0, height: layer.size.1, luminance })
 }

@@ -13,8 +13,10 @@
 //! The file is written under a temporary name and renamed when complete.
 
 use crate::basis::{Factorization, MaterialFactor};
+use crate::directions::DirectionSet;
 use crate::energy::EnergyBalance;
 use crate::field::Field;
+use crate::geometry::Mesh;
 use crate::grid::GridReading;
 use crate::model::Model;
 use crate::probe::ProbeReading;
@@ -85,8 +87,8 @@ pub fn write_solution(path: &Path, solution: &Solution) -> hdf5::Result<()> {
 
 fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     let file = hdf5::File::create(path)?;
-    write_mesh(&file.create_group("mesh")?, s)?;
-    write_directions(&file.create_group("directions")?, s)?;
+    write_mesh(&file.create_group("mesh")?, s.scene, &s.model.mesh)?;
+    write_directions(&file.create_group("directions")?, &s.model.kernel.directions)?;
     write_materials(&file.create_group("materials")?, s)?;
 
     let field = file.create_group("field")?;
@@ -129,8 +131,9 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     write_attributes(&file, s)
 }
 
-fn write_mesh(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
-    let p = &s.model.mesh.patches;
+/// `/mesh`: the patches and the names of surfaces and materials.
+pub(super) fn write_mesh(g: &hdf5::Group, scene: &Scene, mesh: &Mesh) -> hdf5::Result<()> {
+    let p = &mesh.patches;
     let n = p.len();
     let vec3 = |f: &dyn Fn(usize) -> glam::DVec3| Array2::from_shape_fn((n, 3), |(i, c)| f(i)[c]);
     dataset(g, "points", &vec3(&|i| p[i].centroid))?;
@@ -146,12 +149,13 @@ fn write_mesh(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
     dataset(g, "vertex_count", &Array1::from_iter(p.iter().map(|q| q.polygon.vertices().len() as u8)))?;
     dataset(g, "face", &Array1::from_iter(p.iter().map(|q| q.face)))?;
     dataset(g, "twin", &Array1::from_iter(p.iter().map(|q| q.twin)))?;
-    strings(g, "surface_names", s.scene.surfaces.iter().map(|x| x.name.as_str()))?;
-    strings(g, "material_names", s.scene.materials.iter().map(|x| x.name.as_str()))
+    strings(g, "surface_names", scene.surfaces.iter().map(|x| x.name.as_str()))?;
+    strings(g, "material_names", scene.materials.iter().map(|x| x.name.as_str()))
 }
 
-fn write_directions(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
-    let cells = s.model.kernel.directions.cells();
+/// `/directions`: the cells' representative vectors, solid angles and projected solid angles.
+pub(super) fn write_directions(g: &hdf5::Group, directions: &DirectionSet) -> hdf5::Result<()> {
+    let cells = directions.cells();
     dataset(g, "vectors", &Array2::from_shape_fn((cells.len(), 3), |(k, c)| cells[k].direction[c]))?;
     dataset(g, "solid_angle", &Array1::from_iter(cells.iter().map(|c| c.solid_angle)))?;
     dataset(g, "projected", &Array1::from_iter(cells.iter().map(|c| c.projected)))
@@ -246,15 +250,25 @@ fn write_grid(g: &hdf5::Group, grid: &GridReading) -> hdf5::Result<()> {
     Ok(())
 }
 
+/// The attributes every file of a field carries: method, scene, version, direction set, units.
+pub(super) fn write_identity(
+    file: &hdf5::File,
+    method: &str,
+    scene: &Scene,
+    directions: &DirectionSet,
+) -> hdf5::Result<()> {
+    text(file, "method", method)?;
+    text(file, "scene_name", &scene.name)?;
+    text(file, "scene_file", &scene.path.display().to_string())?;
+    text(file, "scene_text", &scene.source)?;
+    text(file, "version", env!("CARGO_PKG_VERSION"))?;
+    text(file, "directions", directions.name())?;
+    text(file, "units", "luminance cd/m2, illuminance lx, flux lm, lengths m")
+}
+
 fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
     let st = &s.model.stats;
-    text(file, "method", s.info.method)?;
-    text(file, "scene_name", &s.scene.name)?;
-    text(file, "scene_file", &s.scene.path.display().to_string())?;
-    text(file, "scene_text", &s.scene.source)?;
-    text(file, "version", env!("CARGO_PKG_VERSION"))?;
-    text(file, "directions", s.model.kernel.directions.name())?;
-    text(file, "units", "luminance cd/m2, illuminance lx, flux lm, lengths m")?;
+    write_identity(file, s.info.method, s.scene, &s.model.kernel.directions)?;
     let numbers: [(&str, f64); 17] = [
         ("tolerance", s.params.tolerance),
         ("max_iterations", s.params.max_iterations as f64),
@@ -280,7 +294,7 @@ fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
     Ok(())
 }
 
-fn dataset<T: hdf5::H5Type, D: ndarray::Dimension>(
+pub(super) fn dataset<T: hdf5::H5Type, D: ndarray::Dimension>(
     g: &hdf5::Group,
     name: &str,
     data: &ndarray::Array<T, D>,
@@ -288,12 +302,12 @@ fn dataset<T: hdf5::H5Type, D: ndarray::Dimension>(
     g.new_dataset_builder().with_data(data).create(name).map(|_| ())
 }
 
-fn strings<'a>(g: &hdf5::Group, name: &str, items: impl Iterator<Item = &'a str>) -> hdf5::Result<()> {
+pub(super) fn strings<'a>(g: &hdf5::Group, name: &str, items: impl Iterator<Item = &'a str>) -> hdf5::Result<()> {
     let values: hdf5::Result<Vec<VarLenUnicode>> = items.map(unicode).collect();
     dataset(g, name, &Array1::from(values?))
 }
 
-fn text(file: &hdf5::File, name: &str, value: &str) -> hdf5::Result<()> {
+pub(super) fn text(file: &hdf5::File, name: &str, value: &str) -> hdf5::Result<()> {
     text_attr(file, name, value)
 }
 
@@ -305,6 +319,6 @@ fn unicode(s: &str) -> hdf5::Result<VarLenUnicode> {
     s.parse::<VarLenUnicode>().map_err(|e| hdf5::Error::from(format!("cannot store {s:?}: {e}")))
 }
 
-fn shape_error(e: ndarray::ShapeError) -> hdf5::Error {
+pub(super) fn shape_error(e: ndarray::ShapeError) -> hdf5::Error {
     hdf5::Error::from(e.to_string())
 }

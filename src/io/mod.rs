@@ -1,6 +1,8 @@
 //! Files: the HDF5 dump of a solve (`design.md` §8) written and read back,
-//! convergence plots, and rendered images (linear EXR, tone-mapped PNG, false colour).
+//! the HDF5 file of a forward Monte Carlo estimate, convergence plots, and rendered images
+//! (linear EXR, read back for comparisons; tone-mapped PNG; false colour).
 
+mod estimate_file;
 mod exr_file;
 mod false_colour;
 mod hdf5_file;
@@ -10,7 +12,8 @@ mod read;
 mod readings;
 mod triptych;
 
-pub use exr_file::write_exr;
+pub use estimate_file::{EstimateFile, write_estimate};
+pub use exr_file::{read_exr, write_exr, write_exr_as};
 pub use false_colour::{LEGEND_WIDTH, Scale, colour, position, write_false_colour};
 pub use hdf5_file::{BasisRecord, Run, Solution, write_solution};
 pub use plot::{convergence_plot, register_font};

@@ -1,5 +1,6 @@
 //! Reading a solve back from its HDF5 file (the layout of `hdf5_file.rs`): the stored
-//! scene, the patch geometry and the luminance field, enough to look at the result again.
+//! scene, the patch geometry and the luminance field (with its standard errors when the
+//! file holds a Monte Carlo estimate), enough to look at or compare the result again.
 
 use crate::brdf::Block;
 use crate::directions::DirectionSet;
@@ -21,6 +22,11 @@ pub struct StoredSolution {
     pub luminance: Vec<f64>,
     /// `(n, Σ_{m≤n} KᵐL0)` from `/orders`, when the solve recorded reflection orders.
     pub orders: Vec<(usize, Vec<f64>)>,
+    /// The standard error of every luminance (`/field/standard_error`), when the file
+    /// holds a Monte Carlo estimate (`ugo trace --forward`).
+    pub standard_error: Option<Vec<f64>>,
+    /// The `method` attribute (`"forward"` for a Monte Carlo estimate).
+    pub method: String,
 }
 
 impl StoredSolution {
@@ -60,7 +66,18 @@ fn read_from(file: &hdf5::File) -> Result<StoredSolution> {
     let mesh = Mesh { patches, emission, faces };
     let luminance: Vec<f64> = luminance.iter().copied().collect();
     let orders = if file.group("orders").is_ok() { orders(file, n * k)? } else { Vec::new() };
-    Ok(StoredSolution { scene, mesh, directions, luminance, orders })
+    let standard_error = match file.dataset("field/standard_error") {
+        Ok(d) => {
+            let e = d.read_raw::<f64>()?;
+            if e.len() != n * k {
+                bail!("/field/standard_error holds {} values, expected {n}×{k}", e.len());
+            }
+            Some(e)
+        }
+        Err(_) => None,
+    };
+    let method = text(file, "method")?;
+    Ok(StoredSolution { scene, mesh, directions, luminance, orders, standard_error, method })
 }
 
 /// The partial sums of `/orders/{orders,partial_sums}`, each `size` long.

@@ -1,0 +1,130 @@
+//! `ugo agree SOLUTION.h5 REFERENCE`: a deterministic solution against a Monte Carlo
+//! reference, in units of the reference's standard error. The reference is either the
+//! HDF5 file of `ugo trace --forward` (compared per `(patch, cell)`, on the same mesh and
+//! direction set) or the mean image of `ugo trace --camera` (`X.exr`, its standard errors
+//! in `X-stderr.exr`; compared per pixel with the solution rendered through the same
+//! camera, flat, smooth or with a final gather).
+
+use super::render::{describe, parse_shading};
+use super::trace::sibling;
+use anyhow::{Result, bail};
+use std::path::Path;
+use ugo::io::{read_exr, read_solution};
+use ugo::render::render;
+use ugo::trace::{Agreement, agreement};
+
+/// How the solution is rendered for a comparison with a traced image.
+pub struct Rendering<'a> {
+    /// The camera of the traced image (default: the one camera of its size).
+    pub camera: Option<&'a str>,
+    /// Stratified rays per pixel.
+    pub samples: usize,
+    /// `flat`, `smooth` or `gather`, and the gather's rays per pixel.
+    pub shading: &'a str,
+    pub gather_rays: usize,
+}
+
+pub fn run(solution: &Path, reference: &Path, rendering: &Rendering) -> Result<()> {
+    let shading = parse_shading(rendering.shading, rendering.gather_rays)?;
+    let stored = read_solution(solution)?;
+    let is_image = reference.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"));
+    if !is_image {
+        let mc = read_solution(reference)?;
+        let Some(error) = &mc.standard_error else {
+            bail!(
+                "{} holds no standard errors: it is not a Monte Carlo estimate (ugo trace --forward)",
+                reference.display()
+            );
+        };
+        let (n, k) = (stored.mesh.len(), stored.directions.len());
+        if mc.mesh.len() != n || mc.directions.name() != stored.directions.name() {
+            bail!(
+                "the two files discretize differently: {n} patches × {} cells against {} × {} (trace with the \
+                 solve's --patch-size and --directions)",
+                stored.directions.name(),
+                mc.mesh.len(),
+                mc.directions.name()
+            );
+        }
+        println!("ugo agree: {} against the forward estimate {}", solution.display(), reference.display());
+        println!("  per (patch, cell): {n} × {k}");
+        summary(&agreement(&stored.luminance, &mc.luminance, error));
+        let names: Vec<&str> = stored.scene.surfaces.iter().map(|s| s.name.as_str()).collect();
+        println!("  {:<26} {:>8} {:>10} {:>10}", "surface", "rms z", "rel. L1", "noise L2");
+        for (s, name) in names.iter().enumerate() {
+            let pick = |v: &[f64]| -> Vec<f64> {
+                stored
+                    .mesh
+                    .patches
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, p)| p.surface as usize == s)
+                    .flat_map(|(i, _)| v[i * k..(i + 1) * k].to_vec())
+                    .collect()
+            };
+            let a = agreement(&pick(&stored.luminance), &pick(&mc.luminance), &pick(error));
+            println!("  {:<26} {:>8.3} {:>10.3e} {:>10.3e}", name, a.rms_z, a.relative_l1, a.noise_l2);
+        }
+        return Ok(());
+    }
+    let mean = read_exr(reference)?;
+    let error_path = sibling(&reference.with_extension(""), "-stderr.exr");
+    let error = read_exr(&error_path)?;
+    if (error.width, error.height) != (mean.width, mean.height) {
+        bail!("{} and {} differ in size", reference.display(), error_path.display());
+    }
+    let cameras = &stored.scene.cameras;
+    let chosen = match rendering.camera {
+        Some(name) => cameras.iter().find(|c| c.name == name),
+        None => {
+            let fitting: Vec<_> = cameras.iter().filter(|c| c.resolution == [mean.width, mean.height]).collect();
+            if fitting.len() > 1 {
+                bail!("several cameras are {}×{}: name one with --camera", mean.width, mean.height);
+            }
+            fitting.first().copied()
+        }
+    };
+    let Some(camera) = chosen else {
+        bail!(
+            "no [[camera]] of the stored scene matches the {}×{} image (name it with --camera)",
+            mean.width,
+            mean.height
+        );
+    };
+    if camera.resolution != [mean.width, mean.height] {
+        bail!("camera \"{}\" is {:?}, the image {}×{}", camera.name, camera.resolution, mean.width, mean.height);
+    }
+    let mut camera = camera.clone();
+    camera.samples = rendering.samples.max(1);
+    let mut lit = stored.into_lit();
+    lit.set_shading(shading);
+    let image = render(&lit, &camera);
+    println!(
+        "ugo agree: {} through camera \"{}\" ({} rays/pixel, {} shading) against the traced image {}",
+        solution.display(),
+        camera.name,
+        camera.samples,
+        describe(shading),
+        reference.display()
+    );
+    println!("  per pixel: {} × {}", mean.width, mean.height);
+    summary(&agreement(&image.luminance, &mean.luminance, &error.luminance));
+    Ok(())
+}
+
+fn summary(a: &Agreement) {
+    println!("  compared             {:>12}   (values with a standard error)", a.compared);
+    if a.unsampled > 0 {
+        println!(
+            "  no Monte Carlo sample {:>11}   ({} of them differ from the solution)",
+            a.unsampled, a.unsampled_different
+        );
+    }
+    println!("  mean z               {:>12.4}", a.mean_z);
+    println!("  rms z                {:>12.4}   (1 if the solution were the reference's expectation)", a.rms_z);
+    println!("  max |z|              {:>12.4}", a.max_abs_z);
+    println!("  |z| > 3              {:>11.3} %   (0.27 % expected by chance alone)", 100.0 * a.beyond_3);
+    println!("  relative difference  {:>12.4e}   L1, Σ|x − m|/Σ|m|", a.relative_l1);
+    println!("                       {:>12.4e}   L2, ‖x − m‖/‖m‖", a.relative_l2);
+    println!("  reference noise      {:>12.4e}   L2, ‖σ‖/‖m‖", a.noise_l2);
+}

@@ -1,0 +1,142 @@
+//! `ugo trace CASE`: the Monte Carlo references. Backward (`--camera NAME --spp S`):
+//! per-pixel mean and standard-error images, linear EXR in cd/m² (and a PNG to look
+//! at). Forward (`--forward --photons P`): the estimate of the discrete field in the HDF5
+//! layout of a solve, with standard errors. Both print their throughput.
+
+use super::file_name;
+use super::render::chosen;
+use super::{bar, load};
+use crate::Discretize;
+use anyhow::{Result, bail};
+use std::path::{Path, PathBuf};
+use ugo::geometry::Mesh;
+use ugo::io::{EstimateFile, auto_exposure, write_estimate, write_exr_as, write_png};
+use ugo::trace::{TraceOptions, World, trace_camera, trace_photons};
+
+/// What `ugo trace` was asked for.
+pub struct TraceJob {
+    pub cameras: Vec<String>,
+    pub spp: usize,
+    /// `Some(P)`: forward with `P` photons instead of cameras.
+    pub photons: Option<u64>,
+    pub options: TraceOptions,
+    pub output: Option<PathBuf>,
+}
+
+pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
+    let (scene, options) = load(case, d)?;
+    let mesh = Mesh::build(&scene, options.patch_size);
+    let world = World::new(&scene, mesh);
+    if world.emitters.is_empty() {
+        bail!("nothing in {} emits light: give a surface an emission", case.display());
+    }
+    let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+    let order = job.options.max_order.map_or("every order".to_string(), |n| format!("orders ≤ {n}"));
+    if let Some(photons) = job.photons {
+        if photons < 2 {
+            bail!("--photons must be at least 2 (standard errors need two samples), got {photons}");
+        }
+        let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}-forward.h5")));
+        let progress = bar(photons, "photons");
+        let estimate = trace_photons(&world, &options.directions, photons, &job.options, &|n| progress.inc(n));
+        progress.finish_and_clear();
+        let file = EstimateFile {
+            scene: &scene,
+            mesh: &world.mesh,
+            directions: &options.directions,
+            estimate: &estimate,
+            options: &job.options,
+            emitted: world.emitters.flux(),
+        };
+        write_estimate(&output, &file)?;
+        let lit: Vec<f64> = estimate
+            .luminance
+            .iter()
+            .zip(&estimate.luminance_error)
+            .filter(|(l, e)| **e > 0.0 && **l > 0.0)
+            .map(|(l, e)| e / l)
+            .collect();
+        println!("ugo trace --forward: {} ({}), seed {}, {order}", scene.name, case.display(), job.options.seed);
+        println!(
+            "  patches N × cells K  {} × {} ({})",
+            world.mesh.len(),
+            options.directions.len(),
+            options.directions.name()
+        );
+        println!("  photons              {photons}");
+        throughput(photons, estimate.rays, estimate.seconds, "photons");
+        println!("  emitted flux         {:.6e} lm", world.emitters.flux());
+        println!("  scattered flux       {:.6e} ± {:.2e} lm", estimate.scattered.0, estimate.scattered.1);
+        println!("  relative std. error  median {:.2e} over {} lit (patch, cell) bins", median(lit.clone()), lit.len());
+        println!("  written              {}", output.display());
+        return Ok(());
+    }
+    if job.spp == 0 {
+        bail!("--spp must be at least 1");
+    }
+    let cameras = chosen(&scene.cameras, &job.cameras, case)?;
+    let dir = job.output.clone().unwrap_or_else(|| PathBuf::from("."));
+    std::fs::create_dir_all(&dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
+    for camera in cameras {
+        let [w, h] = camera.resolution;
+        let progress = bar(h as u64, &camera.name);
+        let traced = trace_camera(&world, camera, job.spp, &job.options, &|n| progress.inc(n));
+        progress.finish_and_clear();
+        let base = dir.join(format!("{stem}-{}-trace", file_name(&camera.name)));
+        let (mean, error, png) = (sibling(&base, ".exr"), sibling(&base, "-stderr.exr"), sibling(&base, ".png"));
+        let seed = job.options.seed;
+        write_exr_as(
+            &mean,
+            &traced.mean,
+            &format!("luminance, cd/m2, backward Monte Carlo mean (ugo trace, {} spp, seed {seed})", job.spp),
+        )?;
+        write_exr_as(
+            &error,
+            &traced.standard_error,
+            &format!("standard error of the luminance, cd/m2 (ugo trace, {} spp, seed {seed})", job.spp),
+        )?;
+        let white = auto_exposure(&traced.mean);
+        write_png(&png, &traced.mean, white)?;
+        let (lo, hi) = traced.mean.range();
+        let relative: Vec<f64> = traced
+            .mean
+            .luminance
+            .iter()
+            .zip(&traced.standard_error.luminance)
+            .filter(|(m, _)| **m > 0.0)
+            .map(|(m, e)| e / m)
+            .collect();
+        println!(
+            "ugo trace: {} camera \"{}\" {w}×{h}, {} paths/pixel, seed {seed}, {order}",
+            scene.name, camera.name, job.spp
+        );
+        throughput(traced.paths, traced.rays, traced.seconds, "paths");
+        println!("  luminance            {lo:.4e} .. {hi:.4e} cd/m²");
+        println!("  relative std. error  median {:.2e} per pixel", median(relative));
+        println!("  {}\n  {}\n  {}", mean.display(), error.display(), png.display());
+    }
+    Ok(())
+}
+
+/// `base` with `suffix` appended to its file name.
+pub fn sibling(base: &Path, suffix: &str) -> PathBuf {
+    let mut name = base.as_os_str().to_owned();
+    name.push(suffix);
+    PathBuf::from(name)
+}
+
+fn throughput(samples: u64, rays: u64, seconds: f64, what: &str) {
+    println!(
+        "  time                 {seconds:.3} s: {:.3e} {what}/s, {:.3e} rays/s",
+        samples as f64 / seconds,
+        rays as f64 / seconds
+    );
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    if v.is_empty() {
+        return 0.0;
+    }
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}

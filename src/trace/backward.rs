@@ -1,0 +1,119 @@
+//! Backward ray tracing (`design.md` §4): Monte Carlo path tracing from the eye with the
+//! continuous materials, an unbiased estimate of `L = Σ_n Kⁿ L0` along a ray with no
+//! discretization at all.
+//!
+//! At every surface point the path gathers the emitters directly (next-event estimation:
+//! a point chosen by flux, a shadow ray) and continues in a direction sampled from the
+//! material; light found both ways is weighted by the power heuristic of the two
+//! densities (Veach & Guibas, SIGGRAPH 1995), so glossy lobes and small sources both
+//! converge. From the third reflection on, Russian roulette ends a path with probability
+//! `1 − min(β, 0.95)` and divides the survivors' throughput `β` by the survival chance.
+//! `max_order = n` keeps only light reflected at most `n` times: the truncated Neumann sum
+//! `Σ_{m≤n} Kᵐ L0`.
+
+use super::rng::Rng;
+use super::sampling::{self, is_delta};
+use super::world::World;
+use glam::DVec3;
+use std::f64::consts::FRAC_1_PI;
+
+/// The reflection from which Russian roulette may end a path.
+pub const ROULETTE_FROM: usize = 3;
+
+/// Paths are cut after this many reflections whatever the roulette says (it only matters
+/// for a closed scene of reflectance 1, which has no finite solution).
+pub const LONGEST_PATH: usize = 100_000;
+
+/// What the estimators are asked for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TraceOptions {
+    /// Every random stream is keyed by this seed and the sample's index.
+    pub seed: u64,
+    /// Keep only light reflected at most this many times (`None`: every order).
+    pub max_order: Option<usize>,
+}
+
+impl Default for TraceOptions {
+    fn default() -> Self {
+        TraceOptions { seed: 1, max_order: None }
+    }
+}
+
+/// One path's estimate of the luminance arriving at `origin` from the unit `direction`
+/// (that is, leaving the first surface towards `origin`), cd/m². `ignore` is the face
+/// `origin` lies on, if any; `rays` counts the rays cast.
+pub fn luminance_along(
+    world: &World,
+    origin: DVec3,
+    direction: DVec3,
+    ignore: u32,
+    rng: &mut Rng,
+    options: &TraceOptions,
+    rays: &mut u64,
+) -> f64 {
+    let mesh = &world.mesh;
+    let last = options.max_order.unwrap_or(LONGEST_PATH).min(LONGEST_PATH);
+    let (mut origin, mut direction, mut ignore) = (origin, direction, ignore);
+    let (mut beta, mut total) = (1.0, 0.0);
+    // density of the direction just sampled, None after the eye or a mirror
+    let mut scattered: Option<f64> = None;
+    for order in 0..=last {
+        *rays += 1;
+        let Some(hit) = world.landing(origin, direction, ignore) else { break };
+        let emitted = mesh.emission[hit.patch];
+        if emitted > 0.0 {
+            let weight = match scattered {
+                None => 1.0,
+                Some(pdf) => {
+                    let light = world.emitters.pdf_towards(mesh, hit.patch, origin, hit.point);
+                    power_heuristic(pdf, light)
+                }
+            };
+            total += beta * emitted * weight;
+        }
+        if order == last {
+            break;
+        }
+        let patch = &mesh.patches[hit.patch];
+        let material = world.material(hit.patch);
+        let frame = patch.frame();
+        let out = frame.local(-direction);
+        if !is_delta(material)
+            && let Some(light) = world.emitters.sample_towards(mesh, hit.point, rng.uniform3())
+        {
+            let l_in = frame.local(light.direction);
+            let rho = sampling::evaluate(material, out, l_in);
+            if rho > 0.0 {
+                *rays += 1;
+                if world.visibility.visible(hit.point, light.point, [patch.face, light.face]) {
+                    let weight = power_heuristic(light.pdf, sampling::pdf(material, out, l_in));
+                    total += beta * rho * l_in.z.abs() * FRAC_1_PI * light.luminance / light.pdf * weight;
+                }
+            }
+        }
+        let Some(s) = sampling::sample(material, out, rng.uniform3()) else { break };
+        beta *= s.weight;
+        if beta <= 0.0 || !beta.is_finite() {
+            break;
+        }
+        if order + 1 >= ROULETTE_FROM {
+            let survive = beta.min(0.95);
+            if rng.uniform() >= survive {
+                break;
+            }
+            beta /= survive;
+        }
+        scattered = (!s.delta).then_some(s.pdf);
+        origin = hit.point;
+        direction = frame.world(s.direction);
+        ignore = patch.face;
+    }
+    total
+}
+
+/// The power heuristic `p²/(p² + q²)` of the sampling technique with density `p`.
+#[inline]
+fn power_heuristic(p: f64, q: f64) -> f64 {
+    let (p2, q2) = (p * p, q * q);
+    if p2 + q2 > 0.0 { p2 / (p2 + q2) } else { 0.0 }
+}

@@ -1,0 +1,31 @@
+//! Monte Carlo references for the global illumination equation (`design.md` §4): the
+//! lecture's two directions of ray tracing, both summing the reflection-order expansion
+//! `L = Σ_n Kⁿ L0` with the continuous materials and sharing no discretization with the
+//! linear system.
+//!
+//! * [`backward`] (from the eye): path tracing with next-event estimation, multiple
+//!   importance sampling and Russian roulette; [`camera`] makes per-pixel means and
+//!   standard errors of a `[[camera]]`.
+//! * [`forward`] (from the sources): light tracing into the `(patch, direction cell)` bins,
+//!   a Monte Carlo estimate of the discrete field `L(i,k)` with standard errors.
+//! * [`agreement`]: a deterministic result against either, in units of the standard error.
+//!
+//! The pieces they share: [`world`] (geometry, materials, ray casting), [`emitters`]
+//! (sources sampled by flux), [`sampling`] (the continuous materials, importance-sampled),
+//! [`rng`] (reproducible streams) and [`statistics`] (means and standard errors).
+
+pub mod agreement;
+pub mod backward;
+pub mod camera;
+pub mod emitters;
+pub mod forward;
+pub mod rng;
+pub mod sampling;
+pub mod statistics;
+pub mod world;
+
+pub use agreement::{Agreement, agreement};
+pub use backward::{TraceOptions, luminance_along};
+pub use camera::{TracedImage, trace_camera};
+pub use forward::{FieldEstimate, trace_photons};
+pub use world::World;
