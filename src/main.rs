@@ -109,7 +109,8 @@ enum Command {
         seed: u64,
     },
     /// Monte Carlo references: backward path tracing of cameras (mean and standard-error
-    /// EXR images, cd/m²) or, with --forward, light tracing into the (patch, cell) bins (HDF5).
+    /// EXR images, cd/m²) and probes or, with --forward, light tracing into the (patch, cell)
+    /// bins (HDF5).
     Trace {
         /// The case file (TOML).
         case: PathBuf,
@@ -119,6 +120,9 @@ enum Command {
         /// Paths per pixel (backward).
         #[arg(long, default_value_t = 64)]
         spp: usize,
+        /// Paths per reading of each [[probe]] (backward).
+        #[arg(long, default_value_t = 65_536)]
+        probe_samples: usize,
         /// Forward light tracing into the (patch, direction cell) bins instead of cameras.
         #[arg(long)]
         forward: bool,
@@ -291,9 +295,10 @@ fn main() -> ExitCode {
             };
             cli::render::run(&solution, &cameras, &output, &look)
         }
-        Command::Trace { case, cameras, spp, forward, photons, seed, max_order, output, discretize } => {
+        Command::Trace { case, cameras, spp, probe_samples, forward, photons, seed, max_order, output, discretize } => {
             let options = ugo::trace::TraceOptions { seed, max_order };
-            let job = cli::trace::TraceJob { cameras, spp, photons: forward.then_some(photons), options, output };
+            let photons = forward.then_some(photons);
+            let job = cli::trace::TraceJob { cameras, spp, probe_samples, photons, options, output };
             cli::trace::run(&case, &discretize, &job)
         }
         Command::Agree { solution, reference, camera, samples, shading, gather_rays } => {

@@ -8,7 +8,7 @@ mod grid;
 mod kernel;
 mod render;
 mod scene;
-mod solve;
+pub mod solve;
 mod support;
 mod trace;
 mod visibility;

@@ -127,4 +127,5 @@ fn summary(a: &Agreement) {
     println!("  relative difference  {:>12.4e}   L1, Σ|x − m|/Σ|m|", a.relative_l1);
     println!("                       {:>12.4e}   L2, ‖x − m‖/‖m‖", a.relative_l2);
     println!("  reference noise      {:>12.4e}   L2, ‖σ‖/‖m‖", a.noise_l2);
+    println!("  error beyond noise   {:>12.4e}   L2, √(‖x − m‖² − ‖σ‖²)/‖m‖", a.excess_l2);
 }

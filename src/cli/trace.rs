@@ -1,6 +1,6 @@
 //! `ugo trace CASE`: the Monte Carlo references. Backward (`--camera NAME --spp S`):
 //! per-pixel mean and standard-error images, linear EXR in cd/m² (and a PNG to look
-//! at). Forward (`--forward --photons P`): the estimate of the discrete field in the HDF5
+//! at), and the readings of the case's probes with their standard errors. Forward (`--forward --photons P`): the estimate of the discrete field in the HDF5
 //! layout of a solve, with standard errors. Both print their throughput.
 
 use super::file_name;
@@ -11,12 +11,15 @@ use anyhow::{Result, bail};
 use std::path::{Path, PathBuf};
 use ugo::geometry::Mesh;
 use ugo::io::{EstimateFile, auto_exposure, write_estimate, write_exr_as, write_png};
-use ugo::trace::{TraceOptions, World, trace_camera, trace_photons};
+use ugo::scene::Scene;
+use ugo::trace::{TraceOptions, World, trace_camera, trace_photons, trace_probes};
 
 /// What `ugo trace` was asked for.
 pub struct TraceJob {
     pub cameras: Vec<String>,
     pub spp: usize,
+    /// Paths per probe reading (backward).
+    pub probe_samples: usize,
     /// `Some(P)`: forward with `P` photons instead of cameras.
     pub photons: Option<u64>,
     pub options: TraceOptions,
@@ -74,6 +77,9 @@ pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
     if job.spp == 0 {
         bail!("--spp must be at least 1");
     }
+    if scene.cameras.is_empty() && job.cameras.is_empty() && !scene.probes.is_empty() {
+        return probes(&scene, &world, job);
+    }
     let cameras = chosen(&scene.cameras, &job.cameras, case)?;
     let dir = job.output.clone().unwrap_or_else(|| PathBuf::from("."));
     std::fs::create_dir_all(&dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
@@ -114,6 +120,27 @@ pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
         println!("  luminance            {lo:.4e} .. {hi:.4e} cd/m²");
         println!("  relative std. error  median {:.2e} per pixel", median(relative));
         println!("  {}\n  {}\n  {}", mean.display(), error.display(), png.display());
+    }
+    if scene.probes.is_empty() { Ok(()) } else { probes(&scene, &world, job) }
+}
+
+/// The probes' readings, `job.probe_samples` paths each.
+fn probes(scene: &Scene, world: &World, job: &TraceJob) -> Result<()> {
+    if job.probe_samples < 2 {
+        bail!("--probe-samples must be at least 2 (standard errors need two samples)");
+    }
+    let start = std::time::Instant::now();
+    let readings = trace_probes(world, &scene.probes, job.probe_samples, &job.options);
+    println!(
+        "  probes ({} paths each, {:.2} s)     luminance cd/m²            illuminance lx",
+        job.probe_samples,
+        start.elapsed().as_secs_f64()
+    );
+    for r in readings {
+        println!(
+            "    {:<22} {:>12.4} ± {:<10.2e} {:>12.4} ± {:<10.2e}",
+            r.name, r.luminance.0, r.luminance.1, r.illuminance.0, r.illuminance.1
+        );
     }
     Ok(())
 }

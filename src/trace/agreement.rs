@@ -5,7 +5,9 @@
 //! rms 1, `|z| > 3` for 0.27 % of the values. A systematic deviation (discretization
 //! error, a bug) shows as an rms well above 1 once `σ` is smaller than it; the relative
 //! differences `‖x − m‖/‖m‖` (L1 and L2) measure its size, and `‖σ‖₂/‖m‖₂` the
-//! reference's own noise on the same scale.
+//! reference's own noise on the same scale. Since `E‖x − m‖² = ‖x − E m‖² + ‖σ‖²` for
+//! independent errors, `√(‖x − m‖² − ‖σ‖²)/‖m‖` is the L2 difference with the reference's
+//! noise taken out: the error of `x` itself, even when the noise is not negligible.
 
 /// The summary of `z` over the compared values.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -26,6 +28,8 @@ pub struct Agreement {
     pub relative_l2: f64,
     /// `‖σ‖₂/‖m‖₂`: the reference's noise on the scale of `relative_l2`.
     pub noise_l2: f64,
+    /// `√(max(‖x − m‖₂² − ‖σ‖₂², 0))/‖m‖₂`: the L2 difference less the reference's noise.
+    pub excess_l2: f64,
 }
 
 /// Compares `values` with the reference `mean ± error` (all the same length).
@@ -41,6 +45,7 @@ pub fn agreement(values: &[f64], mean: &[f64], error: &[f64]) -> Agreement {
         relative_l1: 0.0,
         relative_l2: 0.0,
         noise_l2: 0.0,
+        excess_l2: 0.0,
     };
     let (mut sum_z, mut sum_z2, mut beyond) = (0.0, 0.0, 0usize);
     let (mut l1, mut l1_ref, mut l2, mut l2_ref, mut noise) = (0.0, 0.0, 0.0, 0.0, 0.0);
@@ -69,6 +74,7 @@ pub fn agreement(values: &[f64], mean: &[f64], error: &[f64]) -> Agreement {
     }
     if l2_ref > 0.0 {
         (a.relative_l1, a.relative_l2, a.noise_l2) = (l1 / l1_ref, (l2 / l2_ref).sqrt(), (noise / l2_ref).sqrt());
+        a.excess_l2 = ((l2 - noise).max(0.0) / l2_ref).sqrt();
     }
     a
 }

@@ -14,6 +14,7 @@
 use super::rng::Rng;
 use super::sampling::{self, is_delta};
 use super::world::World;
+use crate::visibility::NO_FACE;
 use glam::DVec3;
 use std::f64::consts::FRAC_1_PI;
 
@@ -39,24 +40,36 @@ impl Default for TraceOptions {
     }
 }
 
-/// One path's estimate of the luminance arriving at `origin` from the unit `direction`
-/// (that is, leaving the first surface towards `origin`), cd/m². `ignore` is the face
-/// `origin` lies on, if any; `rays` counts the rays cast.
-pub fn luminance_along(
-    world: &World,
-    origin: DVec3,
-    direction: DVec3,
-    ignore: u32,
-    rng: &mut Rng,
-    options: &TraceOptions,
-    rays: &mut u64,
-) -> f64 {
+/// Where a path starts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Start {
+    pub origin: DVec3,
+    /// Unit direction of the first ray.
+    pub direction: DVec3,
+    /// The face `origin` lies on ([`NO_FACE`] for none).
+    pub ignore: u32,
+    /// The density per solid angle with which `direction` was drawn, when the caller also
+    /// samples the emitters from `origin` (the emission met first is then weighted against
+    /// that); `None` for a camera ray.
+    pub drawn: Option<f64>,
+}
+
+impl Start {
+    /// A ray from an eye in free space.
+    pub fn eye(origin: DVec3, direction: DVec3) -> Start {
+        Start { origin, direction, ignore: NO_FACE, drawn: None }
+    }
+}
+
+/// One path's estimate of the luminance arriving at `start.origin` from `start.direction`
+/// (that is, leaving the first surface towards the origin), cd/m²; `rays` counts the rays.
+pub fn luminance_along(world: &World, start: Start, rng: &mut Rng, options: &TraceOptions, rays: &mut u64) -> f64 {
     let mesh = &world.mesh;
     let last = options.max_order.unwrap_or(LONGEST_PATH).min(LONGEST_PATH);
-    let (mut origin, mut direction, mut ignore) = (origin, direction, ignore);
+    let (mut origin, mut direction, mut ignore) = (start.origin, start.direction, start.ignore);
     let (mut beta, mut total) = (1.0, 0.0);
     // density of the direction just sampled, None after the eye or a mirror
-    let mut scattered: Option<f64> = None;
+    let mut scattered = start.drawn;
     for order in 0..=last {
         *rays += 1;
         let Some(hit) = world.landing(origin, direction, ignore) else { break };
@@ -113,7 +126,7 @@ pub fn luminance_along(
 
 /// The power heuristic `p²/(p² + q²)` of the sampling technique with density `p`.
 #[inline]
-fn power_heuristic(p: f64, q: f64) -> f64 {
+pub fn power_heuristic(p: f64, q: f64) -> f64 {
     let (p2, q2) = (p * p, q * q);
     if p2 + q2 > 0.0 { p2 / (p2 + q2) } else { 0.0 }
 }

@@ -4,13 +4,12 @@
 //! spread of its own samples. Rayon runs over rows; pixel `p`'s random stream is keyed
 //! by `(seed, p)`, so the image does not depend on the thread count.
 
-use super::backward::{TraceOptions, luminance_along};
+use super::backward::{Start, TraceOptions, luminance_along};
 use super::rng::Rng;
 use super::statistics::Tally;
 use super::world::World;
 use crate::render::{Image, Projection};
 use crate::scene::Camera;
-use crate::visibility::NO_FACE;
 use rayon::prelude::*;
 use std::time::Instant;
 
@@ -48,7 +47,7 @@ pub fn trace_camera(
                     for _ in 0..spp {
                         let (x, y) = (px as f64 + rng.uniform(), py as f64 + rng.uniform());
                         let d = view.direction(x, y);
-                        tally.add(luminance_along(world, view.eye, d, NO_FACE, &mut rng, options, &mut rays));
+                        tally.add(luminance_along(world, Start::eye(view.eye, d), &mut rng, options, &mut rays));
                     }
                     tally.mean_and_error(spp as u64)
                 })

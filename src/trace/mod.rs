@@ -5,7 +5,7 @@
 //!
 //! * [`backward`] (from the eye): path tracing with next-event estimation, multiple
 //!   importance sampling and Russian roulette; [`camera`] makes per-pixel means and
-//!   standard errors of a `[[camera]]`.
+//!   standard errors of a `[[camera]]`, [`probe`] the readings of a `[[probe]]`.
 //! * [`forward`] (from the sources): light tracing into the `(patch, direction cell)` bins,
 //!   a Monte Carlo estimate of the discrete field `L(i,k)` with standard errors.
 //! * [`agreement`]: a deterministic result against either, in units of the standard error.
@@ -19,13 +19,15 @@ pub mod backward;
 pub mod camera;
 pub mod emitters;
 pub mod forward;
+pub mod probe;
 pub mod rng;
 pub mod sampling;
 pub mod statistics;
 pub mod world;
 
 pub use agreement::{Agreement, agreement};
-pub use backward::{TraceOptions, luminance_along};
+pub use backward::{Start, TraceOptions, luminance_along};
 pub use camera::{TracedImage, trace_camera};
 pub use forward::{FieldEstimate, trace_photons};
+pub use probe::{ProbeEstimate, trace_probes};
 pub use world::World;

@@ -3,6 +3,6 @@ mod lambert_cells;
 mod material_furnaces;
 mod methods;
 mod mirror;
-mod opal;
+pub mod opal;
 mod plates;
 mod sphere;

@@ -23,16 +23,16 @@ use ugo::model::Model;
 use ugo::probe::{ProbeReading, read_probes};
 use ugo::scene::Scene;
 
-const LUMINANCE: f64 = 1000.0;
-const TAU: f64 = 0.5;
+pub const LUMINANCE: f64 = 1000.0;
+pub const TAU: f64 = 0.5;
 
 /// `F_{dA→emitter}` at `(x, z)` on the panel plane, 1 m above the unit-square emitter.
-fn factor(x: f64, z: f64) -> f64 {
+pub fn factor(x: f64, z: f64) -> f64 {
     [(x, z), (1.0 - x, z), (x, 1.0 - z), (1.0 - x, 1.0 - z)].iter().map(|&(a, b)| corner_factor(a, b, 1.0)).sum()
 }
 
 /// Illuminance 1 m above the panel's centre, facing down, with `n × n` quadrature cells.
-fn exact_above(n: usize) -> f64 {
+pub fn exact_above(n: usize) -> f64 {
     mean_over((0.0, 1.0), (0.0, 1.0), n, |x, z| {
         let r2 = (x - 0.5).powi(2) + (z - 0.5).powi(2) + 1.0;
         TAU * LUMINANCE * factor(x, z) / (r2 * r2)

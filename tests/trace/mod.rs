@@ -1,5 +1,9 @@
-//! The Monte Carlo estimators (`src/trace/`): furnaces, forward against the direct solve,
-//! backward against the deterministic image, the trace/agree/compare commands.
+//! The Monte Carlo estimators (`src/trace/`): furnaces, the material sampler, forward
+//! against the direct solve, backward against the deterministic image, and the
+//! `trace`/`agree`/`compare --photons` commands.
 
+mod cli;
 mod forward;
 mod furnace;
+mod probe;
+mod sampling;

@@ -1,0 +1,78 @@
+//! Backward estimates of the `[[probe]]` readings (`design.md` §7), with the meaning of
+//! `crate::probe`: the luminance (cd/m²) a meter at the point aimed along the normal reads
+//! (on a surface: that surface's outgoing luminance along its normal), and the illuminance
+//! (lx) on a receiver at the point facing the normal, `E = ∫ L_in cosθ dω`.
+//!
+//! The illuminance combines next-event estimation towards the emitters with
+//! cosine-distributed directions (each continued as a path), weighted by the power
+//! heuristic: `E = π L_in(l)` per cosine direction (density `cosθ/π`).
+
+use super::backward::{Start, TraceOptions, luminance_along, power_heuristic};
+use super::rng::Rng;
+use super::sampling::cosine_direction;
+use super::statistics::Tally;
+use super::world::World;
+use crate::geometry::Frame;
+use crate::scene::Probe;
+use crate::visibility::NO_FACE;
+use rayon::prelude::*;
+use std::f64::consts::{FRAC_1_PI, PI};
+
+/// A probe's readings with their standard errors.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ProbeEstimate {
+    pub name: String,
+    /// Luminance and its standard error, cd/m².
+    pub luminance: (f64, f64),
+    /// Illuminance and its standard error, lx.
+    pub illuminance: (f64, f64),
+}
+
+/// Reads every probe with `samples` paths for each quantity; probe `p`'s streams are
+/// keyed by `(seed, 2p)` and `(seed, 2p + 1)`.
+pub fn trace_probes(world: &World, probes: &[Probe], samples: usize, options: &TraceOptions) -> Vec<ProbeEstimate> {
+    probes.par_iter().enumerate().map(|(i, probe)| read(world, probe, i as u64, samples, options)).collect()
+}
+
+fn read(world: &World, probe: &Probe, index: u64, samples: usize, options: &TraceOptions) -> ProbeEstimate {
+    let (p, n) = (probe.position, probe.normal);
+    let delta = 1e-4 * world.mesh.extent();
+    // The face under the probe, when it lies on a surface facing the same way.
+    let under = world
+        .landing(p + n * delta, -n, NO_FACE)
+        .filter(|hit| hit.point.distance(p) <= 2.0 * delta && world.mesh.patches[hit.patch].normal.dot(n) > 0.5);
+    let ignore = under.map_or(NO_FACE, |hit| world.mesh.patches[hit.patch].face);
+    let mut rays = 0;
+    let mut rng = Rng::stream(options.seed, 2 * index);
+    let mut luminance = Tally::default();
+    for _ in 0..samples {
+        let l = match under {
+            Some(_) => luminance_along(world, Start::eye(p + n * delta, -n), &mut rng, options, &mut rays),
+            None => luminance_along(world, Start::eye(p, n), &mut rng, options, &mut rays),
+        };
+        luminance.add(l);
+    }
+    let frame = Frame::around(n);
+    let mut rng = Rng::stream(options.seed, 2 * index + 1);
+    let mut illuminance = Tally::default();
+    for _ in 0..samples {
+        let mut e = 0.0;
+        if let Some(light) = world.emitters.sample_towards(&world.mesh, p, rng.uniform3()) {
+            let cos = n.dot(light.direction);
+            if cos > 0.0 && world.visibility.visible(p, light.point, [ignore, light.face]) {
+                e += light.luminance * cos / light.pdf * power_heuristic(light.pdf, cos * FRAC_1_PI);
+            }
+        }
+        let local = cosine_direction(rng.uniform(), rng.uniform());
+        let d = frame.world(local);
+        let start = Start { origin: p, direction: d, ignore, drawn: Some(local.z * FRAC_1_PI) };
+        e += PI * luminance_along(world, start, &mut rng, options, &mut rays);
+        illuminance.add(e);
+    }
+    let n = samples as u64;
+    ProbeEstimate {
+        name: probe.name.clone(),
+        luminance: luminance.mean_and_error(n),
+        illuminance: illuminance.mean_and_error(n),
+    }
+}
