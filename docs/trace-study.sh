@@ -3,7 +3,7 @@
 # against a converged backward Monte Carlo reference as patch_size and K are refined, on the
 # Cornell and glossy Cornell boxes, with unknowns, memory and time. Run from the repository
 # root after `make build` (UGO=path/to/ugo to use another binary, SPP=n for the reference's
-# paths per pixel); writes into out/trace-study/. About 25 minutes on two cores.
+# paths per pixel); writes into out/trace-study/. About 35 minutes on two cores.
 set -euo pipefail
 ugo=${UGO:-./target/release/ugo}
 out=out/trace-study
@@ -29,15 +29,18 @@ solve_and_agree() { # case, name, extra solve options...
   local case=$1 name=$2
   shift 2
   measure $ugo solve "$out/$case.toml" "$@" -o "$out/$name.h5" 2>&1 |
-    grep -E "patches N|cells K|unknowns|non-zeros|assembly|  solve|wall"
-  $ugo agree "$out/$name.h5" "$out/$case-study-trace.exr" --camera study |
-    grep -E "rms z|relative difference|L2,|noise"
+    grep -E "patches N|cells K|unknowns|non-zeros|assembly|  solve|^  wall"
+  for shading in flat smooth gather; do
+    echo "#### $shading shading"
+    measure $ugo agree "$out/$name.h5" "$out/$case-study-trace.exr" --camera study --shading $shading --gather-rays 2048 2>&1 |
+      grep -E "rms z|relative difference|L2,|noise|^  wall"
+  done
 }
 
 for case in cornell-box glossy-cornell; do
   study_case $case
   echo "## reference: $case, $spp paths per pixel"
-  measure $ugo trace "$out/$case.toml" --camera study --spp "$spp" -o "$out" 2>&1 | grep -E "time|relative|wall"
+  measure $ugo trace "$out/$case.toml" --camera study --spp "$spp" -o "$out" 2>&1 | grep -E "time|relative|^  wall"
 done
 
 echo "## Cornell box, K = 1, patch size h"

@@ -2,6 +2,7 @@
 //! against the direct solve, backward against the deterministic image, and the
 //! `trace`/`agree`/`compare --photons` commands.
 
+mod backward;
 mod cli;
 mod forward;
 mod furnace;
