@@ -8,10 +8,12 @@
 //! coordinates, so rays through shared edges (including the diagonal of a quad) never
 //! slip between two triangles.
 //!
-//! obvhs's compressed wide BVH is slow on axis-aligned rooms (flat boxes defeat its
-//! quantized nodes), so the scene may be turned by a fixed generic rotation before the
-//! build, every query turned with it; which layout is fastest was measured with
-//! `ugo bench` and is the default (`docs/performance.md`).
+//! obvhs's compressed wide BVH (the default) misses boxes along rays whose direction has
+//! a zero (below 1e-7) component (axis-aligned rays, common between the patches of an
+//! axis-aligned room): such components are nudged to ±1e-7 before its traversal, which
+//! moves a ray by at most 1e-7 of its length. The scene may also be turned by a fixed
+//! generic rotation before the build, every query turned with it. Which layout is
+//! fastest and correct was measured with `ugo bench --layouts` (`docs/performance.md`).
 
 use crate::geometry::Mesh;
 use glam::{DMat3, DVec3, Vec3A};
@@ -42,7 +44,7 @@ pub enum BuildPreset {
 
 impl Default for VisibilityOptions {
     fn default() -> Self {
-        VisibilityOptions { wide: false, rotate: false, preset: BuildPreset::Slow }
+        VisibilityOptions { wide: true, rotate: false, preset: BuildPreset::Slow }
     }
 }
 
@@ -191,7 +193,11 @@ impl Visibility {
 
     fn ray(&self, origin: DVec3, direction: DVec3, tmin: f64, tmax: f64) -> Ray {
         let o = Vec3A::from((self.rotation * origin).as_vec3());
-        let d = Vec3A::from((self.rotation * direction).as_vec3());
+        let mut d = Vec3A::from((self.rotation * direction).as_vec3());
+        if matches!(self.hierarchy, Hierarchy::Wide(_)) {
+            // obvhs's wide traversal misses boxes along exactly axis-aligned rays.
+            d = Vec3A::select(d.abs().cmplt(Vec3A::splat(1e-7)), Vec3A::splat(1e-7).copysign(d), d);
+        }
         Ray::new(o, d, tmin as f32, tmax as f32)
     }
 }

@@ -57,7 +57,8 @@ fn allocations(work: impl FnMut() + Send) -> usize {
 #[test]
 fn kernel_applications_and_ray_queries_do_not_allocate() {
     let scene = Scene::load(std::path::Path::new("cases/glossy-cornell.toml")).unwrap();
-    let options = ModelOptions { patch_size: 0.15, directions: DirectionSet::hemisphere(16), ..ModelOptions::of(&scene) };
+    let options =
+        ModelOptions { patch_size: 0.15, directions: DirectionSet::hemisphere(16), ..ModelOptions::of(&scene) };
     let model = Model::build(&scene, &options, &|_| {}, &|_| {}).unwrap();
     let n = model.l0.len();
     let x: Vec<f64> = (0..n).map(|i| 1.0 + (i % 7) as f64).collect();
@@ -80,6 +81,10 @@ fn kernel_applications_and_ray_queries_do_not_allocate() {
     assert_eq!(allocations(|| seen += v.visible(a, b, faces) as usize), 0, "occlusion query");
     let mut hits = 0;
     let up = DVec3::new(0.3, 1.0, 0.2);
-    assert_eq!(allocations(|| hits += v.closest_hit(DVec3::new(0.28, 0.2, 0.28), up, NO_FACE).is_some() as usize), 0, "closest hit");
+    assert_eq!(
+        allocations(|| hits += v.closest_hit(DVec3::new(0.28, 0.2, 0.28), up, NO_FACE).is_some() as usize),
+        0,
+        "closest hit"
+    );
     assert!(hits > 0);
 }

@@ -4,7 +4,7 @@ use glam::DVec3;
 use std::path::Path;
 use ugo::geometry::Mesh;
 use ugo::scene::Scene;
-use ugo::visibility::{NO_FACE, Visibility};
+use ugo::visibility::{NO_FACE, Visibility, VisibilityOptions};
 
 fn cornell() -> Mesh {
     let scene = Scene::load(Path::new("cases/cornell-box.toml")).unwrap();
@@ -48,4 +48,35 @@ fn a_ray_through_a_shared_edge_does_not_slip_between_triangles() {
             assert!(hit.is_some(), "lost the floor at {corner}");
         }
     }
+}
+
+#[test]
+fn the_wide_and_binary_hierarchies_answer_every_query_alike() {
+    // The default (compressed wide BVH, axis-aligned directions nudged) against the binary
+    // tree, on segments between sample points of facing patches of the Cornell box (the
+    // assembly's queries): many of them are exactly axis-aligned (opposed patches of
+    // parallel walls).
+    let mesh = cornell();
+    let wide = Visibility::build(&mesh);
+    let binary = Visibility::build_with(&mesh, VisibilityOptions { wide: false, ..VisibilityOptions::default() });
+    let points: Vec<(DVec3, usize)> = (0..mesh.len())
+        .step_by(7)
+        .flat_map(|i| ugo::kernel::occlusion::sample_points(&mesh.patches[i]).map(|x| (x, i)))
+        .collect();
+    let (mut tested, mut aligned, mut different) = (0, 0, 0);
+    for (i, &(a, pa)) in points.iter().enumerate() {
+        for &(b, pb) in points.iter().skip(i + 1).step_by(5) {
+            let (p, q) = (&mesh.patches[pa], &mesh.patches[pb]);
+            if !ugo::kernel::facing(p, q) {
+                continue;
+            }
+            let (fa, fb) = (p.face, q.face);
+            let d = b - a;
+            aligned += (d.x == 0.0 || d.y == 0.0 || d.z == 0.0) as usize;
+            tested += 1;
+            different += (wide.visible(a, b, [fa, fb]) != binary.visible(a, b, [fa, fb])) as usize;
+        }
+    }
+    assert!(aligned > 100, "only {aligned} axis-aligned segments of {tested}");
+    assert_eq!(different, 0, "{different} of {tested} segments answered differently");
 }
