@@ -15,6 +15,7 @@ pub mod grid;
 pub mod io;
 pub mod kernel;
 pub mod model;
+pub mod photometry;
 pub mod probe;
 pub mod render;
 pub mod scene;

@@ -6,6 +6,7 @@ mod cli;
 mod directions;
 mod grid;
 mod kernel;
+mod photometry;
 mod render;
 mod scene;
 pub mod solve;
