@@ -1,17 +1,22 @@
 //! Energy balance of a solved field, in lumens.
 //!
-//! Per patch: emitted `Φe = A Σ_k μ_k L0(k)`, outgoing `Φ = A Σ_k μ_k L(k)`, incident
-//! `A E` with `E = π Σ_d (G x)_d`, absorbed `A π Σ_d (G x)_d (1 − a(d) − t(d))` with `a` and `t`
-//! the material's directional reflectance and transmittance. Escaped flux is what leaves the surfaces and arrives
-//! nowhere, `Σ Φ − Σ A E`. The imbalance `Φe − absorbed − escaped` is the flux-weighted
-//! residual of the solve: zero for an exact solution of a conservative kernel.
+//! Per patch: emitted `Φe = A L_e Σ_k μ_k` (its own emission), outgoing
+//! `Φ = A Σ_k μ_k L(k)`, incident `A E` with `E = π Σ_d ((G x)_d + D_d)` (light from the
+//! surfaces and, directly, from the luminaires), absorbed
+//! `A π Σ_d ((G x)_d + D_d) (1 − a(d) − t(d))` with `a` and `t` the material's directional
+//! reflectance and transmittance. A luminaire emits its flux (parallel light: what lands
+//! on the patches); what of it lands nowhere escapes, as does what leaves the surfaces and
+//! arrives nowhere, `Σ Φ − Σ A π Σ_d (G x)_d`. The imbalance `emitted − absorbed − escaped`
+//! is the flux-weighted residual of the solve: zero for an exact solution of a
+//! conservative kernel.
 
-use crate::geometry::Mesh;
-use crate::kernel::Kernel;
+use crate::model::Model;
+use std::f64::consts::PI;
 
 /// Fluxes of a solution, lm.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EnergyBalance {
+    /// Surfaces' own emission plus the luminaires' flux.
     pub emitted: f64,
     pub absorbed: f64,
     pub escaped: f64,
@@ -21,14 +26,21 @@ pub struct EnergyBalance {
     pub surface_emitted: Vec<f64>,
     /// Absorbed flux of each surface.
     pub surface_absorbed: Vec<f64>,
+    /// Flux leaving each luminaire (parallel light: the flux landing on the patches).
+    pub luminaire_emitted: Vec<f64>,
 }
 
 impl EnergyBalance {
-    pub fn of(mesh: &Mesh, kernel: &Kernel, l0: &[f64], x: &[f64], surfaces: usize) -> EnergyBalance {
+    pub fn of(model: &Model, x: &[f64], surfaces: usize) -> EnergyBalance {
+        let (mesh, kernel) = (&model.mesh, &model.kernel);
         let k = kernel.cells();
         let cells = kernel.directions.cells();
+        let projected: f64 = cells.iter().map(|c| c.projected).sum();
+        let direct = &model.direct;
         let mut gx = vec![0.0; x.len()];
         kernel.apply_transport(x, &mut gx);
+        let luminaire_emitted: Vec<f64> =
+            model.sources.iter().zip(&direct.intercepted).map(|(s, &landed)| s.flux().unwrap_or(landed)).collect();
         let mut b = EnergyBalance {
             emitted: 0.0,
             absorbed: 0.0,
@@ -36,27 +48,29 @@ impl EnergyBalance {
             imbalance: 0.0,
             surface_emitted: vec![0.0; surfaces],
             surface_absorbed: vec![0.0; surfaces],
+            luminaire_emitted,
         };
-        let (mut outgoing, mut incident) = (0.0, 0.0);
+        let (mut outgoing, mut from_surfaces) = (0.0, 0.0);
         for (i, p) in mesh.patches.iter().enumerate() {
             let block = &kernel.blocks[kernel.patch_material[i] as usize];
             let range = i * k..(i + 1) * k;
-            let weighted = |v: &[f64]| p.area * v.iter().zip(cells).map(|(l, c)| l * c.projected).sum::<f64>();
-            let emitted = weighted(&l0[range.clone()]);
-            outgoing += weighted(&x[range.clone()]);
-            incident += p.area * std::f64::consts::PI * gx[range.clone()].iter().sum::<f64>();
+            outgoing += p.area * x[range.clone()].iter().zip(cells).map(|(l, c)| l * c.projected).sum::<f64>();
+            from_surfaces += p.area * PI * gx[range].iter().sum::<f64>();
             let absorbed: f64 = (0..k)
                 .map(|d| {
                     let (reflected, transmitted) = block.albedo(d, &kernel.directions);
-                    p.area * std::f64::consts::PI * gx[i * k + d] * (1.0 - reflected - transmitted)
+                    let arriving = gx[i * k + d] + direct.arriving[i * k + d];
+                    p.area * PI * arriving * (1.0 - reflected - transmitted)
                 })
                 .sum();
-            b.surface_emitted[p.surface as usize] += emitted;
+            b.surface_emitted[p.surface as usize] += p.area * mesh.emission[i] * projected;
             b.surface_absorbed[p.surface as usize] += absorbed;
         }
-        b.emitted = b.surface_emitted.iter().sum();
+        let lost_by_luminaires: f64 =
+            b.luminaire_emitted.iter().zip(&direct.intercepted).map(|(emitted, landed)| emitted - landed).sum();
+        b.emitted = b.surface_emitted.iter().sum::<f64>() + b.luminaire_emitted.iter().sum::<f64>();
         b.absorbed = b.surface_absorbed.iter().sum();
-        b.escaped = outgoing - incident;
+        b.escaped = outgoing - from_surfaces + lost_by_luminaires;
         b.imbalance = b.emitted - b.absorbed - b.escaped;
         b
     }

@@ -14,6 +14,7 @@ pub mod geometry;
 pub mod grid;
 pub mod io;
 pub mod kernel;
+pub mod luminaire;
 pub mod model;
 pub mod photometry;
 pub mod probe;

@@ -1,5 +1,6 @@
 //! The discretized problem of a scene: mesh, visibility, kernel `K = B·G` and source
-//! `L0` (`design.md` §6, the arrows from Scene to Kernel).
+//! `L0` (`design.md` §6, the arrows from Scene to Kernel): the surfaces' own emission plus
+//! the luminaires' direct light reflected once, `L0 = L_e + B·D` (`crate::luminaire`).
 //!
 //! The kernel's memory is estimated before assembly and a kernel over the limit is
 //! refused with the estimate and the ways out.
@@ -8,6 +9,7 @@ use crate::brdf::Block;
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::kernel::{Estimate, Kernel, Transport, assemble, form_factor::Quadrature};
+use crate::luminaire::{DirectLight, Source, direct_light};
 use crate::scene::Scene;
 use crate::visibility::Visibility;
 use std::time::Instant;
@@ -55,6 +57,8 @@ pub struct AssemblyStats {
     pub mesh_seconds: f64,
     pub bvh_seconds: f64,
     pub kernel_seconds: f64,
+    /// Time spent on the luminaires' direct light.
+    pub light_seconds: f64,
     pub pairs: usize,
     pub rays: usize,
     pub balance: crate::kernel::BalanceReport,
@@ -67,6 +71,10 @@ pub struct Model {
     pub kernel: Kernel,
     /// Source term `L0(i,k)`, flat, `x[i·K + k]`.
     pub l0: Vec<f64>,
+    /// The luminaires, placed.
+    pub sources: Vec<Source>,
+    /// Their direct light on every (patch, cell).
+    pub direct: DirectLight,
     pub stats: AssemblyStats,
 }
 
@@ -111,18 +119,35 @@ impl Model {
             assemble(&mesh, &visibility, &directions, &options.quadrature, step);
         let blocks = scene.materials.iter().map(|m| Block::of(&m.model, &directions)).collect();
         let patch_material = mesh.patches.iter().map(|p| p.material).collect();
-        let k = directions.len();
-        let l0 = mesh.emission.iter().flat_map(|&l| std::iter::repeat_n(l, k)).collect();
         let twin = mesh.patches.iter().map(|p| p.twin).collect();
         let kernel = Kernel { g, directions, blocks, patch_material, twin };
+        let kernel_seconds = t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
+        let direct = direct_light(&sources, &mesh, &visibility, &kernel.directions);
         let stats = AssemblyStats {
             mesh_seconds,
             bvh_seconds,
-            kernel_seconds: t.elapsed().as_secs_f64(),
+            kernel_seconds,
+            light_seconds: t.elapsed().as_secs_f64(),
             pairs,
-            rays,
+            rays: rays + direct.rays,
             balance,
         };
-        Ok(Model { mesh, visibility, kernel, l0, stats })
+        let mut model = Model { mesh, visibility, kernel, l0: Vec::new(), sources, direct, stats };
+        model.l0 = model.source_term();
+        Ok(model)
+    }
+
+    /// `L0 = L_e + B·D`: each patch's own emission in every cell, plus the luminaires'
+    /// direct light reflected (and transmitted) once by the current material blocks.
+    pub fn source_term(&self) -> Vec<f64> {
+        let k = self.kernel.cells();
+        let mut l0 = vec![0.0; self.direct.arriving.len()];
+        self.kernel.apply_materials(&self.direct.arriving, &mut l0);
+        for (cells, &emitted) in l0.chunks_mut(k).zip(&self.mesh.emission) {
+            cells.iter_mut().for_each(|l| *l += emitted);
+        }
+        l0
     }
 }

@@ -4,25 +4,32 @@
 //! The light arriving at `p` is gathered per direction cell `d` of a frame at `p`:
 //! `I_d(p) = Σ_j Σ_m L_j(m) F_{dA(p)→P_j}^{d,m} V(p, P_j)` (the exact contour-integral form
 //! factor, split by cells as in the kernel, and a visibility fraction from rays to
-//! stratified points of `P_j`); the illuminance is `E = π Σ_d I_d`. A probe on a surface
-//! (within `1e-4` of the scene's size, facing the same way) reads that surface's outgoing
-//! luminance along its normal, `L0(k) + Σ_d ρ̄(k,d) I_d` (plus the transmitted light
-//! gathered on the back side of a transmitting surface); a probe in free space reads what a
-//! luminance meter at the point aimed along the normal would: the outgoing luminance,
-//! gathered the same way, of the first surface point the normal meets, towards the probe
-//! (0 when it meets nothing).
+//! stratified points of `P_j`; a patch whose points and corners disagree lies on a shadow
+//! edge and is cut into quarters, up to [`SHADOW_DEPTH`] levels, each piece weighed by its
+//! own rays). The luminaires' light arrives exactly at the point (`crate::luminaire::arriving_at`, one
+//! shadow ray each) as `D_d(p)`; the illuminance is `E = π Σ_d (I_d + D_d)`, of which
+//! `π Σ_d D_d` is direct from the luminaires. A probe on a surface (within `1e-4` of the
+//! scene's size, facing the same way) reads that surface's outgoing luminance along its
+//! normal, `L_e + Σ_d ρ̄(k,d) (I_d + D_d)` (plus the light transmitted from the back side
+//! of a transmitting surface); a probe in free space reads what a luminance meter at the
+//! point aimed along the normal would: the outgoing luminance, gathered the same way, of
+//! the first surface point the normal meets, towards the probe (0 when it meets nothing).
 
 use crate::field::Field;
-use crate::geometry::{Frame, NO_TWIN};
+use crate::geometry::{ConvexPolygon, Frame, NO_TWIN, Patch};
 use crate::kernel::contour::point_to_polygon;
 use crate::kernel::form_factor::{Binning, binned_point};
-use crate::kernel::occlusion::{POINTS, sample_points};
+use crate::kernel::occlusion::{POINTS, piece_visibility};
+use crate::luminaire::arriving_at;
 use crate::model::Model;
 use crate::scene::Probe;
 use crate::visibility::NO_FACE;
 use glam::DVec3;
 use rayon::prelude::*;
 use std::f64::consts::PI;
+
+/// Most levels of cutting a partly visible patch into quarters.
+pub const SHADOW_DEPTH: u32 = 6;
 
 /// One probe's reading.
 #[derive(Debug, Clone, PartialEq)]
@@ -34,6 +41,8 @@ pub struct ProbeReading {
     pub luminance: f64,
     /// lx, on a receiver at `position` facing `normal`.
     pub illuminance: f64,
+    /// The part of `illuminance` that comes directly from the luminaires, lx.
+    pub direct: f64,
     /// The patch the probe lies on, if any.
     pub patch: Option<usize>,
 }
@@ -43,25 +52,29 @@ pub fn read_probes(probes: &[Probe], model: &Model, field: &Field) -> Vec<ProbeR
     probes.iter().map(|p| read(p, model, field)).collect()
 }
 
-/// Illuminance, lx, on a receiver at `p` facing the unit `n` (on a surface or in free space).
+/// Illuminance, lx, on a receiver at `p` facing the unit `n` (on a surface or in free
+/// space), the luminaires' direct light included.
 pub fn illuminance_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> f64 {
-    PI * incident_at(model, field, p, n).1.iter().sum::<f64>()
+    let (_, incident, direct) = incident_at(model, field, p, n);
+    PI * (incident.iter().sum::<f64>() + direct.iter().sum::<f64>())
 }
 
-/// The patch `p` lies on (if any) and the light arriving at `p` per cell of its frame.
-fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (Option<usize>, Vec<f64>) {
+/// The patch `p` lies on (if any) and the light arriving at `p` per cell of its frame:
+/// gathered from the surfaces, and directly from the luminaires.
+fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (Option<usize>, Vec<f64>, Vec<f64>) {
     let patch = patch_under(model, p, n);
     let frame = patch.map_or_else(|| Frame::around(n), |i| model.mesh.patches[i].frame());
     let ignore = patch.map_or(NO_FACE, |i| model.mesh.patches[i].face);
-    (patch, gather(model, field, p, &frame, ignore))
+    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &frame, ignore);
+    (patch, gather(model, field, p, &frame, ignore), direct)
 }
 
 fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
     let (p, n) = (probe.position, probe.normal);
-    let (patch, incident) = incident_at(model, field, p, n);
-    let illuminance = PI * incident.iter().sum::<f64>();
+    let (patch, incident, direct) = incident_at(model, field, p, n);
+    let illuminance = PI * (incident.iter().sum::<f64>() + direct.iter().sum::<f64>());
     let luminance = match patch {
-        Some(i) => outgoing(model, field, i, p, n, &incident),
+        Some(i) => outgoing(model, field, i, p, n, &sum(&incident, &direct)),
         None => model
             .visibility
             .closest_hit(p, n, NO_FACE)
@@ -69,26 +82,36 @@ fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
                 let q = p + n * hit.distance;
                 let i = model.mesh.patches.iter().position(|s| s.face == hit.face && s.normal.dot(n) < 0.0)?;
                 let s = &model.mesh.patches[i];
-                let incident = gather(model, field, q, &s.frame(), s.face);
-                Some(outgoing(model, field, i, q, -n, &incident))
+                Some(outgoing(model, field, i, q, -n, &arriving(model, field, q, s)))
             })
             .unwrap_or(0.0),
     };
-    ProbeReading { name: probe.name.clone(), position: p, normal: n, luminance, illuminance, patch }
+    let direct = PI * direct.iter().sum::<f64>();
+    ProbeReading { name: probe.name.clone(), position: p, normal: n, luminance, illuminance, direct, patch }
+}
+
+/// All the light arriving at point `q` of patch `s` per cell of its frame: gathered from
+/// the surfaces plus direct from the luminaires.
+fn arriving(model: &Model, field: &Field, q: DVec3, s: &Patch) -> Vec<f64> {
+    let frame = s.frame();
+    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, q, &frame, s.face);
+    sum(&gather(model, field, q, &frame, s.face), &direct)
+}
+
+fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
+    a.iter().zip(b).map(|(x, y)| x + y).collect()
 }
 
 /// Outgoing luminance of patch `i` at point `q` towards `direction`, from the light
-/// `incident` on it per cell (and, for a transmitter, the light gathered on its back).
+/// `incident` on it per cell (and, for a transmitter, the light arriving at its back).
 fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, incident: &[f64]) -> f64 {
     let kernel = &model.kernel;
     let patch = &model.mesh.patches[i];
     let k = kernel.directions.lookup(patch.frame().local(direction));
     let block = &kernel.blocks[kernel.patch_material[i] as usize];
-    let mut l =
-        model.l0[i * kernel.cells() + k] + incident.iter().enumerate().map(|(d, e)| block.at(k, d) * e).sum::<f64>();
+    let mut l = model.mesh.emission[i] + incident.iter().enumerate().map(|(d, e)| block.at(k, d) * e).sum::<f64>();
     if block.transmits() && patch.twin != NO_TWIN {
-        let back = &model.mesh.patches[patch.twin as usize];
-        let through = gather(model, field, q, &back.frame(), back.face);
+        let through = arriving(model, field, q, &model.mesh.patches[patch.twin as usize]);
         l += through.iter().enumerate().map(|(d, e)| block.transmit_at(k, d).unwrap_or(0.0) * e).sum::<f64>();
     }
     l
@@ -110,22 +133,50 @@ pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32
                 if s.face == ignore || point_to_polygon(p, frame.normal, &s.polygon) <= 0.0 {
                     return (sum, bins);
                 }
-                let seen =
-                    sample_points(s).iter().filter(|&&y| model.visibility.visible(p, y, [ignore, s.face])).count();
-                if seen == 0 {
-                    return (sum, bins);
-                }
-                let v = seen as f64 / POINTS as f64;
                 bins.clear();
-                binned_point(p, frame, s, &binning, &mut bins);
+                let seen = |piece: &ConvexPolygon| {
+                    let test = piece_visibility(piece, |y| model.visibility.visible(p, y, [ignore, s.face]));
+                    (test.seen, test.uniform)
+                };
+                visible_pieces(p, frame, s, &s.polygon, &binning, &seen, 0, &mut bins);
                 for &(d, m, f) in &bins {
-                    sum[d as usize] += v * f * field.at(j, m as usize);
+                    sum[d as usize] += f * field.at(j, m as usize);
                 }
                 (sum, bins)
             },
         )
         .map(|(sum, _)| sum)
         .reduce(|| vec![0.0; cells], |a, b| a.iter().zip(&b).map(|(x, y)| x + y).collect())
+}
+
+/// Pushes the binned form factors from `p` to the visible part of `piece` of patch `s`,
+/// each weighed by the fraction of its points `p` sees; partly seen pieces are cut.
+#[allow(clippy::too_many_arguments)]
+fn visible_pieces(
+    p: DVec3,
+    frame: &Frame,
+    s: &Patch,
+    piece: &ConvexPolygon,
+    binning: &Binning,
+    seen: &dyn Fn(&ConvexPolygon) -> (usize, bool),
+    depth: u32,
+    bins: &mut Vec<(u16, u16, f64)>,
+) {
+    let (count, uniform) = seen(piece);
+    if !uniform && depth < SHADOW_DEPTH {
+        for part in piece.split() {
+            visible_pieces(p, frame, s, &part, binning, seen, depth + 1, bins);
+        }
+        return;
+    }
+    if count == 0 {
+        return;
+    }
+    let target = Patch { polygon: *piece, ..*s };
+    let first = bins.len();
+    binned_point(p, frame, &target, binning, bins);
+    let v = count as f64 / POINTS as f64;
+    bins[first..].iter_mut().for_each(|(_, _, f)| *f *= v);
 }
 
 /// The patch that `p` lies on, facing `n`, if any.

@@ -1,10 +1,11 @@
 //! `ugo info CASE`: what the case will cost, before any assembly.
 
-use super::{bytes, load};
+use super::{bytes, describe, load};
 use crate::Discretize;
 use anyhow::Result;
 use std::path::Path;
 use ugo::kernel::Estimate;
+use ugo::luminaire::Source;
 use ugo::model::Model;
 
 pub fn run(case: &Path, d: &Discretize) -> Result<()> {
@@ -18,6 +19,13 @@ pub fn run(case: &Path, d: &Discretize) -> Result<()> {
     for (s, a) in scene.surfaces.iter().zip(&areas) {
         let n = mesh.patches.iter().filter(|p| scene.surfaces[p.surface as usize].name == s.name).count();
         println!("    {:<24} {:>6} patches  {:>10.4} m²", s.name, n, a);
+    }
+    if !scene.luminaires.is_empty() {
+        println!("  luminaires");
+        for source in scene.luminaires.iter().map(Source::of) {
+            let flux = source.flux().map_or("unbounded beam".to_string(), |f| format!("{f:.4} lm"));
+            println!("    {:<24} {:>16}   {}", source.name, flux, describe(&source));
+        }
     }
     println!("  patches N          {:>12}", estimate.patches);
     println!("  direction cells K  {:>12}   ({})", estimate.cells, options.directions.name());

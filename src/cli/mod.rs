@@ -12,7 +12,9 @@ use crate::Discretize;
 use anyhow::{Result, bail};
 use std::path::Path;
 use ugo::directions::DirectionSet;
+use ugo::luminaire::{Light, Source};
 use ugo::model::ModelOptions;
+use ugo::photometry::Distribution;
 use ugo::scene::Scene;
 
 /// Loads a case and applies the command-line overrides.
@@ -39,6 +41,32 @@ pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
         options.memory_limit = (gib * (1u64 << 30) as f64) as u64;
     }
     Ok((scene, options))
+}
+
+/// One line about a luminaire: its distribution, the flux integrated from it and the
+/// flux its file states, or the parallel light's illuminance.
+pub fn describe(source: &Source) -> String {
+    match &source.light {
+        Light::Point { position, distribution, scale, .. } => {
+            let what = match distribution {
+                Distribution::Isotropic { intensity } => format!("isotropic, {intensity:.4} cd"),
+                Distribution::Lambertian { peak } => format!("lambertian, I0 = {peak:.4} cd"),
+                Distribution::Table(t) => {
+                    let stated =
+                        t.stated_flux.map_or("none (absolute photometry)".to_string(), |f| format!("{f:.4} lm"));
+                    format!("{}: integrated {:.4} lm, the file states {stated}", t.description, t.flux())
+                }
+            };
+            let at = format!("[{}, {}, {}]", position.x, position.y, position.z);
+            format!("at {at}, scale {scale:.4}, {what}")
+        }
+        Light::Parallel { direction, illuminance } => {
+            format!(
+                "parallel light along [{:.4}, {:.4}, {:.4}], {illuminance} lx normal to the beam",
+                direction.x, direction.y, direction.z
+            )
+        }
+    }
 }
 
 /// A progress bar on stderr (hidden when stderr is not a terminal).

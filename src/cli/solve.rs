@@ -4,7 +4,7 @@
 //! print a summary; `compare --photons P` adds each method's agreement with a forward Monte
 //! Carlo estimate of the same discretization.
 
-use super::{bar, bytes, file_name, load};
+use super::{bar, bytes, describe, file_name, load};
 use crate::Discretize;
 use anyhow::{Context, Result, bail};
 use std::f64::consts::PI;
@@ -132,8 +132,12 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let field = Field::from_unknowns(&x, k);
     let mut gx = vec![0.0; x.len()];
     model.kernel.apply_transport(&x, &mut gx);
-    let illuminance: Vec<f64> = gx.chunks(k).map(|c| PI * c.iter().sum::<f64>()).collect();
-    let energy = EnergyBalance::of(&model.mesh, &model.kernel, &model.l0, &x, scene.surfaces.len());
+    let illuminance: Vec<f64> = gx
+        .chunks(k)
+        .zip(model.direct.arriving.chunks(k))
+        .map(|(surfaces, luminaires)| PI * (surfaces.iter().sum::<f64>() + luminaires.iter().sum::<f64>()))
+        .collect();
+    let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
     let probes = read_probes(&scene.probes, &model, &field);
     let grids = read_grids(&scene.grids, &model, &field);
     let orders = order_record(&job, &methods, &model);
@@ -187,6 +191,9 @@ fn order_record(job: &Job, methods: &[Method], model: &Model) -> Option<OrderRec
         None if methods.contains(&Method::Neumann) => vec![1, 8, 64],
         None => return None,
     };
+    if model.l0.iter().all(|&l| l == 0.0) {
+        return None;
+    }
     Some(reflection_orders(&Factored::new(&model.kernel), &model.l0, &orders))
 }
 
@@ -199,7 +206,7 @@ fn summary(s: &Solution, output: &Path) {
     println!("  direction cells K  {:>12}   ({})", m.kernel.cells(), m.kernel.directions.name());
     println!("  unknowns           {:>12}", g.rows());
     println!("  non-zeros of G     {:>12}   ({})", g.nnz(), bytes(g.nnz() as f64 * 16.0));
-    let assembly = st.mesh_seconds + st.bvh_seconds + st.kernel_seconds;
+    let assembly = st.mesh_seconds + st.bvh_seconds + st.kernel_seconds + st.light_seconds;
     println!(
         "  assembly           {assembly:>12.3} s   ({} pairs, {} occlusion rays, balanced by {}: correction {:.1e}, {} sweeps, row error {:.0e})",
         st.pairs,
@@ -227,14 +234,20 @@ fn summary(s: &Solution, output: &Path) {
         );
     }
     let e = s.energy;
+    if !m.sources.is_empty() {
+        println!("  luminaires               emitted lm   on surfaces lm");
+        for ((source, emitted), landed) in m.sources.iter().zip(&e.luminaire_emitted).zip(&m.direct.intercepted) {
+            println!("    {:<22} {emitted:>12.4} {landed:>16.4}   {}", source.name, describe(source));
+        }
+    }
     println!("  flux emitted       {:>12.4} lm", e.emitted);
     println!("  flux absorbed      {:>12.4} lm", e.absorbed);
     println!("  flux escaped       {:>12.4} lm", e.escaped);
     println!("  imbalance          {:>12.3e} (relative to emitted)", e.imbalance / e.emitted);
     if !s.probes.is_empty() {
-        println!("  probes                   luminance cd/m²   illuminance lx");
+        println!("  probes                   luminance cd/m²   illuminance lx   of it direct lx");
         for p in s.probes {
-            println!("    {:<22} {:>15.4} {:>16.4}", p.name, p.luminance, p.illuminance);
+            println!("    {:<22} {:>15.4} {:>16.4} {:>17.4}", p.name, p.luminance, p.illuminance, p.direct);
         }
     }
     println!("  written            {}", output.display());

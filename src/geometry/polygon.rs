@@ -105,6 +105,44 @@ impl ConvexPolygon {
         (0..v.len()).map(|i| segment_distance(p, v[i], v[(i + 1) % v.len()])).fold(f64::INFINITY, f64::min)
     }
 
+    /// Four pieces of about a quarter each (a quad by the midpoints of its edges and its
+    /// centre, a triangle by the midpoints of its edges), covering it exactly.
+    pub fn split(&self) -> [ConvexPolygon; 4] {
+        let v = self.vertices();
+        let mid = |i: usize, j: usize| 0.5 * (v[i] + v[j]);
+        if v.len() == 3 {
+            let (ab, bc, ca) = (mid(0, 1), mid(1, 2), mid(2, 0));
+            return [
+                Self::triangle(v[0], ab, ca),
+                Self::triangle(ab, v[1], bc),
+                Self::triangle(ca, bc, v[2]),
+                Self::triangle(ab, bc, ca),
+            ];
+        }
+        let (ab, bc, cd, da) = (mid(0, 1), mid(1, 2), mid(2, 3), mid(3, 0));
+        let c = 0.25 * (v[0] + v[1] + v[2] + v[3]);
+        [
+            Self::quad(v[0], ab, c, da),
+            Self::quad(ab, v[1], bc, c),
+            Self::quad(c, bc, v[2], cd),
+            Self::quad(da, c, cd, v[3]),
+        ]
+    }
+
+    /// The solid angle it subtends at `x`, sr (Van Oosterom & Strackee, IEEE Trans. Biomed.
+    /// Eng. 30 (1983), per fan triangle); 0 when `x` lies in its plane.
+    pub fn solid_angle(&self, x: DVec3) -> f64 {
+        self.triangles()
+            .map(|[a, b, c]| {
+                let (a, b, c) = (a - x, b - x, c - x);
+                let (la, lb, lc) = (a.length(), b.length(), c.length());
+                let det = a.dot(b.cross(c)).abs();
+                let div = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
+                2.0 * det.atan2(div)
+            })
+            .sum()
+    }
+
     /// The part on the side `(x − origin)·normal ≥ 0` (Sutherland–Hodgman), written into
     /// `out`; returns its vertex count (0 when nothing is left).
     pub fn clip_above(&self, origin: DVec3, normal: DVec3, out: &mut [DVec3; MAX_CLIPPED]) -> usize {

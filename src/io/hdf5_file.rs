@@ -2,13 +2,17 @@
 //!
 //! Layout: `/mesh/{points,normals,areas,surface_id,material_id,vertices,vertex_count,face,
 //! twin,surface_names,material_names}`, `/directions/{vectors,solid_angle,projected}`,
-//! `/field/{luminance,emission,illuminance}`, `/solver/{residual_history,applications,seconds}`,
+//! `/field/{luminance,emission,illuminance,direct_illuminance}` (emission is the source
+//! term `L0`; illuminance counts the luminaires' direct light, which `direct_illuminance`
+//! holds alone), `/solver/{residual_history,applications,seconds}`,
 //! `/compare/<method>/…` (the same histories per method, `ugo compare`),
 //! `/orders/{orders,term_norms,partial_sums}` (the reflection-order record), `/norms` (attributes),
 //! `/energy/{surface_emitted,surface_absorbed}`,
 //! `/probes/{name,position,normal,luminance,illuminance}`, `/basis/{coefficients,psi,front,back}`
 //! (a solve in a factored angular basis),
-//! `/grids/<name>/{points,illuminance}` (with the statistics as attributes), and attributes on the root for
+//! `/grids/<name>/{points,illuminance}` (with the statistics as attributes),
+//! `/luminaires/{name,kind,position,direction,flux,distribution_flux,file_flux,on_surfaces}`
+//! (one row per `[[luminaire]]`; NaN where a value does not apply), and attributes on the root for
 //! method, tolerance, iterations, timings, energy totals, the scene text and the version.
 //! The file is written under a temporary name and renamed when complete.
 
@@ -18,12 +22,16 @@ use crate::energy::EnergyBalance;
 use crate::field::Field;
 use crate::geometry::Mesh;
 use crate::grid::GridReading;
+use crate::luminaire::Light;
 use crate::model::Model;
+use crate::photometry::Distribution;
 use crate::probe::ProbeReading;
+use crate::scene::LuminaireKind;
 use crate::scene::Scene;
 use crate::solve::norms::Norms;
 use crate::solve::orders::OrderRecord;
 use crate::solve::{SolveInfo, SolveParams};
+use glam::DVec3;
 use hdf5::types::VarLenUnicode;
 use ndarray::{Array1, Array2, Array3};
 use std::path::Path;
@@ -97,6 +105,7 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     let emission = Array3::from_shape_vec((s.model.mesh.len(), k, 1), s.model.l0.clone()).map_err(shape_error)?;
     dataset(&field, "emission", &emission)?;
     dataset(&field, "illuminance", &Array1::from(s.illuminance.to_vec()))?;
+    dataset(&field, "direct_illuminance", &Array1::from(s.model.direct.illuminance(k)))?;
 
     let solver = file.create_group("solver")?;
     write_history(&solver, s.info)?;
@@ -128,6 +137,7 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     for grid in s.grids {
         write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
     }
+    write_luminaires(&file.create_group("luminaires")?, s)?;
     write_attributes(&file, s)
 }
 
@@ -266,10 +276,46 @@ pub(super) fn write_identity(
     text(file, "units", "luminance cd/m2, illuminance lx, flux lm, lengths m")
 }
 
+fn write_luminaires(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
+    let sources = &s.model.sources;
+    let n = sources.len();
+    strings(g, "name", sources.iter().map(|l| l.name.as_str()))?;
+    let kinds = s.scene.luminaires.iter().map(|l| match &l.kind {
+        LuminaireKind::Parallel { .. } => "parallel",
+        LuminaireKind::Point(p) => match &p.distribution {
+            Distribution::Isotropic { .. } => "isotropic",
+            Distribution::Lambertian { .. } => "lambertian",
+            Distribution::Table(_) => "file",
+        },
+    });
+    strings(g, "kind", kinds)?;
+    let (position, direction): (Vec<DVec3>, Vec<DVec3>) = sources
+        .iter()
+        .map(|l| match &l.light {
+            Light::Point { position, frame, .. } => (*position, -frame.normal),
+            Light::Parallel { direction, .. } => (DVec3::NAN, *direction),
+        })
+        .unzip();
+    dataset(g, "position", &Array2::from_shape_fn((n, 3), |(i, c)| position[i][c]))?;
+    dataset(g, "direction", &Array2::from_shape_fn((n, 3), |(i, c)| direction[i][c]))?;
+    dataset(g, "flux", &Array1::from(s.energy.luminaire_emitted.clone()))?;
+    let distribution = sources.iter().map(|l| match &l.light {
+        Light::Point { distribution, .. } => distribution.flux(),
+        Light::Parallel { .. } => f64::NAN,
+    });
+    dataset(g, "distribution_flux", &Array1::from_iter(distribution))?;
+    let stated = sources.iter().map(|l| match &l.light {
+        Light::Point { distribution: Distribution::Table(t), .. } => t.stated_flux.unwrap_or(f64::NAN),
+        _ => f64::NAN,
+    });
+    dataset(g, "file_flux", &Array1::from_iter(stated))?;
+    dataset(g, "on_surfaces", &Array1::from(s.model.direct.intercepted.clone()))
+}
+
 fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
     let st = &s.model.stats;
     write_identity(file, s.info.method, s.scene, &s.model.kernel.directions)?;
-    let numbers: [(&str, f64); 17] = [
+    let numbers: [(&str, f64); 18] = [
         ("tolerance", s.params.tolerance),
         ("max_iterations", s.params.max_iterations as f64),
         ("iterations", s.info.iterations as f64),
@@ -280,6 +326,7 @@ fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
         ("mesh_seconds", st.mesh_seconds),
         ("bvh_seconds", st.bvh_seconds),
         ("assembly_seconds", st.kernel_seconds),
+        ("luminaire_seconds", st.light_seconds),
         ("solve_seconds", s.info.seconds),
         ("balance_max_correction", st.balance.max_correction),
         ("flux_emitted", s.energy.emitted),

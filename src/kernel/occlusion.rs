@@ -5,16 +5,21 @@
 //! kernel reciprocal. Four segments (point `k` to point `k` of the other patch) are tested
 //! first; only when they disagree (a penumbra) are all `POINTS²` segments traced.
 
-use crate::geometry::Patch;
+use crate::geometry::{ConvexPolygon, Patch};
 use crate::visibility::{Blocker, Visibility};
 use glam::DVec3;
 
 /// Points per patch; a pair is tested with `POINTS²` segments.
 pub const POINTS: usize = 4;
 
-/// Four stratified interior points of a triangle or convex quad.
+/// Four stratified interior points of a patch.
 pub fn sample_points(p: &Patch) -> [DVec3; POINTS] {
-    let v = p.polygon.vertices();
+    polygon_points(&p.polygon)
+}
+
+/// Four stratified interior points of a triangle or convex quad.
+pub fn polygon_points(polygon: &ConvexPolygon) -> [DVec3; POINTS] {
+    let v = polygon.vertices();
     if v.len() == 4 {
         let at = |s: f64, t: f64| v[0].lerp(v[1], s).lerp(v[3].lerp(v[2], s), t);
         [at(0.25, 0.25), at(0.75, 0.25), at(0.75, 0.75), at(0.25, 0.75)]
@@ -56,4 +61,25 @@ pub fn visible_fraction(
 pub struct VisibleFraction {
     pub fraction: f64,
     pub rays: usize,
+}
+
+/// What the test points of a piece of a patch see: how many of its [`POINTS`] stratified
+/// points, and whether those and its corners (pulled in by 0.1 % towards its centroid) all
+/// agree. A straight shadow edge across the piece always separates two corners, so a piece
+/// that is not `uniform` is cut further by the callers (probes, luminaires).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PieceVisibility {
+    pub seen: usize,
+    pub uniform: bool,
+    pub rays: usize,
+}
+
+/// Tests the points of `polygon` with `sees`.
+pub fn piece_visibility(polygon: &ConvexPolygon, sees: impl Fn(DVec3) -> bool) -> PieceVisibility {
+    let seen = polygon_points(polygon).iter().filter(|&&x| sees(x)).count();
+    let centroid = polygon.centroid();
+    let corners = polygon.vertices();
+    let partial = seen > 0 && seen < POINTS;
+    let uniform = !partial && corners.iter().all(|v| sees(v.lerp(centroid, 1e-3)) == (seen == POINTS));
+    PieceVisibility { seen, uniform, rays: POINTS + if partial { 0 } else { corners.len() } }
 }

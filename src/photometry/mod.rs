@@ -39,7 +39,7 @@ pub enum Distribution {
     /// `I(γ) = I0 cosγ` below the luminaire's horizontal, 0 above; flux `π I0`.
     Lambertian { peak: f64 },
     /// A table read from a photometric file.
-    Table(IntensityDistribution),
+    Table(Box<IntensityDistribution>),
 }
 
 impl Distribution {

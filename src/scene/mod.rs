@@ -5,10 +5,12 @@
 //! table and the key. Nothing downstream (meshing, kernel, solvers) sees TOML.
 
 mod error;
+mod luminaire;
 mod schema;
 mod validate;
 
 pub use error::SceneError;
+pub use luminaire::{Luminaire, LuminaireKind, PointLuminaire};
 pub use schema::RawCamera;
 
 use glam::DVec3;
@@ -30,6 +32,7 @@ pub struct Scene {
     pub probes: Vec<Probe>,
     pub cameras: Vec<Camera>,
     pub grids: Vec<Grid>,
+    pub luminaires: Vec<Luminaire>,
 }
 
 /// `[discretization]`: how finely surfaces are meshed.

@@ -25,6 +25,8 @@ pub struct RawScene {
     pub camera: Vec<RawCamera>,
     #[serde(default)]
     pub grid: Vec<RawGrid>,
+    #[serde(default)]
+    pub luminaire: Vec<super::luminaire::RawLuminaire>,
 }
 
 /// `[scene]`.

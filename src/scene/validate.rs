@@ -38,6 +38,11 @@ pub fn validate(path: &Path, source: String, raw: RawScene) -> Result<Scene, Sce
     let probes = probes(path, &raw.probe)?;
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid)?;
+    let luminaires = super::luminaire::luminaires(path, &raw.luminaire)?;
+    if luminaires.is_empty() && !surfaces.iter().any(|s| s.emission.is_some_and(emits)) {
+        let message = "nothing emits light: give a [[surface]] an `emission` greater than 0, or add a [[luminaire]]";
+        return Err(SceneError::new(path, "", "emission", message));
+    }
     Ok(Scene {
         path: path.to_path_buf(),
         source,
@@ -50,12 +55,13 @@ pub fn validate(path: &Path, source: String, raw: RawScene) -> Result<Scene, Sce
         probes,
         cameras,
         grids,
+        luminaires,
     })
 }
 
 /// Where a value sits: the case file and the table being validated.
-struct Context<'a> {
-    file: &'a Path,
+pub(super) struct Context<'a> {
+    pub(super) file: &'a Path,
     table: String,
 }
 
@@ -65,22 +71,22 @@ impl<'a> Context<'a> {
     }
 
     /// The context of the `index`-th (0-based) `[[kind]]` table, named `name`.
-    fn item(file: &'a Path, kind: &str, name: &str, index: usize) -> Self {
+    pub(super) fn item(file: &'a Path, kind: &str, name: &str, index: usize) -> Self {
         Context::new(file, format!("[[{kind}]] \"{name}\" (#{})", index + 1))
     }
 
-    fn error(&self, key: &str, message: impl Into<String>) -> SceneError {
+    pub(super) fn error(&self, key: &str, message: impl Into<String>) -> SceneError {
         SceneError::new(self.file, self.table.clone(), key, message)
     }
 
-    fn finite(&self, key: &str, x: f64) -> Result<f64, SceneError> {
+    pub(super) fn finite(&self, key: &str, x: f64) -> Result<f64, SceneError> {
         match x.is_finite() {
             true => Ok(x),
             false => Err(self.error(key, format!("must be a finite number, got {x}"))),
         }
     }
 
-    fn positive(&self, key: &str, x: f64) -> Result<f64, SceneError> {
+    pub(super) fn positive(&self, key: &str, x: f64) -> Result<f64, SceneError> {
         match self.finite(key, x)? > 0.0 {
             true => Ok(x),
             false => Err(self.error(key, format!("must be greater than 0, got {x}"))),
@@ -94,7 +100,7 @@ impl<'a> Context<'a> {
         }
     }
 
-    fn point(&self, key: &str, v: [f64; 3]) -> Result<DVec3, SceneError> {
+    pub(super) fn point(&self, key: &str, v: [f64; 3]) -> Result<DVec3, SceneError> {
         let p = DVec3::from_array(v);
         match p.is_finite() {
             true => Ok(p),
@@ -103,7 +109,7 @@ impl<'a> Context<'a> {
     }
 
     /// A non-zero vector, normalized.
-    fn direction(&self, key: &str, v: [f64; 3]) -> Result<DVec3, SceneError> {
+    pub(super) fn direction(&self, key: &str, v: [f64; 3]) -> Result<DVec3, SceneError> {
         let d = self.point(key, v)?;
         d.try_normalize().ok_or_else(|| self.error(key, format!("must be a non-zero vector, got {}", show(d))))
     }
@@ -164,7 +170,11 @@ fn solver(path: &Path, raw: Option<RawSolver>) -> Result<SolverSettings, SceneEr
 }
 
 /// Names must be non-empty and unique among the `[[kind]]` tables.
-fn unique_names<'n>(path: &Path, kind: &str, names: impl Iterator<Item = &'n str>) -> Result<(), SceneError> {
+pub(super) fn unique_names<'n>(
+    path: &Path,
+    kind: &str,
+    names: impl Iterator<Item = &'n str>,
+) -> Result<(), SceneError> {
     let mut seen: Vec<&str> = Vec::new();
     for (index, name) in names.enumerate() {
         let at = Context::item(path, kind, name, index);
@@ -349,16 +359,10 @@ fn camera(at: &Context, c: &RawCamera) -> Result<Camera, SceneError> {
 
 fn surfaces(path: &Path, raw: &[RawSurface], materials: &[Material]) -> Result<Vec<Surface>, SceneError> {
     unique_names(path, "surface", raw.iter().map(|s| s.name.as_str()))?;
-    let surfaces = raw
-        .iter()
+    raw.iter()
         .enumerate()
         .map(|(index, s)| surface(&Context::item(path, "surface", &s.name, index), s, materials))
-        .collect::<Result<Vec<_>, _>>()?;
-    if !surfaces.iter().any(|s| s.emission.is_some_and(emits)) {
-        let message = "nothing emits light: give a [[surface]] an `emission` greater than 0";
-        return Err(SceneError::new(path, "", "emission", message));
-    }
-    Ok(surfaces)
+        .collect()
 }
 
 fn emits(emission: Emission) -> bool {

@@ -92,7 +92,9 @@ impl<'a> System<'a> {
     }
 }
 
-/// Solves `system` with `method`; `limit` bounds the direct solver's memory, bytes.
+/// Solves `system` with `method`; `limit` bounds the direct solver's memory, bytes. A zero
+/// source (luminaires that light only black surfaces) has the exact solution `x = 0`,
+/// returned without iterating.
 pub fn solve(
     method: Method,
     system: &System,
@@ -101,6 +103,18 @@ pub fn solve(
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let System { operator, explicit, areas, l0 } = *system;
+    if l0.iter().all(|&l| l == 0.0) {
+        let info = SolveInfo {
+            method: "none (zero source)",
+            iterations: 0,
+            applications: 0,
+            residual_history: vec![0.0],
+            application_history: vec![0],
+            time_history: vec![0.0],
+            seconds: 0.0,
+        };
+        return Ok((vec![0.0; l0.len()], info));
+    }
     let explicit = || explicit.ok_or(SolveError::Unsupported { method: "this method", needs: "the explicit kernel" });
     let (x, info) = match method {
         Method::Neumann => successive_approximation(operator, l0, params, progress)?,

@@ -22,7 +22,7 @@ fn furnace_box_is_five_everywhere_and_conserves_energy() {
     );
     assert!(worst < 1e-3, "worst relative error {worst}");
     assert!(info.residual() <= 1e-10);
-    let e = EnergyBalance::of(&model.mesh, &model.kernel, &model.l0, &x, 1);
+    let e = EnergyBalance::of(&model, &x, 1);
     assert!((e.absorbed / e.emitted - 1.0).abs() < 1e-6, "{e:?}");
     assert!(e.escaped.abs() < 1e-6 * e.emitted);
 }

@@ -29,6 +29,7 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         probes: Vec::new(),
         cameras: Vec::new(),
         grids: Vec::new(),
+        luminaires: Vec::new(),
     }
 }
 

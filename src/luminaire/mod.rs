@@ -1,0 +1,89 @@
+//! Luminaires in the system: their direct light as the source term of the patches it
+//! reaches (`design.md` §1, §3):
+//!
+//! `L0(i,k) = L_e(i) + Σ_d ρ̄_i(k,d) D(i,d)`,   `D(i,d) = E_s(i,d)/π`,
+//!
+//! where `E_s(i,d)` is the illuminance from the luminaires averaged over patch `i`
+//! (shadows included, rays through the BVH), split by the direction cell `d` of the
+//! patch's frame that the light arrives in. `D` has the units of the transport `G x`
+//! (`E = π Σ_d`), so the materials act on it exactly as on light from surfaces, through the
+//! same blocks `B` (transmission to the twin included): glossy receivers reflect the
+//! luminaire's light towards the mirror direction. Luminaires are not unknowns.
+//!
+//! Owns the placed sources ([`Source`]: a point source's frame from its aim, its
+//! multiplier and tilt factor; parallel light), the patch-averaged illuminance
+//! (`patch.rs`) and the exact illuminance at a point for probes (`point.rs`).
+
+mod aim;
+mod patch;
+mod point;
+
+pub use aim::frame;
+pub use patch::{DirectLight, direct_light};
+pub use point::arriving_at;
+
+use crate::geometry::Frame;
+use crate::photometry::Distribution;
+use crate::scene::{Luminaire, LuminaireKind};
+use glam::DVec3;
+
+/// A luminaire placed in the scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Source {
+    pub name: String,
+    pub light: Light,
+}
+
+/// The closed set of sources.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Light {
+    /// Intensity `scale · I(frame.local(w))` towards the world direction `w` from `position`.
+    Point { position: DVec3, frame: Frame, distribution: Distribution, scale: f64 },
+    /// Illuminance `illuminance` normal to a beam travelling along `direction`.
+    Parallel { direction: DVec3, illuminance: f64 },
+}
+
+impl Source {
+    /// The source of a validated `[[luminaire]]`: frame from the aim and rotation, scale =
+    /// multiplier × the file's tilt factor at the luminaire's tilt.
+    pub fn of(luminaire: &Luminaire) -> Source {
+        let light = match &luminaire.kind {
+            LuminaireKind::Point(p) => {
+                let frame = frame(p.aim, p.rotate_deg);
+                let tilt = match &p.distribution {
+                    Distribution::Table(t) => t
+                        .tilt
+                        .as_ref()
+                        .map_or(1.0, |tilt| tilt.factor(tilt.angle(frame.tangent, frame.bitangent, frame.normal))),
+                    _ => 1.0,
+                };
+                Light::Point {
+                    position: p.position,
+                    frame,
+                    distribution: p.distribution.clone(),
+                    scale: p.multiplier * tilt,
+                }
+            }
+            LuminaireKind::Parallel { direction, illuminance } => {
+                Light::Parallel { direction: *direction, illuminance: *illuminance }
+            }
+        };
+        Source { name: luminaire.name.clone(), light }
+    }
+
+    /// The flux leaving a point source, lm; none for parallel light (an unbounded beam).
+    pub fn flux(&self) -> Option<f64> {
+        match &self.light {
+            Light::Point { distribution, scale, .. } => Some(scale * distribution.flux()),
+            Light::Parallel { .. } => None,
+        }
+    }
+
+    /// The intensity of a point source towards the unit world direction `w`, cd.
+    pub fn intensity(&self, w: DVec3) -> f64 {
+        match &self.light {
+            Light::Point { frame, distribution, scale, .. } => scale * distribution.intensity(frame.local(w)),
+            Light::Parallel { .. } => 0.0,
+        }
+    }
+}

@@ -1,0 +1,155 @@
+//! `[[luminaire]]` tables: light sources that are not surfaces (photometric point sources
+//! and parallel light), as written and as validated.
+//!
+//! Owns the keys of each luminaire type, their rules, and reading the photometric file
+//! (relative to the case file's folder; a bad file's error names the file, its line and
+//! what was expected there). The runtime placement and the source term are in
+//! `crate::luminaire`; the distributions in `crate::photometry`.
+
+use super::SceneError;
+use super::validate::{Context, unique_names};
+use crate::photometry::{Distribution, read_ies, read_ldt};
+use glam::DVec3;
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// `[[luminaire]]`: a light source outside the unknowns of the system.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Luminaire {
+    pub name: String,
+    pub kind: LuminaireKind,
+}
+
+/// The closed set of luminaire kinds.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LuminaireKind {
+    /// A point source with an intensity distribution, placed and aimed.
+    Point(PointLuminaire),
+    /// Parallel light (the sun): unit direction of travel and illuminance normal to the beam, lx.
+    Parallel { direction: DVec3, illuminance: f64 },
+}
+
+/// A photometric point source.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointLuminaire {
+    /// m.
+    pub position: DVec3,
+    /// Unit aiming direction: γ = 0 of the distribution (default straight down).
+    pub aim: DVec3,
+    /// Turn of the C0 axis about the aim, degrees, counter-clockwise seen from behind.
+    pub rotate_deg: f64,
+    /// Maintenance or dimming factor on every intensity.
+    pub multiplier: f64,
+    pub distribution: Distribution,
+    /// The photometric file, when the distribution was read from one.
+    pub file: Option<PathBuf>,
+}
+
+/// `[[luminaire]]` as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawLuminaire {
+    pub name: String,
+    #[serde(rename = "type")]
+    pub kind: String,
+    pub position: Option<[f64; 3]>,
+    pub aim: Option<[f64; 3]>,
+    pub rotate_deg: Option<f64>,
+    pub multiplier: Option<f64>,
+    pub flux: Option<f64>,
+    pub intensity: Option<f64>,
+    pub file: Option<String>,
+    pub direction: Option<[f64; 3]>,
+    pub illuminance: Option<f64>,
+}
+
+/// Every luminaire type and the keys it takes besides `name` and `type`.
+const TYPES: [(&str, &[&str]); 5] = [
+    ("isotropic", &["position", "flux", "intensity", "multiplier"]),
+    ("lambertian", &["position", "intensity", "aim", "multiplier"]),
+    ("ies", &["position", "file", "aim", "rotate_deg", "multiplier"]),
+    ("eulumdat", &["position", "file", "aim", "rotate_deg", "multiplier"]),
+    ("parallel", &["direction", "illuminance"]),
+];
+
+/// Validates the `[[luminaire]]` tables of the case file `path`.
+pub fn luminaires(path: &Path, raw: &[RawLuminaire]) -> Result<Vec<Luminaire>, SceneError> {
+    unique_names(path, "luminaire", raw.iter().map(|l| l.name.as_str()))?;
+    let luminaire = |(index, l): (usize, &RawLuminaire)| {
+        let at = Context::item(path, "luminaire", &l.name, index);
+        Ok(Luminaire { name: l.name.clone(), kind: kind(&at, l)? })
+    };
+    raw.iter().enumerate().map(luminaire).collect()
+}
+
+fn kind(at: &Context, l: &RawLuminaire) -> Result<LuminaireKind, SceneError> {
+    let Some(&(name, keys)) = TYPES.iter().find(|(name, _)| *name == l.kind) else {
+        let known: Vec<String> = TYPES.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+        return Err(at.error("type", format!("unknown luminaire type \"{}\"; known: {}", l.kind, known.join(", "))));
+    };
+    let given = [
+        ("position", l.position.is_some()),
+        ("aim", l.aim.is_some()),
+        ("rotate_deg", l.rotate_deg.is_some()),
+        ("multiplier", l.multiplier.is_some()),
+        ("flux", l.flux.is_some()),
+        ("intensity", l.intensity.is_some()),
+        ("file", l.file.is_some()),
+        ("direction", l.direction.is_some()),
+        ("illuminance", l.illuminance.is_some()),
+    ];
+    if let Some((stray, _)) = given.iter().find(|(key, set)| *set && !keys.contains(key)) {
+        return Err(at.error(stray, format!("a \"{name}\" luminaire takes only {}", keys.join(", "))));
+    }
+    let required = |key: &str, value: Option<f64>| {
+        value.ok_or_else(|| at.error(key, format!("a \"{name}\" luminaire needs `{key}`")))
+    };
+    if name == "parallel" {
+        let direction = at.direction(
+            "direction",
+            l.direction.ok_or_else(|| {
+                at.error("direction", "a \"parallel\" luminaire needs `direction` (the direction the light travels)")
+            })?,
+        )?;
+        let illuminance = at.positive("illuminance", required("illuminance", l.illuminance)?)?;
+        return Ok(LuminaireKind::Parallel { direction, illuminance });
+    }
+    let position = at.point(
+        "position",
+        l.position.ok_or_else(|| at.error("position", format!("a \"{name}\" luminaire needs `position`")))?,
+    )?;
+    let aim = at.direction("aim", l.aim.unwrap_or([0.0, -1.0, 0.0]))?;
+    let rotate_deg = at.finite("rotate_deg", l.rotate_deg.unwrap_or(0.0))?;
+    let multiplier = at.positive("multiplier", l.multiplier.unwrap_or(1.0))?;
+    let (distribution, file) = match name {
+        "isotropic" => (isotropic(at, l)?, None),
+        "lambertian" => {
+            (Distribution::Lambertian { peak: at.positive("intensity", required("intensity", l.intensity)?)? }, None)
+        }
+        _ => {
+            let given =
+                l.file.as_deref().ok_or_else(|| at.error("file", format!("a \"{name}\" luminaire needs `file`")))?;
+            if given.is_empty() {
+                return Err(at.error("file", "must not be empty"));
+            }
+            let file = at.file.parent().unwrap_or(Path::new("")).join(given);
+            let read = if name == "ies" { read_ies(&file) } else { read_ldt(&file) };
+            let table = read.map_err(|e| at.error("file", e.to_string()))?;
+            (Distribution::Table(Box::new(table)), Some(file))
+        }
+    };
+    Ok(LuminaireKind::Point(PointLuminaire { position, aim, rotate_deg, multiplier, distribution, file }))
+}
+
+/// An isotropic source: `flux` (lm) or `intensity` (cd), exactly one.
+fn isotropic(at: &Context, l: &RawLuminaire) -> Result<Distribution, SceneError> {
+    let intensity = match (l.flux, l.intensity) {
+        (Some(flux), None) => at.positive("flux", flux)? / (4.0 * std::f64::consts::PI),
+        (None, Some(i)) => at.positive("intensity", i)?,
+        (Some(_), Some(_)) => return Err(at.error("flux", "give `flux` or `intensity`, not both")),
+        (None, None) => {
+            return Err(at.error("flux", "an \"isotropic\" luminaire needs `flux` (lm) or `intensity` (cd)"));
+        }
+    };
+    Ok(Distribution::Isotropic { intensity })
+}
