@@ -2,10 +2,12 @@
 
 mod basis;
 mod brdf;
+mod cie171;
 mod cli;
 mod directions;
 mod grid;
 mod kernel;
+mod luminaire;
 mod photometry;
 mod render;
 mod scene;
