@@ -12,7 +12,8 @@
 //! (a solve in a factored angular basis),
 //! `/grids/<name>/{points,illuminance}` (with the statistics as attributes),
 //! `/luminaires/{name,kind,position,direction,flux,distribution_flux,file_flux,on_surfaces}`
-//! (one row per `[[luminaire]]`; NaN where a value does not apply), and attributes on the root for
+//! (one row per `[[luminaire]]`; NaN where a value does not apply), the probes' `direct`
+//! part in `/probes/direct`, and attributes on the root for
 //! method, tolerance, iterations, timings, energy totals, the scene text and the version.
 //! The file is written under a temporary name and renamed when complete.
 
@@ -243,7 +244,8 @@ fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
     dataset(g, "position", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].position[c]))?;
     dataset(g, "normal", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].normal[c]))?;
     dataset(g, "luminance", &Array1::from_iter(probes.iter().map(|p| p.luminance)))?;
-    dataset(g, "illuminance", &Array1::from_iter(probes.iter().map(|p| p.illuminance)))
+    dataset(g, "illuminance", &Array1::from_iter(probes.iter().map(|p| p.illuminance)))?;
+    dataset(g, "direct", &Array1::from_iter(probes.iter().map(|p| p.direct)))
 }
 
 /// Points and illuminance as `nv × nu` arrays (row `b` runs along `edge_u`).

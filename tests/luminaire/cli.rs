@@ -49,4 +49,5 @@ fn a_solve_with_luminaires_writes_them_to_hdf5() {
     assert_eq!(emitted, flux);
     let probe = read("probes/illuminance")[0];
     assert!((probe - 1000.0 / 9.0).abs() < 1e-9, "A, at the nadir: {probe}");
+    assert_eq!(read("probes/direct"), read("probes/illuminance"));
 }
