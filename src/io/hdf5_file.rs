@@ -2,9 +2,9 @@
 //!
 //! Layout: `/mesh/{points,normals,areas,surface_id,material_id,vertices,vertex_count,face,
 //! twin,surface_names,material_names}`, `/directions/{vectors,solid_angle,projected}`,
-//! `/field/{luminance,emission,illuminance,direct_illuminance}` (emission is the source
-//! term `L0`; illuminance counts the luminaires' direct light, which `direct_illuminance`
-//! holds alone), `/solver/{residual_history,applications,seconds}`,
+//! `/field/{luminance,emission,source,illuminance,direct_illuminance}` (emission is the
+//! surfaces' own `L_e`, source the source term `L0 = L_e + B·D`; illuminance counts the
+//! luminaires' direct light, which `direct_illuminance` holds alone), `/solver/{residual_history,applications,seconds}`,
 //! `/compare/<method>/…` (the same histories per method, `ugo compare`),
 //! `/orders/{orders,term_norms,partial_sums}` (the reflection-order record), `/norms` (attributes),
 //! `/energy/{surface_emitted,surface_absorbed}`,
@@ -103,8 +103,10 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     let field = file.create_group("field")?;
     dataset(&field, "luminance", &s.field.luminance)?;
     let k = s.model.kernel.cells();
-    let emission = Array3::from_shape_vec((s.model.mesh.len(), k, 1), s.model.l0.clone()).map_err(shape_error)?;
-    dataset(&field, "emission", &emission)?;
+    let own: Vec<f64> = s.model.mesh.emission.iter().flat_map(|&l| std::iter::repeat_n(l, k)).collect();
+    dataset(&field, "emission", &Array3::from_shape_vec((s.model.mesh.len(), k, 1), own).map_err(shape_error)?)?;
+    let source = Array3::from_shape_vec((s.model.mesh.len(), k, 1), s.model.l0.clone()).map_err(shape_error)?;
+    dataset(&field, "source", &source)?;
     dataset(&field, "illuminance", &Array1::from(s.illuminance.to_vec()))?;
     dataset(&field, "direct_illuminance", &Array1::from(s.model.direct.illuminance(k)))?;
 

@@ -5,6 +5,7 @@
 use crate::brdf::Block;
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Mesh, NO_TWIN, Patch};
+use crate::luminaire::Source;
 use crate::render::LitScene;
 use crate::scene::Scene;
 use anyhow::{Context, Result, anyhow, bail};
@@ -30,11 +31,12 @@ pub struct StoredSolution {
 }
 
 impl StoredSolution {
-    /// The solution ready for rendering (flat shading), with the material blocks of its
-    /// scene on its direction set.
+    /// The solution ready for rendering (flat shading), with the material blocks and the
+    /// luminaires of its scene.
     pub fn into_lit(self) -> LitScene {
         let blocks = self.scene.materials.iter().map(|m| Block::of(&m.model, &self.directions)).collect();
-        LitScene::new(self.mesh, self.directions, self.luminance, blocks)
+        let sources = self.scene.luminaires.iter().map(Source::of).collect();
+        LitScene::new(self.mesh, self.directions, self.luminance, blocks).with_luminaires(sources)
     }
 }
 

@@ -34,15 +34,15 @@ pub fn write_grid_csv(path: &Path, grid: &GridReading) -> Result<()> {
     write_text(path, &text)
 }
 
-/// `name,x,y,z,nx,ny,nz,L_cd_m2,E_lx` per probe.
+/// `name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx` per probe (the last: the luminaires' part).
 pub fn write_probes_csv(path: &Path, probes: &[ProbeReading]) -> Result<()> {
-    let mut text = String::from("name,x,y,z,nx,ny,nz,L_cd_m2,E_lx\n");
+    let mut text = String::from("name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx\n");
     for p in probes {
         let (x, n) = (p.position, p.normal);
         let name = p.name.replace('"', "\"\"");
         text += &format!(
-            "\"{name}\",{:.9},{:.9},{:.9},{:.9},{:.9},{:.9},{:.9e},{:.9e}\n",
-            x.x, x.y, x.z, n.x, n.y, n.z, p.luminance, p.illuminance
+            "\"{name}\",{:.9},{:.9},{:.9},{:.9},{:.9},{:.9},{:.9e},{:.9e},{:.9e}\n",
+            x.x, x.y, x.z, n.x, n.y, n.z, p.luminance, p.illuminance, p.direct
         );
     }
     write_text(path, &text)

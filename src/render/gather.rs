@@ -5,6 +5,7 @@
 //! * **direct**: every self-emitting patch `j` contributes `Le_j F^{d}_{q→P_j} V(q, P_j)`,
 //!   the exact contour-integral factor split by cells and the visibility fraction of the
 //!   kernel's four stratified points (`kernel::occlusion`): no noise from small lamps;
+//!   every luminaire its exact light at `q` (`luminaire::arriving_at`, one shadow ray);
 //! * **indirect**: `rays` cosine-distributed rays (Latin-hypercube stratified); each adds
 //!   `(L_j(m) − Le_j)/rays` to the cell it leaves through, `L_j(m)` the stored luminance of
 //!   the patch it hits in the cell pointing back at `q` (its emission was counted above).
@@ -19,6 +20,7 @@ use crate::geometry::{Frame, NO_TWIN};
 use crate::kernel::contour::point_to_polygon;
 use crate::kernel::form_factor::{Binning, binned_point};
 use crate::kernel::occlusion::{POINTS, sample_points};
+use crate::luminaire::arriving_at;
 use glam::DVec3;
 use std::cell::RefCell;
 use std::f64::consts::TAU;
@@ -84,6 +86,8 @@ fn gather_incident(
             incident[d as usize] += weight * f;
         }
     }
+    let luminaires = arriving_at(&lit.sources, &lit.visibility, &lit.directions, q, frame, face);
+    incident.iter_mut().zip(luminaires).for_each(|(i, d)| *i += d);
     let shift = rng.next_u64() as usize % rays.max(1);
     let stride = if rays.is_multiple_of(7) { 1 } else { 7 };
     for r in 0..rays {

@@ -7,7 +7,7 @@
 //!   holding the area-weighted mean over the patches of the same surface that share it
 //!   (`smooth.rs`);
 //! * `Gather`: one more reflection evaluated at `q` itself, `L(q,k) = Le + Σ_d ρ̄(k,d) I_d(q)`,
-//!   from the solved field (`gather.rs`, `design.md` §5).
+//!   from the solved field and the luminaires' direct light (`gather.rs`, `design.md` §5).
 
 use super::gather::final_gather;
 use super::random::Rng;
@@ -15,6 +15,7 @@ use super::smooth::Corners;
 use crate::brdf::Block;
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, NO_TWIN};
+use crate::luminaire::Source;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
 
@@ -43,6 +44,8 @@ pub struct LitScene {
     pub(super) blocks: Vec<Block>,
     /// Patches with a self-emission, for the gather's direct part.
     pub(super) emitters: Vec<u32>,
+    /// The luminaires, whose direct light the gather adds exactly at its point.
+    pub(super) sources: Vec<Source>,
 }
 
 impl LitScene {
@@ -69,7 +72,15 @@ impl LitScene {
             corners: None,
             blocks,
             emitters,
+            sources: Vec::new(),
         }
+    }
+
+    /// The scene lit also by `sources` (their light is in the stored field; the final
+    /// gather adds their direct light at its point).
+    pub fn with_luminaires(mut self, sources: Vec<Source>) -> LitScene {
+        self.sources = sources;
+        self
     }
 
     /// Shades from now on with `shading`.

@@ -4,6 +4,7 @@
 
 mod cli;
 mod placement;
+mod render;
 mod source_term;
 
 use glam::DVec3;
