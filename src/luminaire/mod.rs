@@ -20,7 +20,7 @@ mod point;
 
 pub use aim::frame;
 pub use patch::{DirectLight, direct_light};
-pub use point::arriving_at;
+pub use point::{arriving_at, incoming};
 
 use crate::geometry::Frame;
 use crate::photometry::Distribution;

@@ -9,6 +9,26 @@ use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
 use std::f64::consts::PI;
 
+/// The light of `source` at `p` (which lies on face `ignore`, or on none): the unit
+/// direction towards the source and the illuminance on a plane facing it, `I(w)/r²` or
+/// `E_n` (lx); `None` when the source is hidden or `p` is the source's position.
+pub fn incoming(source: &Source, visibility: &Visibility, p: DVec3, ignore: u32) -> Option<(DVec3, f64)> {
+    match &source.light {
+        Light::Point { position, .. } => {
+            let r = p - *position;
+            let distance2 = r.length_squared();
+            if distance2 <= 0.0 || !visibility.visible(*position, p, [NO_FACE, ignore]) {
+                return None;
+            }
+            let w = r / distance2.sqrt();
+            Some((-w, source.intensity(w) / distance2))
+        }
+        Light::Parallel { direction, illuminance } => {
+            visibility.closest_hit(p, -*direction, ignore).is_none().then_some((-*direction, *illuminance))
+        }
+    }
+}
+
 /// `D_d(p) = E_d(p)/π` per cell of `frame` at `p` (whose receiving side faces
 /// `frame.normal`), ignoring the face `ignore` that `p` lies on.
 pub fn arriving_at(
@@ -21,26 +41,13 @@ pub fn arriving_at(
 ) -> Vec<f64> {
     let mut out = vec![0.0; directions.len()];
     for source in sources {
-        let (towards_source, illuminance) = match &source.light {
-            Light::Point { position, .. } => {
-                let r = p - *position;
-                let distance = r.length();
-                let w = r / distance;
-                let cos = -w.dot(frame.normal);
-                if cos.is_nan() || cos <= 0.0 || !visibility.visible(*position, p, [NO_FACE, ignore]) {
-                    continue;
-                }
-                (-w, source.intensity(w) * cos / (distance * distance))
-            }
-            Light::Parallel { direction, illuminance } => {
-                let cos = -direction.dot(frame.normal);
-                if cos <= 0.0 || visibility.closest_hit(p, -*direction, ignore).is_some() {
-                    continue;
-                }
-                (-*direction, illuminance * cos)
-            }
+        let faces = match &source.light {
+            Light::Point { position, .. } => (*position - p).dot(frame.normal) > 0.0,
+            Light::Parallel { direction, .. } => direction.dot(frame.normal) < 0.0,
         };
-        out[directions.lookup(frame.local(towards_source))] += illuminance / PI;
+        if let Some((towards, normal)) = faces.then(|| incoming(source, visibility, p, ignore)).flatten() {
+            out[directions.lookup(frame.local(towards))] += normal * towards.dot(frame.normal) / PI;
+        }
     }
     out
 }

@@ -9,7 +9,8 @@
 //! converge. From the third reflection on, Russian roulette ends a path with probability
 //! `1 − min(β, 0.95)` and divides the survivors' throughput `β` by the survival chance.
 //! `max_order = n` keeps only light reflected at most `n` times: the truncated Neumann sum
-//! `Σ_{m≤n} Kᵐ L0`.
+//! `Σ_{m≤n} Kᵐ L0`. Luminaires are gathered exactly at every vertex (`luminaires.rs`);
+//! their light, reflected once in `L0`, is kept at the vertices up to `n`.
 
 use super::rng::Rng;
 use super::sampling::{self, is_delta};
@@ -84,13 +85,16 @@ pub fn luminance_along(world: &World, start: Start, rng: &mut Rng, options: &Tra
             };
             total += beta * emitted * weight;
         }
-        if order == last {
-            break;
-        }
         let patch = &mesh.patches[hit.patch];
         let material = world.material(hit.patch);
         let frame = patch.frame();
         let out = frame.local(-direction);
+        if !is_delta(material) {
+            total += beta * world.luminaires.reflected(&world.visibility, material, &frame, hit.point, patch.face, out);
+        }
+        if order == last {
+            break;
+        }
         if !is_delta(material)
             && let Some(light) = world.emitters.sample_towards(mesh, hit.point, rng.uniform3())
         {

@@ -2,7 +2,7 @@
 //! the `(patch, direction cell)` bins, a view-independent estimate of the discrete field.
 //!
 //! Photons leave the emitters chosen by flux, each carrying `Φ/P` lm, from a uniform
-//! point in a cosine-distributed direction. At every surface a photon first counts as
+//! point in a cosine-distributed direction (luminaires: `luminaires.rs`, weighted). At every surface a photon first counts as
 //! incident flux of the patch it meets (illuminance `E_i = Φ_in/A_i`), then scatters into
 //! a direction sampled from the continuous material (the same sampler as the backward
 //! estimator: the models are reciprocal) and deposits its outgoing flux `w'` into the bin
@@ -64,7 +64,7 @@ pub fn trace_photons(
     let mesh = &world.mesh;
     let (n, k) = (mesh.len(), directions.len());
     let bins = n * k + n + 1;
-    let share = world.emitters.flux() / photons.max(1) as f64;
+    let share = (world.emitters.flux() + world.luminaires.flux()) / photons.max(1) as f64;
     let chunks = photons.div_ceil(CHUNK);
     let wave = (2 * rayon::current_num_threads()) as u64;
     let mut tallies = vec![Tally::default(); bins];
@@ -166,10 +166,19 @@ fn follow(
 ) {
     let mesh = &world.mesh;
     let (n, k) = (mesh.len(), directions.len());
-    let u = [rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform()];
-    let Some(departure) = world.emitters.emit(mesh, u) else { return };
+    let mut u = [rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform()];
+    let surfaces = world.emitters.flux() / (world.emitters.flux() + world.luminaires.flux());
+    let (departure, weight) = if u[0] < surfaces {
+        u[0] /= surfaces;
+        let Some(departure) = world.emitters.emit(mesh, u) else { return };
+        (departure, 1.0)
+    } else {
+        u[0] = (u[0] - surfaces) / (1.0 - surfaces);
+        let Some(emitted) = world.luminaires.emit(u) else { return };
+        emitted
+    };
     let (mut origin, mut direction, mut ignore) = (departure.origin, departure.direction, departure.face);
-    let mut flux = share;
+    let mut flux = share * weight;
     let last = options.max_order.unwrap_or(LONGEST_PATH).min(LONGEST_PATH);
     for order in 0..last {
         *rays += 1;

@@ -11,7 +11,7 @@
 //! * [`agreement`]: a deterministic result against either, in units of the standard error.
 //!
 //! The pieces they share: [`world`] (geometry, materials, ray casting), [`emitters`]
-//! (sources sampled by flux), [`sampling`] (the continuous materials, importance-sampled),
+//! (sources sampled by flux), [`luminaires`] (delta lights gathered exactly, photon sources), [`sampling`] (the continuous materials, importance-sampled),
 //! [`rng`] (reproducible streams) and [`statistics`] (means and standard errors).
 
 pub mod agreement;
@@ -19,6 +19,7 @@ pub mod backward;
 pub mod camera;
 pub mod emitters;
 pub mod forward;
+pub mod luminaires;
 pub mod probe;
 pub mod rng;
 pub mod sampling;

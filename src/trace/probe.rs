@@ -5,7 +5,8 @@
 //!
 //! The illuminance combines next-event estimation towards the emitters with
 //! cosine-distributed directions (each continued as a path), weighted by the power
-//! heuristic: `E = π L_in(l)` per cosine direction (density `cosθ/π`).
+//! heuristic: `E = π L_in(l)` per cosine direction (density `cosθ/π`); the luminaires'
+//! direct light at the point is added exactly.
 
 use super::backward::{Start, TraceOptions, luminance_along, power_heuristic};
 use super::rng::Rng;
@@ -53,10 +54,11 @@ fn read(world: &World, probe: &Probe, index: u64, samples: usize, options: &Trac
         luminance.add(l);
     }
     let frame = Frame::around(n);
+    let direct = world.luminaires.illuminance(&world.visibility, p, n, ignore);
     let mut rng = Rng::stream(options.seed, 2 * index + 1);
     let mut illuminance = Tally::default();
     for _ in 0..samples {
-        let mut e = 0.0;
+        let mut e = direct;
         if let Some(light) = world.emitters.sample_towards(&world.mesh, p, rng.uniform3()) {
             let cos = n.dot(light.direction);
             if cos > 0.0 && world.visibility.visible(p, light.point, [ignore, light.face]) {

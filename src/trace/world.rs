@@ -1,9 +1,10 @@
 //! The scene as the Monte Carlo estimators see it: the patches only as geometry (where a
-//! ray lands, which side it meets), the continuous material of every patch, the emitters
-//! and the ray caster. Nothing here is discretized in direction: `design.md` §4's
+//! ray lands, which side it meets), the continuous material of every patch, the emitters,
+//! the luminaires and the ray caster. Nothing here is discretized in direction: `design.md` §4's
 //! references share no kernel, block or cell with the linear system.
 
 use super::emitters::Emitters;
+use super::luminaires::Luminaires;
 use crate::geometry::{Mesh, NO_TWIN};
 use crate::scene::{MaterialModel, Scene};
 use crate::visibility::Visibility;
@@ -22,6 +23,7 @@ pub struct World {
     pub mesh: Mesh,
     pub visibility: Visibility,
     pub emitters: Emitters,
+    pub luminaires: Luminaires,
     /// The material model of every patch.
     materials: Vec<MaterialModel>,
     /// The (up to two, back to back) patches of each face.
@@ -44,7 +46,8 @@ impl World {
         }
         let materials = mesh.patches.iter().map(|p| scene.materials[p.material as usize].model.clone()).collect();
         let emitters = Emitters::of(&mesh);
-        World { mesh, visibility, emitters, materials, faces }
+        let luminaires = Luminaires::of(scene, &mesh);
+        World { mesh, visibility, emitters, luminaires, materials, faces }
     }
 
     /// The material of patch `i`.

@@ -6,6 +6,7 @@ mod cli;
 mod placement;
 mod render;
 mod source_term;
+mod trace;
 
 use glam::DVec3;
 use std::path::Path;
