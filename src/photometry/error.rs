@@ -25,18 +25,9 @@ impl PhotometryError {
         PhotometryError { file: file.to_path_buf(), line: None, message: message.into() }
     }
 
-    pub fn file(&self) -> &Path {
-        &self.file
-    }
-
     /// The 1-based line the error is on, when it is on one.
     pub fn line(&self) -> Option<usize> {
         self.line
-    }
-
-    /// What was expected and what was found.
-    pub fn message(&self) -> &str {
-        &self.message
     }
 }
 

@@ -55,23 +55,6 @@ impl IntensityDistribution {
         }
     }
 
-    pub fn system(&self) -> System {
-        self.system
-    }
-
-    pub fn azimuths(&self) -> &[f64] {
-        &self.azimuth
-    }
-
-    pub fn polar_angles(&self) -> &[f64] {
-        &self.polar
-    }
-
-    /// True when the azimuths close over a full turn.
-    pub fn is_periodic(&self) -> bool {
-        self.periodic
-    }
-
     /// Every candela value, scaled by `factor` (a file's multipliers).
     pub fn scale(&mut self, factor: f64) {
         self.candela.iter_mut().for_each(|c| *c *= factor);
