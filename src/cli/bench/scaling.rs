@@ -45,7 +45,7 @@ pub fn step(scene: &Scene, options: &ModelOptions, patch_size: f64) -> Result<(S
         pairs: model.stats.pairs,
         assembly_seconds,
         solve_seconds,
-        peak_bytes: if reset { status("VmHWM:").zip(before).map(|(p, b)| p - b) } else { None },
+        peak_bytes: if reset { status("VmHWM:").zip(before).map(|(p, b)| (p - b).max(0.0)) } else { None },
     };
     Ok((step, model))
 }
@@ -61,20 +61,21 @@ pub fn exponent(steps: &[Step]) -> f64 {
     sxy / sxx
 }
 
-/// Assembly seconds of `scene` at `patch_size` in a pool of `threads` threads.
-pub fn assembly_with_threads(scene: &Scene, options: &ModelOptions, patch_size: f64, threads: usize) -> Result<f64> {
+/// Seconds to build the model of `scene` in a pool of `threads` threads.
+pub fn assembly_with_threads(scene: &Scene, options: &ModelOptions, threads: usize) -> Result<f64> {
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build()?;
-    let options = ModelOptions { patch_size, ..options.clone() };
     pool.install(|| {
         let t = Instant::now();
-        Model::build(scene, &options, &|_| {}, &|_| {})?;
+        Model::build(scene, options, &|_| {}, &|_| {})?;
         Ok(t.elapsed().as_secs_f64())
     })
 }
 
-/// Resets the kernel's peak-RSS counter of this process (Linux `clear_refs` 5).
+/// Resets the kernel's peak-RSS counter of this process (Linux `clear_refs` 5); false
+/// when the system does not support it (the peak then stays above the resident size).
 fn reset_peak() -> bool {
     std::fs::write("/proc/self/clear_refs", "5").is_ok()
+        && status("VmHWM:").zip(status("VmRSS:")).is_some_and(|(peak, now)| peak <= now + 4.0 * 1024.0 * 1024.0)
 }
 
 /// A `kB` line (`VmHWM:`, `VmRSS:`) of this process's status, bytes.
