@@ -51,6 +51,33 @@ pub enum ModelError {
     TooLarge { what: &'static str, need: f64, limit: f64, nonzeros: f64, patches: usize, cells: usize },
 }
 
+/// What a stored matrix would hold, checked against a memory limit.
+#[derive(Debug, Clone, Copy)]
+pub struct Footprint {
+    pub what: &'static str,
+    pub bytes: f64,
+    pub nonzeros: f64,
+    pub patches: usize,
+    pub cells: usize,
+}
+
+impl Footprint {
+    /// `Ok` when the footprint fits in `limit` bytes, else [`ModelError::TooLarge`] with it.
+    pub fn check(self, limit: u64) -> Result<(), ModelError> {
+        if self.bytes <= limit as f64 {
+            return Ok(());
+        }
+        Err(ModelError::TooLarge {
+            what: self.what,
+            need: self.bytes / GIB,
+            limit: limit as f64 / GIB,
+            nonzeros: self.nonzeros,
+            patches: self.patches,
+            cells: self.cells,
+        })
+    }
+}
+
 /// Timings and counts of the assembly.
 #[derive(Debug, Clone)]
 pub struct AssemblyStats {
@@ -98,16 +125,14 @@ impl Model {
         let mesh = Mesh::build(scene, options.patch_size);
         let directions = options.directions.clone();
         let estimate = Estimate::of(&mesh, &directions);
-        if estimate.peak_bytes() > options.memory_limit as f64 {
-            return Err(ModelError::TooLarge {
-                what: "kernel G",
-                need: estimate.peak_bytes() / GIB,
-                limit: options.memory_limit as f64 / GIB,
-                nonzeros: estimate.nonzeros,
-                patches: estimate.patches,
-                cells: estimate.cells,
-            });
+        Footprint {
+            what: "kernel G",
+            bytes: estimate.peak_bytes(),
+            nonzeros: estimate.nonzeros,
+            patches: estimate.patches,
+            cells: estimate.cells,
         }
+        .check(options.memory_limit)?;
         let mesh_seconds = t.elapsed().as_secs_f64();
         let t = Instant::now();
         let visibility = Visibility::build(&mesh);

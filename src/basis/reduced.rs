@@ -7,7 +7,7 @@
 use super::Factorization;
 use crate::geometry::NO_TWIN;
 use crate::kernel::{Kernel, LinOp};
-use crate::model::ModelError;
+use crate::model::{Footprint, ModelError};
 use rayon::prelude::*;
 use sprs::CsMat;
 use std::collections::BTreeMap;
@@ -105,18 +105,9 @@ impl<'a> Reduced<'a> {
     pub fn explicit(&self, limit: u64) -> Result<CsMat<f64>, ModelError> {
         let (k, m) = (self.factors.k, self.factors.m);
         let nonzeros = self.explicit_nonzeros();
-        let need = nonzeros * crate::kernel::memory::BYTES_PER_NONZERO as f64;
-        if need > limit as f64 {
-            let gib = (1u64 << 30) as f64;
-            return Err(ModelError::TooLarge {
-                what: "reduced kernel Φᵀ G Ψ",
-                need: need / gib,
-                limit: limit as f64 / gib,
-                nonzeros,
-                patches: self.kernel.patches(),
-                cells: m,
-            });
-        }
+        let bytes = nonzeros * crate::kernel::memory::BYTES_PER_NONZERO as f64;
+        let (what, patches) = ("reduced kernel Φᵀ G Ψ", self.kernel.patches());
+        Footprint { what, bytes, nonzeros, patches, cells: m }.check(limit)?;
         let n = self.kernel.patches();
         // Block row i: for each partner j, the M × M block Σ_d Σ_m Φ_i[d,·] G[(i,d),(j,m)] Ψ_j[m,·].
         let rows: Vec<BTreeMap<u32, Vec<f64>>> = (0..n)

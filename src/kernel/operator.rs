@@ -7,7 +7,7 @@
 use crate::brdf::Block;
 use crate::directions::DirectionSet;
 use crate::geometry::NO_TWIN;
-use crate::model::ModelError;
+use crate::model::{Footprint, ModelError};
 use rayon::prelude::*;
 use sprs::{CsMat, TriMat};
 
@@ -85,18 +85,9 @@ impl Kernel {
     pub fn explicit(&self, limit: u64) -> Result<CsMat<f64>, ModelError> {
         let nonzeros = self.explicit_nonzeros();
         // triplets (24 bytes) and the CSR copy (16 bytes) live together while converting
-        let need = nonzeros * (24.0 + super::memory::BYTES_PER_NONZERO as f64);
-        if need > limit as f64 {
-            let gib = (1u64 << 30) as f64;
-            return Err(ModelError::TooLarge {
-                what: "explicit product B·G",
-                need: need / gib,
-                limit: limit as f64 / gib,
-                nonzeros,
-                patches: self.patches(),
-                cells: self.cells(),
-            });
-        }
+        let bytes = nonzeros * (24.0 + super::memory::BYTES_PER_NONZERO as f64);
+        let (what, patches, cells) = ("explicit product B·G", self.patches(), self.cells());
+        Footprint { what, bytes, nonzeros, patches, cells }.check(limit)?;
         let k = self.cells();
         let n = self.g.rows();
         let mut tri = TriMat::with_capacity((n, n), nonzeros as usize);
