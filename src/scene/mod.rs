@@ -5,11 +5,13 @@
 //! table and the key. Nothing downstream (meshing, kernel, solvers) sees TOML.
 
 mod error;
+mod grid;
 mod luminaire;
 mod schema;
 mod validate;
 
 pub use error::SceneError;
+pub use grid::Grid;
 pub use luminaire::{Luminaire, LuminaireKind, PointLuminaire};
 pub use schema::RawCamera;
 
@@ -152,37 +154,11 @@ pub struct Camera {
     pub samples: usize,
 }
 
-/// `[[grid]]`: an illuminance calculation grid, the parallelogram
-/// `origin + s·edge_u + t·edge_v` divided into `resolution = [nu, nv]` equal cells with a
-/// calculation point at the centre of each.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Grid {
-    pub name: String,
-    pub origin: DVec3,
-    pub edge_u: DVec3,
-    pub edge_v: DVec3,
-    /// Unit normal of the receiving side, `±(edge_u × edge_v)`.
-    pub normal: DVec3,
-    pub resolution: [usize; 2],
-}
-
 impl Camera {
     /// A camera given outside a case file (e.g. on the command line, `source` says where),
     /// checked by the rules of a `[[camera]]` table.
     pub fn from_keys(keys: &RawCamera, source: &str) -> Result<Camera, SceneError> {
         validate::camera_from_keys(keys, source)
-    }
-}
-
-impl Grid {
-    /// The calculation points, row by row along `edge_u`, rows stepping along `edge_v`.
-    pub fn points(&self) -> Vec<DVec3> {
-        let [nu, nv] = self.resolution;
-        let at = |a: usize, n: usize| (a as f64 + 0.5) / n as f64;
-        (0..nv)
-            .flat_map(|b| (0..nu).map(move |a| (a, b)))
-            .map(|(a, b)| self.origin + self.edge_u * at(a, nu) + self.edge_v * at(b, nv))
-            .collect()
     }
 }
 

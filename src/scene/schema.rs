@@ -24,7 +24,7 @@ pub struct RawScene {
     #[serde(default)]
     pub camera: Vec<RawCamera>,
     #[serde(default)]
-    pub grid: Vec<RawGrid>,
+    pub grid: Vec<super::grid::RawGrid>,
     #[serde(default)]
     pub luminaire: Vec<super::luminaire::RawLuminaire>,
 }
@@ -130,18 +130,6 @@ pub struct RawCamera {
     pub fov_deg: Option<f64>,
     pub resolution: Option<[i64; 2]>,
     pub samples: Option<i64>,
-}
-
-/// `[[grid]]`.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawGrid {
-    pub name: String,
-    pub origin: [f64; 3],
-    pub edge_u: [f64; 3],
-    pub edge_v: [f64; 3],
-    pub resolution: [i64; 2],
-    pub normal: Option<[f64; 3]>,
 }
 
 /// Parses case text into the raw tables.

@@ -6,12 +6,11 @@
 //! naming the table (`[[surface]] "floor" (#3)`) and the key.
 
 use super::schema::{
-    RawCamera, RawDirections, RawDiscretization, RawEmission, RawGrid, RawMaterial, RawProbe, RawScene, RawSceneInfo,
-    RawSolver, RawSurface,
+    RawCamera, RawDirections, RawDiscretization, RawEmission, RawMaterial, RawProbe, RawScene, RawSceneInfo, RawSolver,
+    RawSurface,
 };
 use super::{
-    Camera, Discretization, Emission, Grid, Material, MaterialModel, Probe, Scene, SceneError, Shape, SolverSettings,
-    Surface,
+    Camera, Discretization, Emission, Material, MaterialModel, Probe, Scene, SceneError, Shape, SolverSettings, Surface,
 };
 use crate::directions::DirectionSet;
 use crate::solve::Method;
@@ -20,7 +19,7 @@ use std::path::Path;
 
 /// Relative tolerance (to the shape's size) of the planarity, collinearity,
 /// coincidence and parallel-edge tests.
-const REL_TOL: f64 = 1e-6;
+pub(super) const REL_TOL: f64 = 1e-6;
 
 /// An area below this fraction of (size)² counts as zero.
 const ZERO_AREA: f64 = 1e-12;
@@ -37,7 +36,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene) -> Result<Scene, Sce
     let surfaces = surfaces(path, &raw.surface, &materials)?;
     let probes = probes(path, &raw.probe)?;
     let cameras = cameras(path, &raw.camera)?;
-    let grids = grids(path, &raw.grid)?;
+    let grids = super::grid::grids(path, &raw.grid)?;
     let luminaires = super::luminaire::luminaires(path, &raw.luminaire)?;
     if luminaires.is_empty() && !surfaces.iter().any(|s| s.emission.is_some_and(emits)) {
         let message = "nothing emits light: give a [[surface]] an `emission` greater than 0, or add a [[luminaire]]";
@@ -116,7 +115,7 @@ impl<'a> Context<'a> {
 }
 
 /// `[x, y, z]` as written in TOML.
-fn show(v: DVec3) -> String {
+pub(super) fn show(v: DVec3) -> String {
     format!("[{}, {}, {}]", v.x, v.y, v.z)
 }
 
@@ -283,39 +282,6 @@ fn probes(path: &Path, raw: &[RawProbe]) -> Result<Vec<Probe>, SceneError> {
         Ok(Probe { name: p.name.clone(), position, normal })
     };
     raw.iter().enumerate().map(probe).collect()
-}
-
-fn grids(path: &Path, raw: &[RawGrid]) -> Result<Vec<Grid>, SceneError> {
-    unique_names(path, "grid", raw.iter().map(|g| g.name.as_str()))?;
-    raw.iter().enumerate().map(|(index, g)| grid(&Context::item(path, "grid", &g.name, index), g)).collect()
-}
-
-fn grid(at: &Context, g: &RawGrid) -> Result<Grid, SceneError> {
-    let origin = at.point("origin", g.origin)?;
-    let edge_u = at.point("edge_u", g.edge_u)?;
-    let edge_v = at.point("edge_v", g.edge_v)?;
-    let across = edge_u.cross(edge_v);
-    if across.length() <= REL_TOL * edge_u.length() * edge_v.length() || across == DVec3::ZERO {
-        return Err(at.error("edge_v", "must be non-zero and not parallel to a non-zero `edge_u`"));
-    }
-    let front = across.normalize();
-    let normal = match g.normal {
-        None => front,
-        Some(n) => {
-            let n = at.direction("normal", n)?;
-            if n.cross(front).length() > 1e-6 {
-                let message = format!("must be perpendicular to the grid, ±{}, got {}", show(front), show(n));
-                return Err(at.error("normal", message));
-            }
-            n
-        }
-    };
-    let [nu, nv] = g.resolution;
-    let points = |n: i64| usize::try_from(n).ok().filter(|&n| (1..=1000).contains(&n));
-    let (Some(nu), Some(nv)) = (points(nu), points(nv)) else {
-        return Err(at.error("resolution", format!("must be two point counts from 1 to 1000, got [{nu}, {nv}]")));
-    };
-    Ok(Grid { name: g.name.clone(), origin, edge_u, edge_v, normal, resolution: [nu, nv] })
 }
 
 fn cameras(path: &Path, raw: &[RawCamera]) -> Result<Vec<Camera>, SceneError> {

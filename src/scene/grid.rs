@@ -1,0 +1,79 @@
+//! `[[grid]]` tables: illuminance calculation grids as written, as validated, and their
+//! calculation points (the evaluation is `crate::grid`).
+
+use super::SceneError;
+use super::validate::{Context, REL_TOL, show, unique_names};
+use glam::DVec3;
+use serde::Deserialize;
+use std::path::Path;
+
+/// `[[grid]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawGrid {
+    pub name: String,
+    pub origin: [f64; 3],
+    pub edge_u: [f64; 3],
+    pub edge_v: [f64; 3],
+    pub resolution: [i64; 2],
+    pub normal: Option<[f64; 3]>,
+}
+
+/// `[[grid]]`: an illuminance calculation grid, the parallelogram
+/// `origin + s·edge_u + t·edge_v` divided into `resolution = [nu, nv]` equal cells with a
+/// calculation point at the centre of each.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Grid {
+    pub name: String,
+    pub origin: DVec3,
+    pub edge_u: DVec3,
+    pub edge_v: DVec3,
+    /// Unit normal of the receiving side, `±(edge_u × edge_v)`.
+    pub normal: DVec3,
+    pub resolution: [usize; 2],
+}
+
+impl Grid {
+    /// The calculation points, row by row along `edge_u`, rows stepping along `edge_v`.
+    pub fn points(&self) -> Vec<DVec3> {
+        let [nu, nv] = self.resolution;
+        let at = |a: usize, n: usize| (a as f64 + 0.5) / n as f64;
+        (0..nv)
+            .flat_map(|b| (0..nu).map(move |a| (a, b)))
+            .map(|(a, b)| self.origin + self.edge_u * at(a, nu) + self.edge_v * at(b, nv))
+            .collect()
+    }
+}
+
+pub(super) fn grids(path: &Path, raw: &[RawGrid]) -> Result<Vec<Grid>, SceneError> {
+    unique_names(path, "grid", raw.iter().map(|g| g.name.as_str()))?;
+    raw.iter().enumerate().map(|(index, g)| grid(&Context::item(path, "grid", &g.name, index), g)).collect()
+}
+
+fn grid(at: &Context, g: &RawGrid) -> Result<Grid, SceneError> {
+    let origin = at.point("origin", g.origin)?;
+    let edge_u = at.point("edge_u", g.edge_u)?;
+    let edge_v = at.point("edge_v", g.edge_v)?;
+    let across = edge_u.cross(edge_v);
+    if across.length() <= REL_TOL * edge_u.length() * edge_v.length() || across == DVec3::ZERO {
+        return Err(at.error("edge_v", "must be non-zero and not parallel to a non-zero `edge_u`"));
+    }
+    let front = across.normalize();
+    let normal = match g.normal {
+        None => front,
+        Some(n) => {
+            let n = at.direction("normal", n)?;
+            if n.cross(front).length() > 1e-6 {
+                let message = format!("must be perpendicular to the grid, ±{}, got {}", show(front), show(n));
+                return Err(at.error("normal", message));
+            }
+            n
+        }
+    };
+    let [nu, nv] = g.resolution;
+    let points = |n: i64| usize::try_from(n).ok().filter(|&n| (1..=1000).contains(&n));
+    let (Some(nu), Some(nv)) = (points(nu), points(nv)) else {
+        return Err(at.error("resolution", format!("must be two point counts from 1 to 1000, got [{nu}, {nv}]")));
+    };
+    Ok(Grid { name: g.name.clone(), origin, edge_u, edge_v, normal, resolution: [nu, nv] })
+}
