@@ -29,6 +29,10 @@ pub struct Discretize {
     /// (default: the case's `directions`, else 1).
     #[arg(long)]
     directions: Option<String>,
+    /// Precision of the stored transport matrix G: `f64` (16 bytes per non-zero) or `f32`
+    /// (f32 values and u32 indices, 8 bytes; products still accumulate in f64).
+    #[arg(long)]
+    precision: Option<String>,
 }
 
 /// Options that override the case file's `[solver]` stopping rule.

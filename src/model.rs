@@ -8,7 +8,7 @@
 use crate::brdf::Block;
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
-use crate::kernel::{Estimate, Kernel, Transport, assemble, form_factor::Quadrature};
+use crate::kernel::{Estimate, Kernel, Precision, Transport, TransportMatrix, assemble, form_factor::Quadrature};
 use crate::luminaire::{DirectLight, Source, direct_light};
 use crate::scene::Scene;
 use crate::visibility::Visibility;
@@ -25,6 +25,8 @@ pub struct ModelOptions {
     /// Largest kernel memory allowed, bytes.
     pub memory_limit: u64,
     pub quadrature: Quadrature,
+    /// Precision of the stored `G`.
+    pub precision: Precision,
 }
 
 impl ModelOptions {
@@ -35,6 +37,7 @@ impl ModelOptions {
             directions: DirectionSet::named(&scene.discretization.directions).unwrap_or_else(DirectionSet::single),
             memory_limit: crate::kernel::memory::default_limit(),
             quadrature: Quadrature::default(),
+            precision: Precision::Double,
         }
     }
 }
@@ -145,6 +148,7 @@ impl Model {
         let blocks = scene.materials.iter().map(|m| Block::of(&m.model, &directions)).collect();
         let patch_material = mesh.patches.iter().map(|p| p.material).collect();
         let twin = mesh.patches.iter().map(|p| p.twin).collect();
+        let g = TransportMatrix::new(g, options.precision);
         let kernel = Kernel { g, directions, blocks, patch_material, twin };
         let kernel_seconds = t.elapsed().as_secs_f64();
         let t = Instant::now();

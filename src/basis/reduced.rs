@@ -90,11 +90,10 @@ impl<'a> Reduced<'a> {
         if twin != NO_TWIN && self.factors.materials[self.kernel.patch_material[i] as usize].back.is_some() {
             rows.push(twin as usize);
         }
-        let mut js: Vec<u32> = rows
-            .iter()
-            .flat_map(|&r| (r * k..(r + 1) * k).filter_map(|row| self.kernel.g.outer_view(row)))
-            .flat_map(|v| v.indices().iter().map(|&col| (col / k) as u32).collect::<Vec<_>>())
-            .collect();
+        let mut js: Vec<u32> = Vec::new();
+        for row in rows.iter().flat_map(|&r| r * k..(r + 1) * k) {
+            self.kernel.g.for_each_in_row(row, |col, _| js.push((col / k) as u32));
+        }
         js.sort_unstable();
         js.dedup();
         js
@@ -117,9 +116,8 @@ impl<'a> Reduced<'a> {
                 let mut blocks: BTreeMap<u32, Vec<f64>> = BTreeMap::new();
                 let mut add = |phi: &[f64], r: usize| {
                     for d in 0..k {
-                        let Some(row) = self.kernel.g.outer_view(r * k + d) else { continue };
                         let phi_d = &phi[d * m..(d + 1) * m];
-                        for (&col, &g) in row.indices().iter().zip(row.data()) {
+                        self.kernel.g.for_each_in_row(r * k + d, |col, g| {
                             let (j, cell) = (col / k, col % k);
                             let psi = &self.factors.materials[self.kernel.patch_material[j] as usize].psi;
                             let psi_m = &psi[cell * m..(cell + 1) * m];
@@ -128,7 +126,7 @@ impl<'a> Reduced<'a> {
                                 let pg = p * g;
                                 block[a * m..(a + 1) * m].iter_mut().zip(psi_m).for_each(|(b, s)| *b += pg * s);
                             }
-                        }
+                        });
                     }
                 };
                 add(&f.front, i);

@@ -34,6 +34,10 @@ pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
         })?;
         scene.discretization.directions = name.clone();
     }
+    if let Some(name) = &d.precision {
+        options.precision = ugo::kernel::Precision::parse(name)
+            .ok_or_else(|| anyhow::anyhow!("--precision must be `f64` or `f32`, got \"{name}\""))?;
+    }
     if let Some(gib) = d.memory_limit {
         if !(gib.is_finite() && gib > 0.0) {
             bail!("--memory-limit must be a positive number of GiB, got {gib}");

@@ -205,7 +205,7 @@ fn summary(s: &Solution, output: &Path) {
     println!("  patches N          {:>12}", m.mesh.len());
     println!("  direction cells K  {:>12}   ({})", m.kernel.cells(), m.kernel.directions.name());
     println!("  unknowns           {:>12}", g.rows());
-    println!("  non-zeros of G     {:>12}   ({})", g.nnz(), bytes(g.nnz() as f64 * 16.0));
+    println!("  non-zeros of G     {:>12}   ({}, {})", g.nnz(), bytes(g.bytes()), g.precision().name());
     let assembly = st.mesh_seconds + st.bvh_seconds + st.kernel_seconds + st.light_seconds;
     println!(
         "  assembly           {assembly:>12.3} s   ({} pairs, {} occlusion rays, balanced by {}: correction {:.1e}, {} sweeps, row error {:.0e})",

@@ -6,11 +6,13 @@ mod assembly;
 mod balance;
 pub mod contour;
 pub mod form_factor;
+mod matrix;
 pub mod memory;
 pub mod occlusion;
 mod operator;
 
 pub use assembly::{Transport, assemble, facing};
 pub use balance::BalanceReport;
+pub use matrix::{Precision, TransportMatrix, spmv};
 pub use memory::Estimate;
-pub use operator::{Explicit, Factored, Kernel, LinOp, spmv};
+pub use operator::{Explicit, Factored, Kernel, LinOp};

@@ -4,6 +4,7 @@
 //! Every solver sees only [`LinOp`]; the factored form never builds the product, the
 //! explicit one is there for norms, direct solves and export.
 
+use super::TransportMatrix;
 use crate::brdf::Block;
 use crate::directions::DirectionSet;
 use crate::geometry::NO_TWIN;
@@ -20,7 +21,7 @@ pub trait LinOp: Sync {
 /// `K = B·G`: transport `G` over `(patch, cell)` unknowns and per-material blocks `B`.
 #[derive(Debug, Clone)]
 pub struct Kernel {
-    pub g: CsMat<f64>,
+    pub g: TransportMatrix,
     pub directions: DirectionSet,
     /// One block per material.
     pub blocks: Vec<Block>,
@@ -44,7 +45,7 @@ impl Kernel {
 
     /// `y = G x`, parallel over rows.
     pub fn apply_transport(&self, x: &[f64], y: &mut [f64]) {
-        spmv(&self.g, x, y);
+        self.g.apply(x, y);
     }
 
     /// `y = B z`, block by block: reflection of what arrives at the patch, plus
@@ -75,7 +76,7 @@ impl Kernel {
                 } else {
                     1
                 };
-                (self.g.outer_view(row).map_or(0, |r| r.nnz()) * k * spread) as f64
+                (self.g.row_len(row) * k * spread) as f64
             })
             .sum()
     }
@@ -91,15 +92,13 @@ impl Kernel {
         let k = self.cells();
         let n = self.g.rows();
         let mut tri = TriMat::with_capacity((n, n), nonzeros as usize);
-        for (row, vec) in self.g.outer_iterator().enumerate() {
+        for row in 0..n {
             let (i, d) = (row / k, row % k);
             let mut spread = |target: usize, value_of: &dyn Fn(usize) -> f64| {
                 for out in 0..k {
                     let b = value_of(out);
                     if b != 0.0 {
-                        for (col, &g) in vec.iter() {
-                            tri.add_triplet(target * k + out, col, b * g);
-                        }
+                        self.g.for_each_in_row(row, |col, g| tri.add_triplet(target * k + out, col, b * g));
                     }
                 }
             };
@@ -148,16 +147,6 @@ impl LinOp for Explicit {
     }
 
     fn apply(&self, x: &[f64], y: &mut [f64]) {
-        spmv(&self.0, x, y);
+        super::spmv(&self.0, x, y);
     }
-}
-
-/// `y = A x` for CSR `A`, rows in parallel.
-pub fn spmv(a: &CsMat<f64>, x: &[f64], y: &mut [f64]) {
-    let (indptr, indices, data) = (a.indptr(), a.indices(), a.data());
-    let indptr = indptr.raw_storage();
-    y.par_iter_mut().enumerate().with_min_len(256).for_each(|(i, yi)| {
-        let (lo, hi) = (indptr[i], indptr[i + 1]);
-        *yi = indices[lo..hi].iter().zip(&data[lo..hi]).map(|(&j, &v)| v * x[j]).sum();
-    });
 }

@@ -56,7 +56,7 @@ fn raw_form_factors_of_a_closed_sphere_close_and_are_reciprocal() {
 #[test]
 fn assembled_transport_is_closed_and_reciprocal() {
     let model = build(&furnace(2.0, 0.5, 1.0, 0.4));
-    let g = &model.kernel.g;
+    let g = model.kernel.g.as_double().expect("double precision by default");
     let a: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
     for (i, row) in g.outer_iterator().enumerate() {
         assert!((row.data().iter().sum::<f64>() - 1.0).abs() < 1e-12);
@@ -83,7 +83,7 @@ fn coaxial_unit_discs_one_apart() {
     let model = build(&s);
     let p = &model.mesh.patches;
     let (mut exchange, mut area) = (0.0, 0.0);
-    for (i, row) in model.kernel.g.outer_iterator().enumerate() {
+    for (i, row) in model.kernel.g.as_double().expect("double precision by default").outer_iterator().enumerate() {
         if p[i].surface == 0 {
             area += p[i].area;
             exchange += p[i].area * row.iter().filter(|(j, _)| p[*j].surface == 1).map(|(_, v)| v).sum::<f64>();
@@ -116,7 +116,7 @@ fn an_opaque_screen_removes_the_exchange_it_hides() {
     );
     let model = build(&s);
     let p = &model.mesh.patches;
-    for (i, row) in model.kernel.g.outer_iterator().enumerate() {
+    for (i, row) in model.kernel.g.as_double().expect("double precision by default").outer_iterator().enumerate() {
         for (j, _) in row.iter() {
             let pair = (p[i].surface, p[j].surface);
             assert!(pair != (0, 1) && pair != (1, 0), "bottom and top exchange through the screen");

@@ -30,7 +30,7 @@ fn binned_pieces_sum_to_the_one_cell_form_factors() {
 #[test]
 fn binned_transport_is_reciprocal_cell_by_cell() {
     let model = build_with(&furnace(1.0, 0.5, 1.0, 0.34), DirectionSet::hemisphere(16));
-    let g = &model.kernel.g;
+    let g = model.kernel.g.as_double().expect("double precision by default");
     let area: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
     for (r, row) in g.outer_iterator().enumerate() {
         for (c, &v) in row.iter() {
@@ -46,7 +46,7 @@ fn cell_rows_of_a_closed_room_carry_their_projected_solid_angle() {
     let set = DirectionSet::hemisphere(16);
     let model = build_with(&scene, set.clone());
     let mut worst: f64 = 0.0;
-    for (row, v) in model.kernel.g.outer_iterator().enumerate() {
+    for (row, v) in model.kernel.g.as_double().expect("double precision by default").outer_iterator().enumerate() {
         let mu = set.cells()[row % 16].projected / std::f64::consts::PI;
         worst = worst.max((v.data().iter().sum::<f64>() / mu - 1.0).abs());
     }

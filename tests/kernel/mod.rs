@@ -1,3 +1,4 @@
 mod assembly;
 mod cells;
 mod form_factor;
+mod precision;

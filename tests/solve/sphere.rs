@@ -22,7 +22,7 @@ fn indirect_illuminance_on_the_wall_is_uniform_and_as_predicted() {
     let wall: Vec<usize> = (0..p.len()).filter(|&i| p[i].surface == 0).collect();
     let area: f64 = wall.iter().map(|&i| p[i].area).sum();
     let to_bulb = |i: usize| -> f64 {
-        let row = model.kernel.g.outer_view(i).unwrap();
+        let row = model.kernel.g.as_double().expect("double precision by default").outer_view(i).unwrap();
         row.iter().filter(|(j, _)| p[*j].surface == 1).map(|(_, v)| v).sum()
     };
     let f = wall.iter().map(|&i| p[i].area * to_bulb(i)).sum::<f64>() / area;

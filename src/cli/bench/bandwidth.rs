@@ -1,11 +1,11 @@
 //! Memory-bound parts of `ugo bench`: a STREAM-like triad (`a = b + s·c`, 24 bytes per
 //! element) giving the machine's attainable bandwidth, and the sparse products of the
-//! solver measured in bytes of matrix traffic per second against it.
+//! solver measured in bytes of matrix traffic per second (values, column indices and row
+//! pointers: `TransportMatrix::bytes`) against it.
 
 use rayon::prelude::*;
-use sprs::CsMat;
 use std::time::Instant;
-use ugo::kernel::{LinOp, spmv};
+use ugo::kernel::{LinOp, TransportMatrix};
 
 /// Elements per triad array (3 × 256 MiB: far beyond any cache).
 const TRIAD: usize = 1 << 25;
@@ -35,17 +35,11 @@ pub fn triad() -> f64 {
     24.0 * TRIAD as f64 / seconds
 }
 
-/// Bytes a CSR product must read of the matrix: values, column indices and row pointers.
-pub fn matrix_bytes(a: &CsMat<f64>) -> f64 {
-    let index = std::mem::size_of::<usize>() as f64;
-    a.nnz() as f64 * (8.0 + index) + (a.rows() + 1) as f64 * index
-}
-
-/// Seconds per `y = A x` (best of 10).
-pub fn spmv_seconds(a: &CsMat<f64>) -> f64 {
-    let x = vec![1.0; a.cols()];
-    let mut y = vec![0.0; a.rows()];
-    best(10, || spmv(a, &x, &mut y))
+/// Seconds per `y = G x` (best of 10).
+pub fn spmv_seconds(g: &TransportMatrix) -> f64 {
+    let x = vec![1.0; g.rows()];
+    let mut y = vec![0.0; g.rows()];
+    best(10, || g.apply(&x, &mut y))
 }
 
 /// Seconds per application of an operator (best of 10).

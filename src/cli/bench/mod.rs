@@ -85,13 +85,14 @@ pub fn run(o: &BenchOptions) -> Result<()> {
     );
     let g = &model.kernel.g;
     let spmv = bandwidth::spmv_seconds(g);
-    let traffic = bandwidth::matrix_bytes(g) / spmv;
+    let traffic = g.bytes() / spmv;
     println!(
-        "  sparse product G x    {:>12.2} GB/s     ({:.0} % of the triad; {} non-zeros, {:.1} B each, {:.2} ms)",
+        "  sparse product G x    {:>12.2} GB/s     ({:.0} % of the triad; {} non-zeros, {:.1} B each ({}), {:.2} ms)",
         traffic / 1e9,
         100.0 * traffic / triad,
         g.nnz(),
-        bandwidth::matrix_bytes(g) / g.nnz() as f64,
+        g.bytes() / g.nnz() as f64,
+        g.precision().name(),
         spmv * 1e3
     );
     let factored = bandwidth::apply_seconds(&Factored::new(&model.kernel));
@@ -141,7 +142,7 @@ pub fn run(o: &BenchOptions) -> Result<()> {
         "assembly_rays_per_second": model.stats.rays as f64 / model.stats.kernel_seconds,
         "spmv_bytes_per_second": traffic,
         "spmv_fraction_of_triad": traffic / triad,
-        "bytes_per_nonzero": bandwidth::matrix_bytes(g) / g.nnz() as f64,
+        "bytes_per_nonzero": g.bytes() / g.nnz() as f64,
         "factored_apply_seconds": factored,
         "assembly_speedup": one / all,
         "scaling": steps,
@@ -154,6 +155,7 @@ pub fn run(o: &BenchOptions) -> Result<()> {
     }
     if let Some(dir) = &o.export {
         let meta = json!({ "ugo_occlusion_rays_per_second": rays, "ugo_spmv_seconds": spmv, "threads": threads });
+        let g = g.as_double().context("--export needs the matrix in double precision (--precision f64)")?;
         export::export(dir, &mesh, &visibility, &segments, g, meta)?;
         println!("  exported              {} (run docs/peers/peers.py {})", dir.display(), dir.display());
     }
