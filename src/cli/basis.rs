@@ -5,7 +5,6 @@
 
 use super::{bar, bytes, load};
 use crate::Discretize;
-use crate::cli::solve::full_residual;
 use anyhow::{Result, bail};
 use plotters::prelude::*;
 use std::path::Path;
@@ -13,7 +12,7 @@ use std::time::Instant;
 use ugo::basis::{Basis, Factorization, Reduced};
 use ugo::kernel::Factored;
 use ugo::model::Model;
-use ugo::solve::{Method, SolveParams, System, solve};
+use ugo::solve::{Method, SolveParams, System, relative_residual, solve};
 
 /// `--basis`, `--lmax`, `--rank`.
 #[derive(Debug, Clone, clap::Args)]
@@ -98,7 +97,7 @@ pub fn study(
                 iterations: info.iterations,
                 error: 0.0,
                 max_error: 0.0,
-                residual: full_residual(&factored, &model.l0, &reference),
+                residual: relative_residual(&factored, &model.l0, &reference),
             },
             Some(b) => {
                 let start = Instant::now();
@@ -118,7 +117,7 @@ pub fn study(
                     iterations: info.iterations,
                     error: norm(&mut diff.iter().copied()) / scale,
                     max_error: diff.iter().fold(0.0f64, |m, v| m.max(v.abs())) / peak,
-                    residual: full_residual(&factored, &model.l0, &x),
+                    residual: relative_residual(&factored, &model.l0, &x),
                 }
             }
         };

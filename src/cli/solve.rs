@@ -16,13 +16,13 @@ use ugo::grid::{GridReading, read_grids};
 use ugo::io::{
     BasisRecord, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
 };
-use ugo::kernel::{Explicit, Factored, LinOp};
+use ugo::kernel::{Explicit, Factored};
 use ugo::model::Model;
 use ugo::probe::read_probes;
 use ugo::scene::Scene;
 use ugo::solve::norms::Norms;
 use ugo::solve::orders::{OrderRecord, reflection_orders};
-use ugo::solve::{Method, SolveParams, System, solve};
+use ugo::solve::{Method, SolveParams, System, relative_residual, solve};
 use ugo::trace::{Agreement, TraceOptions, World, agreement, trace_photons};
 
 /// What one command asks of the pipeline.
@@ -113,9 +113,9 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let basis = factors.as_ref().map(|f| BasisRecord {
         factors: f,
         coefficients: &coefficients,
-        full_residual: full_residual(&factored, &model.l0, &x),
+        full_residual: relative_residual(&factored, &model.l0, &x),
     });
-    let x_ref = &runs[reference].1.clone();
+    let x_ref = &coefficients;
     let scale = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     for (run, y) in &mut runs {
         run.difference = y.iter().zip(x_ref).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / scale;
@@ -270,14 +270,6 @@ fn write_grids(grids: &[GridReading], output: &Path) -> Result<()> {
         println!("      {}\n      {}", csv.display(), png.display());
     }
     Ok(())
-}
-
-/// `‖L0 + K x − x‖₂ / ‖L0‖₂` in the full angular system.
-pub fn full_residual(k: &Factored, l0: &[f64], x: &[f64]) -> f64 {
-    let mut kx = vec![0.0; x.len()];
-    k.apply(x, &mut kx);
-    let norm = |v: &mut dyn Iterator<Item = f64>| v.map(|e| e * e).sum::<f64>().sqrt();
-    norm(&mut kx.iter().zip(l0).zip(x).map(|((k, l), x)| l + k - x)) / norm(&mut l0.iter().copied())
 }
 
 fn print_norms(n: &Norms, params: &SolveParams, runs: &[Run]) {

@@ -271,13 +271,13 @@ pub(super) fn write_identity(
     scene: &Scene,
     directions: &DirectionSet,
 ) -> hdf5::Result<()> {
-    text(file, "method", method)?;
-    text(file, "scene_name", &scene.name)?;
-    text(file, "scene_file", &scene.path.display().to_string())?;
-    text(file, "scene_text", &scene.source)?;
-    text(file, "version", env!("CARGO_PKG_VERSION"))?;
-    text(file, "directions", directions.name())?;
-    text(file, "units", "luminance cd/m2, illuminance lx, flux lm, lengths m")
+    text_attr(file, "method", method)?;
+    text_attr(file, "scene_name", &scene.name)?;
+    text_attr(file, "scene_file", &scene.path.display().to_string())?;
+    text_attr(file, "scene_text", &scene.source)?;
+    text_attr(file, "version", env!("CARGO_PKG_VERSION"))?;
+    text_attr(file, "directions", directions.name())?;
+    text_attr(file, "units", "luminance cd/m2, illuminance lx, flux lm, lengths m")
 }
 
 fn write_luminaires(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
@@ -358,11 +358,7 @@ pub(super) fn strings<'a>(g: &hdf5::Group, name: &str, items: impl Iterator<Item
     dataset(g, name, &Array1::from(values?))
 }
 
-pub(super) fn text(file: &hdf5::File, name: &str, value: &str) -> hdf5::Result<()> {
-    text_attr(file, name, value)
-}
-
-fn text_attr(location: &hdf5::Location, name: &str, value: &str) -> hdf5::Result<()> {
+pub(super) fn text_attr(location: &hdf5::Location, name: &str, value: &str) -> hdf5::Result<()> {
     location.new_attr::<VarLenUnicode>().shape(()).create(name)?.write_scalar(&unicode(value)?)
 }
 

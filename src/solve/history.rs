@@ -62,3 +62,9 @@ pub fn residual_norm(kernel: &dyn crate::kernel::LinOp, l0: &[f64], x: &[f64], s
     kernel.apply(x, scratch);
     scratch.iter().zip(l0).zip(x).map(|((k, l), x)| (l + k - x) * (l + k - x)).sum::<f64>().sqrt()
 }
+
+/// The relative residual `‖L0 + K x − x‖₂ / ‖L0‖₂` of any `x` (e.g. a field rebuilt from
+/// basis coefficients, measured in the full system).
+pub fn relative_residual(kernel: &dyn crate::kernel::LinOp, l0: &[f64], x: &[f64]) -> f64 {
+    residual_norm(kernel, l0, x, &mut vec![0.0; x.len()]) / super::norm(l0)
+}

@@ -18,6 +18,7 @@ pub use bicgstab::bicgstab;
 pub use direct::{direct, direct_sparse};
 pub use gauss_seidel::gauss_seidel;
 pub use gmres::gmres;
+pub use history::relative_residual;
 pub use method::{Method, System, solve};
 pub use neumann::successive_approximation;
 pub use southwell::southwell;
