@@ -1,25 +1,35 @@
 //! `ugo`: a numerical laboratory for the global illumination equation of a 3D scene.
 //!
-//! The modules follow the data flow of `design.md` §6: [`scene`] (case files) →
-//! [`geometry`] (patches) and [`visibility`] (BVH) → [`directions`], [`brdf`] and
-//! [`kernel`] (`K = B·G`) → [`model`] (the linear system) → [`solve`] → [`field`],
-//! [`energy`], [`probe`], [`grid`] → [`io`] (HDF5).
+//! The modules stand on floors (`design.md` §6): each imports only from its own floor or
+//! the floors below it, and no two files import each other (`tests/layering/` reads
+//! `src/` and enforces both). From the bottom up:
+//!
+//! 1. vocabulary: [`directions`], [`geometry`], [`visibility`], [`random`]
+//! 2. physics: [`material`], [`photometry`], [`transfer`], [`luminaire`]
+//! 3. kernel: [`kernel`]
+//! 4. solve: [`solve`], [`basis`]
+//! 5. scene: [`scene`]
+//! 6. model: [`model`]
+//! 7. readouts: [`readout`]
+//! 8. render/trace: [`render`], [`trace`]
+//! 9. io: [`io`]
+//!
+//! The command line (`src/main.rs`, `src/cli/`) stands on top and only calls the library.
 
 pub mod basis;
-pub mod brdf;
 pub mod directions;
-pub mod energy;
-pub mod field;
 pub mod geometry;
-pub mod grid;
 pub mod io;
 pub mod kernel;
 pub mod luminaire;
+pub mod material;
 pub mod model;
 pub mod photometry;
-pub mod probe;
+pub mod random;
+pub mod readout;
 pub mod render;
 pub mod scene;
 pub mod solve;
 pub mod trace;
+pub mod transfer;
 pub mod visibility;

@@ -5,15 +5,14 @@
 //! The kernel's memory is estimated before assembly and a kernel over the limit is
 //! refused with the estimate and the ways out.
 
-use crate::brdf::Block;
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
-use crate::kernel::{Estimate, Kernel, Precision, Transport, TransportMatrix, assemble, form_factor::Quadrature};
+use crate::kernel::{Estimate, Footprint, Kernel, Precision, TooLarge, Transport, TransportMatrix, assemble};
+use crate::transfer::form_factor::Quadrature;
 use crate::luminaire::{DirectLight, Source, direct_light};
 use crate::scene::Scene;
-use crate::visibility::Visibility;
+use crate::visibility::{Faces, Visibility};
 use std::time::Instant;
-use thiserror::Error;
 
 /// How a scene is discretized.
 #[derive(Debug, Clone, PartialEq)]
@@ -42,45 +41,6 @@ impl ModelOptions {
     }
 }
 
-/// Why a model could not be built.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum ModelError {
-    #[error(
-        "the {what} would need about {need:.2} GiB ({nonzeros:.3e} non-zeros for {patches} patches × {cells} \
-         cells), over the limit of {limit:.2} GiB. Ways out: a coarser patch_size (memory grows as \
-         patch_size⁻⁴), fewer direction cells, the factored operator instead of the explicit product, \
-         or a higher --memory-limit if the machine has the RAM"
-    )]
-    TooLarge { what: &'static str, need: f64, limit: f64, nonzeros: f64, patches: usize, cells: usize },
-}
-
-/// What a stored matrix would hold, checked against a memory limit.
-#[derive(Debug, Clone, Copy)]
-pub struct Footprint {
-    pub what: &'static str,
-    pub bytes: f64,
-    pub nonzeros: f64,
-    pub patches: usize,
-    pub cells: usize,
-}
-
-impl Footprint {
-    /// `Ok` when the footprint fits in `limit` bytes, else [`ModelError::TooLarge`] with it.
-    pub fn check(self, limit: u64) -> Result<(), ModelError> {
-        if self.bytes <= limit as f64 {
-            return Ok(());
-        }
-        Err(ModelError::TooLarge {
-            what: self.what,
-            need: self.bytes / GIB,
-            limit: limit as f64 / GIB,
-            nonzeros: self.nonzeros,
-            patches: self.patches,
-            cells: self.cells,
-        })
-    }
-}
-
 /// Timings and counts of the assembly.
 #[derive(Debug, Clone)]
 pub struct AssemblyStats {
@@ -98,6 +58,8 @@ pub struct AssemblyStats {
 pub struct Model {
     pub mesh: Mesh,
     pub visibility: Visibility,
+    /// The patches of each face, for probes and grids.
+    pub faces: Faces,
     pub kernel: Kernel,
     /// Source term `L0(i,k)`, flat, `x[i·K + k]`.
     pub l0: Vec<f64>,
@@ -108,12 +70,10 @@ pub struct Model {
     pub stats: AssemblyStats,
 }
 
-const GIB: f64 = (1u64 << 30) as f64;
-
 impl Model {
     /// Meshes the scene only (for estimates).
     pub fn mesh(scene: &Scene, options: &ModelOptions) -> Mesh {
-        Mesh::build(scene, options.patch_size)
+        Mesh::build(&scene.surfaces, options.patch_size)
     }
 
     /// Builds the full model. `progress(total)` is called once with the number of pair
@@ -123,9 +83,9 @@ impl Model {
         options: &ModelOptions,
         start: &dyn Fn(u64),
         step: &(dyn Fn(u64) + Sync),
-    ) -> Result<Model, ModelError> {
+    ) -> Result<Model, TooLarge> {
         let t = Instant::now();
-        let mesh = Mesh::build(scene, options.patch_size);
+        let mesh = Mesh::build(&scene.surfaces, options.patch_size);
         let directions = options.directions.clone();
         let estimate = Estimate::of(&mesh, &directions);
         Footprint {
@@ -145,7 +105,7 @@ impl Model {
         start(n * n.saturating_sub(1) / 2);
         let Transport { g, balance, pairs, rays } =
             assemble(&mesh, &visibility, &directions, &options.quadrature, step);
-        let blocks = scene.materials.iter().map(|m| Block::of(&m.model, &directions)).collect();
+        let blocks = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
         let patch_material = mesh.patches.iter().map(|p| p.material).collect();
         let twin = mesh.patches.iter().map(|p| p.twin).collect();
         let g = TransportMatrix::new(g, options.precision);
@@ -163,20 +123,25 @@ impl Model {
             rays: rays + direct.rays,
             balance,
         };
-        let mut model = Model { mesh, visibility, kernel, l0: Vec::new(), sources, direct, stats };
-        model.l0 = model.source_term();
-        Ok(model)
+        let l0 = source_term(&kernel, &direct, &mesh.emission);
+        let faces = Faces::of(&mesh);
+        Ok(Model { mesh, visibility, faces, kernel, l0, sources, direct, stats })
     }
 
-    /// `L0 = L_e + B·D`: each patch's own emission in every cell, plus the luminaires'
-    /// direct light reflected (and transmitted) once by the current material blocks.
+    /// `L0` again, after the material blocks of the kernel changed.
     pub fn source_term(&self) -> Vec<f64> {
-        let k = self.kernel.cells();
-        let mut l0 = vec![0.0; self.direct.arriving.len()];
-        self.kernel.apply_materials(&self.direct.arriving, &mut l0);
-        for (cells, &emitted) in l0.chunks_mut(k).zip(&self.mesh.emission) {
-            cells.iter_mut().for_each(|l| *l += emitted);
-        }
-        l0
+        source_term(&self.kernel, &self.direct, &self.mesh.emission)
     }
+}
+
+/// `L0 = L_e + B·D`: each patch's own emission `emission[i]` in every cell, plus the
+/// luminaires' direct light reflected (and transmitted) once by the kernel's blocks.
+fn source_term(kernel: &Kernel, direct: &DirectLight, emission: &[f64]) -> Vec<f64> {
+    let k = kernel.cells();
+    let mut l0 = vec![0.0; direct.arriving.len()];
+    kernel.apply_materials(&direct.arriving, &mut l0);
+    for (cells, &emitted) in l0.chunks_mut(k).zip(emission) {
+        cells.iter_mut().for_each(|l| *l += emitted);
+    }
+    l0
 }

@@ -1,12 +1,13 @@
 //! The one integration-test crate of ugo; its folders mirror `src/`.
 
 mod basis;
-mod brdf;
+mod material;
 mod cie171;
 mod cli;
 mod directions;
 mod grid;
 mod kernel;
+mod layering;
 mod luminaire;
 mod photometry;
 mod render;

@@ -18,7 +18,7 @@
 //! factors `[ρ̄ | τ̄]` together, so both share `Ψ`).
 
 use super::sh;
-use crate::brdf::Block;
+use crate::material::Block;
 use crate::directions::DirectionSet;
 use nalgebra::DMatrix;
 use std::f64::consts::PI;

@@ -6,8 +6,8 @@
 
 use super::Factorization;
 use crate::geometry::NO_TWIN;
-use crate::kernel::{Kernel, LinOp};
-use crate::model::{Footprint, ModelError};
+use crate::kernel::{Footprint, Kernel, TooLarge};
+use crate::solve::LinOp;
 use rayon::prelude::*;
 use sprs::CsMat;
 use std::collections::BTreeMap;
@@ -101,7 +101,7 @@ impl<'a> Reduced<'a> {
 
     /// `K̃` as one sparse matrix with dense `M × M` blocks, refused (with the estimate)
     /// over `limit` bytes.
-    pub fn explicit(&self, limit: u64) -> Result<CsMat<f64>, ModelError> {
+    pub fn explicit(&self, limit: u64) -> Result<CsMat<f64>, TooLarge> {
         let (k, m) = (self.factors.k, self.factors.m);
         let nonzeros = self.explicit_nonzeros();
         let bytes = nonzeros * crate::kernel::memory::BYTES_PER_NONZERO as f64;

@@ -4,7 +4,7 @@
 //! unknowns, memory and time, as a table and a plot (`design.md` §4).
 
 use super::{bar, bytes, load};
-use crate::Discretize;
+use super::options::Discretize;
 use anyhow::{Result, bail};
 use plotters::prelude::*;
 use std::path::Path;

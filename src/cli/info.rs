@@ -1,7 +1,7 @@
 //! `ugo info CASE`: what the case will cost, before any assembly.
 
 use super::{bytes, describe, load};
-use crate::Discretize;
+use super::options::Discretize;
 use anyhow::Result;
 use std::path::Path;
 use ugo::kernel::Estimate;

@@ -4,11 +4,12 @@ pub mod agree;
 pub mod basis;
 pub mod bench;
 pub mod info;
+pub mod options;
 pub mod render;
 pub mod solve;
 pub mod trace;
 
-use crate::Discretize;
+use options::Discretize;
 use anyhow::{Result, bail};
 use std::path::Path;
 use ugo::directions::DirectionSet;

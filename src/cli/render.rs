@@ -129,14 +129,14 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
             if let Shading::Gather { .. } = shading {
                 lit.set_shading(Shading::Smooth);
             }
-            let solved = std::mem::take(&mut lit.luminance);
+            let solved = std::mem::take(&mut lit.solved.luminance);
             let mut panels = Vec::with_capacity(orders.len());
             for (n, sum) in &orders {
-                lit.luminance = sum.clone();
+                lit.solved.luminance = sum.clone();
                 let caption = if *n == 1 { "after 1 reflection".to_string() } else { format!("after {n} reflections") };
                 panels.push((caption, render(&lit, camera)));
             }
-            lit.luminance = solved;
+            lit.solved.luminance = solved;
             lit.set_shading(shading);
             let path = dir.join(format!("{case}-{}-orders.png", file_name(&camera.name)));
             write_triptych(&path, &panels, white)?;

@@ -5,20 +5,20 @@
 //! Carlo estimate of the same discretization.
 
 use super::{bar, bytes, describe, file_name, load};
-use crate::Discretize;
+use super::options::Discretize;
 use anyhow::{Context, Result, bail};
-use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 use ugo::basis::{Basis, Factorization, Reduced};
-use ugo::energy::EnergyBalance;
-use ugo::field::Field;
-use ugo::grid::{GridReading, read_grids};
+use ugo::readout::energy::EnergyBalance;
+use ugo::readout::field::Field;
+use ugo::readout::illuminance::{arriving, patch_illuminance};
+use ugo::readout::grid::{GridReading, read_grids};
 use ugo::io::{
     BasisRecord, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
 };
 use ugo::kernel::{Explicit, Factored};
 use ugo::model::Model;
-use ugo::probe::read_probes;
+use ugo::readout::probe::read_probes;
 use ugo::scene::Scene;
 use ugo::solve::norms::Norms;
 use ugo::solve::orders::{OrderRecord, reflection_orders};
@@ -130,13 +130,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
 
     let k = model.kernel.cells();
     let field = Field::from_unknowns(&x, k);
-    let mut gx = vec![0.0; x.len()];
-    model.kernel.apply_transport(&x, &mut gx);
-    let illuminance: Vec<f64> = gx
-        .chunks(k)
-        .zip(model.direct.arriving.chunks(k))
-        .map(|(surfaces, luminaires)| PI * (surfaces.iter().sum::<f64>() + luminaires.iter().sum::<f64>()))
-        .collect();
+    let illuminance = patch_illuminance(&arriving(&model, &x), k);
     let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
     let probes = read_probes(&scene.probes, &model, &field);
     let grids = read_grids(&scene.grids, &model, &field);

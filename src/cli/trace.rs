@@ -6,7 +6,7 @@
 use super::file_name;
 use super::render::chosen;
 use super::{bar, load};
-use crate::Discretize;
+use super::options::Discretize;
 use anyhow::{Result, bail};
 use std::path::{Path, PathBuf};
 use ugo::geometry::Mesh;
@@ -28,7 +28,7 @@ pub struct TraceJob {
 
 pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
     let (scene, options) = load(case, d)?;
-    let mesh = Mesh::build(&scene, options.patch_size);
+    let mesh = Mesh::build(&scene.surfaces, options.patch_size);
     let world = World::new(&scene, mesh);
     if world.emitters.is_empty() {
         bail!("nothing in {} emits light: give a surface an emission", case.display());

@@ -7,7 +7,7 @@
 use super::frame::Frame;
 use super::polygon::ConvexPolygon;
 use super::tessellate::tessellate;
-use crate::scene::{Emission, Scene};
+use super::surface::{Emission, Surface};
 use glam::DVec3;
 use std::f64::consts::PI;
 
@@ -22,7 +22,7 @@ pub struct Patch {
     /// Local frame `(tangent, bitangent, normal)`, right-handed.
     pub tangent: DVec3,
     pub bitangent: DVec3,
-    /// Index of the owning [`crate::scene::Surface`].
+    /// Index of the owning [`Surface`].
     pub surface: u32,
     /// Index of the patch's [`crate::scene::Material`].
     pub material: u32,
@@ -73,12 +73,12 @@ pub struct Mesh {
 }
 
 impl Mesh {
-    /// Meshes every surface of `scene` with target edge length `patch_size` (m).
-    pub fn build(scene: &Scene, patch_size: f64) -> Mesh {
+    /// Meshes every surface with target edge length `patch_size` (m).
+    pub fn build(surfaces: &[Surface], patch_size: f64) -> Mesh {
         let mut patches = Vec::new();
         let mut emission = Vec::new();
         let mut faces = 0u32;
-        for (s, surface) in scene.surfaces.iter().enumerate() {
+        for (s, surface) in surfaces.iter().enumerate() {
             let first = patches.len();
             for mut element in tessellate(&surface.shape, patch_size) {
                 if surface.inside {

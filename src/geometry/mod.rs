@@ -1,11 +1,14 @@
-//! Geometry: convex polygons, tessellation of shapes, and the patch mesh (`design.md` §2).
+//! Geometry: surfaces as described, convex polygons, tessellation of shapes, and the patch
+//! mesh (`design.md` §2).
 
 mod frame;
 mod mesh;
 mod polygon;
+mod surface;
 mod tessellate;
 
 pub use frame::Frame;
 pub use mesh::{Mesh, NO_TWIN, Patch};
 pub use polygon::{ConvexPolygon, MAX_CLIPPED};
+pub use surface::{Emission, Shape, Surface};
 pub use tessellate::tessellate;

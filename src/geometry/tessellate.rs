@@ -6,7 +6,7 @@
 //! OBJ triangles, split into `m²` similar triangles. Elements face the shape's front.
 
 use super::polygon::ConvexPolygon;
-use crate::scene::Shape;
+use super::surface::Shape;
 use glam::{DMat3, DVec3};
 use std::f64::consts::PI;
 

@@ -19,15 +19,16 @@
 
 use crate::basis::{Factorization, MaterialFactor};
 use crate::directions::DirectionSet;
-use crate::energy::EnergyBalance;
-use crate::field::Field;
+use crate::readout::energy::EnergyBalance;
+use crate::readout::field::Field;
 use crate::geometry::Mesh;
-use crate::grid::GridReading;
+use crate::readout::grid::GridReading;
 use crate::luminaire::Light;
 use crate::model::Model;
+use crate::readout::illuminance::patch_illuminance;
 use crate::photometry::Distribution;
-use crate::probe::ProbeReading;
-use crate::scene::LuminaireKind;
+use crate::readout::probe::ProbeReading;
+use crate::luminaire::LuminaireKind;
 use crate::scene::Scene;
 use crate::solve::norms::Norms;
 use crate::solve::orders::OrderRecord;
@@ -108,7 +109,7 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     let source = Array3::from_shape_vec((s.model.mesh.len(), k, 1), s.model.l0.clone()).map_err(shape_error)?;
     dataset(&field, "source", &source)?;
     dataset(&field, "illuminance", &Array1::from(s.illuminance.to_vec()))?;
-    dataset(&field, "direct_illuminance", &Array1::from(s.model.direct.illuminance(k)))?;
+    dataset(&field, "direct_illuminance", &Array1::from(patch_illuminance(&s.model.direct.arriving, k)))?;
 
     let solver = file.create_group("solver")?;
     write_history(&solver, s.info)?;

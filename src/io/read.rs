@@ -2,7 +2,6 @@
 //! scene, the patch geometry and the luminance field (with its standard errors when the
 //! file holds a Monte Carlo estimate), enough to look at or compare the result again.
 
-use crate::brdf::Block;
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Mesh, NO_TWIN, Patch};
 use crate::luminaire::Source;
@@ -34,7 +33,7 @@ impl StoredSolution {
     /// The solution ready for rendering (flat shading), with the material blocks and the
     /// luminaires of its scene.
     pub fn into_lit(self) -> LitScene {
-        let blocks = self.scene.materials.iter().map(|m| Block::of(&m.model, &self.directions)).collect();
+        let blocks = self.scene.materials.iter().map(|m| m.model.block(&self.directions)).collect();
         let sources = self.scene.luminaires.iter().map(Source::of).collect();
         LitScene::new(self.mesh, self.directions, self.luminance, blocks).with_luminaires(sources)
     }

@@ -4,8 +4,8 @@
 //! luminance and illuminance.
 
 use super::{Scale, atomic, write_false_colour};
-use crate::grid::GridReading;
-use crate::probe::ProbeReading;
+use crate::readout::grid::GridReading;
+use crate::readout::probe::ProbeReading;
 use crate::render::Image;
 use anyhow::{Result, anyhow};
 use std::io::Write;

@@ -1,4 +1,5 @@
-//! Memory estimate of the kernel before any assembly, and the default limit.
+//! Memory estimate of the kernel before any assembly, the default limit, and the refusal
+//! of any matrix whose footprint exceeds it ([`Footprint::check`], [`TooLarge`]).
 //!
 //! The number of non-zeros of `G` is twice the number of unordered pairs of patches that
 //! face each other (counted exactly up to 4,000 patches, else from a fixed sample of
@@ -9,7 +10,9 @@
 use super::assembly::facing;
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch};
+use crate::random::Rng;
 use rayon::prelude::*;
+use thiserror::Error;
 
 /// Bytes per stored non-zero of a CSR matrix (f64 value, usize column index).
 pub const BYTES_PER_NONZERO: u64 = 16;
@@ -81,7 +84,7 @@ fn sample_facing(mesh: &Mesh, cells: usize) -> (f64, f64) {
     let (hits, sum) = (0..SAMPLES)
         .into_par_iter()
         .map(|s| {
-            let h = splitmix(s);
+            let h = Rng::from_state(s).next_u64();
             let (i, j) = ((h % n) as usize, ((h >> 32) % n) as usize);
             let (a, b) = (&mesh.patches[i], &mesh.patches[j]);
             if i != j && facing(a, b) { (1.0, pieces(a, b, cells)) } else { (0.0, 0.0) }
@@ -105,17 +108,58 @@ fn pieces(a: &Patch, b: &Patch, cells: usize) -> f64 {
     (spread(seen(b, dir)) * spread(seen(a, dir))).min((cells * cells) as f64)
 }
 
-fn splitmix(mut z: u64) -> u64 {
-    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^ (z >> 31)
-}
-
 /// Half of the machine's physical memory (from `/proc/meminfo`), or 8 GiB where unknown.
 pub fn default_limit() -> u64 {
     let total_kib = std::fs::read_to_string("/proc/meminfo")
         .ok()
         .and_then(|s| s.lines().find(|l| l.starts_with("MemTotal:"))?.split_whitespace().nth(1)?.parse::<u64>().ok());
     total_kib.map_or(8 << 30, |k| k * 1024 / 2)
+}
+
+const GIB: f64 = (1u64 << 30) as f64;
+
+/// A matrix refused before allocation because it would not fit in the memory limit.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error(
+    "the {what} would need about {need:.2} GiB ({nonzeros:.3e} non-zeros for {patches} patches × {cells} \
+     cells), over the limit of {limit:.2} GiB. Ways out: a coarser patch_size (memory grows as \
+     patch_size⁻⁴), fewer direction cells, the factored operator instead of the explicit product, \
+     or a higher --memory-limit if the machine has the RAM"
+)]
+pub struct TooLarge {
+    pub what: &'static str,
+    /// GiB.
+    pub need: f64,
+    /// GiB.
+    pub limit: f64,
+    pub nonzeros: f64,
+    pub patches: usize,
+    pub cells: usize,
+}
+
+/// What a stored matrix would hold, checked against a memory limit.
+#[derive(Debug, Clone, Copy)]
+pub struct Footprint {
+    pub what: &'static str,
+    pub bytes: f64,
+    pub nonzeros: f64,
+    pub patches: usize,
+    pub cells: usize,
+}
+
+impl Footprint {
+    /// `Ok` when the footprint fits in `limit` bytes, else [`TooLarge`] with it.
+    pub fn check(self, limit: u64) -> Result<(), TooLarge> {
+        if self.bytes <= limit as f64 {
+            return Ok(());
+        }
+        Err(TooLarge {
+            what: self.what,
+            need: self.bytes / GIB,
+            limit: limit as f64 / GIB,
+            nonzeros: self.nonzeros,
+            patches: self.patches,
+            cells: self.cells,
+        })
+    }
 }

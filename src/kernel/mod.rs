@@ -1,18 +1,15 @@
-//! The kernel `K = B·G` of `design.md` §3: exact point-to-polygon form factors, adaptive
-//! quadrature, visibility fractions, balanced assembly of `G`, material blocks `B`, and
-//! the operators (factored and explicit) that solvers apply.
+//! The kernel `K = B·G` of `design.md` §3: balanced assembly of `G` from the transfer
+//! toolkit (`crate::transfer`), its storage, the material blocks `B`, the memory estimate
+//! and its refusal, and the operators (factored and explicit) that solvers apply.
 
 mod assembly;
 mod balance;
-pub mod contour;
-pub mod form_factor;
 mod matrix;
 pub mod memory;
-pub mod occlusion;
 mod operator;
 
 pub use assembly::{Transport, assemble, facing};
 pub use balance::BalanceReport;
 pub use matrix::{Precision, TransportMatrix, spmv};
-pub use memory::Estimate;
-pub use operator::{Explicit, Factored, Kernel, LinOp};
+pub use memory::{Estimate, Footprint, TooLarge};
+pub use operator::{Explicit, Factored, Kernel};

@@ -1,22 +1,16 @@
 //! The kernel as an operator: `K = B·G`, applied factored (`G` then `B`) or formed
 //! explicitly as one sparse matrix (`design.md` §3).
 //!
-//! Every solver sees only [`LinOp`]; the factored form never builds the product, the
-//! explicit one is there for norms, direct solves and export.
+//! Solvers see both through `crate::solve::LinOp`; the factored form never builds the
+//! product, the explicit one is there for norms, direct solves and export.
 
+use super::memory::{BYTES_PER_NONZERO, Footprint, TooLarge};
 use super::TransportMatrix;
-use crate::brdf::Block;
 use crate::directions::DirectionSet;
 use crate::geometry::NO_TWIN;
-use crate::model::{Footprint, ModelError};
+use crate::material::Block;
 use rayon::prelude::*;
 use sprs::{CsMat, TriMat};
-
-/// A square linear operator `y = A x`.
-pub trait LinOp: Sync {
-    fn dim(&self) -> usize;
-    fn apply(&self, x: &[f64], y: &mut [f64]);
-}
 
 /// `K = B·G`: transport `G` over `(patch, cell)` unknowns and per-material blocks `B`.
 #[derive(Debug, Clone)]
@@ -83,10 +77,10 @@ impl Kernel {
 
     /// The explicit product `B·G` as one sparse matrix, refused (with the estimate) when
     /// its upper-bound size exceeds `limit` bytes.
-    pub fn explicit(&self, limit: u64) -> Result<CsMat<f64>, ModelError> {
+    pub fn explicit(&self, limit: u64) -> Result<CsMat<f64>, TooLarge> {
         let nonzeros = self.explicit_nonzeros();
         // triplets (24 bytes) and the CSR copy (16 bytes) live together while converting
-        let bytes = nonzeros * (24.0 + super::memory::BYTES_PER_NONZERO as f64);
+        let bytes = nonzeros * (24.0 + BYTES_PER_NONZERO as f64);
         let (what, patches, cells) = ("explicit product B·G", self.patches(), self.cells());
         Footprint { what, bytes, nonzeros, patches, cells }.check(limit)?;
         let k = self.cells();
@@ -126,12 +120,14 @@ impl<'a> Factored<'a> {
     }
 }
 
-impl LinOp for Factored<'_> {
-    fn dim(&self) -> usize {
+impl Factored<'_> {
+    /// The number of unknowns `N·K`.
+    pub fn dim(&self) -> usize {
         self.kernel.g.rows()
     }
 
-    fn apply(&self, x: &[f64], y: &mut [f64]) {
+    /// `y = B (G x)`.
+    pub fn apply(&self, x: &[f64], y: &mut [f64]) {
         let mut z = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
         self.kernel.apply_transport(x, &mut z);
         self.kernel.apply_materials(&z, y);
@@ -141,12 +137,14 @@ impl LinOp for Factored<'_> {
 /// An explicit sparse matrix as an operator.
 pub struct Explicit(pub CsMat<f64>);
 
-impl LinOp for Explicit {
-    fn dim(&self) -> usize {
+impl Explicit {
+    /// The number of unknowns.
+    pub fn dim(&self) -> usize {
         self.0.rows()
     }
 
-    fn apply(&self, x: &[f64], y: &mut [f64]) {
+    /// `y = A x`, rows in parallel.
+    pub fn apply(&self, x: &[f64], y: &mut [f64]) {
         super::spmv(&self.0, x, y);
     }
 }

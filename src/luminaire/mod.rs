@@ -10,21 +10,22 @@
 //! same blocks `B` (transmission to the twin included): glossy receivers reflect the
 //! luminaire's light towards the mirror direction. Luminaires are not unknowns.
 //!
-//! Owns the placed sources ([`Source`]: a point source's frame from its aim, its
+//! Owns the luminaires as described (`description.rs`), the placed sources ([`Source`]: a point source's frame from its aim, its
 //! multiplier and tilt factor; parallel light), the patch-averaged illuminance
 //! (`patch.rs`) and the exact illuminance at a point for probes (`point.rs`).
 
 mod aim;
+mod description;
 mod patch;
 mod point;
 
 pub use aim::frame;
+pub use description::{Luminaire, LuminaireKind, PointLuminaire};
 pub use patch::{DirectLight, direct_light};
 pub use point::{arriving_at, incoming};
 
 use crate::geometry::Frame;
 use crate::photometry::Distribution;
-use crate::scene::{Luminaire, LuminaireKind};
 use glam::DVec3;
 
 /// A luminaire placed in the scene.

@@ -5,7 +5,7 @@
 //! distance above [`ETA`]); each piece then contributes `I` towards its centroid times its
 //! exact solid angle (`ConvexPolygon::solid_angle`) times the fraction of its four
 //! stratified points that see the source. Pieces whose points and corners disagree lie on
-//! a shadow edge and are cut further, down to [`SHADOW_DEPTH`] levels. An isotropic source is thus
+//! a shadow edge and are cut further (`transfer::occlusion::cut_along_shadows`). An isotropic source is thus
 //! exact, and in a closed room its patches intercept its whole flux to round-off.
 //!
 //! Parallel light along `l` with normal illuminance `E_n`: each piece receives
@@ -15,7 +15,7 @@
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Frame, Mesh, Patch};
-use crate::kernel::occlusion::{POINTS, piece_visibility};
+use crate::transfer::occlusion::cut_along_shadows;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -25,8 +25,6 @@ use std::f64::consts::PI;
 pub const ETA: f64 = 0.15;
 /// Most levels of cutting for size.
 pub const MAX_DEPTH: u32 = 8;
-/// Most levels of cutting at shadow edges.
-pub const SHADOW_DEPTH: u32 = 5;
 
 /// The luminaires' direct light on the patches.
 #[derive(Debug, Clone, PartialEq)]
@@ -37,13 +35,6 @@ pub struct DirectLight {
     pub intercepted: Vec<f64>,
     /// Occlusion rays traced.
     pub rays: usize,
-}
-
-impl DirectLight {
-    /// The patch illuminance `E_s(i) = π Σ_d D(i,d)`, lx.
-    pub fn illuminance(&self, cells: usize) -> Vec<f64> {
-        self.arriving.chunks(cells).map(|c| PI * c.iter().sum::<f64>()).collect()
-    }
 }
 
 /// The direct light of `sources` on every patch of `mesh`, binned by `directions`.
@@ -73,7 +64,7 @@ pub fn direct_light(
                         Light::Parallel { direction, illuminance } => {
                             let cos = -direction.dot(patch.normal);
                             if cos > 0.0 {
-                                onto.parallel(*direction, illuminance * cos, &patch.polygon, 0);
+                                onto.parallel(*direction, illuminance * cos, &patch.polygon);
                             }
                         }
                     }
@@ -107,39 +98,27 @@ struct Onto<'a> {
 
 impl Onto<'_> {
     fn point(&mut self, source: &Source, s: DVec3, piece: &ConvexPolygon, depth: u32) {
-        let to_piece = piece.centroid() - s;
-        let distance = to_piece.length();
-        if depth < MAX_DEPTH && piece.diameter() > ETA * distance {
+        if depth < MAX_DEPTH && piece.diameter() > ETA * (piece.centroid() - s).length() {
             piece.split().iter().for_each(|p| self.point(source, s, p, depth + 1));
             return;
         }
-        let face = self.patch.face;
-        let (seen, uniform) = self.seen(piece, |visibility, x| visibility.visible(s, x, [NO_FACE, face]));
-        if !uniform && depth < SHADOW_DEPTH {
-            piece.split().iter().for_each(|p| self.point(source, s, p, depth + 1));
-            return;
-        }
-        let w = to_piece / distance;
-        let flux = source.intensity(w) * piece.solid_angle(s) * seen as f64 / POINTS as f64;
-        self.add(-w, flux);
+        let (visibility, face) = (self.visibility, self.patch.face);
+        let sees = |x: DVec3| visibility.visible(s, x, [NO_FACE, face]);
+        let mut rays = 0;
+        rays += cut_along_shadows(piece, depth, &sees, &mut |part, seen| {
+            let w = (part.centroid() - s).normalize();
+            self.add(-w, source.intensity(w) * part.solid_angle(s) * seen);
+        });
+        self.rays += rays;
     }
 
-    fn parallel(&mut self, direction: DVec3, normal_share: f64, piece: &ConvexPolygon, depth: u32) {
-        let face = self.patch.face;
-        let (seen, uniform) = self.seen(piece, |visibility, x| visibility.closest_hit(x, -direction, face).is_none());
-        if !uniform && depth < SHADOW_DEPTH {
-            piece.split().iter().for_each(|p| self.parallel(direction, normal_share, p, depth + 1));
-            return;
-        }
-        self.add(-direction, normal_share * piece.area() * seen as f64 / POINTS as f64);
-    }
-
-    /// How many of the stratified points of `piece` see the source, and whether its
-    /// points and corners agree.
-    fn seen(&mut self, piece: &ConvexPolygon, sees: impl Fn(&Visibility, DVec3) -> bool) -> (usize, bool) {
-        let test = piece_visibility(piece, |x| sees(self.visibility, x));
-        self.rays += test.rays;
-        (test.seen, test.uniform)
+    fn parallel(&mut self, direction: DVec3, normal_share: f64, piece: &ConvexPolygon) {
+        let (visibility, face) = (self.visibility, self.patch.face);
+        let escapes = |x: DVec3| visibility.closest_hit(x, -direction, face).is_none();
+        let mut flux = 0.0;
+        let rays = cut_along_shadows(piece, 0, &escapes, &mut |part, seen| flux += normal_share * part.area() * seen);
+        self.rays += rays;
+        self.add(-direction, flux);
     }
 
     /// `flux` arriving from the world direction `towards_source`.

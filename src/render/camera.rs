@@ -5,7 +5,7 @@
 //! stratified in both axes (N-rooks: sample `s` sits in column stratum `s` and in a
 //! shuffled row stratum), jittered by a hash of the pixel so images are reproducible.
 
-use super::random::Rng;
+use crate::random::Rng;
 use crate::scene::Camera;
 use glam::DVec3;
 
@@ -52,9 +52,9 @@ impl Projection {
     pub fn sample(&self, px: usize, py: usize, s: usize) -> DVec3 {
         let n = self.samples as u64;
         let pixel = (py * self.width + px) as u64;
-        let shift = Rng::new(pixel).next_u64() % n;
-        let mut jitter = Rng::new(pixel ^ ((s as u64 + 1) << 40));
-        let (jx, jy) = (jitter.unit(), jitter.unit());
+        let shift = Rng::keyed(pixel).next_u64() % n;
+        let mut jitter = Rng::keyed(pixel ^ ((s as u64 + 1) << 40));
+        let (jx, jy) = (jitter.uniform(), jitter.uniform());
         // Row strata are a shuffled permutation: a stride coprime to n, then a shift.
         let stride = if n.is_multiple_of(7) { 1 } else { 7 };
         let row = (s as u64 * stride + shift) % n;

@@ -4,7 +4,7 @@
 //! The light arriving at `q` per cell `d`, `I_d = (1/π) ∫_d L cosθ dω`, is split in two:
 //! * **direct**: every self-emitting patch `j` contributes `Le_j F^{d}_{q→P_j} V(q, P_j)`,
 //!   the exact contour-integral factor split by cells and the visibility fraction of the
-//!   kernel's four stratified points (`kernel::occlusion`): no noise from small lamps;
+//!   kernel's four stratified points (`transfer::occlusion`): no noise from small lamps;
 //!   every luminaire its exact light at `q` (`luminaire::arriving_at`, one shadow ray);
 //! * **indirect**: `rays` cosine-distributed rays (Latin-hypercube stratified); each adds
 //!   `(L_j(m) − Le_j)/rays` to the cell it leaves through, `L_j(m)` the stored luminance of
@@ -13,13 +13,13 @@
 //! A transmitting two-sided surface also gathers on its back side. The patch pattern of
 //! the solution then shows only through the light of the second reflection onward.
 
-use super::LitScene;
-use super::random::Rng;
-use crate::brdf::Block;
+use super::solved::Solved;
+use crate::random::Rng;
+use crate::material::Block;
 use crate::geometry::{Frame, NO_TWIN};
-use crate::kernel::contour::point_to_polygon;
-use crate::kernel::form_factor::{Binning, binned_point};
-use crate::kernel::occlusion::{POINTS, sample_points};
+use crate::transfer::contour::point_to_polygon;
+use crate::transfer::form_factor::{Binning, binned_point};
+use crate::transfer::occlusion::{POINTS, sample_points};
 use crate::luminaire::arriving_at;
 use glam::DVec3;
 use std::cell::RefCell;
@@ -34,7 +34,7 @@ thread_local! {
 }
 
 /// The luminance leaving `patch` at `q` towards the unit direction `towards`, gathered.
-pub fn final_gather(lit: &LitScene, patch: usize, q: DVec3, towards: DVec3, rays: usize, rng: &mut Rng) -> f64 {
+pub fn final_gather(lit: &Solved, patch: usize, q: DVec3, towards: DVec3, rays: usize, rng: &mut Rng) -> f64 {
     let p = &lit.mesh.patches[patch];
     let k = lit.directions.lookup(p.frame().local(towards));
     let block = &lit.blocks[p.material as usize];
@@ -58,7 +58,7 @@ fn reflected(block: &Block, k: usize, incident: &[f64], coefficient: impl Fn(&Bl
 /// `I_d(q)` for the cells of `frame` into `incident`, ignoring the face `face`.
 #[allow(clippy::too_many_arguments)]
 fn gather_incident(
-    lit: &LitScene,
+    lit: &Solved,
     q: DVec3,
     frame: &Frame,
     face: u32,
@@ -91,8 +91,8 @@ fn gather_incident(
     let shift = rng.next_u64() as usize % rays.max(1);
     let stride = if rays.is_multiple_of(7) { 1 } else { 7 };
     for r in 0..rays {
-        let u = (r as f64 + rng.unit()) / rays as f64;
-        let v = (((r * stride + shift) % rays) as f64 + rng.unit()) / rays as f64;
+        let u = (r as f64 + rng.uniform()) / rays as f64;
+        let v = (((r * stride + shift) % rays) as f64 + rng.uniform()) / rays as f64;
         let (radius, phi) = (u.sqrt(), TAU * v);
         let local = DVec3::new(radius * phi.cos(), radius * phi.sin(), (1.0 - u).max(0.0).sqrt());
         let w = frame.world(local);

@@ -1,7 +1,8 @@
 //! The luminance image of one camera: rayon over rows, samples averaged per pixel; a
 //! final gather's rays per pixel are spread over the pixel's samples.
 
-use super::{LitScene, Projection, Rng, Shading};
+use super::{LitScene, Projection, Shading};
+use crate::random::Rng;
 use crate::scene::Camera;
 use rayon::prelude::*;
 
@@ -31,7 +32,7 @@ pub fn render(scene: &LitScene, camera: &Camera) -> Image {
     let mut luminance = vec![0.0; width * height];
     luminance.par_chunks_mut(width).enumerate().for_each(|(py, row)| {
         for (px, pixel) in row.iter_mut().enumerate() {
-            let mut rng = Rng::new(((py * width + px) as u64) << 20 | 0xA5);
+            let mut rng = Rng::keyed(((py * width + px) as u64) << 20 | 0xA5);
             let sum: f64 = (0..view.samples)
                 .map(|s| scene.luminance_along(view.eye, view.sample(px, py, s), rays, &mut rng))
                 .sum();

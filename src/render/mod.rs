@@ -9,10 +9,10 @@ mod camera;
 mod gather;
 mod image;
 mod lit;
-mod random;
 mod smooth;
+mod solved;
 
 pub use camera::Projection;
 pub use image::{Image, render};
 pub use lit::{LitScene, Shading};
-pub use random::Rng;
+pub use solved::Solved;

@@ -7,7 +7,7 @@
 //! parallelograms). Surfaces are not blended into each other, so corners between walls
 //! stay sharp. This is a picture of the field, not a better solution: the gather is.
 
-use super::LitScene;
+use super::solved::Solved;
 use crate::geometry::Mesh;
 use glam::DVec3;
 use std::collections::HashMap;
@@ -46,7 +46,7 @@ impl Corners {
     }
 
     /// The interpolated luminance of `patch` at `q` towards the unit direction `towards`.
-    pub fn smooth(&self, lit: &LitScene, patch: usize, q: DVec3, towards: DVec3) -> f64 {
+    pub fn smooth(&self, lit: &Solved, patch: usize, q: DVec3, towards: DVec3) -> f64 {
         let p = &lit.mesh.patches[patch];
         let v = p.polygon.vertices();
         let weights = wachspress(v, p.normal, q);

@@ -6,44 +6,12 @@
 //! what was expected there). The runtime placement and the source term are in
 //! `crate::luminaire`; the distributions in `crate::photometry`.
 
-use super::SceneError;
-use super::validate::{Context, unique_names};
+use super::error::SceneError;
+use super::check::{Context, unique_names};
+use crate::luminaire::{Luminaire, LuminaireKind, PointLuminaire};
 use crate::photometry::{Distribution, read_ies, read_ldt};
-use glam::DVec3;
 use serde::Deserialize;
-use std::path::{Path, PathBuf};
-
-/// `[[luminaire]]`: a light source outside the unknowns of the system.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Luminaire {
-    pub name: String,
-    pub kind: LuminaireKind,
-}
-
-/// The closed set of luminaire kinds.
-#[derive(Debug, Clone, PartialEq)]
-pub enum LuminaireKind {
-    /// A point source with an intensity distribution, placed and aimed.
-    Point(PointLuminaire),
-    /// Parallel light (the sun): unit direction of travel and illuminance normal to the beam, lx.
-    Parallel { direction: DVec3, illuminance: f64 },
-}
-
-/// A photometric point source.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PointLuminaire {
-    /// m.
-    pub position: DVec3,
-    /// Unit aiming direction: γ = 0 of the distribution (default straight down).
-    pub aim: DVec3,
-    /// Turn of the C0 axis about the aim, degrees, counter-clockwise seen from behind.
-    pub rotate_deg: f64,
-    /// Maintenance or dimming factor on every intensity.
-    pub multiplier: f64,
-    pub distribution: Distribution,
-    /// The photometric file, when the distribution was read from one.
-    pub file: Option<PathBuf>,
-}
+use std::path::Path;
 
 /// `[[luminaire]]` as written.
 #[derive(Debug, Deserialize)]

@@ -4,7 +4,7 @@
 //! checked here (that is `validate`'s job); this module only turns toml/serde errors
 //! into [`SceneError`]s that name the file, the line, the table and the key.
 
-use super::SceneError;
+use super::error::SceneError;
 use serde::Deserialize;
 use std::path::Path;
 

@@ -2,8 +2,9 @@
 //! applications per iteration. Breakdown (`ρ = 0` or `ω = 0`) is reported, not hidden.
 
 use super::history::residual_norm;
-use super::{History, SolveError, SolveInfo, SolveParams, dot};
-use crate::kernel::LinOp;
+use super::history::History;
+use super::outcome::{SolveError, SolveInfo, SolveParams, dot};
+use super::LinOp;
 
 /// Solves `x = L0 + K x` by BiCGSTAB.
 pub fn bicgstab(

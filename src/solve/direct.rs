@@ -6,8 +6,9 @@
 //! fill-in is bounded by the same `8 n²`, which is what is checked.
 
 use super::history::residual_norm;
-use super::{History, SolveError, SolveInfo};
-use crate::kernel::{Explicit, LinOp};
+use super::history::History;
+use super::outcome::{SolveError, SolveInfo};
+use crate::kernel::Explicit;
 use faer::linalg::solvers::Solve;
 use faer::sparse::{SparseColMat, Triplet};
 use faer::{Col, Mat};

@@ -4,7 +4,8 @@
 //! each sweep costs another.
 
 use super::history::residual_norm;
-use super::{History, SolveError, SolveInfo, SolveParams};
+use super::history::History;
+use super::outcome::{SolveError, SolveInfo, SolveParams};
 use crate::kernel::Explicit;
 
 /// Solves `x = L0 + K x` by Gauss–Seidel sweeps over the explicit matrix `k`.

@@ -4,8 +4,9 @@
 //! 0.1 % is reported as stagnation.
 
 use super::history::residual_norm;
-use super::{History, SolveError, SolveInfo, SolveParams, dot};
-use crate::kernel::LinOp;
+use super::history::History;
+use super::outcome::{SolveError, SolveInfo, SolveParams, dot};
+use super::LinOp;
 
 /// Solves `x = L0 + K x` by GMRES with restart length `restart`.
 pub fn gmres(

@@ -1,7 +1,7 @@
 //! The record every solver keeps: relative residual, kernel applications and time per
 //! iterate, so that methods compare on the same axes.
 
-use super::{SolveError, SolveInfo, norm};
+use super::outcome::{SolveError, SolveInfo, norm};
 use std::time::Instant;
 
 pub struct History {
@@ -58,13 +58,13 @@ impl History {
 }
 
 /// `‖L0 + K x − x‖₂` with one kernel application into `scratch`.
-pub fn residual_norm(kernel: &dyn crate::kernel::LinOp, l0: &[f64], x: &[f64], scratch: &mut [f64]) -> f64 {
+pub fn residual_norm(kernel: &dyn super::LinOp, l0: &[f64], x: &[f64], scratch: &mut [f64]) -> f64 {
     kernel.apply(x, scratch);
     scratch.iter().zip(l0).zip(x).map(|((k, l), x)| (l + k - x) * (l + k - x)).sum::<f64>().sqrt()
 }
 
 /// The relative residual `‖L0 + K x − x‖₂ / ‖L0‖₂` of any `x` (e.g. a field rebuilt from
 /// basis coefficients, measured in the full system).
-pub fn relative_residual(kernel: &dyn crate::kernel::LinOp, l0: &[f64], x: &[f64]) -> f64 {
-    residual_norm(kernel, l0, x, &mut vec![0.0; x.len()]) / super::norm(l0)
+pub fn relative_residual(kernel: &dyn super::LinOp, l0: &[f64], x: &[f64]) -> f64 {
+    residual_norm(kernel, l0, x, &mut vec![0.0; x.len()]) / norm(l0)
 }

@@ -1,8 +1,9 @@
 //! The closed set of solvers, selected by name (`--method`, `--methods`), dispatched once.
 
-use super::{SolveError, SolveInfo, SolveParams, norm};
+use super::outcome::{SolveError, SolveInfo, SolveParams, norm};
 use super::{bicgstab, direct, direct_sparse, gauss_seidel, gmres, southwell, successive_approximation};
-use crate::kernel::{Explicit, Factored, Kernel, LinOp};
+use super::LinOp;
+use crate::kernel::{Explicit, Factored, Kernel};
 
 /// A method of `design.md` §4.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

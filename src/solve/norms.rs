@@ -6,8 +6,9 @@
 //! than estimated: for `ρ(K) < 1`, `(I − K)⁻¹ = Σ Kⁿ ≥ 0`, so `‖(I − K)⁻¹‖∞` is the largest
 //! entry of `(I − K)⁻¹ 1`, one linear solve (GMRES).
 
-use super::{SolveParams, gmres};
-use crate::kernel::{Explicit, LinOp, spmv};
+use super::outcome::SolveParams;
+use super::gmres;
+use crate::kernel::{Explicit, spmv};
 
 /// Norms of `K` and what they predict.
 #[derive(Debug, Clone, PartialEq)]

@@ -5,7 +5,8 @@
 //! application's worth of work, counted as one kernel application, plus one for the check).
 
 use super::history::residual_norm;
-use super::{History, SolveError, SolveInfo, SolveParams};
+use super::history::History;
+use super::outcome::{SolveError, SolveInfo, SolveParams};
 use crate::kernel::Explicit;
 
 /// Solves `x = L0 + K x` by shooting; `k` is the explicit kernel, `areas` the patch areas.

@@ -12,7 +12,7 @@
 //! `Σ_{m≤n} Kᵐ L0`. Luminaires are gathered exactly at every vertex (`luminaires.rs`);
 //! their light, reflected once in `L0`, is kept at the vertices up to `n`.
 
-use super::rng::Rng;
+use crate::random::Rng;
 use super::sampling::{self, is_delta};
 use super::world::World;
 use crate::visibility::NO_FACE;

@@ -5,7 +5,7 @@
 //! by `(seed, p)`, so the image does not depend on the thread count.
 
 use super::backward::{Start, TraceOptions, luminance_along};
-use super::rng::Rng;
+use crate::random::Rng;
 use super::statistics::Tally;
 use super::world::World;
 use crate::render::{Image, Projection};

@@ -20,7 +20,7 @@
 //! are added in chunk order, so the result depends only on the seed and the count.
 
 use super::backward::{LONGEST_PATH, TraceOptions};
-use super::rng::Rng;
+use crate::random::Rng;
 use super::sampling;
 use super::statistics::Tally;
 use super::world::World;

@@ -21,7 +21,6 @@ pub mod emitters;
 pub mod forward;
 pub mod luminaires;
 pub mod probe;
-pub mod rng;
 pub mod sampling;
 pub mod statistics;
 pub mod world;

@@ -1,5 +1,5 @@
 //! Backward estimates of the `[[probe]]` readings (`design.md` §7), with the meaning of
-//! `crate::probe`: the luminance (cd/m²) a meter at the point aimed along the normal reads
+//! `crate::readout::probe`: the luminance (cd/m²) a meter at the point aimed along the normal reads
 //! (on a surface: that surface's outgoing luminance along its normal), and the illuminance
 //! (lx) on a receiver at the point facing the normal, `E = ∫ L_in cosθ dω`.
 //!
@@ -9,7 +9,7 @@
 //! direct light at the point is added exactly.
 
 use super::backward::{Start, TraceOptions, luminance_along, power_heuristic};
-use super::rng::Rng;
+use crate::random::Rng;
 use super::sampling::cosine_direction;
 use super::statistics::Tally;
 use super::world::World;
@@ -38,11 +38,9 @@ pub fn trace_probes(world: &World, probes: &[Probe], samples: usize, options: &T
 fn read(world: &World, probe: &Probe, index: u64, samples: usize, options: &TraceOptions) -> ProbeEstimate {
     let (p, n) = (probe.position, probe.normal);
     let delta = 1e-4 * world.mesh.extent();
-    // The face under the probe, when it lies on a surface facing the same way.
-    let under = world
-        .landing(p + n * delta, -n, NO_FACE)
-        .filter(|hit| hit.point.distance(p) <= 2.0 * delta && world.mesh.patches[hit.patch].normal.dot(n) > 0.5);
-    let ignore = under.map_or(NO_FACE, |hit| world.mesh.patches[hit.patch].face);
+    // The patch under the probe, when it lies on a surface facing the same way.
+    let under = world.under(p, n);
+    let ignore = under.map_or(NO_FACE, |i| world.mesh.patches[i].face);
     let mut rays = 0;
     let mut rng = Rng::stream(options.seed, 2 * index);
     let mut luminance = Tally::default();

@@ -4,14 +4,14 @@
 //!
 //! Directions are in the patch's local frame, `l.z > 0` (the patch faces `l`); an incoming
 //! direction with `l'.z < 0` arrives through the surface (Lambert transmission only).
-//! The lobe samplers and formulas are those of `crate::brdf` (Phong: `cosⁿα` around the
+//! The lobe samplers and formulas are those of `crate::material` (Phong: `cosⁿα` around the
 //! mirror direction; GGX: `D(h) cosθ_h`), mixed with cosine sampling of the diffuse part
 //! in proportion to `k_d : k_s`. By reciprocity `ρ(l, l') = ρ(l', l)` the same sampler
 //! serves paths from the eye (backward) and from the source (forward).
 
-use crate::brdf::{ggx, mirror_image, phong};
+use crate::material::{ggx, mirror_image, phong};
 use crate::geometry::Frame;
-use crate::scene::MaterialModel;
+use crate::material::MaterialModel;
 use glam::DVec3;
 use std::f64::consts::{FRAC_1_PI, TAU};
 

@@ -5,9 +5,10 @@
 
 use super::emitters::Emitters;
 use super::luminaires::Luminaires;
-use crate::geometry::{Mesh, NO_TWIN};
-use crate::scene::{MaterialModel, Scene};
-use crate::visibility::Visibility;
+use crate::geometry::Mesh;
+use crate::scene::Scene;
+use crate::material::MaterialModel;
+use crate::visibility::{Faces, Visibility};
 use glam::DVec3;
 
 /// A ray's first surface, on the side it meets.
@@ -26,8 +27,7 @@ pub struct World {
     pub luminaires: Luminaires,
     /// The material model of every patch.
     materials: Vec<MaterialModel>,
-    /// The (up to two, back to back) patches of each face.
-    faces: Vec<[u32; 2]>,
+    faces: Faces,
 }
 
 impl World {
@@ -39,11 +39,7 @@ impl World {
 
     /// [`World::new`] with a ray caster already built over `mesh`.
     pub fn with_visibility(scene: &Scene, mesh: Mesh, visibility: Visibility) -> World {
-        let mut faces = vec![[NO_TWIN; 2]; mesh.faces];
-        for (i, p) in mesh.patches.iter().enumerate() {
-            let slot = &mut faces[p.face as usize];
-            slot[usize::from(slot[0] != NO_TWIN)] = i as u32;
-        }
+        let faces = Faces::of(&mesh);
         let materials = mesh.patches.iter().map(|p| scene.materials[p.material as usize].model.clone()).collect();
         let emitters = Emitters::of(&mesh);
         let luminaires = Luminaires::of(scene, &mesh);
@@ -56,23 +52,20 @@ impl World {
         &self.materials[i]
     }
 
+    /// The patch that the point `p` lies on, facing the unit `n`, if any.
+    pub fn under(&self, p: DVec3, n: DVec3) -> Option<usize> {
+        self.faces.under(&self.mesh, &self.visibility, p, n)
+    }
+
     /// The first surface along the unit `direction` from `origin`, ignoring face `ignore`;
     /// `None` for a miss and for the back of a one-sided surface (which absorbs).
     pub fn landing(&self, origin: DVec3, direction: DVec3, ignore: u32) -> Option<Landing> {
-        let hit = self.visibility.closest_hit(origin, direction, ignore)?;
-        let facing = |i: u32| i != NO_TWIN && self.mesh.patches[i as usize].normal.dot(direction) < 0.0;
-        let [a, b] = self.faces[hit.face as usize];
-        let patch = if facing(a) {
-            a
-        } else if facing(b) {
-            b
-        } else {
-            return None;
-        };
+        let (_, patch, distance) = self.faces.landing(&self.mesh, &self.visibility, origin, direction, ignore)?;
+        let patch = patch?;
         // The hit distance is single precision: put the point back onto the patch's plane.
-        let p = &self.mesh.patches[patch as usize];
-        let point = origin + direction * hit.distance;
+        let p = &self.mesh.patches[patch];
+        let point = origin + direction * distance;
         let point = point - p.normal * p.normal.dot(point - p.centroid);
-        Some(Landing { patch: patch as usize, point })
+        Some(Landing { patch, point })
     }
 }

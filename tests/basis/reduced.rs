@@ -8,7 +8,8 @@ use ugo::basis::{Basis, BasisError, Factorization, Reduced};
 use ugo::directions::DirectionSet;
 use ugo::kernel::{Explicit, Factored};
 use ugo::model::Model;
-use ugo::scene::{Emission, MaterialModel, Shape};
+use ugo::geometry::{Emission, Shape};
+use ugo::material::MaterialModel;
 use ugo::solve::{Method, SolveParams, System, solve};
 
 const TIGHT: SolveParams = SolveParams { tolerance: 1e-12, max_iterations: 5000 };

@@ -4,9 +4,9 @@
 
 use super::{compare, solve_model, solved};
 use std::f64::consts::PI;
-use ugo::brdf::Block;
+use ugo::readout::illuminance::patch_illuminance;
 use ugo::kernel::Factored;
-use ugo::scene::MaterialModel;
+use ugo::material::MaterialModel;
 use ugo::solve::Method;
 use ugo::solve::orders::reflection_orders;
 
@@ -31,7 +31,7 @@ fn cie_5_8_interreflection_in_a_cube_up_to_rho_0_95() {
     let model = &mut s.model;
     let area: f64 = model.mesh.patches.iter().map(|p| p.area).sum();
     let direct: f64 =
-        model.mesh.patches.iter().zip(model.direct.illuminance(1)).map(|(p, e)| p.area * e).sum::<f64>() / area;
+        model.mesh.patches.iter().zip(patch_illuminance(&model.direct.arriving, 1)).map(|(p, e)| p.area * e).sum::<f64>() / area;
     compare("5.8", &[("E_dir,avg", 104.17, direct)]);
     let indirect = |model: &ugo::model::Model, x: &[f64]| {
         let mut gx = vec![0.0; x.len()];
@@ -42,7 +42,7 @@ fn cie_5_8_interreflection_in_a_cube_up_to_rho_0_95() {
     let labels: Vec<String> = TABLE_20.iter().map(|(rho, _)| format!("ρ = {rho:.2}")).collect();
     for (&(rho, reference), label) in TABLE_20.iter().zip(&labels) {
         let material = MaterialModel::Lambert { reflectance: rho, transmittance: 0.0 };
-        model.kernel.blocks[0] = Block::of(&material, &model.kernel.directions);
+        model.kernel.blocks[0] = material.block(&model.kernel.directions);
         model.l0 = model.source_term();
         let x = solve_model(model, Method::Direct);
         rows.push((label.as_str(), reference, indirect(model, &x)));

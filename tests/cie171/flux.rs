@@ -2,7 +2,8 @@
 //! lumen lands on a surface, `Φ_surfaces / Φ = 1`.
 
 use super::{compare, solved};
-use ugo::energy::EnergyBalance;
+use ugo::readout::illuminance::patch_illuminance;
+use ugo::readout::energy::EnergyBalance;
 
 #[test]
 fn cie_5_4_flux_lands_on_the_surfaces() {
@@ -10,7 +11,7 @@ fn cie_5_4_flux_lands_on_the_surfaces() {
     let flux = s.model.sources[0].flux().expect("a point source");
     let landed = s.model.direct.intercepted[0];
     let areas: f64 = s.model.mesh.patches.iter().map(|p| p.area).sum();
-    let illuminance = s.model.direct.illuminance(1);
+    let illuminance = patch_illuminance(&s.model.direct.arriving, 1);
     let weighted: f64 = s.model.mesh.patches.iter().zip(&illuminance).map(|(p, e)| p.area * e).sum();
     eprintln!(
         "5.4: Φ = {flux:.6} lm (file 10000 lm), on the {areas} m² of surfaces {landed:.6} lm, Σ A E_s = {weighted:.6} lm"

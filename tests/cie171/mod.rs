@@ -12,10 +12,10 @@ mod point_source;
 mod reflection;
 
 use std::path::Path;
-use ugo::field::Field;
+use ugo::readout::field::Field;
 use ugo::kernel::{Explicit, Factored};
 use ugo::model::{Model, ModelOptions};
-use ugo::probe::{ProbeReading, read_probes};
+use ugo::readout::probe::{ProbeReading, read_probes};
 use ugo::scene::Scene;
 use ugo::solve::{Method, SolveParams, System, solve};
 

@@ -24,7 +24,7 @@ fn cie_5_7_reflection_past_an_obstruction() {
     let s = solved("5.7-obstruction");
     let (e_v, rho) = (10_000.0, 0.6);
     let wall = s.scene.surface_index("S2").unwrap() as u32;
-    let lit = s.model.direct.illuminance(1);
+    let lit = patch_illuminance(&s.model.direct.arriving, 1);
     for (p, e) in s.model.mesh.patches.iter().zip(&lit) {
         if p.surface == wall {
             assert!((e / e_v - 1.0).abs() < 1e-9, "the sun lights S2 evenly with E_v: {e}");

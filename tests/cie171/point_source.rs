@@ -4,7 +4,7 @@
 use super::{compare, solved};
 use ugo::luminaire::Light;
 use ugo::photometry::Distribution;
-use ugo::probe::read_probes;
+use ugo::readout::probe::read_probes;
 
 /// CIE 171:2006 Table 11, lx.
 const TABLE_11: [(&str, f64); 10] = [
@@ -37,7 +37,7 @@ fn an_analytic_lambertian_source_gives_the_closed_form_exactly() {
     let Light::Point { distribution, .. } = &mut s.model.sources[0].light else { panic!("a point source") };
     *distribution = Distribution::Lambertian { peak: 1000.0 };
     let exact = |x: f64, z: f64| 1000.0 * 9.0 / (9.0 + x * x + z * z).powi(2);
-    let field = ugo::field::Field::from_unknowns(&s.x, 1);
+    let field = ugo::readout::field::Field::from_unknowns(&s.x, 1);
     for (probe, reading) in s.scene.probes.iter().zip(read_probes(&s.scene.probes, &s.model, &field)) {
         let e = exact(probe.position.x, probe.position.z);
         assert!((reading.illuminance / e - 1.0).abs() < 1e-12, "{}: {} vs {e}", probe.name, reading.illuminance);

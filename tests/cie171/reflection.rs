@@ -24,7 +24,7 @@ const TABLE_17: [(&str, f64); 13] = [
 fn cie_5_6_configuration_factors_of_a_lit_floor() {
     let s = solved("5.6-diffuse-reflection");
     let (e_hz, rho) = (10_000.0, 0.3);
-    let lit = s.model.direct.illuminance(1);
+    let lit = patch_illuminance(&s.model.direct.arriving, 1);
     assert!(
         lit.iter().all(|e| (e / e_hz - 1.0).abs() < 1e-12),
         "parallel light from the zenith lights the floor evenly"

@@ -4,8 +4,8 @@ use crate::support::{build, furnace, lambert, scene, surface};
 use glam::DVec3;
 use ugo::geometry::Mesh;
 use ugo::kernel::facing;
-use ugo::kernel::form_factor::{Quadrature, form_factor};
-use ugo::scene::{Emission, Shape};
+use ugo::transfer::form_factor::{Quadrature, form_factor};
+use ugo::geometry::{Emission, Shape};
 
 /// Raw (unbalanced, unoccluded) form factors of every facing pair.
 fn raw_matrix(mesh: &Mesh) -> Vec<Vec<f64>> {
@@ -42,7 +42,7 @@ fn check_raw_closure_and_reciprocity(mesh: &Mesh) {
 #[test]
 fn raw_form_factors_of_a_closed_box_close_and_are_reciprocal() {
     let s = furnace(1.0, 0.5, 1.0, 0.25);
-    check_raw_closure_and_reciprocity(&Mesh::build(&s, 0.25));
+    check_raw_closure_and_reciprocity(&Mesh::build(&s.surfaces, 0.25));
 }
 
 #[test]
@@ -50,7 +50,7 @@ fn raw_form_factors_of_a_closed_sphere_close_and_are_reciprocal() {
     let shape = Shape::Sphere { center: DVec3::ZERO, radius: 1.0 };
     let s =
         scene(vec![lambert("grey", 0.5)], vec![surface("sphere", shape, 0, true, Some(Emission::Luminance(1.0)))], 0.5);
-    check_raw_closure_and_reciprocity(&Mesh::build(&s, 0.5));
+    check_raw_closure_and_reciprocity(&Mesh::build(&s.surfaces, 0.5));
 }
 
 #[test]

@@ -2,8 +2,8 @@
 
 use crate::support::{build_with, furnace};
 use ugo::directions::DirectionSet;
-use ugo::kernel::form_factor::{Binning, Quadrature, binned_pair_integral, pair_integral};
-use ugo::kernel::{Explicit, Factored, LinOp, facing};
+use ugo::transfer::form_factor::{Binning, Quadrature, binned_pair_integral, pair_integral};
+use ugo::kernel::{Explicit, Factored, facing};
 
 #[test]
 fn binned_pieces_sum_to_the_one_cell_form_factors() {
@@ -57,7 +57,7 @@ fn cell_rows_of_a_closed_room_carry_their_projected_solid_angle() {
 #[test]
 fn explicit_and_factored_kernels_agree() {
     let mut scene = furnace(1.0, 0.5, 1.0, 0.34);
-    scene.materials[0].model = ugo::scene::MaterialModel::Phong { diffuse: 0.2, specular: 0.6, exponent: 20.0 };
+    scene.materials[0].model = ugo::material::MaterialModel::Phong { diffuse: 0.2, specular: 0.6, exponent: 20.0 };
     let model = build_with(&scene, DirectionSet::hemisphere(24));
     let explicit = Explicit(model.kernel.explicit(u64::MAX).unwrap());
     let factored = Factored::new(&model.kernel);

@@ -2,8 +2,8 @@
 
 use glam::DVec3;
 use ugo::geometry::{ConvexPolygon, Patch};
-use ugo::kernel::contour::point_to_polygon;
-use ugo::kernel::form_factor::{Quadrature, form_factor};
+use ugo::transfer::contour::point_to_polygon;
+use ugo::transfer::form_factor::{Quadrature, form_factor};
 
 fn square(origin: DVec3, u: DVec3, v: DVec3) -> Patch {
     Patch::from_polygon(ConvexPolygon::quad(origin, origin + u, origin + u + v, origin + v), 0, 0, 0)

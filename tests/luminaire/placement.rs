@@ -5,7 +5,7 @@ use super::{point, table};
 use glam::DVec3;
 use std::f64::consts::PI;
 use ugo::luminaire::{Source, frame};
-use ugo::scene::LuminaireKind;
+use ugo::luminaire::LuminaireKind;
 
 #[test]
 fn a_downlight_frame_has_c0_along_x_and_c90_counter_clockwise_seen_from_above() {
@@ -57,7 +57,7 @@ fn the_multiplier_and_the_tilt_factor_scale_the_flux() {
     let mut lamp = point("lamp", DVec3::ZERO, DVec3::NEG_Y, table("c-isotropic-tilt-2002.ies"));
     let nominal = 4.0 * PI * 1000.0;
     assert!((Source::of(&lamp).flux().unwrap() / nominal - 1.0).abs() < 1e-12, "aimed down: tilt 0°, factor 1");
-    let aimed = |lamp: &mut ugo::scene::Luminaire, aim: DVec3| {
+    let aimed = |lamp: &mut ugo::luminaire::Luminaire, aim: DVec3| {
         let LuminaireKind::Point(p) = &mut lamp.kind else { unreachable!() };
         p.aim = aim.normalize();
         p.multiplier = 0.5;

@@ -6,13 +6,16 @@ use super::{point, table};
 use crate::support::{build, build_with, lambert, material, rectangle, scene, surface};
 use glam::DVec3;
 use std::f64::consts::PI;
+use ugo::readout::illuminance::patch_illuminance;
 use ugo::directions::DirectionSet;
-use ugo::energy::EnergyBalance;
-use ugo::field::Field;
+use ugo::readout::energy::EnergyBalance;
+use ugo::readout::field::Field;
 use ugo::kernel::Factored;
 use ugo::photometry::Distribution;
-use ugo::probe::read_probes;
-use ugo::scene::{Emission, MaterialModel, Probe, Scene, Shape};
+use ugo::readout::probe::read_probes;
+use ugo::scene::{Probe, Scene};
+use ugo::geometry::{Emission, Shape};
+use ugo::material::MaterialModel;
 use ugo::solve::{Method, SolveParams, System, solve};
 
 /// A closed 3 × 2.5 × 4 m room of reflectance `rho`, seen from inside.
@@ -79,7 +82,7 @@ fn a_lambertian_receiver_gets_rho_e_over_pi_in_every_cell_at_any_k() {
     s.luminaires.push(point("lamp", DVec3::new(0.7, 1.5, 1.2), DVec3::NEG_Y, Distribution::Lambertian { peak: 800.0 }));
     let one = build(&s);
     let many = build_with(&s, DirectionSet::hemisphere(16));
-    let e = one.direct.illuminance(1);
+    let e = patch_illuminance(&one.direct.arriving, 1);
     for (i, e) in e.iter().enumerate() {
         assert!((one.l0[i] - 0.5 * e / PI).abs() < 1e-12 * e);
         for k in 0..16 {
@@ -101,7 +104,7 @@ fn a_mirror_reflects_the_luminaire_into_the_mirror_cell() {
     ));
     let directions = DirectionSet::hemisphere(64);
     let model = build_with(&s, directions.clone());
-    let e = model.direct.illuminance(64);
+    let e = patch_illuminance(&model.direct.arriving, 64);
     for (i, patch) in model.mesh.patches.iter().enumerate() {
         let l0 = &model.l0[i * 64..(i + 1) * 64];
         let exitance: f64 = l0.iter().zip(directions.cells()).map(|(l, c)| l * c.projected).sum();
@@ -141,7 +144,7 @@ fn shadows_are_cast_on_patches_and_at_probes() {
     assert_eq!(probes[0].direct, 0.0, "behind the blocker");
     let d: f64 = (DVec3::new(1.75, 0.0, 1.0) - DVec3::new(0.75, 2.0, 1.0)).length();
     assert!((probes[1].direct - 100.0 * 2.0 / d.powi(3)).abs() < 1e-9, "I cosθ / r²: {}", probes[1].direct);
-    let e = model.direct.illuminance(1);
+    let e = patch_illuminance(&model.direct.arriving, 1);
     for (i, p) in model.mesh.patches.iter().enumerate().filter(|(_, p)| p.surface == 0) {
         let (x, z) = (p.centroid.x, p.centroid.z);
         let exact = |x: f64, z: f64| {

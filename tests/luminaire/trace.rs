@@ -7,13 +7,15 @@ use super::{point, table};
 use crate::support::{build_with, lambert, rectangle, scene, solve, surface};
 use glam::DVec3;
 use std::f64::consts::PI;
+use ugo::readout::illuminance::patch_illuminance;
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
 use ugo::photometry::Distribution;
-use ugo::scene::{LuminaireKind, Probe, Scene};
+use ugo::scene::{Probe, Scene};
+use ugo::luminaire::LuminaireKind;
 use ugo::trace::{Start, TraceOptions, World, agreement, luminance_along, trace_photons, trace_probes};
 
-fn floor_under(luminaires: Vec<ugo::scene::Luminaire>) -> Scene {
+fn floor_under(luminaires: Vec<ugo::luminaire::Luminaire>) -> Scene {
     let floor = rectangle([-1.0, 0.0, -1.0], [0.0, 0.0, 2.0], [2.0, 0.0, 0.0]);
     let mut s = scene(vec![lambert("grey", 0.5)], vec![surface("floor", floor, 0, false, None)], 0.25);
     s.luminaires = luminaires;
@@ -25,7 +27,7 @@ fn backward_paths_and_probes_gather_luminaires_exactly() {
     let lamp = DVec3::new(0.2, 1.0, -0.3);
     let mut s = floor_under(vec![point("lamp", lamp, DVec3::NEG_Y, Distribution::Lambertian { peak: 1000.0 })]);
     s.probes.push(Probe { name: "on".into(), position: DVec3::new(0.5, 0.0, 0.4), normal: DVec3::Y });
-    let world = World::new(&s, Mesh::build(&s, 0.25));
+    let world = World::new(&s, Mesh::build(&s.surfaces, 0.25));
     let exact = |q: DVec3| {
         let r = q - lamp;
         1000.0 * (r.y / r.length()).powi(2) / r.length_squared()
@@ -37,7 +39,7 @@ fn backward_paths_and_probes_gather_luminaires_exactly() {
         "{reading:?}"
     );
     assert!((reading.luminance.0 / (0.5 * exact(q) / PI) - 1.0).abs() < 1e-6, "{reading:?}");
-    let mut rng = ugo::trace::rng::Rng::stream(7, 0);
+    let mut rng = ugo::random::Rng::stream(7, 0);
     let eye = DVec3::new(-0.4, 0.7, 0.3);
     let (mut rays, target) = (0, DVec3::new(-0.1, 0.0, 0.6));
     let l = luminance_along(
@@ -55,7 +57,7 @@ fn photons_from_an_ies_luminaire_and_the_sun_agree_with_the_solve() {
     let mut spot = point("spot", DVec3::new(0.3, 0.8, -0.2), DVec3::new(0.4, -1.0, 0.2), table("c-full-2019.ies"));
     let LuminaireKind::Point(p) = &mut spot.kind else { unreachable!() };
     p.rotate_deg = 25.0;
-    let sun = ugo::scene::Luminaire {
+    let sun = ugo::luminaire::Luminaire {
         name: "sun".into(),
         kind: LuminaireKind::Parallel { direction: DVec3::new(0.3, -0.8, 0.5).normalize(), illuminance: 2000.0 },
     };
@@ -76,7 +78,7 @@ fn photons_from_an_ies_luminaire_and_the_sun_agree_with_the_solve() {
     );
     assert_eq!(a.compared, x.len(), "every bin of the lit floor got photons");
     assert!((0.8..1.2).contains(&a.rms_z) && a.max_abs_z < 5.0, "{a:?}");
-    let e = model.direct.illuminance(16);
+    let e = patch_illuminance(&model.direct.arriving, 16);
     let worst = estimate
         .illuminance
         .iter()

@@ -6,7 +6,6 @@ use crate::support::{build, corner_factor, solve};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use ugo::brdf::Block;
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
 use ugo::io::read_solution;
@@ -34,9 +33,9 @@ fn emitter(two_sided: bool) -> LitScene {
          two_sided = {two_sided}\nemission = {{ luminance = 7.0 }}\n"
     );
     let scene = Scene::parse(Path::new("lamp.toml"), text).expect("valid scene");
-    let mesh = Mesh::build(&scene, 0.25);
+    let mesh = Mesh::build(&scene.surfaces, 0.25);
     let luminance = mesh.emission.clone();
-    let blocks = vec![Block::of(&scene.materials[0].model, &DirectionSet::single())];
+    let blocks = vec![scene.materials[0].model.block(&DirectionSet::single())];
     LitScene::new(mesh, DirectionSet::single(), luminance, blocks)
 }
 

@@ -5,7 +5,8 @@ use super::{BASE, CASE, TempDir, assert_error, parse, rejected};
 use glam::DVec3;
 use std::path::Path;
 use ugo::photometry::Distribution;
-use ugo::scene::{LuminaireKind, Scene};
+use ugo::scene::Scene;
+use ugo::luminaire::LuminaireKind;
 
 /// A floor and `luminaires`, nothing else emitting.
 fn with(luminaires: &str) -> String {
@@ -16,7 +17,7 @@ fn with(luminaires: &str) -> String {
 
 const LAMP: &str = "[[luminaire]] \"lamp\" (#1)";
 
-fn point(scene: &Scene, i: usize) -> &ugo::scene::PointLuminaire {
+fn point(scene: &Scene, i: usize) -> &ugo::luminaire::PointLuminaire {
     match &scene.luminaires[i].kind {
         LuminaireKind::Point(p) => p,
         other => panic!("{other:?}"),

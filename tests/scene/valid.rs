@@ -2,7 +2,9 @@
 
 use super::{BASE, TempDir, lit, parse};
 use glam::DVec3;
-use ugo::scene::{Emission, MaterialModel, Scene, Shape};
+use ugo::scene::Scene;
+use ugo::geometry::{Emission, Shape};
+use ugo::material::MaterialModel;
 
 const EVERY_SHAPE: &str = r#"
 [scene]

@@ -1,7 +1,7 @@
 //! The white furnace `L = L0/(1 − ρ)` and the divergence of a lossless closed scene.
 
 use crate::support::{build, furnace};
-use ugo::energy::EnergyBalance;
+use ugo::readout::energy::EnergyBalance;
 use ugo::kernel::Factored;
 use ugo::solve::{SolveError, SolveParams, successive_approximation};
 

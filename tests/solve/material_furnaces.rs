@@ -18,7 +18,7 @@
 use crate::support::{build_with, furnace_of, solve};
 use ugo::directions::DirectionSet;
 use ugo::model::Model;
-use ugo::scene::MaterialModel;
+use ugo::material::MaterialModel;
 
 const PATCH: f64 = 0.2;
 

@@ -4,7 +4,7 @@ use crate::support::{build_with, furnace, furnace_of};
 use ugo::directions::DirectionSet;
 use ugo::kernel::{Explicit, Factored};
 use ugo::model::Model;
-use ugo::scene::MaterialModel;
+use ugo::material::MaterialModel;
 use ugo::solve::norms::Norms;
 use ugo::solve::orders::reflection_orders;
 use ugo::solve::{Method, SolveError, SolveParams, System, solve};
@@ -26,7 +26,7 @@ fn relative_difference(a: &[f64], b: &[f64]) -> f64 {
 /// A glossy box with a diffuse emitting floor: phong walls, K = 16.
 fn glossy_model() -> Model {
     let mut scene = furnace_of(MaterialModel::Phong { diffuse: 0.3, specular: 0.5, exponent: 20.0 }, 1.0, 0.34);
-    scene.surfaces[0].emission = Some(ugo::scene::Emission::Luminance(1.0));
+    scene.surfaces[0].emission = Some(ugo::geometry::Emission::Luminance(1.0));
     build_with(&scene, DirectionSet::hemisphere(16))
 }
 

@@ -18,9 +18,9 @@ use crate::support::{build, build_with, corner_factor, mean_over, solve};
 use std::f64::consts::PI;
 use std::path::Path;
 use ugo::directions::DirectionSet;
-use ugo::field::Field;
+use ugo::readout::field::Field;
 use ugo::model::Model;
-use ugo::probe::{ProbeReading, read_probes};
+use ugo::readout::probe::{ProbeReading, read_probes};
 use ugo::scene::Scene;
 
 pub const LUMINANCE: f64 = 1000.0;

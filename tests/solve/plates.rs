@@ -4,10 +4,10 @@ use crate::support::corner_factor;
 use glam::DVec3;
 use std::f64::consts::PI;
 use std::path::Path;
-use ugo::field::Field;
+use ugo::readout::field::Field;
 use ugo::kernel::Factored;
 use ugo::model::{Model, ModelOptions};
-use ugo::probe::read_probes;
+use ugo::readout::probe::read_probes;
 use ugo::scene::Scene;
 use ugo::solve::{SolveParams, successive_approximation};
 

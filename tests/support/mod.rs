@@ -5,7 +5,9 @@ use std::path::PathBuf;
 use ugo::directions::DirectionSet;
 use ugo::kernel::Factored;
 use ugo::model::{Model, ModelOptions};
-use ugo::scene::{Discretization, Emission, Material, MaterialModel, Scene, Shape, SolverSettings, Surface};
+use ugo::scene::{Discretization, Material, Scene, SolverSettings};
+use ugo::geometry::{Emission, Shape, Surface};
+use ugo::material::MaterialModel;
 use ugo::solve::{SolveParams, successive_approximation};
 
 pub fn lambert(name: &str, reflectance: f64) -> Material {

@@ -9,7 +9,7 @@
 use crate::support::build;
 use glam::DVec3;
 use std::path::Path;
-use ugo::brdf::Block;
+use ugo::material::Block;
 use ugo::render::{LitScene, render};
 use ugo::scene::{Camera, Scene};
 use ugo::trace::{TraceOptions, World, agreement, trace_camera};

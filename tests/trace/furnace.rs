@@ -6,13 +6,14 @@ use crate::support::furnace;
 use glam::DVec3;
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
-use ugo::scene::{Camera, MaterialModel, Scene};
+use ugo::scene::{Camera, Scene};
+use ugo::material::MaterialModel;
 use ugo::trace::{TraceOptions, World, agreement, trace_camera, trace_photons};
 
 const EXACT: f64 = 5.0;
 
 fn world(scene: &Scene) -> World {
-    World::new(scene, Mesh::build(scene, scene.discretization.patch_size))
+    World::new(scene, Mesh::build(&scene.surfaces, scene.discretization.patch_size))
 }
 
 fn inside() -> Camera {

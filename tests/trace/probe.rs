@@ -12,7 +12,7 @@ use ugo::trace::{TraceOptions, World, trace_probes};
 #[test]
 fn probes_read_the_opal_closed_forms() {
     let scene = Scene::load(Path::new("cases/opal-diffuser.toml")).unwrap();
-    let world = World::new(&scene, Mesh::build(&scene, scene.discretization.patch_size));
+    let world = World::new(&scene, Mesh::build(&scene.surfaces, scene.discretization.patch_size));
     let r = trace_probes(&world, &scene.probes, 65_536, &TraceOptions::default());
     let centre = factor(0.5, 0.5);
     let checks = [

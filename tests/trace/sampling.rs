@@ -9,8 +9,8 @@
 
 use glam::DVec3;
 use std::f64::consts::{FRAC_1_PI, PI, TAU};
-use ugo::scene::MaterialModel;
-use ugo::trace::rng::Rng;
+use ugo::material::MaterialModel;
+use ugo::random::Rng;
 use ugo::trace::sampling::{evaluate, pdf, sample};
 
 const N: usize = 200_000;

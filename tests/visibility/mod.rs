@@ -8,7 +8,7 @@ use ugo::visibility::{NO_FACE, Visibility, VisibilityOptions};
 
 fn cornell() -> Mesh {
     let scene = Scene::load(Path::new("cases/cornell-box.toml")).unwrap();
-    Mesh::build(&scene, 0.05)
+    Mesh::build(&scene.surfaces, 0.05)
 }
 
 #[test]
@@ -61,7 +61,7 @@ fn the_wide_and_binary_hierarchies_answer_every_query_alike() {
     let binary = Visibility::build_with(&mesh, VisibilityOptions { wide: false, ..VisibilityOptions::default() });
     let points: Vec<(DVec3, usize)> = (0..mesh.len())
         .step_by(7)
-        .flat_map(|i| ugo::kernel::occlusion::sample_points(&mesh.patches[i]).map(|x| (x, i)))
+        .flat_map(|i| ugo::transfer::occlusion::sample_points(&mesh.patches[i]).map(|x| (x, i)))
         .collect();
     let (mut tested, mut aligned, mut different) = (0, 0, 0);
     for (i, &(a, pa)) in points.iter().enumerate() {

@@ -5,7 +5,8 @@
 
 use rayon::prelude::*;
 use std::time::Instant;
-use ugo::kernel::{LinOp, TransportMatrix};
+use ugo::kernel::TransportMatrix;
+use ugo::solve::LinOp;
 
 /// Elements per triad array (3 × 256 MiB: far beyond any cache).
 const TRIAD: usize = 1 << 25;

@@ -10,6 +10,7 @@ use rayon::prelude::*;
 use std::time::Instant;
 use ugo::geometry::Mesh;
 use ugo::kernel::facing;
+use ugo::random::Rng;
 use ugo::visibility::{BuildPreset, NO_FACE, Visibility, VisibilityOptions};
 
 /// A segment between two faces, ignoring both.
@@ -56,28 +57,30 @@ pub fn all_layouts(mesh: &Mesh, segments: &[Segment]) {
     }
 }
 
-/// `count` segments between interior points of random facing patch pairs (reproducible).
-pub fn segments(mesh: &Mesh, count: usize) -> Vec<Segment> {
+/// `count` segments between interior points of random facing patch pairs (reproducible),
+/// or `None` when no facing pair turns up in `1000 · count` draws (a scene of one plate,
+/// or of luminaires and a floor only, has nothing to time).
+pub fn segments(mesh: &Mesh, count: usize) -> Option<Vec<Segment>> {
     let n = mesh.len() as u64;
-    let mut state = 0x2545_F491_4F6C_DD1Du64;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        state
-    };
+    if n < 2 {
+        return None;
+    }
+    let mut rng = Rng::stream(0x2545_F491_4F6C_DD1D, 0);
     let mut out = Vec::with_capacity(count);
-    while out.len() < count {
-        let (i, j) = ((next() % n) as usize, (next() % n) as usize);
+    for _ in 0..1000 * count.max(1) {
+        if out.len() == count {
+            break;
+        }
+        let (i, j) = ((rng.next_u64() % n) as usize, (rng.next_u64() % n) as usize);
         let (a, b) = (&mesh.patches[i], &mesh.patches[j]);
         if i == j || !facing(a, b) {
             continue;
         }
-        let pa = ugo::kernel::occlusion::sample_points(a)[(next() % 4) as usize];
-        let pb = ugo::kernel::occlusion::sample_points(b)[(next() % 4) as usize];
+        let pa = ugo::transfer::occlusion::sample_points(a)[(rng.next_u64() % 4) as usize];
+        let pb = ugo::transfer::occlusion::sample_points(b)[(rng.next_u64() % 4) as usize];
         out.push((pa, pb, [a.face, b.face]));
     }
-    out
+    (!out.is_empty()).then_some(out)
 }
 
 /// Times the dense LU (factor and solve) of an `n × n` matrix like `I − K` in faer and in

@@ -13,8 +13,8 @@ mod layouts;
 mod scaling;
 
 use super::load;
-use crate::Discretize;
-use anyhow::{Context, Result};
+use super::options::Discretize;
+use anyhow::{Context, Result, bail};
 use serde_json::json;
 use std::path::PathBuf;
 use ugo::kernel::Factored;
@@ -58,7 +58,14 @@ pub fn run(o: &BenchOptions) -> Result<()> {
     println!("ugo bench: {} ({} threads)", scene.name, threads);
 
     let mesh = Model::mesh(&scene, &options);
-    let segments = layouts::segments(&mesh, o.rays);
+    let Some(segments) = layouts::segments(&mesh, o.rays) else {
+        bail!(
+            "{}: no two of its {} patches face each other, so there are no occlusion rays or kernel entries \
+             to time; bench a case with interreflection (e.g. cases/cornell-box.toml)",
+            o.case.display(),
+            mesh.len()
+        );
+    };
     let visibility = Visibility::build(&mesh);
     let rays = layouts::rays_per_second(&visibility, &segments).max(layouts::rays_per_second(&visibility, &segments));
     println!(

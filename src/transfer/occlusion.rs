@@ -83,3 +83,26 @@ pub fn piece_visibility(polygon: &ConvexPolygon, sees: impl Fn(DVec3) -> bool) -
     let uniform = !partial && corners.iter().all(|v| sees(v.lerp(centroid, 1e-3)) == (seen == POINTS));
     PieceVisibility { seen, uniform, rays: POINTS + if partial { 0 } else { corners.len() } }
 }
+
+/// Most levels of cutting a partly visible piece into quarters along a shadow edge.
+pub const SHADOW_DEPTH: u32 = 6;
+
+/// Cuts `piece` (already cut `depth` times) into quarters while its test points and corners
+/// disagree about `sees` (a shadow edge crosses it), down to [`SHADOW_DEPTH`] levels, and
+/// hands every final piece that some of its points see to `visit` with the fraction of its
+/// points that see. Returns the rays traced.
+pub fn cut_along_shadows(
+    piece: &ConvexPolygon,
+    depth: u32,
+    sees: &dyn Fn(DVec3) -> bool,
+    visit: &mut dyn FnMut(&ConvexPolygon, f64),
+) -> usize {
+    let test = piece_visibility(piece, sees);
+    if !test.uniform && depth < SHADOW_DEPTH {
+        return test.rays + piece.split().iter().map(|part| cut_along_shadows(part, depth + 1, sees, visit)).sum::<usize>();
+    }
+    if test.seen > 0 {
+        visit(piece, test.seen as f64 / POINTS as f64);
+    }
+    test.rays
+}

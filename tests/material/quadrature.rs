@@ -1,6 +1,6 @@
 //! Independent reference integrals for the glossy models, written from the formulas alone:
 //! composite Gauss–Legendre over the outgoing polar and azimuth angles `(θ, φ)`, with the
-//! panels split where the integrand has a kink, so no lobe sampling is shared with src/brdf.
+//! panels split where the integrand has a kink, so no lobe sampling is shared with src/material.
 
 use std::f64::consts::{FRAC_PI_2, PI};
 

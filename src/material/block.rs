@@ -1,29 +1,7 @@
-//! Materials as cell-averaged luminance factors: the blocks of `B` (`design.md` §1, §3).
-//!
-//! A block holds, for outgoing cell `k` and incoming cell `d`, the luminance factor
-//! averaged over both cells with the projected-solid-angle measure,
-//!
-//! `ρ̄(k,d) = (1/(μ_k μ_d)) ∫_{C_k} ∫_{C_d} ρ(l, l') cosθ cosθ' dω' dω`,
-//!
-//! which keeps reciprocity (`ρ̄(k,d) = ρ̄(d,k)` when `ρ(l,l') = ρ(l',l)`) and energy: the
-//! albedo of incoming cell `d`, `a(d) = (1/π) Σ_k ρ̄(k,d) μ_k`, is the cos-weighted mean
-//! over the cell of the directional-hemispherical reflectance. A transmitting material
-//! has a second block for light arriving on the other side of a two-sided surface
-//! (incoming cell in the back patch's frame). Blocks are shared by every patch of one
-//! material (isotropic models in local frames). Materials never see the scene file.
-//! The continuous models' formulas and lobe samplers (`phong`, `ggx`) are public: the Monte
-//! Carlo estimators of `crate::trace` use them.
-
-mod cells;
-pub mod ggx;
-mod lambert;
-mod mirror;
-pub mod phong;
-
-pub use cells::mirror as mirror_image;
+//! The `K × K` block of a material: the cell-averaged luminance factor `ρ̄(k,d)` of
+//! `design.md` §3 (`B`), with its optional transmission block, albedo and application.
 
 use crate::directions::DirectionSet;
-use crate::scene::MaterialModel;
 use std::f64::consts::PI;
 
 /// The `K × K` blocks of one material, row-major (row = outgoing cell `k`).
@@ -35,21 +13,8 @@ pub struct Block {
 }
 
 impl Block {
-    /// The cell-averaged luminance factor of `model` on `directions`.
-    pub fn of(model: &MaterialModel, directions: &DirectionSet) -> Block {
-        let k = directions.len();
-        let (reflect, transmit) = match *model {
-            MaterialModel::Lambert { reflectance, transmittance } => {
-                (lambert::block(reflectance, k), (transmittance > 0.0).then(|| lambert::block(transmittance, k)))
-            }
-            MaterialModel::Phong { diffuse, specular, exponent } => {
-                (phong::block(diffuse, specular, exponent, directions), None)
-            }
-            MaterialModel::Mirror { reflectance } => (mirror::block(reflectance, directions), None),
-            MaterialModel::Ggx { diffuse, specular, roughness } => {
-                (ggx::block(diffuse, specular, roughness, directions), None)
-            }
-        };
+    /// A block from its row-major reflection values and optional transmission values.
+    pub fn new(k: usize, reflect: Vec<f64>, transmit: Option<Vec<f64>>) -> Block {
         Block { k, reflect, transmit }
     }
 

@@ -4,7 +4,7 @@
 
 use super::quadrature::{REFERENCE, phong_albedo, ring_average};
 use super::{block, matrix, rings};
-use ugo::scene::MaterialModel;
+use ugo::material::MaterialModel;
 
 /// Albedo of the lobe with `k_s = 1` (references.md, "Glossy/specular cases"), 3 decimals.
 const TABLE: [(f64, [f64; 4]); 3] =

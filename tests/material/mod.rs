@@ -1,4 +1,4 @@
-//! Material blocks `ρ̄(k,d)` (src/brdf): energy, closed forms, comparison with independent
+//! Material blocks `ρ̄(k,d)` (src/material): energy, closed forms, comparison with independent
 //! quadrature, and reciprocity of the cell-averaged luminance factors. Measured figures are
 //! printed with `--nocapture` and quoted in docs/materials.md.
 
@@ -10,9 +10,9 @@ mod reciprocity;
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
-use ugo::brdf::Block;
+use ugo::material::Block;
 use ugo::directions::DirectionSet;
-use ugo::scene::MaterialModel;
+use ugo::material::MaterialModel;
 
 pub const LAMBERT: MaterialModel = MaterialModel::Lambert { reflectance: 0.6, transmittance: 0.3 };
 pub const MIRROR: MaterialModel = MaterialModel::Mirror { reflectance: 0.9 };
@@ -54,13 +54,13 @@ pub fn matrix() -> Vec<(MaterialModel, Vec<DirectionSet>)> {
     ]
 }
 
-/// `Block::of`, built once per (material, set) for all the tests of the crate.
+/// `MaterialModel::block`, built once per (material, set) for all the tests of the crate.
 pub fn block(model: &MaterialModel, set: &DirectionSet) -> Arc<Block> {
     type Cache = Mutex<HashMap<String, Arc<OnceLock<Arc<Block>>>>>;
     static CACHE: OnceLock<Cache> = OnceLock::new();
     let key = format!("{model:?} on {}", set.name());
     let slot = CACHE.get_or_init(Default::default).lock().unwrap().entry(key).or_default().clone();
-    slot.get_or_init(|| Arc::new(Block::of(model, set))).clone()
+    slot.get_or_init(|| Arc::new(model.block(set))).clone()
 }
 
 /// The rings of a set, `(cos_bottom, cos_top, cells)`: every cell of a ring has the same

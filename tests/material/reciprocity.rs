@@ -4,7 +4,7 @@
 //! `max |ρ̄(k,d) − ρ̄(d,k)| / max ρ̄`.
 
 use super::{LAMBERT, MIRROR, block, matrix};
-use ugo::scene::MaterialModel;
+use ugo::material::MaterialModel;
 
 fn asymmetry(values: &[f64], k: usize) -> f64 {
     let largest = values.iter().copied().fold(0.0, f64::max);

@@ -1,7 +1,8 @@
 //! Visibility: the pupil function `Θ(r, r')` of `design.md` §1 and closest hits, through `obvhs`.
 //!
 //! Owns the only conversion of the scene to `f32` (obvhs works in `Vec3A`), the
-//! triangle → face map, and the self-intersection policy: a query names the faces it
+//! triangle → face map (and, in `faces.rs`, the face → patch map), and the
+//! self-intersection policy: a query names the faces it
 //! starts and ends on, and hits on those faces are ignored; besides, the segment is
 //! shortened at both ends by a length scaled to the scene (`1e-6` of its diagonal).
 //! The triangle test is made watertight by a small tolerance on the barycentric
@@ -14,6 +15,10 @@
 //! moves a ray by at most 1e-7 of its length. The scene may also be turned by a fixed
 //! generic rotation before the build, every query turned with it. Which layout is
 //! fastest and correct was measured with `ugo bench --layouts` (`docs/performance.md`).
+
+mod faces;
+
+pub use faces::Faces;
 
 use crate::geometry::Mesh;
 use glam::{DMat3, DVec3, Vec3A};

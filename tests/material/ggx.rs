@@ -3,7 +3,7 @@
 
 use super::quadrature::{REFERENCE, ggx_albedo, ring_average};
 use super::{block, matrix, rings};
-use ugo::scene::MaterialModel;
+use ugo::material::MaterialModel;
 
 #[test]
 fn ggx_block_albedo_matches_the_independent_cell_average_in_every_cell() {

@@ -5,7 +5,7 @@
 //! `I_d(p) = Σ_j Σ_m L_j(m) F_{dA(p)→P_j}^{d,m} V(p, P_j)` (the exact contour-integral form
 //! factor, split by cells as in the kernel, and a visibility fraction from rays to
 //! stratified points of `P_j`; a patch whose points and corners disagree lies on a shadow
-//! edge and is cut into quarters, up to [`SHADOW_DEPTH`] levels, each piece weighed by its
+//! edge and is cut into quarters (`transfer::occlusion::cut_along_shadows`), each piece weighed by its
 //! own rays). The luminaires' light arrives exactly at the point (`crate::luminaire::arriving_at`, one
 //! shadow ray each) as `D_d(p)`; the illuminance is `E = π Σ_d (I_d + D_d)`, of which
 //! `π Σ_d D_d` is direct from the luminaires. A probe on a surface (within `1e-4` of the
@@ -15,11 +15,11 @@
 //! point aimed along the normal would: the outgoing luminance, gathered the same way, of
 //! the first surface point the normal meets, towards the probe (0 when it meets nothing).
 
-use crate::field::Field;
-use crate::geometry::{ConvexPolygon, Frame, NO_TWIN, Patch};
-use crate::kernel::contour::point_to_polygon;
-use crate::kernel::form_factor::{Binning, binned_point};
-use crate::kernel::occlusion::{POINTS, piece_visibility};
+use crate::readout::field::Field;
+use crate::geometry::{Frame, NO_TWIN, Patch};
+use crate::transfer::contour::point_to_polygon;
+use crate::transfer::form_factor::{Binning, binned_point};
+use crate::transfer::occlusion::cut_along_shadows;
 use crate::luminaire::arriving_at;
 use crate::model::Model;
 use crate::scene::Probe;
@@ -27,9 +27,6 @@ use crate::visibility::NO_FACE;
 use glam::DVec3;
 use rayon::prelude::*;
 use std::f64::consts::PI;
-
-/// Most levels of cutting a partly visible patch into quarters.
-pub const SHADOW_DEPTH: u32 = 6;
 
 /// One probe's reading.
 #[derive(Debug, Clone, PartialEq)]
@@ -62,7 +59,7 @@ pub fn illuminance_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> f64 {
 /// The patch `p` lies on (if any) and the light arriving at `p` per cell of its frame:
 /// gathered from the surfaces, and directly from the luminaires.
 fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (Option<usize>, Vec<f64>, Vec<f64>) {
-    let patch = patch_under(model, p, n);
+    let patch = model.faces.under(&model.mesh, &model.visibility, p, n);
     let frame = patch.map_or_else(|| Frame::around(n), |i| model.mesh.patches[i].frame());
     let ignore = patch.map_or(NO_FACE, |i| model.mesh.patches[i].face);
     let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &frame, ignore);
@@ -76,11 +73,11 @@ fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
     let luminance = match patch {
         Some(i) => outgoing(model, field, i, p, n, &sum(&incident, &direct)),
         None => model
-            .visibility
-            .closest_hit(p, n, NO_FACE)
-            .and_then(|hit| {
-                let q = p + n * hit.distance;
-                let i = model.mesh.patches.iter().position(|s| s.face == hit.face && s.normal.dot(n) < 0.0)?;
+            .faces
+            .landing(&model.mesh, &model.visibility, p, n, NO_FACE)
+            .and_then(|(_, facing, distance)| {
+                let q = p + n * distance;
+                let i = facing?;
                 let s = &model.mesh.patches[i];
                 Some(outgoing(model, field, i, q, -n, &arriving(model, field, q, s)))
             })
@@ -134,11 +131,12 @@ pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32
                     return (sum, bins);
                 }
                 bins.clear();
-                let seen = |piece: &ConvexPolygon| {
-                    let test = piece_visibility(piece, |y| model.visibility.visible(p, y, [ignore, s.face]));
-                    (test.seen, test.uniform)
-                };
-                visible_pieces(p, frame, s, &s.polygon, &binning, &seen, 0, &mut bins);
+                let sees = |y: DVec3| model.visibility.visible(p, y, [ignore, s.face]);
+                cut_along_shadows(&s.polygon, 0, &sees, &mut |piece, seen| {
+                    let first = bins.len();
+                    binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);
+                    bins[first..].iter_mut().for_each(|(_, _, f)| *f *= seen);
+                });
                 for &(d, m, f) in &bins {
                     sum[d as usize] += f * field.at(j, m as usize);
                 }
@@ -147,44 +145,4 @@ pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32
         )
         .map(|(sum, _)| sum)
         .reduce(|| vec![0.0; cells], |a, b| a.iter().zip(&b).map(|(x, y)| x + y).collect())
-}
-
-/// Pushes the binned form factors from `p` to the visible part of `piece` of patch `s`,
-/// each weighed by the fraction of its points `p` sees; partly seen pieces are cut.
-#[allow(clippy::too_many_arguments)]
-fn visible_pieces(
-    p: DVec3,
-    frame: &Frame,
-    s: &Patch,
-    piece: &ConvexPolygon,
-    binning: &Binning,
-    seen: &dyn Fn(&ConvexPolygon) -> (usize, bool),
-    depth: u32,
-    bins: &mut Vec<(u16, u16, f64)>,
-) {
-    let (count, uniform) = seen(piece);
-    if !uniform && depth < SHADOW_DEPTH {
-        for part in piece.split() {
-            visible_pieces(p, frame, s, &part, binning, seen, depth + 1, bins);
-        }
-        return;
-    }
-    if count == 0 {
-        return;
-    }
-    let target = Patch { polygon: *piece, ..*s };
-    let first = bins.len();
-    binned_point(p, frame, &target, binning, bins);
-    let v = count as f64 / POINTS as f64;
-    bins[first..].iter_mut().for_each(|(_, _, f)| *f *= v);
-}
-
-/// The patch that `p` lies on, facing `n`, if any.
-fn patch_under(model: &Model, p: DVec3, n: DVec3) -> Option<usize> {
-    let delta = 1e-4 * model.mesh.extent();
-    let hit = model.visibility.closest_hit(p + n * delta, -n, NO_FACE)?;
-    if hit.distance > 2.0 * delta {
-        return None;
-    }
-    model.mesh.patches.iter().position(|s| s.face == hit.face && s.normal.dot(n) > 0.5)
 }

@@ -10,6 +10,7 @@
 //! is the flux-weighted residual of the solve: zero for an exact solution of a
 //! conservative kernel.
 
+use super::illuminance::{arriving, patch_illuminance};
 use crate::model::Model;
 use std::f64::consts::PI;
 
@@ -37,8 +38,8 @@ impl EnergyBalance {
         let cells = kernel.directions.cells();
         let projected: f64 = cells.iter().map(|c| c.projected).sum();
         let direct = &model.direct;
-        let mut gx = vec![0.0; x.len()];
-        kernel.apply_transport(x, &mut gx);
+        let light = arriving(model, x);
+        let from_luminaires = patch_illuminance(&direct.arriving, k);
         let luminaire_emitted: Vec<f64> =
             model.sources.iter().zip(&direct.intercepted).map(|(s, &landed)| s.flux().unwrap_or(landed)).collect();
         let mut b = EnergyBalance {
@@ -55,12 +56,11 @@ impl EnergyBalance {
             let block = &kernel.blocks[kernel.patch_material[i] as usize];
             let range = i * k..(i + 1) * k;
             outgoing += p.area * x[range.clone()].iter().zip(cells).map(|(l, c)| l * c.projected).sum::<f64>();
-            from_surfaces += p.area * PI * gx[range].iter().sum::<f64>();
+            from_surfaces += p.area * (PI * light[range].iter().sum::<f64>() - from_luminaires[i]);
             let absorbed: f64 = (0..k)
                 .map(|d| {
                     let (reflected, transmitted) = block.albedo(d, &kernel.directions);
-                    let arriving = gx[i * k + d] + direct.arriving[i * k + d];
-                    p.area * PI * arriving * (1.0 - reflected - transmitted)
+                    p.area * PI * light[i * k + d] * (1.0 - reflected - transmitted)
                 })
                 .sum();
             b.surface_emitted[p.surface as usize] += p.area * mesh.emission[i] * projected;

@@ -3,9 +3,9 @@
 //! (`probe.rs`, `design.md` §5), and the statistics lighting designers judge a
 //! lighting scheme by: average, minimum, maximum and the uniformity `U0 = E_min/E_avg`.
 
-use crate::field::Field;
+use crate::readout::field::Field;
 use crate::model::Model;
-use crate::probe::illuminance_at;
+use crate::readout::probe::illuminance_at;
 use crate::scene::Grid;
 use glam::DVec3;
 

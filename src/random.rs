@@ -1,8 +1,10 @@
-//! A small reproducible random number generator: SplitMix64 (Steele, Lea & Flood,
-//! OOPSLA 2014), one independent stream per pixel sample or photon.
+//! The one random number generator of ugo: SplitMix64 (Steele, Lea & Flood, OOPSLA 2014),
+//! reproducible streams for the Monte Carlo estimators, the renderer's samples, the
+//! memory estimate's pair sample and the benchmarks.
 //!
-//! A stream is keyed by `(seed, index)`, so an estimate depends only on the seed and the
-//! sample count, never on the number of threads or the order in which rayon runs work.
+//! A stream is keyed by `(seed, index)` (or by one key), so a result depends only on the
+//! seed and the sample count, never on the number of threads or the order in which rayon
+//! runs work.
 
 /// SplitMix64: a 64-bit state advanced by the golden-ratio increment, output mixed.
 #[derive(Debug, Clone)]
@@ -18,6 +20,16 @@ impl Rng {
         // Starting states scattered by the generator's own mixing function: neighbouring
         // indices start far apart on the one cycle of 2⁶⁴ states.
         Rng { state: mix(mix(seed ^ 0x5DEE_CE66_D1CE_4E5B).wrapping_add(mix(index.wrapping_add(GOLDEN)))) }
+    }
+
+    /// The stream of one `key` (any mix of pixel and sample indices).
+    pub fn keyed(key: u64) -> Rng {
+        Rng { state: key.wrapping_mul(GOLDEN) ^ 0x5DEE_CE66 }
+    }
+
+    /// The stream whose next state follows `state`.
+    pub fn from_state(state: u64) -> Rng {
+        Rng { state }
     }
 
     #[inline]

@@ -4,7 +4,7 @@
 use super::quadrature::{REFERENCE, ggx_albedo, phong_albedo, ring_average};
 use super::{LAMBERT, MIRROR, block, matrix};
 use ugo::directions::DirectionSet;
-use ugo::scene::MaterialModel;
+use ugo::material::MaterialModel;
 
 #[test]
 fn no_cell_reflects_and_transmits_more_than_it_receives() {

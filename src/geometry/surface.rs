@@ -1,0 +1,47 @@
+//! What a surface is before meshing: its shape, its material, its sides and its emission
+//! (`design.md` §2, §7 `[[surface]]`). The scene file is validated into these; the mesh
+//! is built from them.
+
+use glam::DVec3;
+use std::path::PathBuf;
+
+/// Lambertian self-emission of a surface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Emission {
+    /// Luminance, cd/m², the same at every point and in every direction.
+    Luminance(f64),
+    /// Total luminous flux of the surface, lm, spread uniformly over its (meshed) area.
+    Flux(f64),
+}
+
+/// `[[surface]]`: one named piece of geometry with its material.
+#[derive(Debug, Clone)]
+pub struct Surface {
+    pub name: String,
+    pub shape: Shape,
+    /// Index into the scene's materials.
+    pub material: usize,
+    /// Both sides reflect (and emit): meshed as two patches per element, back to back.
+    pub two_sided: bool,
+    /// Normals are flipped (a room seen from inside).
+    pub inside: bool,
+    pub emission: Option<Emission>,
+}
+
+/// The closed set of shapes. Lengths in metres, angles in degrees.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Shape {
+    /// Parallelogram `origin + s·edge_u + t·edge_v`, `s, t ∈ [0,1]`; normal `u × v`.
+    Rectangle { origin: DVec3, edge_u: DVec3, edge_v: DVec3 },
+    /// Planar simple polygon, vertices counter-clockwise seen from the front.
+    Polygon { vertices: Vec<DVec3> },
+    /// Axis-aligned box rotated about the vertical (y) axis through its centre; normals outward.
+    Box { min: DVec3, max: DVec3, rotate_y_deg: f64 },
+    /// Flat disc facing `normal`.
+    Disc { center: DVec3, normal: DVec3, radius: f64 },
+    /// Sphere with outward normals (tessellated into planar patches).
+    Sphere { center: DVec3, radius: f64 },
+    /// Triangles loaded from an OBJ file (already scaled and translated), normals by winding.
+    Mesh { file: PathBuf, triangles: Vec<[DVec3; 3]> },
+}
+

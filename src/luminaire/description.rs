@@ -1,0 +1,40 @@
+//! A luminaire as described (`[[luminaire]]`, validated): its kind, placement, aim and
+//! distribution, before it is placed in a frame (`Source`). The scene file is validated
+//! into these; nothing here sees TOML.
+
+use crate::photometry::Distribution;
+use glam::DVec3;
+use std::path::PathBuf;
+
+/// `[[luminaire]]`: a light source outside the unknowns of the system.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Luminaire {
+    pub name: String,
+    pub kind: LuminaireKind,
+}
+
+/// The closed set of luminaire kinds.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LuminaireKind {
+    /// A point source with an intensity distribution, placed and aimed.
+    Point(PointLuminaire),
+    /// Parallel light (the sun): unit direction of travel and illuminance normal to the beam, lx.
+    Parallel { direction: DVec3, illuminance: f64 },
+}
+
+/// A photometric point source.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointLuminaire {
+    /// m.
+    pub position: DVec3,
+    /// Unit aiming direction: γ = 0 of the distribution (default straight down).
+    pub aim: DVec3,
+    /// Turn of the C0 axis about the aim, degrees, counter-clockwise seen from behind.
+    pub rotate_deg: f64,
+    /// Maintenance or dimming factor on every intensity.
+    pub multiplier: f64,
+    pub distribution: Distribution,
+    /// The photometric file, when the distribution was read from one.
+    pub file: Option<PathBuf>,
+}
+

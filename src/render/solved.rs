@@ -1,0 +1,59 @@
+//! A solved scene as rays see it: the patches, a ray caster over their faces, the
+//! luminance each patch sends in each direction cell, the material blocks, the emitters
+//! and the luminaires. Which patch a ray meets, and its stored (flat) value there.
+
+use crate::directions::DirectionSet;
+use crate::geometry::Mesh;
+use crate::luminaire::Source;
+use crate::material::Block;
+use crate::visibility::{Faces, NO_FACE, Visibility};
+use glam::DVec3;
+
+pub struct Solved {
+    pub mesh: Mesh,
+    pub directions: DirectionSet,
+    /// Luminance of patch `i` in cell `k` at `i·K + k`, cd/m².
+    pub luminance: Vec<f64>,
+    pub(super) visibility: Visibility,
+    faces: Faces,
+    /// Material blocks (by material index) for the final gather.
+    pub(super) blocks: Vec<Block>,
+    /// Patches with a self-emission, for the gather's direct part.
+    pub(super) emitters: Vec<u32>,
+    /// The luminaires, whose direct light the gather adds exactly at its point.
+    pub(super) sources: Vec<Source>,
+}
+
+impl Solved {
+    /// `luminance` holds `mesh.len() · directions.len()` values; `blocks[m]` is the
+    /// material block of every material index `m` the patches use (checked by the caller).
+    pub(super) fn new(mesh: Mesh, directions: DirectionSet, luminance: Vec<f64>, blocks: Vec<Block>) -> Solved {
+        let faces = Faces::of(&mesh);
+        let visibility = Visibility::build(&mesh);
+        let emitters = (0..mesh.len() as u32).filter(|&i| mesh.emission[i as usize] > 0.0).collect();
+        Solved { mesh, directions, luminance, visibility, faces, blocks, emitters, sources: Vec::new() }
+    }
+
+    /// The patch first hit along the ray (the one facing back along it) and the distance.
+    pub(super) fn hit(&self, origin: DVec3, direction: DVec3) -> Option<(usize, f64)> {
+        self.hit_ignoring(origin, direction, NO_FACE)
+    }
+
+    /// [`Solved::hit`] ignoring face `ignore`. The back of a one-sided surface is a miss,
+    /// unless the direction set covers the sphere (its lower cells hold transmitted light).
+    pub(super) fn hit_ignoring(&self, origin: DVec3, direction: DVec3, ignore: u32) -> Option<(usize, f64)> {
+        let (face, facing, distance) = self.faces.landing(&self.mesh, &self.visibility, origin, direction, ignore)?;
+        let patch = match facing {
+            Some(i) => i,
+            None if self.directions.is_sphere() => self.faces.first(face),
+            None => return None,
+        };
+        Some((patch, distance))
+    }
+
+    /// The stored luminance of `patch` in the cell holding the unit direction `towards`.
+    pub(super) fn flat(&self, patch: usize, towards: DVec3) -> f64 {
+        let k = self.directions.lookup(self.mesh.patches[patch].frame().local(towards));
+        self.luminance[patch * self.directions.len() + k]
+    }
+}

@@ -1,0 +1,91 @@
+//! What every table's validation shares: where a value sits (file, table, key) and the
+//! rules of numbers, points and directions, names, and the geometric tolerance.
+
+use super::error::SceneError;
+use glam::DVec3;
+use std::path::Path;
+
+/// Relative tolerance (to the shape's size) of the planarity, collinearity,
+/// coincidence and parallel-edge tests.
+pub(super) const REL_TOL: f64 = 1e-6;
+
+pub(super) struct Context<'a> {
+    pub(super) file: &'a Path,
+    table: String,
+}
+
+impl<'a> Context<'a> {
+    pub(super) fn new(file: &'a Path, table: impl Into<String>) -> Self {
+        Context { file, table: table.into() }
+    }
+
+    /// The context of the `index`-th (0-based) `[[kind]]` table, named `name`.
+    pub(super) fn item(file: &'a Path, kind: &str, name: &str, index: usize) -> Self {
+        Context::new(file, format!("[[{kind}]] \"{name}\" (#{})", index + 1))
+    }
+
+    pub(super) fn error(&self, key: &str, message: impl Into<String>) -> SceneError {
+        SceneError::new(self.file, self.table.clone(), key, message)
+    }
+
+    pub(super) fn finite(&self, key: &str, x: f64) -> Result<f64, SceneError> {
+        match x.is_finite() {
+            true => Ok(x),
+            false => Err(self.error(key, format!("must be a finite number, got {x}"))),
+        }
+    }
+
+    pub(super) fn positive(&self, key: &str, x: f64) -> Result<f64, SceneError> {
+        match self.finite(key, x)? > 0.0 {
+            true => Ok(x),
+            false => Err(self.error(key, format!("must be greater than 0, got {x}"))),
+        }
+    }
+
+    pub(super) fn non_negative(&self, key: &str, x: f64) -> Result<f64, SceneError> {
+        match self.finite(key, x)? >= 0.0 {
+            true => Ok(x),
+            false => Err(self.error(key, format!("must be at least 0, got {x}"))),
+        }
+    }
+
+    pub(super) fn point(&self, key: &str, v: [f64; 3]) -> Result<DVec3, SceneError> {
+        let p = DVec3::from_array(v);
+        match p.is_finite() {
+            true => Ok(p),
+            false => Err(self.error(key, format!("must have finite coordinates, got {}", show(p)))),
+        }
+    }
+
+    /// A non-zero vector, normalized.
+    pub(super) fn direction(&self, key: &str, v: [f64; 3]) -> Result<DVec3, SceneError> {
+        let d = self.point(key, v)?;
+        d.try_normalize().ok_or_else(|| self.error(key, format!("must be a non-zero vector, got {}", show(d))))
+    }
+}
+
+/// `[x, y, z]` as written in TOML.
+pub(super) fn show(v: DVec3) -> String {
+    format!("[{}, {}, {}]", v.x, v.y, v.z)
+}
+
+/// Names must be non-empty and unique among the `[[kind]]` tables.
+pub(super) fn unique_names<'n>(
+    path: &Path,
+    kind: &str,
+    names: impl Iterator<Item = &'n str>,
+) -> Result<(), SceneError> {
+    let mut seen: Vec<&str> = Vec::new();
+    for (index, name) in names.enumerate() {
+        let at = Context::item(path, kind, name, index);
+        if name.is_empty() {
+            return Err(at.error("name", "must not be empty"));
+        }
+        if let Some(first) = seen.iter().position(|&s| s == name) {
+            let message = format!("duplicate name \"{name}\" (also [[{kind}]] #{})", first + 1);
+            return Err(at.error("name", message));
+        }
+        seen.push(name);
+    }
+    Ok(())
+}

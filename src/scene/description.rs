@@ -1,0 +1,86 @@
+//! The runtime scene: what a validated case file says, in plain types (`design.md` §7).
+
+use super::grid::Grid;
+use crate::geometry::Surface;
+use crate::luminaire::Luminaire;
+use crate::material::MaterialModel;
+use glam::DVec3;
+use std::path::PathBuf;
+
+/// A validated scene, ready for meshing.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    /// The case file this scene was read from.
+    pub path: PathBuf,
+    /// The case file's text, stored verbatim in every output file.
+    pub source: String,
+    pub name: String,
+    pub description: String,
+    pub discretization: Discretization,
+    pub solver: SolverSettings,
+    pub materials: Vec<Material>,
+    pub surfaces: Vec<Surface>,
+    pub probes: Vec<Probe>,
+    pub cameras: Vec<Camera>,
+    pub grids: Vec<Grid>,
+    pub luminaires: Vec<Luminaire>,
+}
+
+/// `[discretization]`: how finely surfaces are meshed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Discretization {
+    /// Target edge length of the patches, m.
+    pub patch_size: f64,
+    /// Direction set: a cell count (`"64"`), `"klems"` or `"tregenza"` (default `"1"`).
+    pub directions: String,
+}
+
+/// `[solver]`: the method and its stopping rule.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SolverSettings {
+    /// A name `solve::Method::parse` accepts (default `"neumann"`).
+    pub method: String,
+    /// Relative residual `‖L0 + Kx − x‖₂/‖L0‖₂` at which the iteration stops.
+    pub tolerance: f64,
+    /// The iteration gives up (with an error) after this many kernel applications.
+    pub max_iterations: usize,
+}
+
+impl Default for SolverSettings {
+    fn default() -> Self {
+        SolverSettings { method: "neumann".into(), tolerance: 1e-8, max_iterations: 10_000 }
+    }
+}
+
+/// `[[material]]`: a named luminance-factor model (`design.md` §1).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Material {
+    pub name: String,
+    pub model: MaterialModel,
+}
+
+/// `[[probe]]`: a point sensor of luminance (cd/m²) and illuminance (lx).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Probe {
+    pub name: String,
+    pub position: DVec3,
+    /// Unit normal of the sensor's receiving side.
+    pub normal: DVec3,
+}
+
+/// `[[camera]]`: a pinhole camera for `ugo render`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Camera {
+    pub name: String,
+    pub position: DVec3,
+    pub look_at: DVec3,
+    /// Unit vector giving the image's upward direction (not parallel to the view).
+    pub up: DVec3,
+    /// Vertical field of view, degrees, in (0, 180).
+    pub fov_deg: f64,
+    /// Image width and height, pixels.
+    pub resolution: [usize; 2],
+    /// Primary rays per pixel (stratified).
+    pub samples: usize,
+}
+

@@ -1,0 +1,93 @@
+//! `[[material]]` tables: the keys of each material type and their rules, validated into
+//! `crate::material::MaterialModel`.
+
+use super::error::SceneError;
+use super::check::{Context, unique_names};
+use super::schema::RawMaterial;
+use super::description::Material;
+use crate::material::MaterialModel;
+use std::path::Path;
+
+pub(super) fn materials(path: &Path, raw: &[RawMaterial]) -> Result<Vec<Material>, SceneError> {
+    if raw.is_empty() {
+        let message = "the scene has no [[material]]";
+        return Err(SceneError::new(path, "[[material]]", "", message));
+    }
+    unique_names(path, "material", raw.iter().map(|m| m.name.as_str()))?;
+    let material = |(index, m): (usize, &RawMaterial)| {
+        let at = Context::item(path, "material", &m.name, index);
+        Ok(Material { name: m.name.clone(), model: material_model(&at, m)? })
+    };
+    raw.iter().enumerate().map(material).collect()
+}
+
+/// Keys each material type takes (the first is required where noted below).
+const MATERIAL_KEYS: [(&str, &[&str]); 4] = [
+    ("lambert", &["reflectance", "transmittance"]),
+    ("phong", &["reflectance", "specular", "exponent"]),
+    ("mirror", &["reflectance"]),
+    ("ggx", &["reflectance", "specular", "roughness"]),
+];
+
+fn material_model(at: &Context, m: &RawMaterial) -> Result<MaterialModel, SceneError> {
+    let Some((_, keys)) = MATERIAL_KEYS.iter().find(|(name, _)| *name == m.model) else {
+        let known: Vec<String> = MATERIAL_KEYS.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+        return Err(at.error("type", format!("unknown material type \"{}\"; known: {}", m.model, known.join(", "))));
+    };
+    let given = [
+        ("reflectance", m.reflectance),
+        ("transmittance", m.transmittance),
+        ("specular", m.specular),
+        ("exponent", m.exponent),
+        ("roughness", m.roughness),
+    ];
+    for (key, value) in given {
+        if value.is_some() && !keys.contains(&key) {
+            let message = format!("a \"{}\" material takes only {}", m.model, keys.join(", "));
+            return Err(at.error(key, message));
+        }
+    }
+    let fraction = |key: &str, value: Option<f64>| -> Result<f64, SceneError> {
+        let v = at.non_negative(key, value.unwrap_or(0.0))?;
+        if v > 1.0 {
+            return Err(at.error(key, format!("must be at most 1, got {v}")));
+        }
+        Ok(v)
+    };
+    let required = |key: &str, value: Option<f64>| {
+        value.ok_or_else(|| at.error(key, format!("a \"{}\" material needs `{key}`", m.model)))
+    };
+    let reflectance = fraction("reflectance", Some(required("reflectance", m.reflectance)?))?;
+    let sum_at_most_one = |key: &str, other: f64| {
+        if reflectance + other > 1.0 + 1e-12 {
+            return Err(at.error(key, format!("reflectance + {key} = {} exceeds 1", reflectance + other)));
+        }
+        Ok(())
+    };
+    Ok(match m.model.as_str() {
+        "lambert" => {
+            let transmittance = fraction("transmittance", m.transmittance)?;
+            sum_at_most_one("transmittance", transmittance)?;
+            MaterialModel::Lambert { reflectance, transmittance }
+        }
+        "phong" => {
+            let specular = fraction("specular", Some(required("specular", m.specular)?))?;
+            sum_at_most_one("specular", specular)?;
+            let exponent = at.non_negative("exponent", required("exponent", m.exponent)?)?;
+            if exponent > 1e5 {
+                return Err(at.error("exponent", format!("must be at most 100000, got {exponent}")));
+            }
+            MaterialModel::Phong { diffuse: reflectance, specular, exponent }
+        }
+        "mirror" => MaterialModel::Mirror { reflectance },
+        _ => {
+            let specular = fraction("specular", Some(required("specular", m.specular)?))?;
+            sum_at_most_one("specular", specular)?;
+            let roughness = fraction("roughness", Some(required("roughness", m.roughness)?))?;
+            if roughness < 1e-3 {
+                return Err(at.error("roughness", format!("must be at least 0.001 (use a mirror), got {roughness}")));
+            }
+            MaterialModel::Ggx { diffuse: reflectance, specular, roughness }
+        }
+    })
+}

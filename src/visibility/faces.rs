@@ -1,0 +1,63 @@
+//! Patches by face: the (up to two, back to back) patches of each geometric face, and
+//! which of them a ray meets or a point lies on. The one place that turns a hit face into
+//! a patch, for renders, probes and the Monte Carlo estimators.
+
+use super::{NO_FACE, Visibility};
+use crate::geometry::{Mesh, NO_TWIN};
+use glam::DVec3;
+
+/// The patches of every face of a mesh.
+#[derive(Debug, Clone)]
+pub struct Faces {
+    patches: Vec<[u32; 2]>,
+}
+
+impl Faces {
+    pub fn of(mesh: &Mesh) -> Faces {
+        let mut patches = vec![[NO_TWIN; 2]; mesh.faces];
+        for (i, p) in mesh.patches.iter().enumerate() {
+            let slot = &mut patches[p.face as usize];
+            slot[usize::from(slot[0] != NO_TWIN)] = i as u32;
+        }
+        Faces { patches }
+    }
+
+    /// The patch of `face` whose normal has a positive component along the unit `towards`.
+    pub fn facing(&self, mesh: &Mesh, face: u32, towards: DVec3) -> Option<usize> {
+        self.patches[face as usize]
+            .into_iter()
+            .find(|&i| i != NO_TWIN && mesh.patches[i as usize].normal.dot(towards) > 0.0)
+            .map(|i| i as usize)
+    }
+
+    /// The first patch of `face` (the front one of a two-sided element).
+    pub fn first(&self, face: u32) -> usize {
+        self.patches[face as usize][0] as usize
+    }
+
+    /// The first face along the unit `direction` from `origin` (ignoring face `ignore`),
+    /// the patch of it that faces back along the ray (if any), and the hit distance.
+    pub fn landing(
+        &self,
+        mesh: &Mesh,
+        visibility: &Visibility,
+        origin: DVec3,
+        direction: DVec3,
+        ignore: u32,
+    ) -> Option<(u32, Option<usize>, f64)> {
+        let hit = visibility.closest_hit(origin, direction, ignore)?;
+        Some((hit.face, self.facing(mesh, hit.face, -direction), hit.distance))
+    }
+
+    /// The patch that the point `p` lies on, facing the unit `n` (normal within 60°): a
+    /// ray from `p + δn` towards `−n` (`δ = 1e-4 ×` the scene's extent) hits its face
+    /// within `2δ`.
+    pub fn under(&self, mesh: &Mesh, visibility: &Visibility, p: DVec3, n: DVec3) -> Option<usize> {
+        let delta = 1e-4 * mesh.extent();
+        let hit = visibility.closest_hit(p + n * delta, -n, NO_FACE)?;
+        if hit.distance > 2.0 * delta {
+            return None;
+        }
+        self.facing(mesh, hit.face, n).filter(|&i| mesh.patches[i].normal.dot(n) > 0.5)
+    }
+}
