@@ -79,15 +79,6 @@ impl DirectionSet {
         DirectionSet::from_polar_edges("tregenza", &edges, &[1, 6, 12, 18, 24, 24, 30, 30])
     }
 
-    /// A set by name: a cell count (`"64"`), `"klems"` or `"tregenza"`.
-    pub fn named(name: &str) -> Option<DirectionSet> {
-        match name {
-            "klems" => Some(DirectionSet::klems()),
-            "tregenza" => Some(DirectionSet::tregenza()),
-            n => n.parse::<usize>().ok().filter(|&k| k >= 1).map(DirectionSet::hemisphere),
-        }
-    }
-
     fn from_polar_edges(name: &str, degrees: &[f64], counts: &[usize]) -> DirectionSet {
         let rings: Vec<(f64, f64, usize)> = degrees
             .windows(2)
@@ -126,7 +117,7 @@ impl DirectionSet {
         DirectionSet { name, rings, sphere, cells }
     }
 
-    /// The set's name as given to `named` (or `"sphere K"`).
+    /// The set's name: its [`Scheme`]'s (or `"sphere K"`).
     pub fn name(&self) -> &str {
         &self.name
     }
@@ -205,4 +196,46 @@ fn equal_area_rings(k: usize) -> Vec<(f64, f64, usize)> {
         rings.push((top, (1.0 - cumulative as f64 / k as f64).max(0.0), n));
     }
     rings
+}
+
+/// The direction sets a case or a command names: parsed once, where the name is read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scheme {
+    /// `K` cells of equal solid angle over the hemisphere (`K = 1`: radiosity).
+    Cells(usize),
+    /// The 145-cell Klems full basis.
+    Klems,
+    /// The 145-patch Tregenza sky subdivision.
+    Tregenza,
+}
+
+impl Scheme {
+    /// What [`Scheme::parse`] accepts, for error messages.
+    pub const NAMES: &'static str = "a cell count ≥ 1, \"klems\" or \"tregenza\"";
+
+    /// A cell count (`"64"`), `"klems"` or `"tregenza"`.
+    pub fn parse(name: &str) -> Option<Scheme> {
+        match name {
+            "klems" => Some(Scheme::Klems),
+            "tregenza" => Some(Scheme::Tregenza),
+            n => n.parse::<usize>().ok().filter(|&k| k >= 1).map(Scheme::Cells),
+        }
+    }
+
+    /// The name `parse` reads back.
+    pub fn name(&self) -> String {
+        match self {
+            Scheme::Cells(k) => k.to_string(),
+            Scheme::Klems => "klems".into(),
+            Scheme::Tregenza => "tregenza".into(),
+        }
+    }
+
+    pub fn set(&self) -> DirectionSet {
+        match *self {
+            Scheme::Cells(k) => DirectionSet::hemisphere(k),
+            Scheme::Klems => DirectionSet::klems(),
+            Scheme::Tregenza => DirectionSet::tregenza(),
+        }
+    }
 }

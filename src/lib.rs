@@ -13,6 +13,7 @@
 //! 7. readouts: [`readout`]
 //! 8. render/trace: [`render`], [`trace`]
 //! 9. io: [`io`]
+//! 10. study: [`study`]
 //!
 //! The command line (`src/main.rs`, `src/cli/`) stands on top and only calls the library.
 
@@ -30,6 +31,7 @@ pub mod readout;
 pub mod render;
 pub mod scene;
 pub mod solve;
+pub mod study;
 pub mod trace;
 pub mod transfer;
 pub mod visibility;

@@ -4,7 +4,8 @@
 mod cli;
 
 use clap::{Parser, Subcommand};
-use cli::options::{Discretize, Stopping};
+use cli::options::{Discretize, ScaleArg, ShadingArg, Stopping, method};
+use ugo::solve::Method;
 use cli::solve::Job;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -31,8 +32,8 @@ enum Command {
         #[command(flatten)]
         stopping: Stopping,
         /// Method: neumann, gauss-seidel, southwell, gmres[:M], bicgstab, direct (default: the case's).
-        #[arg(long)]
-        method: Option<String>,
+        #[arg(long, value_parser = method)]
+        method: Option<Method>,
         /// Reflection orders whose partial sums go to /orders (default 1,8,64 with neumann).
         #[arg(long, value_delimiter = ',')]
         orders: Option<Vec<usize>>,
@@ -57,8 +58,8 @@ enum Command {
     Compare {
         case: PathBuf,
         /// Comma-separated methods.
-        #[arg(long, value_delimiter = ',', default_value = "neumann,gauss-seidel,gmres,bicgstab,direct")]
-        methods: Vec<String>,
+        #[arg(long, value_delimiter = ',', value_parser = method, default_value = "neumann,gauss-seidel,gmres,bicgstab,direct")]
+        methods: Vec<Method>,
         /// Output HDF5 file (default: `<case>-compare.h5`).
         #[arg(short, long)]
         output: Option<PathBuf>,
@@ -129,9 +130,9 @@ enum Command {
         /// Stratified rays per pixel for rendering the solution.
         #[arg(long, default_value_t = 64)]
         samples: usize,
-        /// Shading of the rendered solution: `flat`, `smooth` or `gather` (see `ugo render`).
-        #[arg(long, default_value = "flat")]
-        shading: String,
+        /// Shading of the rendered solution (see `ugo render`).
+        #[arg(long, value_enum, default_value_t = ShadingArg::Flat)]
+        shading: ShadingArg,
         /// Final-gather rays per pixel (with --shading gather).
         #[arg(long, default_value_t = 256)]
         gather_rays: usize,
@@ -149,16 +150,15 @@ enum Command {
         /// Folder for the images.
         #[arg(short, long, default_value = ".")]
         output: PathBuf,
-        /// Also write a false-colour map with a legend in cd/m²: `log` or `linear`.
-        #[arg(long, value_name = "SCALE")]
-        false_colour: Option<String>,
+        /// Also write a false-colour map with a legend in cd/m², on this scale.
+        #[arg(long, value_enum, value_name = "SCALE")]
+        false_colour: Option<ScaleArg>,
         /// Also write the reflection-order pictures for these recorded orders, side by side.
         #[arg(long, value_delimiter = ',')]
         orders: Vec<usize>,
-        /// `flat` (the stored patch values), `smooth` (interpolated across each surface's
-        /// patches) or `gather` (one more reflection at every hit point).
-        #[arg(long, default_value = "flat")]
-        shading: String,
+        /// How a hit point is shaded.
+        #[arg(long, value_enum, default_value_t = ShadingArg::Flat)]
+        shading: ShadingArg,
         /// Final-gather rays per pixel (with `--shading gather`).
         #[arg(long, default_value_t = 64)]
         gather_rays: usize,
@@ -187,7 +187,7 @@ fn main() -> ExitCode {
             orders,
             norms,
             basis,
-        } => cli::methods(method.as_slice()).and_then(|methods| {
+        } => Ok(method.into_iter().collect::<Vec<_>>()).and_then(|methods| {
             let basis = basis.choice()?;
             let job = Job {
                 methods,
@@ -206,7 +206,7 @@ fn main() -> ExitCode {
         }),
         Command::Norms { case, output, discretize, stopping: Stopping { tolerance, max_iterations } } => {
             let job = Job {
-                methods: vec![ugo::solve::Method::Neumann],
+                methods: vec![Method::Neumann],
                 tolerance,
                 max_iterations,
                 orders: None,
@@ -231,7 +231,7 @@ fn main() -> ExitCode {
             bases,
             photons,
             seed,
-        } => cli::methods(&methods).and_then(|methods| {
+        } => Ok(methods).and_then(|methods: Vec<Method>| {
             let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
             if !bases.is_empty() {
                 let plot = plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-bases.png")));
@@ -239,7 +239,7 @@ fn main() -> ExitCode {
                     tolerance: tolerance.unwrap_or(1e-10),
                     max_iterations: max_iterations.unwrap_or(10_000),
                 };
-                let method = methods.first().copied().unwrap_or(ugo::solve::Method::Gmres { restart: 30 });
+                let method = methods.first().copied().unwrap_or(Method::Gmres { restart: ugo::solve::RESTART });
                 return cli::basis::study(&case, &discretize, &bases, method, params, &plot);
             }
             let plot = Some(plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-compare.png"))));
@@ -263,9 +263,9 @@ fn main() -> ExitCode {
             let look = cli::render::Look {
                 view,
                 exposure,
-                false_colour: false_colour.as_deref(),
+                false_colour,
                 orders: &orders,
-                shading: &shading,
+                shading,
                 gather_rays,
             };
             cli::render::run(&solution, &cameras, &output, &look)
@@ -278,7 +278,7 @@ fn main() -> ExitCode {
         }
         Command::Agree { solution, reference, camera, samples, shading, gather_rays } => {
             let rendering =
-                cli::agree::Rendering { camera: camera.as_deref(), samples, shading: &shading, gather_rays };
+                cli::agree::Rendering { camera: camera.as_deref(), samples, shading, gather_rays };
             cli::agree::run(&solution, &reference, &rendering)
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),

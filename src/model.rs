@@ -33,7 +33,7 @@ impl ModelOptions {
     pub fn of(scene: &Scene) -> ModelOptions {
         ModelOptions {
             patch_size: scene.discretization.patch_size,
-            directions: DirectionSet::named(&scene.discretization.directions).unwrap_or_else(DirectionSet::single),
+            directions: scene.discretization.directions.set(),
             memory_limit: crate::kernel::memory::default_limit(),
             quadrature: Quadrature::default(),
             precision: Precision::Double,

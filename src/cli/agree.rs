@@ -5,7 +5,8 @@
 //! in `X-stderr.exr`; compared per pixel with the solution rendered through the same
 //! camera, flat, smooth or with a final gather).
 
-use super::render::{describe, parse_shading};
+use super::options::ShadingArg;
+use super::render::{describe, shading_of};
 use super::trace::sibling;
 use anyhow::{Result, bail};
 use std::path::Path;
@@ -20,12 +21,12 @@ pub struct Rendering<'a> {
     /// Stratified rays per pixel.
     pub samples: usize,
     /// `flat`, `smooth` or `gather`, and the gather's rays per pixel.
-    pub shading: &'a str,
+    pub shading: ShadingArg,
     pub gather_rays: usize,
 }
 
 pub fn run(solution: &Path, reference: &Path, rendering: &Rendering) -> Result<()> {
-    let shading = parse_shading(rendering.shading, rendering.gather_rays)?;
+    let shading = shading_of(rendering.shading, rendering.gather_rays)?;
     let stored = read_solution(solution)?;
     let is_image = reference.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"));
     if !is_image {
@@ -96,7 +97,7 @@ pub fn run(solution: &Path, reference: &Path, rendering: &Rendering) -> Result<(
     }
     let mut camera = camera.clone();
     camera.samples = rendering.samples.max(1);
-    let mut lit = stored.into_lit();
+    let mut lit = ugo::study::lit_scene(stored);
     lit.set_shading(shading);
     let image = render(&lit, &camera);
     println!(

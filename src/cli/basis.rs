@@ -4,7 +4,7 @@
 //! unknowns, memory and time, as a table and a plot (`design.md` §4).
 
 use super::{bar, bytes, load};
-use super::options::Discretize;
+use super::options::{BasisArg, Discretize};
 use anyhow::{Result, bail};
 use plotters::prelude::*;
 use std::path::Path;
@@ -19,8 +19,8 @@ use ugo::solve::{Method, SolveParams, System, relative_residual, solve};
 pub struct BasisOptions {
     /// Solve for the coefficients of an angular basis: `sh` (hemispherical harmonics,
     /// with --lmax) or `svd` (truncated SVD of each material block, with --rank).
-    #[arg(long)]
-    basis: Option<String>,
+    #[arg(long, value_enum)]
+    basis: Option<BasisArg>,
     /// Highest harmonic degree of `--basis sh`: (lmax+1)² coefficients per patch.
     #[arg(long, requires = "basis")]
     lmax: Option<usize>,
@@ -31,13 +31,12 @@ pub struct BasisOptions {
 
 impl BasisOptions {
     pub fn choice(&self) -> Result<Option<Basis>> {
-        Ok(match (self.basis.as_deref(), self.lmax, self.rank) {
+        Ok(match (self.basis, self.lmax, self.rank) {
             (None, _, _) => None,
-            (Some("sh"), Some(lmax), None) => Some(Basis::Sh { lmax }),
-            (Some("svd"), None, Some(rank)) if rank >= 1 => Some(Basis::Svd { rank }),
-            (Some("sh"), _, _) => bail!("--basis sh takes --lmax L (and no --rank)"),
-            (Some("svd"), _, _) => bail!("--basis svd takes --rank R ≥ 1 (and no --lmax)"),
-            (Some(other), _, _) => bail!("--basis takes `sh` or `svd`, got \"{other}\""),
+            (Some(BasisArg::Sh), Some(lmax), None) => Some(Basis::Sh { lmax }),
+            (Some(BasisArg::Svd), None, Some(rank)) if rank >= 1 => Some(Basis::Svd { rank }),
+            (Some(BasisArg::Sh), _, _) => bail!("--basis sh takes --lmax L (and no --rank)"),
+            (Some(BasisArg::Svd), _, _) => bail!("--basis svd takes --rank R ≥ 1 (and no --lmax)"),
         })
     }
 }

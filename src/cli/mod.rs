@@ -12,32 +12,27 @@ pub mod trace;
 use options::Discretize;
 use anyhow::{Result, bail};
 use std::path::Path;
-use ugo::directions::DirectionSet;
 use ugo::luminaire::{Light, Source};
 use ugo::model::ModelOptions;
 use ugo::photometry::Distribution;
 use ugo::scene::Scene;
 
-/// Loads a case and applies the command-line overrides.
+/// Loads a case and applies the command-line overrides: the discretization to the scene
+/// (the one place it is held), the memory limit and precision to the model options.
 pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
     let mut scene = Scene::load(case)?;
-    let mut options = ModelOptions::of(&scene);
     if let Some(h) = d.patch_size {
         if !(h.is_finite() && h > 0.0) {
             bail!("--patch-size must be a positive length in metres, got {h}");
         }
-        options.patch_size = h;
         scene.discretization.patch_size = h;
     }
-    if let Some(name) = &d.directions {
-        options.directions = DirectionSet::named(name).ok_or_else(|| {
-            anyhow::anyhow!("--directions must be a cell count ≥ 1, \"klems\" or \"tregenza\", got \"{name}\"")
-        })?;
-        scene.discretization.directions = name.clone();
+    if let Some(directions) = d.directions {
+        scene.discretization.directions = directions;
     }
-    if let Some(name) = &d.precision {
-        options.precision = ugo::kernel::Precision::parse(name)
-            .ok_or_else(|| anyhow::anyhow!("--precision must be `f64` or `f32`, got \"{name}\""))?;
+    let mut options = ModelOptions::of(&scene);
+    if let Some(precision) = d.precision {
+        options.precision = precision.into();
     }
     if let Some(gib) = d.memory_limit {
         if !(gib.is_finite() && gib > 0.0) {
@@ -93,17 +88,6 @@ pub fn bytes(b: f64) -> String {
     } else {
         format!("{:.1} MiB", b / (1u64 << 20) as f64)
     }
-}
-
-/// Methods by name, with the known names in the error.
-pub fn methods(names: &[String]) -> Result<Vec<ugo::solve::Method>> {
-    names
-        .iter()
-        .map(|n| {
-            ugo::solve::Method::parse(n)
-                .ok_or_else(|| anyhow::anyhow!("unknown method \"{n}\"; known: {}", ugo::solve::Method::NAMES))
-        })
-        .collect()
 }
 
 /// A table name (camera, grid) made safe for a file name.

@@ -1,5 +1,11 @@
 //! The options that several subcommands share: overrides of the case file's
-//! `[discretization]` and of its `[solver]` stopping rule.
+//! `[discretization]` and of its `[solver]` stopping rule, and the typed values of the
+//! flags that name a choice (parsed by clap, never compared as strings afterwards).
+
+use ugo::directions::Scheme;
+use ugo::io::Scale;
+use ugo::kernel::Precision;
+use ugo::solve::Method;
 
 /// Options that override the case file's `[discretization]`.
 #[derive(clap::Args, Clone, Debug)]
@@ -12,12 +18,12 @@ pub struct Discretize {
     pub memory_limit: Option<f64>,
     /// Direction cells per patch: a count K (equal solid angle), `klems` or `tregenza`
     /// (default: the case's `directions`, else 1).
-    #[arg(long)]
-    pub directions: Option<String>,
+    #[arg(long, value_parser = scheme)]
+    pub directions: Option<Scheme>,
     /// Precision of the stored transport matrix G: `f64` (16 bytes per non-zero) or `f32`
     /// (f32 values and u32 indices, 8 bytes; products still accumulate in f64).
-    #[arg(long)]
-    pub precision: Option<String>,
+    #[arg(long, value_enum)]
+    pub precision: Option<PrecisionArg>,
 }
 
 /// Options that override the case file's `[solver]` stopping rule.
@@ -29,4 +35,66 @@ pub struct Stopping {
     /// Most iterations (default: the case's `[solver]`).
     #[arg(long)]
     pub max_iterations: Option<usize>,
+}
+
+/// `--directions`.
+fn scheme(name: &str) -> Result<Scheme, String> {
+    Scheme::parse(name).ok_or_else(|| format!("--directions must be {}, got \"{name}\"", Scheme::NAMES))
+}
+
+/// `--method`, `--methods`.
+pub fn method(name: &str) -> Result<Method, String> {
+    Method::parse(name).ok_or_else(|| format!("unknown method \"{name}\"; known: {}", Method::names()))
+}
+
+/// `--precision`.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum PrecisionArg {
+    F64,
+    F32,
+}
+
+impl From<PrecisionArg> for Precision {
+    fn from(p: PrecisionArg) -> Precision {
+        match p {
+            PrecisionArg::F64 => Precision::Double,
+            PrecisionArg::F32 => Precision::Single,
+        }
+    }
+}
+
+/// `--shading` (the gather's ray count is a flag of its own).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShadingArg {
+    /// The stored patch values.
+    Flat,
+    /// Interpolated across each surface's patches.
+    Smooth,
+    /// One more reflection at every hit point.
+    Gather,
+}
+
+/// `--false-colour`.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum ScaleArg {
+    Log,
+    Linear,
+}
+
+impl From<ScaleArg> for Scale {
+    fn from(s: ScaleArg) -> Scale {
+        match s {
+            ScaleArg::Log => Scale::Log,
+            ScaleArg::Linear => Scale::Linear,
+        }
+    }
+}
+
+/// `--basis`.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BasisArg {
+    /// Hemispherical harmonics (with --lmax).
+    Sh,
+    /// Truncated SVD of each material block (with --rank).
+    Svd,
 }

@@ -2,6 +2,7 @@
 //! optionally a false-colour map with a legend in cd/m² and the reflection-order pictures.
 
 use super::file_name;
+use super::options::{ScaleArg, ShadingArg};
 use anyhow::{Result, bail};
 use std::path::Path;
 use std::time::Instant;
@@ -64,25 +65,19 @@ pub struct Look<'a> {
     pub view: CameraOptions,
     /// Luminance shown as white, cd/m² (default: the 99th percentile).
     pub exposure: Option<f64>,
-    /// `log` or `linear`: also a false-colour map.
-    pub false_colour: Option<&'a str>,
+    /// Also a false-colour map, on this scale.
+    pub false_colour: Option<ScaleArg>,
     /// Reflection orders for the side-by-side order pictures.
     pub orders: &'a [usize],
-    /// `flat`, `smooth` or `gather`.
-    pub shading: &'a str,
+    pub shading: ShadingArg,
     /// Final-gather rays per pixel.
     pub gather_rays: usize,
 }
 
 pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()> {
     let exposure = look.exposure;
-    let shading = parse_shading(look.shading, look.gather_rays)?;
-    let scale = match look.false_colour {
-        None => None,
-        Some("log") => Some(Scale::Log),
-        Some("linear") => Some(Scale::Linear),
-        Some(other) => bail!("--false-colour takes `log` or `linear`, got \"{other}\""),
-    };
+    let shading = shading_of(look.shading, look.gather_rays)?;
+    let scale: Option<Scale> = look.false_colour.map(Scale::from);
     if let Some(l) = exposure
         && !(l.is_finite() && l > 0.0)
     {
@@ -96,7 +91,7 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
     };
     let case = stored.scene.path.file_stem().unwrap_or_default().to_string_lossy().into_owned();
     let orders = chosen_orders(&stored.orders, look.orders)?;
-    let mut lit = stored.into_lit();
+    let mut lit = ugo::study::lit_scene(stored);
     lit.set_shading(shading);
     std::fs::create_dir_all(dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
     for camera in &cameras {
@@ -147,13 +142,12 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
 }
 
 /// `--shading` and `--gather-rays` as a [`Shading`]; shared with `ugo agree`.
-pub fn parse_shading(name: &str, gather_rays: usize) -> Result<Shading> {
-    Ok(match name {
-        "flat" => Shading::Flat,
-        "smooth" => Shading::Smooth,
-        "gather" if (1..=65_536).contains(&gather_rays) => Shading::Gather { rays: gather_rays },
-        "gather" => bail!("--gather-rays must be from 1 to 65536, got {gather_rays}"),
-        other => bail!("--shading takes `flat`, `smooth` or `gather`, got \"{other}\""),
+pub fn shading_of(shading: ShadingArg, gather_rays: usize) -> Result<Shading> {
+    Ok(match shading {
+        ShadingArg::Flat => Shading::Flat,
+        ShadingArg::Smooth => Shading::Smooth,
+        ShadingArg::Gather if (1..=65_536).contains(&gather_rays) => Shading::Gather { rays: gather_rays },
+        ShadingArg::Gather => bail!("--gather-rays must be from 1 to 65536, got {gather_rays}"),
     })
 }
 

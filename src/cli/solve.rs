@@ -56,7 +56,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         bail!("--tolerance must lie in (0, 1), got {}", params.tolerance);
     }
     let methods = if job.methods.is_empty() {
-        vec![Method::parse(&scene.solver.method).context("the case's [solver] method")?]
+        vec![scene.solver.method]
     } else {
         job.methods.clone()
     };
@@ -94,7 +94,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         });
         solving.finish_and_clear();
         match result {
-            Ok((x, info)) => runs.push((Run { name: method.name(), info, difference: 0.0 }, x)),
+            Ok((x, info)) => runs.push((Run { method: *method, info, difference: 0.0 }, x)),
             Err(e) if methods.len() > 1 => eprintln!("ugo: {} failed: {e}", method.name()),
             Err(e) => return Err(e.into()),
         }
@@ -102,7 +102,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     if runs.is_empty() {
         bail!("every method failed");
     }
-    let reference = runs.iter().position(|(r, _)| r.name == "direct").unwrap_or_else(|| {
+    let reference = runs.iter().position(|(r, _)| r.method == Method::Direct).unwrap_or_else(|| {
         (0..runs.len()).min_by(|&a, &b| runs[a].0.info.residual().total_cmp(&runs[b].0.info.residual())).unwrap_or(0)
     });
     let coefficients = runs[reference].1.clone();
@@ -267,7 +267,7 @@ fn write_grids(grids: &[GridReading], output: &Path) -> Result<()> {
 }
 
 fn print_norms(n: &Norms, params: &SolveParams, runs: &[Run]) {
-    let observed = runs.iter().find(|r| r.name == "neumann").map_or("-".to_string(), |r| r.info.iterations.to_string());
+    let observed = runs.iter().find(|r| r.method == Method::Neumann).map_or("-".to_string(), |r| r.info.iterations.to_string());
     println!("  norms of K");
     println!("    ‖K‖₁             {:>12.6}", n.one);
     println!("    ‖K‖∞             {:>12.6}", n.infinity);
@@ -337,7 +337,7 @@ fn print_comparison(runs: &[Run], mc: Option<&MonteCarlo>) {
         });
         println!(
             "  {:<14} {:>10} {:>13} {:>10.3} {:>12.2e} {:>14.2e}{extra}",
-            r.name,
+            r.method.name(),
             i.iterations,
             i.applications,
             i.seconds,

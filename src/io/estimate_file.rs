@@ -14,7 +14,7 @@ use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::scene::Scene;
 use crate::trace::{FieldEstimate, TraceOptions};
-use anyhow::{Result, anyhow};
+use super::IoError;
 use ndarray::{Array1, Array3};
 use std::path::Path;
 
@@ -30,8 +30,8 @@ pub struct EstimateFile<'a> {
 }
 
 /// Writes `e` to `path` (through `path.tmp`, renamed when complete).
-pub fn write_estimate(path: &Path, e: &EstimateFile) -> Result<()> {
-    super::atomic(path, |tmp| write_to(tmp, e).map_err(|err| anyhow!("cannot write {}: {err}", tmp.display())))
+pub fn write_estimate(path: &Path, e: &EstimateFile) -> Result<(), IoError> {
+    super::atomic(path, |tmp| write_to(tmp, e).map_err(|err| err.to_string()))
 }
 
 fn write_to(path: &Path, e: &EstimateFile) -> hdf5::Result<()> {

@@ -2,17 +2,17 @@
 //! read back (`ugo agree` compares traced images with rendered ones).
 
 use crate::render::Image;
-use anyhow::{Result, anyhow};
+use super::IoError;
 use exr::prelude::{AnyChannel, AnyChannels, Encoding, FlatSamples, Layer, LayerAttributes, SmallVec, WritableImage};
 use std::path::Path;
 
 /// Writes `image` to `path` (through `path.tmp`, renamed when complete).
-pub fn write_exr(path: &Path, image: &Image) -> Result<()> {
+pub fn write_exr(path: &Path, image: &Image) -> Result<(), IoError> {
     write_exr_as(path, image, "luminance, cd/m2 (ugo render)")
 }
 
 /// [`write_exr`] with another description in the layer's comments.
-pub fn write_exr_as(path: &Path, image: &Image, comments: &str) -> Result<()> {
+pub fn write_exr_as(path: &Path, image: &Image, comments: &str) -> Result<(), IoError> {
     let samples: Vec<f32> = image.luminance.iter().map(|&l| l as f32).collect();
     let channel = AnyChannel::new("Y", FlatSamples::F32(samples));
     let mut attributes = LayerAttributes::named("luminance");
@@ -27,21 +27,21 @@ pub fn write_exr_as(path: &Path, image: &Image, comments: &str) -> Result<()> {
         exr::prelude::Image::from_layer(layer)
             .write()
             .to_file(tmp)
-            .map_err(|e| anyhow!("cannot write {}: {e}", tmp.display()))
+            .map_err(|e| e.to_string())
     })
 }
 
 /// The channel `Y` of the first layer of an EXR file, as an image in cd/m².
-pub fn read_exr(path: &Path) -> Result<Image> {
+pub fn read_exr(path: &Path) -> Result<Image, IoError> {
     let image = exr::prelude::read_first_flat_layer_from_file(path)
-        .map_err(|e| anyhow!("cannot read {} as OpenEXR: {e}", path.display()))?;
+        .map_err(|e| IoError::read(path, format!("not OpenEXR: {e}")))?;
     let layer = &image.layer_data;
     let channel = layer
         .channel_data
         .list
         .iter()
         .find(|c| c.name == *"Y")
-        .ok_or_else(|| anyhow!("{} has no luminance channel Y", path.display()))?;
+        .ok_or_else(|| IoError::read(path, "no luminance channel Y"))?;
     let luminance = channel.sample_data.values_as_f32().map(f64::from).collect();
     Ok(Image { width: layer.size.0, height: layer.size.1, luminance })
 }

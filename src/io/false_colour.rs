@@ -6,8 +6,8 @@
 //! below its bottom are drawn in the bottom colour, above its top in the top colour.
 
 use super::atomic;
+use super::IoError;
 use crate::render::Image;
-use anyhow::{Result, anyhow};
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -63,12 +63,12 @@ pub fn position(l: f64, lo: f64, hi: f64, scale: Scale) -> f64 {
 }
 
 /// Writes the false-colour map of `image` with its legend in `unit` to `path` (PNG).
-pub fn write_false_colour(path: &Path, image: &Image, scale: Scale, unit: &str) -> Result<()> {
+pub fn write_false_colour(path: &Path, image: &Image, scale: Scale, unit: &str) -> Result<(), IoError> {
     let (lo, hi) = bounds(image, scale);
     atomic(path, |tmp| {
         let tmp_png = tmp.with_extension("tmp.png");
-        draw(&tmp_png, image, scale, (lo, hi), unit).map_err(|e| anyhow!("writing {}: {e}", path.display()))?;
-        std::fs::rename(&tmp_png, tmp).map_err(|e| anyhow!("writing {}: {e}", path.display()))
+        draw(&tmp_png, image, scale, (lo, hi), unit).map_err(|e| e.to_string())?;
+        std::fs::rename(&tmp_png, tmp).map_err(|e| e.to_string())
     })
 }
 

@@ -32,7 +32,7 @@ use crate::luminaire::LuminaireKind;
 use crate::scene::Scene;
 use crate::solve::norms::Norms;
 use crate::solve::orders::OrderRecord;
-use crate::solve::{SolveInfo, SolveParams};
+use crate::solve::{Method, SolveInfo, SolveParams};
 use glam::DVec3;
 use hdf5::types::VarLenUnicode;
 use ndarray::{Array1, Array2, Array3};
@@ -72,27 +72,15 @@ pub struct BasisRecord<'a> {
 /// One method's solve of the system, for comparison.
 #[derive(Debug, Clone)]
 pub struct Run {
-    pub name: String,
+    pub method: Method,
     pub info: SolveInfo,
     /// Largest relative difference from the reference solution, `max |x − x_ref| / max |x_ref|`.
     pub difference: f64,
 }
 
 /// Writes `solution` to `path` (through `path.tmp`, renamed when complete).
-pub fn write_solution(path: &Path, solution: &Solution) -> hdf5::Result<()> {
-    let mut tmp = path.as_os_str().to_owned();
-    tmp.push(".tmp");
-    let tmp = std::path::PathBuf::from(tmp);
-    let result = write_to(&tmp, solution);
-    match result {
-        Ok(()) => {
-            std::fs::rename(&tmp, path).map_err(|e| hdf5::Error::from(format!("cannot rename {}: {e}", tmp.display())))
-        }
-        Err(e) => {
-            let _ = std::fs::remove_file(&tmp);
-            Err(e)
-        }
-    }
+pub fn write_solution(path: &Path, solution: &Solution) -> Result<(), super::IoError> {
+    super::atomic(path, |tmp| write_to(tmp, solution).map_err(|e| e.to_string()))
 }
 
 fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
@@ -116,7 +104,7 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     if s.runs.len() > 1 {
         let compare = file.create_group("compare")?;
         for run in s.runs {
-            let g = compare.create_group(&run.name)?;
+            let g = compare.create_group(&run.method.name())?;
             write_history(&g, &run.info)?;
             g.new_attr::<f64>().create("max_relative_difference")?.write_scalar(&run.difference)?;
             g.new_attr::<f64>().create("seconds")?.write_scalar(&run.info.seconds)?;

@@ -2,6 +2,7 @@
 //! the HDF5 file of a forward Monte Carlo estimate, convergence plots, and rendered images
 //! (linear EXR, read back for comparisons; tone-mapped PNG; false colour).
 
+mod error;
 mod estimate_file;
 mod exr_file;
 mod false_colour;
@@ -12,6 +13,7 @@ mod read;
 mod readings;
 mod triptych;
 
+pub use error::IoError;
 pub use estimate_file::{EstimateFile, write_estimate};
 pub use exr_file::{read_exr, write_exr, write_exr_as};
 pub use false_colour::{LEGEND_WIDTH, Scale, colour, position, write_false_colour};
@@ -25,17 +27,17 @@ pub use triptych::{CAPTION_HEIGHT, write_triptych};
 use std::path::{Path, PathBuf};
 
 /// Runs `write` on `path.tmp` and renames it to `path` when it succeeds; removes the
-/// temporary file when it fails.
-fn atomic(path: &Path, write: impl FnOnce(&Path) -> anyhow::Result<()>) -> anyhow::Result<()> {
+/// temporary file when it fails. The one temporary-name-and-rename of every output.
+fn atomic(path: &Path, write: impl FnOnce(&Path) -> Result<(), String>) -> Result<(), IoError> {
     let mut tmp = path.as_os_str().to_owned();
     tmp.push(".tmp");
     let tmp = PathBuf::from(tmp);
     match write(&tmp) {
         Ok(()) => std::fs::rename(&tmp, path)
-            .map_err(|e| anyhow::anyhow!("cannot rename {} to {}: {e}", tmp.display(), path.display())),
-        Err(e) => {
+            .map_err(|e| IoError::write(path, format!("cannot rename {} to it: {e}", tmp.display()))),
+        Err(why) => {
             let _ = std::fs::remove_file(&tmp);
-            Err(e)
+            Err(IoError::write(path, why))
         }
     }
 }

@@ -2,6 +2,7 @@
 //! applications and wall time, log scale, one line per method (a dot marks where it
 //! stopped, so a direct solve shows as one dot), with a legend.
 
+use super::IoError;
 use crate::io::Run;
 use plotters::prelude::*;
 use std::path::Path;
@@ -12,7 +13,11 @@ type Abscissa = dyn Fn(&Run, usize) -> f64;
 const FONT: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
 
 /// Writes the three-panel convergence plot of `runs` to `path` (PNG).
-pub fn convergence_plot(path: &Path, title: &str, runs: &[Run]) -> Result<(), String> {
+pub fn convergence_plot(path: &Path, title: &str, runs: &[Run]) -> Result<(), IoError> {
+    draw_plot(path, title, runs).map_err(|why| IoError::write(path, why))
+}
+
+fn draw_plot(path: &Path, title: &str, runs: &[Run]) -> Result<(), String> {
     register_font();
     let root = BitMapBackend::new(path, (1800, 640)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| e.to_string())?;
@@ -62,7 +67,7 @@ fn draw_panel(
         chart.draw_series(last.map(|p| Circle::new(p, 6, color.filled())))?;
         chart
             .draw_series(LineSeries::new(points(run), color.stroke_width(3)))?
-            .label(run.name.clone())
+            .label(run.method.name())
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(3)));
     }
     chart

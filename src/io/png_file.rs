@@ -3,7 +3,7 @@
 //! then the sRGB transfer function.
 
 use crate::render::Image;
-use anyhow::{Result, anyhow};
+use super::IoError;
 use std::path::Path;
 
 /// The luminance mapped to white when none is given: the 99th percentile of the
@@ -29,12 +29,12 @@ pub fn srgb(linear: f64) -> f64 {
 }
 
 /// Writes `image` as a grey sRGB PNG with `exposure` (cd/m²) as white, and the sidecar.
-pub fn write_png(path: &Path, image: &Image, exposure: f64) -> Result<()> {
+pub fn write_png(path: &Path, image: &Image, exposure: f64) -> Result<(), IoError> {
     let pixels: Vec<u8> = image.luminance.iter().map(|&l| (srgb(l / exposure) * 255.0).round() as u8).collect();
     let (w, h) = (image.width as u32, image.height as u32);
     super::atomic(path, |tmp| {
         ::image::save_buffer_with_format(tmp, &pixels, w, h, ::image::ExtendedColorType::L8, ::image::ImageFormat::Png)
-            .map_err(|e| anyhow!("cannot write {}: {e}", tmp.display()))
+            .map_err(|e| e.to_string())
     })?;
     let (lo, hi) = image.range();
     let note = format!(
@@ -45,6 +45,6 @@ pub fn write_png(path: &Path, image: &Image, exposure: f64) -> Result<()> {
     let mut side = path.as_os_str().to_owned();
     side.push(".txt");
     super::atomic(Path::new(&side), |tmp| {
-        std::fs::write(tmp, note).map_err(|e| anyhow!("cannot write {}: {e}", tmp.display()))
+        std::fs::write(tmp, note).map_err(|e| e.to_string())
     })
 }

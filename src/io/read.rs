@@ -2,12 +2,11 @@
 //! scene, the patch geometry and the luminance field (with its standard errors when the
 //! file holds a Monte Carlo estimate), enough to look at or compare the result again.
 
-use crate::directions::DirectionSet;
+use crate::directions::{DirectionSet, Scheme};
 use crate::geometry::{ConvexPolygon, Mesh, NO_TWIN, Patch};
-use crate::luminaire::Source;
-use crate::render::LitScene;
 use crate::scene::Scene;
-use anyhow::{Context, Result, anyhow, bail};
+use super::IoError;
+use crate::scene::SceneError;
 use glam::DVec3;
 use hdf5::types::VarLenUnicode;
 use std::path::Path;
@@ -29,27 +28,46 @@ pub struct StoredSolution {
     pub method: String,
 }
 
-impl StoredSolution {
-    /// The solution ready for rendering (flat shading), with the material blocks and the
-    /// luminaires of its scene.
-    pub fn into_lit(self) -> LitScene {
-        let blocks = self.scene.materials.iter().map(|m| m.model.block(&self.directions)).collect();
-        let sources = self.scene.luminaires.iter().map(Source::of).collect();
-        LitScene::new(self.mesh, self.directions, self.luminance, blocks).with_luminaires(sources)
+/// Opens `path` and reads the scene, mesh, direction set and luminance field.
+pub fn read_solution(path: &Path) -> std::result::Result<StoredSolution, IoError> {
+    let file = hdf5::File::open(path).map_err(|e| IoError::read(path, format!("not HDF5: {e}")))?;
+    read_from(&file).map_err(|Why(why)| IoError::NotASolution { path: path.to_path_buf(), why })
+}
+
+/// What is wrong with a file's layout.
+struct Why(String);
+
+impl From<hdf5::Error> for Why {
+    fn from(e: hdf5::Error) -> Why {
+        Why(e.to_string())
     }
 }
 
-/// Opens `path` and reads the scene, mesh, direction set and luminance field.
-pub fn read_solution(path: &Path) -> Result<StoredSolution> {
-    let file = hdf5::File::open(path).map_err(|e| anyhow!("cannot open {} as HDF5: {e}", path.display()))?;
-    read_from(&file).with_context(|| format!("{} is not a ugo solution file", path.display()))
+impl From<SceneError> for Why {
+    fn from(e: SceneError) -> Why {
+        Why(format!("its stored scene: {e}"))
+    }
+}
+
+type Result<T> = std::result::Result<T, Why>;
+
+macro_rules! why {
+    ($($reason:tt)*) => {
+        Why(format!($($reason)*))
+    };
+}
+
+macro_rules! bail {
+    ($($reason:tt)*) => {
+        return Err(Why(format!($($reason)*)))
+    };
 }
 
 fn read_from(file: &hdf5::File) -> Result<StoredSolution> {
     let scene_file = text(file, "scene_file")?;
     let scene = Scene::parse(Path::new(&scene_file), text(file, "scene_text")?)?;
     let name = text(file, "directions")?;
-    let directions = DirectionSet::named(&name).ok_or_else(|| anyhow!("unknown direction set \"{name}\""))?;
+    let directions = Scheme::parse(&name).ok_or_else(|| why!("unknown direction set \"{name}\""))?.set();
     let luminance = file.dataset("field/luminance")?.read_dyn::<f64>()?;
     let k = directions.len();
     let shape = luminance.shape().to_vec();
@@ -63,6 +81,10 @@ fn read_from(file: &hdf5::File) -> Result<StoredSolution> {
     }
     let emission = file.dataset("field/emission")?.read_dyn::<f64>()?;
     let emission: Vec<f64> = (0..n).map(|i| emission.get([i, 0, 0]).copied().unwrap_or(0.0)).collect();
+    let materials = scene.materials.len();
+    if let Some(i) = patches.iter().position(|p| p.material as usize >= materials) {
+        bail!("/mesh/material_id[{i}] = {}, but the stored scene has {materials} materials", patches[i].material);
+    }
     let faces = patches.iter().map(|p| p.face as usize + 1).max().unwrap_or(0);
     let mesh = Mesh { patches, emission, faces };
     let luminance: Vec<f64> = luminance.iter().copied().collect();
@@ -152,6 +174,6 @@ fn reversed(a: &Patch, b: &Patch) -> bool {
 
 fn text(file: &hdf5::File, name: &str) -> Result<String> {
     let value: VarLenUnicode =
-        file.attr(name).and_then(|a| a.read_scalar()).map_err(|e| anyhow!("attribute `{name}`: {e}"))?;
+        file.attr(name).and_then(|a| a.read_scalar()).map_err(|e| why!("attribute `{name}`: {e}"))?;
     Ok(value.as_str().to_string())
 }

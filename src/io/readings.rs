@@ -7,7 +7,7 @@ use super::{Scale, atomic, write_false_colour};
 use crate::readout::grid::GridReading;
 use crate::readout::probe::ProbeReading;
 use crate::render::Image;
-use anyhow::{Result, anyhow};
+use super::IoError;
 use std::io::Write;
 use std::path::Path;
 
@@ -15,7 +15,7 @@ use std::path::Path;
 const MAP_SIZE: usize = 480;
 
 /// `u,v,x,y,z,E_lx` per point (`u`, `v` the cell indices), statistics in `#` comments.
-pub fn write_grid_csv(path: &Path, grid: &GridReading) -> Result<()> {
+pub fn write_grid_csv(path: &Path, grid: &GridReading) -> Result<(), IoError> {
     let [nu, _] = grid.grid.resolution;
     let st = grid.stats();
     let mut text = format!(
@@ -35,7 +35,7 @@ pub fn write_grid_csv(path: &Path, grid: &GridReading) -> Result<()> {
 }
 
 /// `name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx` per probe (the last: the luminaires' part).
-pub fn write_probes_csv(path: &Path, probes: &[ProbeReading]) -> Result<()> {
+pub fn write_probes_csv(path: &Path, probes: &[ProbeReading]) -> Result<(), IoError> {
     let mut text = String::from("name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx\n");
     for p in probes {
         let (x, n) = (p.position, p.normal);
@@ -48,15 +48,15 @@ pub fn write_probes_csv(path: &Path, probes: &[ProbeReading]) -> Result<()> {
     write_text(path, &text)
 }
 
-fn write_text(path: &Path, text: &str) -> Result<()> {
+fn write_text(path: &Path, text: &str) -> Result<(), IoError> {
     atomic(path, |tmp| {
-        let mut file = std::fs::File::create(tmp).map_err(|e| anyhow!("cannot create {}: {e}", tmp.display()))?;
-        file.write_all(text.as_bytes()).map_err(|e| anyhow!("writing {}: {e}", path.display()))
+        let mut file = std::fs::File::create(tmp).map_err(|e| e.to_string())?;
+        file.write_all(text.as_bytes()).map_err(|e| e.to_string())
     })
 }
 
 /// The false-colour map of the grid's illuminance on a linear scale from 0, in lx.
-pub fn write_grid_map(path: &Path, grid: &GridReading) -> Result<()> {
+pub fn write_grid_map(path: &Path, grid: &GridReading) -> Result<(), IoError> {
     let [nu, nv] = grid.grid.resolution;
     let block = (MAP_SIZE / nu.max(nv)).max(1);
     let (width, height) = (nu * block, nv * block);

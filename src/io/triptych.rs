@@ -3,8 +3,8 @@
 //! that the missing light shows.
 
 use super::srgb;
+use super::IoError;
 use crate::render::Image;
-use anyhow::{Result, anyhow};
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -13,11 +13,11 @@ pub const CAPTION_HEIGHT: u32 = 36;
 
 /// Writes `panels` (caption, image; all the same size) side by side to `path` (PNG), with
 /// `exposure` cd/m² shown as white.
-pub fn write_triptych(path: &Path, panels: &[(String, Image)], exposure: f64) -> Result<()> {
+pub fn write_triptych(path: &Path, panels: &[(String, Image)], exposure: f64) -> Result<(), IoError> {
     super::atomic(path, |tmp| {
         let tmp_png = tmp.with_extension("tmp.png");
-        draw(&tmp_png, panels, exposure).map_err(|e| anyhow!("writing {}: {e}", path.display()))?;
-        std::fs::rename(&tmp_png, tmp).map_err(|e| anyhow!("writing {}: {e}", path.display()))
+        draw(&tmp_png, panels, exposure).map_err(|e| e.to_string())?;
+        std::fs::rename(&tmp_png, tmp).map_err(|e| e.to_string())
     })
 }
 

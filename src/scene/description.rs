@@ -1,9 +1,11 @@
 //! The runtime scene: what a validated case file says, in plain types (`design.md` §7).
 
 use super::grid::Grid;
+use crate::directions::Scheme;
 use crate::geometry::Surface;
 use crate::luminaire::Luminaire;
 use crate::material::MaterialModel;
+use crate::solve::Method;
 use glam::DVec3;
 use std::path::PathBuf;
 
@@ -31,15 +33,15 @@ pub struct Scene {
 pub struct Discretization {
     /// Target edge length of the patches, m.
     pub patch_size: f64,
-    /// Direction set: a cell count (`"64"`), `"klems"` or `"tregenza"` (default `"1"`).
-    pub directions: String,
+    /// Direction set (default one cell: radiosity).
+    pub directions: Scheme,
 }
 
 /// `[solver]`: the method and its stopping rule.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SolverSettings {
-    /// A name `solve::Method::parse` accepts (default `"neumann"`).
-    pub method: String,
+    /// Default successive approximation (Neumann).
+    pub method: Method,
     /// Relative residual `‖L0 + Kx − x‖₂/‖L0‖₂` at which the iteration stops.
     pub tolerance: f64,
     /// The iteration gives up (with an error) after this many kernel applications.
@@ -48,7 +50,7 @@ pub struct SolverSettings {
 
 impl Default for SolverSettings {
     fn default() -> Self {
-        SolverSettings { method: "neumann".into(), tolerance: 1e-8, max_iterations: 10_000 }
+        SolverSettings { method: Method::Neumann, tolerance: 1e-8, max_iterations: 10_000 }
     }
 }
 

@@ -14,7 +14,7 @@ use super::schema::{RawCamera, RawDirections, RawDiscretization, RawProbe, RawSc
 use super::surface::{emits, surfaces};
 use super::description::{Camera, Discretization, Probe, Scene, SolverSettings};
 use super::error::SceneError;
-use crate::directions::DirectionSet;
+use crate::directions::Scheme;
 use crate::solve::Method;
 use std::path::Path;
 
@@ -65,16 +65,14 @@ fn discretization(path: &Path, raw: Option<RawDiscretization>) -> Result<Discret
     let at = Context::new(path, "[discretization]");
     let raw = raw.ok_or_else(|| at.error("", "the table [discretization] is required"))?;
     let patch_size = at.positive("patch_size", raw.patch_size)?;
-    let directions = match raw.directions {
+    let name = match raw.directions {
         None => "1".to_string(),
         Some(RawDirections::Count(k)) => k.to_string(),
         Some(RawDirections::Name(name)) => name,
     };
-    if DirectionSet::named(&directions).is_none() {
-        let message =
-            format!("unknown direction set \"{directions}\"; give a cell count ≥ 1, \"klems\" or \"tregenza\"");
-        return Err(at.error("directions", message));
-    }
+    let directions = Scheme::parse(&name).ok_or_else(|| {
+        at.error("directions", format!("unknown direction set \"{name}\"; give {}", Scheme::NAMES))
+    })?;
     Ok(Discretization { patch_size, directions })
 }
 
@@ -94,11 +92,12 @@ fn solver(path: &Path, raw: Option<RawSolver>) -> Result<SolverSettings, SceneEr
             .filter(|&n| n >= 1)
             .ok_or_else(|| at.error("max_iterations", format!("must be at least 1, got {n}")))?,
     };
-    let method = raw.method.unwrap_or(default.method);
-    if Method::parse(&method).is_none() {
-        let message = format!("unknown method \"{method}\"; known: {}", Method::NAMES);
-        return Err(at.error("method", message));
-    }
+    let method = match raw.method {
+        None => default.method,
+        Some(name) => Method::parse(&name).ok_or_else(|| {
+            at.error("method", format!("unknown method \"{name}\"; known: {}", Method::names()))
+        })?,
+    };
     Ok(SolverSettings { method, tolerance, max_iterations })
 }
 

@@ -27,25 +27,31 @@ pub enum Method {
 /// Default GMRES restart length.
 pub const RESTART: usize = 30;
 
+/// The methods by name (`gmres` also as `gmres:M` for a restart length `M`).
+const BY_NAME: [(&str, Method); 8] = [
+    ("neumann", Method::Neumann),
+    ("successive", Method::Neumann),
+    ("gauss-seidel", Method::GaussSeidel),
+    ("southwell", Method::Southwell),
+    ("gmres", Method::Gmres { restart: RESTART }),
+    ("bicgstab", Method::Bicgstab),
+    ("direct", Method::Direct),
+    ("direct-sparse", Method::DirectSparse),
+];
+
 impl Method {
-    /// All names `parse` accepts.
-    pub const NAMES: &'static str =
-        "neumann, gauss-seidel, southwell, gmres (or gmres:M), bicgstab, direct, direct-sparse";
+    /// All names `parse` accepts, for error messages.
+    pub fn names() -> String {
+        let names: Vec<&str> = BY_NAME.iter().map(|(name, _)| *name).collect();
+        format!("{}, gmres:M", names.join(", "))
+    }
 
     pub fn parse(name: &str) -> Option<Method> {
-        Some(match name {
-            "neumann" | "successive" => Method::Neumann,
-            "gauss-seidel" => Method::GaussSeidel,
-            "southwell" => Method::Southwell,
-            "gmres" => Method::Gmres { restart: RESTART },
-            "bicgstab" => Method::Bicgstab,
-            "direct" => Method::Direct,
-            "direct-sparse" => Method::DirectSparse,
-            other => {
-                let m = other.strip_prefix("gmres:")?.parse::<usize>().ok().filter(|&m| m >= 1)?;
-                Method::Gmres { restart: m }
-            }
-        })
+        if let Some((_, method)) = BY_NAME.iter().find(|(n, _)| *n == name) {
+            return Some(*method);
+        }
+        let m = name.strip_prefix("gmres:")?.parse::<usize>().ok().filter(|&m| m >= 1)?;
+        Some(Method::Gmres { restart: m })
     }
 
     /// Short name for tables and files.

@@ -22,7 +22,7 @@ pub use gauss_seidel::gauss_seidel;
 pub use gmres::gmres;
 pub use history::relative_residual;
 pub use linop::LinOp;
-pub use method::{Method, System, solve};
+pub use method::{Method, RESTART, System, solve};
 pub use neumann::successive_approximation;
 pub use outcome::{SolveError, SolveInfo, SolveParams};
 pub use southwell::southwell;

@@ -3,23 +3,15 @@
 //! (cd/m², from `mesh.emission`, which already turned a surface's flux into luminance)
 //! and flux `Φ = π L0 A` (lm).
 //!
-//! Emitters are a closed set ([`Emitter`], one `match` per operation) chosen in proportion
-//! to their flux, both for next-event estimation (a point seen from a surface point, with
-//! its density per solid angle there) and for photon emission (a point and a Lambertian
-//! direction). A point luminaire is one more arm: a delta emitter that `pdf_towards`
-//! never meets.
+//! Emitting patches are chosen in proportion to their flux, both for next-event
+//! estimation (a point seen from a surface point, with its density per solid angle there)
+//! and for photon emission (a point and a Lambertian direction). Luminaires are sampled
+//! apart, exactly (`luminaires.rs`).
 
 use super::sampling::cosine_direction;
 use crate::geometry::{Mesh, Patch};
 use glam::DVec3;
 use std::f64::consts::PI;
-
-/// One light source.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Emitter {
-    /// Patch `patch` of the mesh, emitting its Lambertian luminance from its front side.
-    Patch { patch: u32 },
-}
 
 /// Light arriving at a surface point from a sampled point of an emitter.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -48,7 +40,8 @@ pub struct Departure {
 /// Every emitter of a scene with its share of the total flux.
 #[derive(Debug, Clone)]
 pub struct Emitters {
-    list: Vec<Emitter>,
+    /// The emitting patches (each emits its Lambertian luminance from its front side).
+    list: Vec<u32>,
     /// Cumulative flux fractions, last = 1.
     cdf: Vec<f64>,
     /// Probability of choosing each patch (0 for non-emitting ones).
@@ -67,7 +60,7 @@ impl Emitters {
         for (i, &f) in flux.iter().enumerate() {
             if f > 0.0 {
                 running += f;
-                list.push(Emitter::Patch { patch: i as u32 });
+                list.push(i as u32);
                 cdf.push(running / total);
             }
         }
@@ -88,7 +81,7 @@ impl Emitters {
     }
 
     /// The emitter whose flux interval holds `u`, and `u` rescaled to `[0, 1)` within it.
-    fn pick(&self, u: f64) -> (Emitter, f64) {
+    fn pick(&self, u: f64) -> (u32, f64) {
         let i = self.cdf.partition_point(|&c| c <= u).min(self.list.len() - 1);
         let start = if i == 0 { 0.0 } else { self.cdf[i - 1] };
         let width = self.cdf[i] - start;
@@ -102,21 +95,18 @@ impl Emitters {
         if self.list.is_empty() {
             return None;
         }
-        match self.pick(u[0]) {
-            (Emitter::Patch { patch }, v) => {
-                let p = &mesh.patches[patch as usize];
-                let point = point_on(p, v, u[1], u[2]);
-                let to = point - x;
-                let distance2 = to.length_squared();
-                let direction = to / distance2.sqrt();
-                let cos_y = -p.normal.dot(direction);
-                if cos_y <= 0.0 || distance2 <= 0.0 {
-                    return None;
-                }
-                let pdf = self.chance[patch as usize] / p.area * distance2 / cos_y;
-                Some(Incoming { direction, point, face: p.face, luminance: mesh.emission[patch as usize], pdf })
-            }
+        let (patch, v) = self.pick(u[0]);
+        let p = &mesh.patches[patch as usize];
+        let point = point_on(p, v, u[1], u[2]);
+        let to = point - x;
+        let distance2 = to.length_squared();
+        let direction = to / distance2.sqrt();
+        let cos_y = -p.normal.dot(direction);
+        if cos_y <= 0.0 || distance2 <= 0.0 {
+            return None;
         }
+        let pdf = self.chance[patch as usize] / p.area * distance2 / cos_y;
+        Some(Incoming { direction, point, face: p.face, luminance: mesh.emission[patch as usize], pdf })
     }
 
     /// Density per solid angle at `x` with which [`Emitters::sample_towards`] picks point
@@ -135,14 +125,11 @@ impl Emitters {
         if self.list.is_empty() {
             return None;
         }
-        match self.pick(u[0]) {
-            (Emitter::Patch { patch }, v) => {
-                let p = &mesh.patches[patch as usize];
-                let origin = point_on(p, v, u[1], u[2]);
-                let direction = p.frame().world(cosine_direction(u[3], u[4]));
-                Some(Departure { origin, direction, face: p.face })
-            }
-        }
+        let (patch, v) = self.pick(u[0]);
+        let p = &mesh.patches[patch as usize];
+        let origin = point_on(p, v, u[1], u[2]);
+        let direction = p.frame().world(cosine_direction(u[3], u[4]));
+        Some(Departure { origin, direction, face: p.face })
     }
 }
 

@@ -134,11 +134,6 @@ impl Visibility {
         }
     }
 
-    /// Number of triangles in the hierarchy.
-    pub fn triangle_count(&self) -> usize {
-        self.triangles.len()
-    }
-
     /// True when the segment from `a` to `b` crosses no face other than `ignore`.
     pub fn visible(&self, a: DVec3, b: DVec3, ignore: [u32; 2]) -> bool {
         self.visible_cached(a, b, ignore, &mut Blocker::default())

@@ -34,7 +34,7 @@ pub struct Solved {
 pub fn solved(name: &str) -> Solved {
     let scene = Scene::load(&Path::new("cases/cie171").join(format!("{name}.toml"))).unwrap_or_else(|e| panic!("{e}"));
     let model = Model::build(&scene, &ModelOptions::of(&scene), &|_| {}, &|_| {}).expect("fits in memory");
-    let x = solve_model(&model, Method::parse(&scene.solver.method).expect("known method"));
+    let x = solve_model(&model, scene.solver.method);
     let probes = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()));
     Solved { scene, model, x, probes }
 }

@@ -183,3 +183,11 @@ fn bench_reports_every_figure_as_json_and_exports_the_peer_data() {
     assert_eq!(size("triangles.f32"), meta["triangles"].as_u64().unwrap() * 36);
     assert_eq!(size("csr_data.f64"), meta["nnz"].as_u64().unwrap() * 8);
 }
+
+/// Issue 13.9: a scene whose patches never face each other (a point source over a floor)
+/// has nothing for the ray benchmark to time; it is refused at once instead of looping.
+#[test]
+fn bench_refuses_a_scene_without_facing_patches() {
+    let err = assert_clean_failure(&ugo(&["bench", "cases/cie171/5.2-point-source.toml", "--rays", "1000"]));
+    assert!(err.contains("face each other"), "{err}");
+}

@@ -143,3 +143,24 @@ fn a_camera_given_on_the_command_line_renders_and_is_checked_like_a_table() {
     let o = ugo(&["render", h5, "--position", "0.5,0.5,0.5"]);
     assert!(!o.status.success() && text(&o).contains("--look-at"), "{}", text(&o));
 }
+
+/// Issue 13.9: a file whose `/mesh/material_id` names a material the stored scene does not
+/// have is refused with the dataset named, not an assertion.
+#[test]
+fn render_refuses_a_material_id_outside_the_stored_scene() {
+    let dir = scratch("bad-material-id");
+    let h5 = dir.join("furnace.h5");
+    let o = ugo(&["solve", "cases/furnace-box.toml", "--patch-size", "0.5", "-o", h5.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o));
+    {
+        let file = hdf5::File::open_rw(&h5).unwrap();
+        let dataset = file.dataset("mesh/material_id").unwrap();
+        let mut ids = dataset.read_raw::<u32>().unwrap();
+        ids[3] = 7;
+        dataset.write_raw(&ids).unwrap();
+    }
+    let o = ugo(&["render", h5.to_str().unwrap(), "-o", dir.to_str().unwrap()]);
+    assert!(!o.status.success(), "{}", text(&o));
+    assert!(text(&o).contains("/mesh/material_id[3] = 7"), "{}", text(&o));
+    assert!(!text(&o).contains("panicked"), "{}", text(&o));
+}

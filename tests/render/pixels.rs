@@ -74,7 +74,7 @@ fn the_furnace_box_renders_five_candela_per_square_metre_everywhere() {
     let stored = read_solution(&out).unwrap();
     let camera = stored.scene.cameras[0].clone();
     assert_eq!(camera.name, "inside");
-    let mut lit = stored.into_lit();
+    let mut lit = ugo::study::lit_scene(stored);
     for shading in [Shading::Flat, Shading::Smooth, Shading::Gather { rays: 8 }] {
         lit.set_shading(shading);
         let image = render(&lit, &camera);
@@ -217,7 +217,7 @@ fn files_without_face_records_pair_back_to_back_twins() {
 
     // From below, the plate's lower twin is seen: lit only by what the plate transmits (nothing).
     let camera = stored.scene.cameras[0].clone();
-    let lit = stored.into_lit();
+    let lit = ugo::study::lit_scene(stored);
     let image = render(&lit, &camera);
     assert!(image.luminance.iter().all(|&l| l == 0.0), "{:?}", image.luminance);
 }

@@ -24,7 +24,7 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         source: String::new(),
         name: "test".into(),
         description: String::new(),
-        discretization: Discretization { patch_size, directions: "1".into() },
+        discretization: Discretization { patch_size, directions: ugo::directions::Scheme::Cells(1) },
         solver: SolverSettings::default(),
         materials,
         surfaces,

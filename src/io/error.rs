@@ -1,0 +1,26 @@
+//! Why a file could not be written or read back: the path and what went wrong there.
+
+use std::fmt::Display;
+use std::path::{Path, PathBuf};
+use thiserror::Error;
+
+#[derive(Debug, Error)]
+pub enum IoError {
+    #[error("cannot write {}: {why}", path.display())]
+    Write { path: PathBuf, why: String },
+    #[error("cannot read {}: {why}", path.display())]
+    Read { path: PathBuf, why: String },
+    /// A file that opened but does not hold what ugo writes.
+    #[error("{} is not a ugo solution file: {why}", path.display())]
+    NotASolution { path: PathBuf, why: String },
+}
+
+impl IoError {
+    pub fn write(path: &Path, why: impl Display) -> IoError {
+        IoError::Write { path: path.to_path_buf(), why: why.to_string() }
+    }
+
+    pub fn read(path: &Path, why: impl Display) -> IoError {
+        IoError::Read { path: path.to_path_buf(), why: why.to_string() }
+    }
+}
