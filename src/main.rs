@@ -5,10 +5,10 @@ mod cli;
 
 use clap::{Parser, Subcommand};
 use cli::options::{Discretize, ScaleArg, ShadingArg, Stopping, method};
-use ugo::solve::Method;
 use cli::solve::Job;
 use std::path::PathBuf;
 use std::process::ExitCode;
+use ugo::solve::Method;
 
 /// A numerical laboratory for the global illumination equation of a 3D scene.
 #[derive(Parser)]
@@ -176,7 +176,14 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if e.use_stderr() => {
+            eprint!("ugo: {}", e.render());
+            return ExitCode::from(2);
+        }
+        Err(e) => e.exit(),
+    };
     let result = match cli.command {
         Command::Solve {
             case,
@@ -238,6 +245,7 @@ fn main() -> ExitCode {
                 let params = ugo::solve::SolveParams {
                     tolerance: tolerance.unwrap_or(1e-10),
                     max_iterations: max_iterations.unwrap_or(10_000),
+                    ..Default::default()
                 };
                 let method = methods.first().copied().unwrap_or(Method::Gmres { restart: ugo::solve::RESTART });
                 return cli::basis::study(&case, &discretize, &bases, method, params, &plot);
@@ -260,14 +268,7 @@ fn main() -> ExitCode {
             cli::solve::run(&case, &discretize, job)
         }),
         Command::Render { solution, cameras, exposure, output, false_colour, orders, shading, gather_rays, view } => {
-            let look = cli::render::Look {
-                view,
-                exposure,
-                false_colour,
-                orders: &orders,
-                shading,
-                gather_rays,
-            };
+            let look = cli::render::Look { view, exposure, false_colour, orders: &orders, shading, gather_rays };
             cli::render::run(&solution, &cameras, &output, &look)
         }
         Command::Trace { case, cameras, spp, probe_samples, forward, photons, seed, max_order, output, discretize } => {
@@ -277,8 +278,7 @@ fn main() -> ExitCode {
             cli::trace::run(&case, &discretize, &job)
         }
         Command::Agree { solution, reference, camera, samples, shading, gather_rays } => {
-            let rendering =
-                cli::agree::Rendering { camera: camera.as_deref(), samples, shading, gather_rays };
+            let rendering = cli::agree::Rendering { camera: camera.as_deref(), samples, shading, gather_rays };
             cli::agree::run(&solution, &reference, &rendering)
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),

@@ -8,9 +8,9 @@
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::kernel::{Estimate, Footprint, Kernel, Precision, TooLarge, Transport, TransportMatrix, assemble};
-use crate::transfer::form_factor::Quadrature;
 use crate::luminaire::{DirectLight, Source, direct_light};
 use crate::scene::Scene;
+use crate::transfer::form_factor::Quadrature;
 use crate::visibility::{Faces, Visibility};
 use std::time::Instant;
 

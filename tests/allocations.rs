@@ -12,9 +12,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use ugo::basis::{Basis, Factorization, Reduced};
 use ugo::directions::DirectionSet;
 use ugo::kernel::{Explicit, Factored};
-use ugo::solve::LinOp;
 use ugo::model::{Model, ModelOptions};
 use ugo::scene::Scene;
+use ugo::solve::LinOp;
 use ugo::visibility::NO_FACE;
 
 struct Counting;

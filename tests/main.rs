@@ -1,7 +1,6 @@
 //! The one integration-test crate of ugo; its folders mirror `src/`.
 
 mod basis;
-mod material;
 mod cie171;
 mod cli;
 mod directions;
@@ -9,6 +8,7 @@ mod grid;
 mod kernel;
 mod layering;
 mod luminaire;
+mod material;
 mod photometry;
 mod render;
 mod scene;

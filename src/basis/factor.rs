@@ -18,8 +18,8 @@
 //! factors `[ρ̄ | τ̄]` together, so both share `Ψ`).
 
 use super::sh;
-use crate::material::Block;
 use crate::directions::DirectionSet;
+use crate::material::Block;
 use nalgebra::DMatrix;
 use std::f64::consts::PI;
 use thiserror::Error;

@@ -3,8 +3,8 @@
 //! factored bases, with the error of each against the full angular solution, its
 //! unknowns, memory and time, as a table and a plot (`design.md` §4).
 
+use super::options::{BasisArg, Discretize, basis};
 use super::{bar, bytes, load};
-use super::options::{BasisArg, Discretize};
 use anyhow::{Result, bail};
 use plotters::prelude::*;
 use std::path::Path;
@@ -19,7 +19,7 @@ use ugo::solve::{Method, SolveParams, System, relative_residual, solve};
 pub struct BasisOptions {
     /// Solve for the coefficients of an angular basis: `sh` (hemispherical harmonics,
     /// with --lmax) or `svd` (truncated SVD of each material block, with --rank).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = basis)]
     basis: Option<BasisArg>,
     /// Highest harmonic degree of `--basis sh`: (lmax+1)² coefficients per patch.
     #[arg(long, requires = "basis")]
@@ -79,7 +79,8 @@ pub fn study(
     let factored = Factored::new(&model.kernel);
     let start = Instant::now();
     let system = System::of(&model.kernel, &factored, None, &[], &model.l0);
-    let (reference, info) = solve(method, &system, &params, options.memory_limit, &mut |_, _| {})?;
+    let (reference, info) =
+        solve(method, &system, &SolveParams { memory_limit: options.memory_limit, ..params }, &mut |_, _| {})?;
     let full_seconds = start.elapsed().as_secs_f64();
     let norm = |v: &mut dyn Iterator<Item = f64>| v.map(|e| e * e).sum::<f64>().sqrt();
     let scale = norm(&mut reference.iter().copied());
@@ -104,7 +105,12 @@ pub fn study(
                 let reduced = Reduced::new(&model.kernel, &factors);
                 let source = reduced.source(&model.l0);
                 let system = System { operator: &reduced, explicit: None, areas: &[], l0: &source };
-                let (c, info) = solve(method, &system, &params, options.memory_limit, &mut |_, _| {})?;
+                let (c, info) = solve(
+                    method,
+                    &system,
+                    &SolveParams { memory_limit: options.memory_limit, ..params },
+                    &mut |_, _| {},
+                )?;
                 let x = reduced.field(&model.l0, &c);
                 let seconds = start.elapsed().as_secs_f64();
                 let diff: Vec<f64> = x.iter().zip(&reference).map(|(a, r)| a - r).collect();

@@ -1,7 +1,7 @@
 //! `ugo info CASE`: what the case will cost, before any assembly.
 
-use super::{bytes, describe, load};
 use super::options::Discretize;
+use super::{bytes, describe, load};
 use anyhow::Result;
 use std::path::Path;
 use ugo::kernel::Estimate;

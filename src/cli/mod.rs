@@ -9,8 +9,8 @@ pub mod render;
 pub mod solve;
 pub mod trace;
 
-use options::Discretize;
 use anyhow::{Result, bail};
+use options::Discretize;
 use std::path::Path;
 use ugo::luminaire::{Light, Source};
 use ugo::model::ModelOptions;

@@ -90,11 +90,19 @@ impl From<ScaleArg> for Scale {
     }
 }
 
-/// `--basis`.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+/// `--basis`: hemispherical harmonics (with --lmax) or the truncated SVD of each
+/// material block (with --rank).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BasisArg {
-    /// Hemispherical harmonics (with --lmax).
     Sh,
-    /// Truncated SVD of each material block (with --rank).
     Svd,
+}
+
+/// `--basis`.
+pub fn basis(name: &str) -> Result<BasisArg, String> {
+    match name {
+        "sh" => Ok(BasisArg::Sh),
+        "svd" => Ok(BasisArg::Svd),
+        other => Err(format!("--basis takes `sh` or `svd`, got \"{other}\"")),
+    }
 }

@@ -4,20 +4,20 @@
 //! print a summary; `compare --photons P` adds each method's agreement with a forward Monte
 //! Carlo estimate of the same discretization.
 
-use super::{bar, bytes, describe, file_name, load};
 use super::options::Discretize;
+use super::{bar, bytes, describe, file_name, load};
 use anyhow::{Context, Result, bail};
 use std::path::{Path, PathBuf};
 use ugo::basis::{Basis, Factorization, Reduced};
-use ugo::readout::energy::EnergyBalance;
-use ugo::readout::field::Field;
-use ugo::readout::illuminance::{arriving, patch_illuminance};
-use ugo::readout::grid::{GridReading, read_grids};
 use ugo::io::{
     BasisRecord, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
 };
 use ugo::kernel::{Explicit, Factored};
 use ugo::model::Model;
+use ugo::readout::energy::EnergyBalance;
+use ugo::readout::field::Field;
+use ugo::readout::grid::{GridReading, read_grids};
+use ugo::readout::illuminance::{arriving, patch_illuminance};
 use ugo::readout::probe::read_probes;
 use ugo::scene::Scene;
 use ugo::solve::norms::Norms;
@@ -51,15 +51,13 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let params = SolveParams {
         tolerance: job.tolerance.unwrap_or(scene.solver.tolerance),
         max_iterations: job.max_iterations.unwrap_or(scene.solver.max_iterations),
+        memory_limit: options.memory_limit,
+        ..SolveParams::default()
     };
     if !(params.tolerance > 0.0 && params.tolerance < 1.0) {
         bail!("--tolerance must lie in (0, 1), got {}", params.tolerance);
     }
-    let methods = if job.methods.is_empty() {
-        vec![scene.solver.method]
-    } else {
-        job.methods.clone()
-    };
+    let methods = if job.methods.is_empty() { vec![scene.solver.method] } else { job.methods.clone() };
     let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
     let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}{}.h5", job.suffix)));
 
@@ -88,7 +86,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
             (Some(r), Some(s)) => System { operator: r, explicit: explicit.as_ref(), areas: &[], l0: s },
             _ => System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &model.l0),
         };
-        let result = solve(*method, &system, &params, options.memory_limit, &mut |n, r| {
+        let result = solve(*method, &system, &params, &mut |n, r| {
             solving.set_position(n as u64);
             solving.set_message(format!("{} {r:.1e}", method.name()));
         });
@@ -267,7 +265,8 @@ fn write_grids(grids: &[GridReading], output: &Path) -> Result<()> {
 }
 
 fn print_norms(n: &Norms, params: &SolveParams, runs: &[Run]) {
-    let observed = runs.iter().find(|r| r.method == Method::Neumann).map_or("-".to_string(), |r| r.info.iterations.to_string());
+    let observed =
+        runs.iter().find(|r| r.method == Method::Neumann).map_or("-".to_string(), |r| r.info.iterations.to_string());
     println!("  norms of K");
     println!("    ‖K‖₁             {:>12.6}", n.one);
     println!("    ‖K‖∞             {:>12.6}", n.infinity);

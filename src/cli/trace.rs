@@ -4,9 +4,9 @@
 //! layout of a solve, with standard errors. Both print their throughput.
 
 use super::file_name;
+use super::options::Discretize;
 use super::render::chosen;
 use super::{bar, load};
-use super::options::Discretize;
 use anyhow::{Result, bail};
 use std::path::{Path, PathBuf};
 use ugo::geometry::Mesh;

@@ -6,8 +6,8 @@
 
 use super::frame::Frame;
 use super::polygon::ConvexPolygon;
-use super::tessellate::tessellate;
 use super::surface::{Emission, Surface};
+use super::tessellate::tessellate;
 use glam::DVec3;
 use std::f64::consts::PI;
 

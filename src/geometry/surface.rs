@@ -44,4 +44,3 @@ pub enum Shape {
     /// Triangles loaded from an OBJ file (already scaled and translated), normals by winding.
     Mesh { file: PathBuf, triangles: Vec<[DVec3; 3]> },
 }
-

@@ -8,6 +8,8 @@ use thiserror::Error;
 pub enum IoError {
     #[error("cannot write {}: {why}", path.display())]
     Write { path: PathBuf, why: String },
+    #[error("cannot open {} as HDF5: {why}", path.display())]
+    Open { path: PathBuf, why: String },
     #[error("cannot read {}: {why}", path.display())]
     Read { path: PathBuf, why: String },
     /// A file that opened but does not hold what ugo writes.

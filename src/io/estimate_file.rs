@@ -9,12 +9,12 @@
 //! `scattered_flux_error` (lm); root attributes `method = "forward"`, the scene, the
 //! version, the direction set, the units and `patch_size`.
 
+use super::IoError;
 use super::hdf5_file::{dataset, shape_error, write_directions, write_identity, write_mesh};
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::scene::Scene;
 use crate::trace::{FieldEstimate, TraceOptions};
-use super::IoError;
 use ndarray::{Array1, Array3};
 use std::path::Path;
 

@@ -1,8 +1,8 @@
 //! Linear OpenEXR images in cd/m²: one 32-bit float channel `Y` (luminance), written and
 //! read back (`ugo agree` compares traced images with rendered ones).
 
-use crate::render::Image;
 use super::IoError;
+use crate::render::Image;
 use exr::prelude::{AnyChannel, AnyChannels, Encoding, FlatSamples, Layer, LayerAttributes, SmallVec, WritableImage};
 use std::path::Path;
 
@@ -23,12 +23,7 @@ pub fn write_exr_as(path: &Path, image: &Image, comments: &str) -> Result<(), Io
         Encoding::SMALL_LOSSLESS,
         AnyChannels::sort(SmallVec::from_vec(vec![channel])),
     );
-    super::atomic(path, |tmp| {
-        exr::prelude::Image::from_layer(layer)
-            .write()
-            .to_file(tmp)
-            .map_err(|e| e.to_string())
-    })
+    super::atomic(path, |tmp| exr::prelude::Image::from_layer(layer).write().to_file(tmp).map_err(|e| e.to_string()))
 }
 
 /// The channel `Y` of the first layer of an EXR file, as an image in cd/m².

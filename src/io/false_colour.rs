@@ -5,8 +5,8 @@
 //! Colours run dark blue → blue → cyan → green → yellow → red over the scale; pixels
 //! below its bottom are drawn in the bottom colour, above its top in the top colour.
 
-use super::atomic;
 use super::IoError;
+use super::atomic;
 use crate::render::Image;
 use plotters::prelude::*;
 use std::path::Path;

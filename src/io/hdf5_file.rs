@@ -19,16 +19,16 @@
 
 use crate::basis::{Factorization, MaterialFactor};
 use crate::directions::DirectionSet;
+use crate::geometry::Mesh;
+use crate::luminaire::Light;
+use crate::luminaire::LuminaireKind;
+use crate::model::Model;
+use crate::photometry::Distribution;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
-use crate::geometry::Mesh;
 use crate::readout::grid::GridReading;
-use crate::luminaire::Light;
-use crate::model::Model;
 use crate::readout::illuminance::patch_illuminance;
-use crate::photometry::Distribution;
 use crate::readout::probe::ProbeReading;
-use crate::luminaire::LuminaireKind;
 use crate::scene::Scene;
 use crate::solve::norms::Norms;
 use crate::solve::orders::OrderRecord;

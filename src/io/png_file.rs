@@ -2,8 +2,8 @@
 //! exposure: linear scaling that maps the exposure luminance to white, clipped above,
 //! then the sRGB transfer function.
 
-use crate::render::Image;
 use super::IoError;
+use crate::render::Image;
 use std::path::Path;
 
 /// The luminance mapped to white when none is given: the 99th percentile of the
@@ -44,7 +44,5 @@ pub fn write_png(path: &Path, image: &Image, exposure: f64) -> Result<(), IoErro
     );
     let mut side = path.as_os_str().to_owned();
     side.push(".txt");
-    super::atomic(Path::new(&side), |tmp| {
-        std::fs::write(tmp, note).map_err(|e| e.to_string())
-    })
+    super::atomic(Path::new(&side), |tmp| std::fs::write(tmp, note).map_err(|e| e.to_string()))
 }

@@ -2,10 +2,10 @@
 //! scene, the patch geometry and the luminance field (with its standard errors when the
 //! file holds a Monte Carlo estimate), enough to look at or compare the result again.
 
+use super::IoError;
 use crate::directions::{DirectionSet, Scheme};
 use crate::geometry::{ConvexPolygon, Mesh, NO_TWIN, Patch};
 use crate::scene::Scene;
-use super::IoError;
 use crate::scene::SceneError;
 use glam::DVec3;
 use hdf5::types::VarLenUnicode;
@@ -30,7 +30,7 @@ pub struct StoredSolution {
 
 /// Opens `path` and reads the scene, mesh, direction set and luminance field.
 pub fn read_solution(path: &Path) -> std::result::Result<StoredSolution, IoError> {
-    let file = hdf5::File::open(path).map_err(|e| IoError::read(path, format!("not HDF5: {e}")))?;
+    let file = hdf5::File::open(path).map_err(|e| IoError::Open { path: path.to_path_buf(), why: e.to_string() })?;
     read_from(&file).map_err(|Why(why)| IoError::NotASolution { path: path.to_path_buf(), why })
 }
 

@@ -3,11 +3,11 @@
 //! legend in lx (`edge_u` to the right, `edge_v` up); for the probes a CSV of their
 //! luminance and illuminance.
 
+use super::IoError;
 use super::{Scale, atomic, write_false_colour};
 use crate::readout::grid::GridReading;
 use crate::readout::probe::ProbeReading;
 use crate::render::Image;
-use super::IoError;
 use std::io::Write;
 use std::path::Path;
 

@@ -2,8 +2,8 @@
 //! side by side in one PNG, each captioned, all tone-mapped with the same exposure so
 //! that the missing light shows.
 
-use super::srgb;
 use super::IoError;
+use super::srgb;
 use crate::render::Image;
 use plotters::prelude::*;
 use std::path::Path;

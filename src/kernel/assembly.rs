@@ -10,10 +10,10 @@
 //! row must carry).
 
 use super::balance::{BalanceReport, balance};
-use crate::transfer::form_factor::{Binning, PairIntegral, Quadrature, binned_pair_integral, pair_integral};
-use crate::transfer::occlusion::{POINTS, sample_points, visible_fraction};
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch};
+use crate::transfer::form_factor::{Binning, PairIntegral, Quadrature, binned_pair_integral, pair_integral};
+use crate::transfer::occlusion::{POINTS, sample_points, visible_fraction};
 use crate::visibility::{NO_BLOCKER, Visibility};
 use rayon::prelude::*;
 use sprs::CsMat;

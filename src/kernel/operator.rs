@@ -4,8 +4,8 @@
 //! Solvers see both through `crate::solve::LinOp`; the factored form never builds the
 //! product, the explicit one is there for norms, direct solves and export.
 
-use super::memory::{BYTES_PER_NONZERO, Footprint, TooLarge};
 use super::TransportMatrix;
+use super::memory::{BYTES_PER_NONZERO, Footprint, TooLarge};
 use crate::directions::DirectionSet;
 use crate::geometry::NO_TWIN;
 use crate::material::Block;

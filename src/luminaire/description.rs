@@ -37,4 +37,3 @@ pub struct PointLuminaire {
     /// The photometric file, when the distribution was read from one.
     pub file: Option<PathBuf>,
 }
-

@@ -2,12 +2,27 @@
 //! (Heitz 2014) and no Fresnel factor, plus a diffuse part:
 //! `ρ = k_d + k_s π D(h) G₂(l,l') / (4 cosθ cosθ')`. The specular part is integrated by
 //! sampling visible-normal-free `D(h) cosθ_h` on a fixed stratified grid and reflecting.
-//! The same half-vector sampling serves the Monte Carlo estimators (`crate::trace`).
+//! The Monte Carlo estimators sample the same half vectors, mixed with cosine sampling of
+//! the diffuse part in proportion to `k_d : k_s`.
+//!
+//! ```toml
+//! [[material]]
+//! name = "brushed"
+//! type = "ggx"
+//! reflectance = 0.1     # required: the diffuse part k_d
+//! specular = 0.6        # required: k_s, with k_d + k_s ≤ 1
+//! roughness = 0.2       # required: α, in [0.001, 1]
+//! ```
 
 use super::cells::{Accumulator, stratified};
+use super::warp::cosine_direction;
 use crate::directions::DirectionSet;
 use glam::DVec3;
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::{FRAC_1_PI, PI, TAU};
+
+/// The `type` that selects this model and the keys it takes.
+pub const TYPE: &str = "ggx";
+pub const KEYS: &[&str] = &["reflectance", "specular", "roughness"];
 
 const STRATA_IN: usize = 12;
 const STRATA_LOBE: usize = 48;
@@ -38,6 +53,34 @@ pub fn luminance_factor(diffuse: f64, specular: f64, alpha: f64, l: DVec3, l_in:
     let h = (l + l_in).normalize();
     let a2 = alpha * alpha;
     diffuse + specular * PI * distribution(a2, h.z) * masking(a2, l.z, l_in.z) / (4.0 * l.z * l_in.z)
+}
+
+/// Density per solid angle of [`sample`]'s directions (`l'.z > 0`).
+pub fn pdf(diffuse: f64, specular: f64, alpha: f64, l: DVec3, l_in: DVec3) -> f64 {
+    let p = diffuse / (diffuse + specular);
+    p * l_in.z.abs() * FRAC_1_PI + (1.0 - p) * lobe_pdf(alpha * alpha, l, l_in)
+}
+
+/// `D(h) cosθ_h / (4 |l'·h|)`: the density of GGX lobe directions.
+fn lobe_pdf(a2: f64, l: DVec3, l_in: DVec3) -> f64 {
+    let h = (l + l_in).normalize();
+    if h.z <= 0.0 || l.dot(h) <= 0.0 {
+        return 0.0;
+    }
+    distribution(a2, h.z) * h.z / (4.0 * l_in.dot(h).abs())
+}
+
+/// A cosine direction or the reflection about a sampled half vector, chosen by `u[0]` in
+/// proportion to `k_d : k_s`; `None` for a black material.
+pub fn sample(diffuse: f64, specular: f64, alpha: f64, l: DVec3, u: [f64; 3]) -> Option<DVec3> {
+    if diffuse + specular <= 0.0 {
+        return None;
+    }
+    if u[0] * (diffuse + specular) < diffuse {
+        return Some(cosine_direction(u[1], u[2]));
+    }
+    let h = half_vector(alpha * alpha, u[1], TAU * u[2]);
+    Some(2.0 * l.dot(h) * h - l)
 }
 
 pub fn block(diffuse: f64, specular: f64, alpha: f64, directions: &DirectionSet) -> Vec<f64> {

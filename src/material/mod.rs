@@ -10,21 +10,35 @@
 //! over the cell of the directional-hemispherical reflectance. A transmitting material
 //! has a second block for light arriving on the other side of a two-sided surface
 //! (incoming cell in the back patch's frame). Blocks are shared by every patch of one
-//! material (isotropic models in local frames). Materials never see the scene file.
-//! The continuous models' formulas and lobe samplers (`phong`, `ggx`) are public: the Monte
-//! Carlo estimators of `crate::trace` use them.
+//! material (isotropic models in local frames).
+//!
+//! Each model is one file (`lambert`, `phong`, `mirror`, `ggx`) holding its luminance
+//! factor, its cell block, its sampler and density for the Monte Carlo estimators
+//! (`crate::trace`; by reciprocity the same sampler serves paths from the eye and from the
+//! source), the keys that select it and a TOML example in its module documentation.
+//! [`MaterialModel`] is the closed set, dispatched once per operation here. Materials never
+//! see the scene file: `crate::scene` validates the keys into a `MaterialModel`.
 
 mod block;
 mod cells;
 pub mod ggx;
-mod lambert;
-mod mirror;
+pub mod lambert;
+pub mod mirror;
 pub mod phong;
+mod sample;
+mod warp;
 
 pub use block::Block;
-pub use cells::mirror as mirror_image;
+pub use sample::Sample;
+pub use warp::cosine_direction;
 
 use crate::directions::DirectionSet;
+use glam::DVec3;
+use std::f64::consts::FRAC_1_PI;
+
+/// Every model's `type` and the keys it takes, in the order the documentation lists them.
+pub const TYPES: [(&str, &[&str]); 4] =
+    [(lambert::TYPE, lambert::KEYS), (phong::TYPE, phong::KEYS), (mirror::TYPE, mirror::KEYS), (ggx::TYPE, ggx::KEYS)];
 
 /// The closed set of material models, as luminance factors `ρ = π f_r` (`design.md` §1).
 #[derive(Debug, Clone, PartialEq)]
@@ -64,4 +78,55 @@ impl MaterialModel {
         Block::new(k, reflect, transmit)
     }
 
+    /// True when the material scatters into a single direction (no next-event estimation).
+    pub fn is_delta(&self) -> bool {
+        matches!(self, MaterialModel::Mirror { .. })
+    }
+
+    /// The luminance factor `ρ(l, l')` of local directions (`l.z > 0`), or `τ` through the
+    /// surface (`l'.z < 0`, Lambert only).
+    pub fn luminance_factor(&self, l: DVec3, l_in: DVec3) -> f64 {
+        match *self {
+            MaterialModel::Lambert { reflectance, transmittance } => {
+                lambert::luminance_factor(reflectance, transmittance, l_in)
+            }
+            _ if l_in.z <= 0.0 => 0.0,
+            MaterialModel::Mirror { .. } => 0.0,
+            MaterialModel::Phong { diffuse, specular, exponent } => {
+                phong::luminance_factor(diffuse, specular, exponent, l, l_in)
+            }
+            MaterialModel::Ggx { diffuse, specular, roughness } => {
+                ggx::luminance_factor(diffuse, specular, roughness, l, l_in)
+            }
+        }
+    }
+
+    /// Density per solid angle with which [`MaterialModel::sample`] picks `l'` given `l`.
+    pub fn pdf(&self, l: DVec3, l_in: DVec3) -> f64 {
+        match *self {
+            MaterialModel::Lambert { reflectance, transmittance } => lambert::pdf(reflectance, transmittance, l_in),
+            _ if l_in.z <= 0.0 => 0.0,
+            MaterialModel::Mirror { .. } => 0.0,
+            MaterialModel::Phong { diffuse, specular, exponent } => phong::pdf(diffuse, specular, exponent, l, l_in),
+            MaterialModel::Ggx { diffuse, specular, roughness } => ggx::pdf(diffuse, specular, roughness, l, l_in),
+        }
+    }
+
+    /// Picks `l'` for the outgoing `l` from three uniform numbers, importance-sampling
+    /// `(1/π) ρ(l, l') |cosθ'|`; `None` when the path ends (a black material, or a lobe
+    /// sample below the horizon).
+    pub fn sample(&self, l: DVec3, u: [f64; 3]) -> Option<Sample> {
+        let l_in = match *self {
+            MaterialModel::Lambert { reflectance, transmittance } => lambert::sample(reflectance, transmittance, u)?,
+            MaterialModel::Mirror { reflectance } => return mirror::sample(reflectance, l),
+            MaterialModel::Phong { diffuse, specular, exponent } => phong::sample(diffuse, specular, exponent, l, u)?,
+            MaterialModel::Ggx { diffuse, specular, roughness } => ggx::sample(diffuse, specular, roughness, l, u)?,
+        };
+        let density = self.pdf(l, l_in);
+        if density <= 0.0 || (l_in.z <= 0.0 && !matches!(self, MaterialModel::Lambert { .. })) {
+            return None;
+        }
+        let weight = self.luminance_factor(l, l_in) * l_in.z.abs() * FRAC_1_PI / density;
+        Some(Sample { direction: l_in, weight, pdf: density, delta: false })
+    }
 }

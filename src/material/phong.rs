@@ -1,12 +1,28 @@
 //! Normalized modified Phong (Lafortune & Willems 1994): `ρ = k_d + k_s (n+2)/2 cosⁿα`.
 //! The glossy lobe is integrated by sampling `cosⁿα` around the mirror direction
 //! (pdf `(n+1)/(2π) cosⁿα`) on a fixed stratified grid, so exponents up to 10⁵ are resolved.
-//! The same lobe sampling serves the Monte Carlo estimators (`crate::trace`).
+//! The Monte Carlo estimators sample the same lobe, mixed with cosine sampling of the
+//! diffuse part in proportion to `k_d : k_s`.
+//!
+//! ```toml
+//! [[material]]
+//! name = "satin"
+//! type = "phong"
+//! reflectance = 0.3     # required: the diffuse part k_d
+//! specular = 0.5        # required: k_s, with k_d + k_s ≤ 1
+//! exponent = 40         # required: n, in [0, 100000]
+//! ```
 
 use super::cells::{Accumulator, mirror, stratified};
+use super::warp::{cone, cosine_direction};
 use crate::directions::DirectionSet;
+use crate::geometry::Frame;
 use glam::DVec3;
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::{FRAC_1_PI, PI, TAU};
+
+/// The `type` that selects this model and the keys it takes.
+pub const TYPE: &str = "phong";
+pub const KEYS: &[&str] = &["reflectance", "specular", "exponent"];
 
 const STRATA_IN: usize = 12;
 const STRATA_LOBE: usize = 48;
@@ -26,6 +42,24 @@ pub fn lobe_cos(exponent: f64, u: f64) -> f64 {
 /// Density per solid angle of lobe directions at angle `α` from the mirror direction.
 pub fn lobe_pdf(exponent: f64, cos_a: f64) -> f64 {
     if cos_a > 0.0 { (exponent + 1.0) / TAU * cos_a.powf(exponent) } else { 0.0 }
+}
+
+/// Density per solid angle of [`sample`]'s directions (`l'.z > 0`).
+pub fn pdf(diffuse: f64, specular: f64, exponent: f64, l: DVec3, l_in: DVec3) -> f64 {
+    let p = diffuse / (diffuse + specular);
+    p * l_in.z.abs() * FRAC_1_PI + (1.0 - p) * lobe_pdf(exponent, l_in.dot(mirror(l)))
+}
+
+/// A cosine direction or a lobe direction, chosen by `u[0]` in proportion to `k_d : k_s`;
+/// `None` for a black material.
+pub fn sample(diffuse: f64, specular: f64, exponent: f64, l: DVec3, u: [f64; 3]) -> Option<DVec3> {
+    if diffuse + specular <= 0.0 {
+        return None;
+    }
+    if u[0] * (diffuse + specular) < diffuse {
+        return Some(cosine_direction(u[1], u[2]));
+    }
+    Some(Frame::around(mirror(l)).world(cone(lobe_cos(exponent, u[1]), TAU * u[2])))
 }
 
 pub fn block(diffuse: f64, specular: f64, exponent: f64, directions: &DirectionSet) -> Vec<f64> {

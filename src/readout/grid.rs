@@ -3,8 +3,8 @@
 //! (`probe.rs`, `design.md` §5), and the statistics lighting designers judge a
 //! lighting scheme by: average, minimum, maximum and the uniformity `U0 = E_min/E_avg`.
 
-use crate::readout::field::Field;
 use crate::model::Model;
+use crate::readout::field::Field;
 use crate::readout::probe::illuminance_at;
 use crate::scene::Grid;
 use glam::DVec3;

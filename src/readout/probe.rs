@@ -15,14 +15,14 @@
 //! point aimed along the normal would: the outgoing luminance, gathered the same way, of
 //! the first surface point the normal meets, towards the probe (0 when it meets nothing).
 
-use crate::readout::field::Field;
 use crate::geometry::{Frame, NO_TWIN, Patch};
+use crate::luminaire::arriving_at;
+use crate::model::Model;
+use crate::readout::field::Field;
+use crate::scene::Probe;
 use crate::transfer::contour::point_to_polygon;
 use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::cut_along_shadows;
-use crate::luminaire::arriving_at;
-use crate::model::Model;
-use crate::scene::Probe;
 use crate::visibility::NO_FACE;
 use glam::DVec3;
 use rayon::prelude::*;

@@ -14,13 +14,13 @@
 //! the solution then shows only through the light of the second reflection onward.
 
 use super::solved::Solved;
-use crate::random::Rng;
-use crate::material::Block;
 use crate::geometry::{Frame, NO_TWIN};
+use crate::luminaire::arriving_at;
+use crate::material::Block;
+use crate::random::Rng;
 use crate::transfer::contour::point_to_polygon;
 use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::{POINTS, sample_points};
-use crate::luminaire::arriving_at;
 use glam::DVec3;
 use std::cell::RefCell;
 use std::f64::consts::TAU;

@@ -9,13 +9,13 @@
 //!   from the solved field and the luminaires' direct light (`gather.rs`, `design.md` §5).
 
 use super::gather::final_gather;
-use crate::random::Rng;
 use super::smooth::Corners;
 use super::solved::Solved;
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::luminaire::Source;
 use crate::material::Block;
+use crate::random::Rng;
 use glam::DVec3;
 
 /// How a hit point is shaded.

@@ -85,4 +85,3 @@ pub struct Camera {
     /// Primary rays per pixel (stratified).
     pub samples: usize,
 }
-

@@ -1,8 +1,8 @@
 //! `[[grid]]` tables: illuminance calculation grids as written, as validated, and their
 //! calculation points (the evaluation is `crate::readout::grid`).
 
-use super::error::SceneError;
 use super::check::{Context, REL_TOL, show, unique_names};
+use super::error::SceneError;
 use glam::DVec3;
 use serde::Deserialize;
 use std::path::Path;

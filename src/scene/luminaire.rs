@@ -6,8 +6,8 @@
 //! what was expected there). The runtime placement and the source term are in
 //! `crate::luminaire`; the distributions in `crate::photometry`.
 
-use super::error::SceneError;
 use super::check::{Context, unique_names};
+use super::error::SceneError;
 use crate::luminaire::{Luminaire, LuminaireKind, PointLuminaire};
 use crate::photometry::{Distribution, read_ies, read_ldt};
 use serde::Deserialize;

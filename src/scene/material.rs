@@ -1,11 +1,11 @@
-//! `[[material]]` tables: the keys of each material type and their rules, validated into
-//! `crate::material::MaterialModel`.
+//! `[[material]]` tables: the rules of each material type's keys (the keys themselves are
+//! the models', `crate::material::TYPES`), validated into `crate::material::MaterialModel`.
 
-use super::error::SceneError;
 use super::check::{Context, unique_names};
-use super::schema::RawMaterial;
 use super::description::Material;
-use crate::material::MaterialModel;
+use super::error::SceneError;
+use super::schema::RawMaterial;
+use crate::material::{MaterialModel, TYPES, lambert, mirror, phong};
 use std::path::Path;
 
 pub(super) fn materials(path: &Path, raw: &[RawMaterial]) -> Result<Vec<Material>, SceneError> {
@@ -21,17 +21,9 @@ pub(super) fn materials(path: &Path, raw: &[RawMaterial]) -> Result<Vec<Material
     raw.iter().enumerate().map(material).collect()
 }
 
-/// Keys each material type takes (the first is required where noted below).
-const MATERIAL_KEYS: [(&str, &[&str]); 4] = [
-    ("lambert", &["reflectance", "transmittance"]),
-    ("phong", &["reflectance", "specular", "exponent"]),
-    ("mirror", &["reflectance"]),
-    ("ggx", &["reflectance", "specular", "roughness"]),
-];
-
 fn material_model(at: &Context, m: &RawMaterial) -> Result<MaterialModel, SceneError> {
-    let Some((_, keys)) = MATERIAL_KEYS.iter().find(|(name, _)| *name == m.model) else {
-        let known: Vec<String> = MATERIAL_KEYS.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+    let Some((_, keys)) = TYPES.iter().find(|(name, _)| *name == m.model) else {
+        let known: Vec<String> = TYPES.iter().map(|(n, _)| format!("\"{n}\"")).collect();
         return Err(at.error("type", format!("unknown material type \"{}\"; known: {}", m.model, known.join(", "))));
     };
     let given = [
@@ -65,12 +57,12 @@ fn material_model(at: &Context, m: &RawMaterial) -> Result<MaterialModel, SceneE
         Ok(())
     };
     Ok(match m.model.as_str() {
-        "lambert" => {
+        lambert::TYPE => {
             let transmittance = fraction("transmittance", m.transmittance)?;
             sum_at_most_one("transmittance", transmittance)?;
             MaterialModel::Lambert { reflectance, transmittance }
         }
-        "phong" => {
+        phong::TYPE => {
             let specular = fraction("specular", Some(required("specular", m.specular)?))?;
             sum_at_most_one("specular", specular)?;
             let exponent = at.non_negative("exponent", required("exponent", m.exponent)?)?;
@@ -79,7 +71,7 @@ fn material_model(at: &Context, m: &RawMaterial) -> Result<MaterialModel, SceneE
             }
             MaterialModel::Phong { diffuse: reflectance, specular, exponent }
         }
-        "mirror" => MaterialModel::Mirror { reflectance },
+        mirror::TYPE => MaterialModel::Mirror { reflectance },
         _ => {
             let specular = fraction("specular", Some(required("specular", m.specular)?))?;
             sum_at_most_one("specular", specular)?;

@@ -1,10 +1,10 @@
 //! `[[surface]]` tables: shapes and their keys, emission, material references, degenerate
 //! geometry, and loading `mesh` OBJ files, validated into `crate::geometry::Surface`.
 
-use super::error::SceneError;
 use super::check::{Context, REL_TOL, show, unique_names};
-use super::schema::{RawEmission, RawSurface};
 use super::description::Material;
+use super::error::SceneError;
+use super::schema::{RawEmission, RawSurface};
 use crate::geometry::{Emission, Shape, Surface};
 use crate::material::MaterialModel;
 use glam::DVec3;

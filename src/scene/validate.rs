@@ -7,13 +7,13 @@
 //! (`[[surface]] "floor" (#3)`) and the key.
 
 use super::check::{Context, REL_TOL, show, unique_names};
+use super::description::{Camera, Discretization, Probe, Scene, SolverSettings};
+use super::error::SceneError;
 use super::grid::grids;
 use super::luminaire::luminaires;
 use super::material::materials;
 use super::schema::{RawCamera, RawDirections, RawDiscretization, RawProbe, RawScene, RawSceneInfo, RawSolver};
 use super::surface::{emits, surfaces};
-use super::description::{Camera, Discretization, Probe, Scene, SolverSettings};
-use super::error::SceneError;
 use crate::directions::Scheme;
 use crate::solve::Method;
 use std::path::Path;
@@ -70,9 +70,8 @@ fn discretization(path: &Path, raw: Option<RawDiscretization>) -> Result<Discret
         Some(RawDirections::Count(k)) => k.to_string(),
         Some(RawDirections::Name(name)) => name,
     };
-    let directions = Scheme::parse(&name).ok_or_else(|| {
-        at.error("directions", format!("unknown direction set \"{name}\"; give {}", Scheme::NAMES))
-    })?;
+    let directions = Scheme::parse(&name)
+        .ok_or_else(|| at.error("directions", format!("unknown direction set \"{name}\"; give {}", Scheme::NAMES)))?;
     Ok(Discretization { patch_size, directions })
 }
 
@@ -94,13 +93,11 @@ fn solver(path: &Path, raw: Option<RawSolver>) -> Result<SolverSettings, SceneEr
     };
     let method = match raw.method {
         None => default.method,
-        Some(name) => Method::parse(&name).ok_or_else(|| {
-            at.error("method", format!("unknown method \"{name}\"; known: {}", Method::names()))
-        })?,
+        Some(name) => Method::parse(&name)
+            .ok_or_else(|| at.error("method", format!("unknown method \"{name}\"; known: {}", Method::names())))?,
     };
     Ok(SolverSettings { method, tolerance, max_iterations })
 }
-
 
 fn probes(path: &Path, raw: &[RawProbe]) -> Result<Vec<Probe>, SceneError> {
     unique_names(path, "probe", raw.iter().map(|p| p.name.as_str()))?;
@@ -151,4 +148,3 @@ fn camera(at: &Context, c: &RawCamera) -> Result<Camera, SceneError> {
     };
     Ok(Camera { name: c.name.clone(), position, look_at, up, fov_deg, resolution: [w, h], samples })
 }
-

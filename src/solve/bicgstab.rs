@@ -1,10 +1,10 @@
 //! BiCGSTAB on `(I − K) x = L0`, matrix-free (van der Vorst 1992), `x_0 = L0`; two kernel
 //! applications per iteration. Breakdown (`ρ = 0` or `ω = 0`) is reported, not hidden.
 
-use super::history::residual_norm;
-use super::history::History;
-use super::outcome::{SolveError, SolveInfo, SolveParams, dot};
 use super::LinOp;
+use super::history::History;
+use super::history::residual_norm;
+use super::outcome::{SolveError, SolveInfo, SolveParams, dot};
 
 /// Solves `x = L0 + K x` by BiCGSTAB.
 pub fn bicgstab(

@@ -5,9 +5,9 @@
 //! of the factors is checked before factoring: `8 n²` bytes dense; for the sparse LU its
 //! fill-in is bounded by the same `8 n²`, which is what is checked.
 
-use super::history::residual_norm;
 use super::history::History;
-use super::outcome::{SolveError, SolveInfo};
+use super::history::residual_norm;
+use super::outcome::{SolveError, SolveInfo, SolveParams};
 use crate::kernel::Explicit;
 use faer::linalg::solvers::Solve;
 use faer::sparse::{SparseColMat, Triplet};
@@ -21,19 +21,35 @@ pub const DENSE_MAX: usize = 8000;
 pub const DENSE_FILL: f64 = 0.2;
 
 /// Solves `x = L0 + K x` by LU of `I − K`; refuses (with the estimate) when the factors
-/// could exceed `limit` bytes.
-pub fn direct(k: &Explicit, l0: &[f64], limit: u64) -> Result<(Vec<f64>, SolveInfo), SolveError> {
+/// could exceed `params.memory_limit` bytes. `progress` hears of the one solve.
+pub fn direct(
+    k: &Explicit,
+    l0: &[f64],
+    params: &SolveParams,
+    progress: &mut dyn FnMut(usize, f64),
+) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = k.dim() as f64;
     let fill = k.0.nnz() as f64 / (n * n);
-    lu(k, l0, limit, k.dim() > DENSE_MAX || fill < DENSE_FILL)
+    lu(k, l0, params.memory_limit, k.dim() > DENSE_MAX || fill < DENSE_FILL, progress)
 }
 
 /// [`direct`] with the sparse LU whatever the size (to compare the two paths).
-pub fn direct_sparse(k: &Explicit, l0: &[f64], limit: u64) -> Result<(Vec<f64>, SolveInfo), SolveError> {
-    lu(k, l0, limit, true)
+pub fn direct_sparse(
+    k: &Explicit,
+    l0: &[f64],
+    params: &SolveParams,
+    progress: &mut dyn FnMut(usize, f64),
+) -> Result<(Vec<f64>, SolveInfo), SolveError> {
+    lu(k, l0, params.memory_limit, true, progress)
 }
 
-fn lu(k: &Explicit, l0: &[f64], limit: u64, sparse: bool) -> Result<(Vec<f64>, SolveInfo), SolveError> {
+fn lu(
+    k: &Explicit,
+    l0: &[f64],
+    limit: u64,
+    sparse: bool,
+    progress: &mut dyn FnMut(usize, f64),
+) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = k.dim();
     let mut history = History::start(l0)?;
     let need = 8.0 * (n as f64) * (n as f64) * 2.0;
@@ -71,6 +87,8 @@ fn lu(k: &Explicit, l0: &[f64], limit: u64, sparse: bool) -> Result<(Vec<f64>, S
     };
     let x: Vec<f64> = (0..n).map(|i| x[i]).collect();
     let mut scratch = vec![0.0; n];
-    history.record(residual_norm(k, l0, &x, &mut scratch) / history.scale, 1);
+    let residual = residual_norm(k, l0, &x, &mut scratch) / history.scale;
+    history.record(residual, 1);
+    progress(1, residual);
     Ok((x, history.finish(method, 0)))
 }

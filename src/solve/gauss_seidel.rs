@@ -3,8 +3,8 @@
 //! successive approximation). One sweep costs one kernel application; the residual after
 //! each sweep costs another.
 
-use super::history::residual_norm;
 use super::history::History;
+use super::history::residual_norm;
 use super::outcome::{SolveError, SolveInfo, SolveParams};
 use crate::kernel::Explicit;
 

@@ -3,21 +3,20 @@
 //! the same relative residual as every other method; a restart cycle that gains less than
 //! 0.1 % is reported as stagnation.
 
-use super::history::residual_norm;
-use super::history::History;
-use super::outcome::{SolveError, SolveInfo, SolveParams, dot};
 use super::LinOp;
+use super::history::History;
+use super::history::residual_norm;
+use super::outcome::{SolveError, SolveInfo, SolveParams, dot};
 
-/// Solves `x = L0 + K x` by GMRES with restart length `restart`.
+/// Solves `x = L0 + K x` by GMRES with restart length `params.restart`.
 pub fn gmres(
     kernel: &dyn LinOp,
     l0: &[f64],
     params: &SolveParams,
-    restart: usize,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = l0.len();
-    let m = restart.max(1);
+    let m = params.restart.max(1);
     let mut history = History::start(l0)?;
     let scale = history.scale;
     let mut x = l0.to_vec();

@@ -1,8 +1,8 @@
 //! The closed set of solvers, selected by name (`--method`, `--methods`), dispatched once.
 
+use super::LinOp;
 use super::outcome::{SolveError, SolveInfo, SolveParams, norm};
 use super::{bicgstab, direct, direct_sparse, gauss_seidel, gmres, southwell, successive_approximation};
-use super::LinOp;
 use crate::kernel::{Explicit, Factored, Kernel};
 
 /// A method of `design.md` §4.
@@ -99,14 +99,13 @@ impl<'a> System<'a> {
     }
 }
 
-/// Solves `system` with `method`; `limit` bounds the direct solver's memory, bytes. A zero
+/// Solves `system` with `method` (its GMRES restart given to the method in `params`). A zero
 /// source (luminaires that light only black surfaces) has the exact solution `x = 0`,
 /// returned without iterating.
 pub fn solve(
     method: Method,
     system: &System,
     params: &SolveParams,
-    limit: u64,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let System { operator, explicit, areas, l0 } = *system;
@@ -127,10 +126,10 @@ pub fn solve(
         Method::Neumann => successive_approximation(operator, l0, params, progress)?,
         Method::GaussSeidel => gauss_seidel(explicit()?, l0, params, progress)?,
         Method::Southwell => southwell(explicit()?, areas, l0, params, progress)?,
-        Method::Gmres { restart } => gmres(operator, l0, params, restart, progress)?,
+        Method::Gmres { restart } => gmres(operator, l0, &SolveParams { restart, ..*params }, progress)?,
         Method::Bicgstab => bicgstab(operator, l0, params, progress)?,
-        Method::Direct => direct(explicit()?, l0, limit)?,
-        Method::DirectSparse => direct_sparse(explicit()?, l0, limit)?,
+        Method::Direct => direct(explicit()?, l0, params, progress)?,
+        Method::DirectSparse => direct_sparse(explicit()?, l0, params, progress)?,
     };
     let growth = norm(&x) / norm(l0);
     if growth.is_nan() || growth > MAX_GROWTH {

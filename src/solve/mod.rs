@@ -11,9 +11,9 @@ mod history;
 mod linop;
 mod method;
 mod neumann;
-mod outcome;
 pub mod norms;
 pub mod orders;
+mod outcome;
 mod southwell;
 
 pub use bicgstab::bicgstab;

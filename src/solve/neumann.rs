@@ -4,9 +4,9 @@
 //! Divergence is detected from the residual ratio: for `ρ(K) ≥ 1` it tends to a value
 //! `≥ 1` instead of `ρ(K) < 1`, and the method stops with a clear error rather than loop.
 
+use super::LinOp;
 use super::history::History;
 use super::outcome::{SolveError, SolveInfo, SolveParams};
-use super::LinOp;
 
 /// Iterations over which the residual ratio is averaged to detect divergence.
 const WINDOW: usize = 10;

@@ -6,8 +6,8 @@
 //! than estimated: for `ρ(K) < 1`, `(I − K)⁻¹ = Σ Kⁿ ≥ 0`, so `‖(I − K)⁻¹‖∞` is the largest
 //! entry of `(I − K)⁻¹ 1`, one linear solve (GMRES).
 
-use super::outcome::SolveParams;
 use super::gmres;
+use super::outcome::SolveParams;
 use crate::kernel::{Explicit, spmv};
 
 /// Norms of `K` and what they predict.
@@ -110,8 +110,8 @@ fn power(n: usize, mut apply: impl FnMut(&[f64], &mut [f64]), shift: f64) -> Pow
 
 fn condition(k: &Explicit, infinity: f64) -> f64 {
     let ones = vec![1.0; k.dim()];
-    let params = SolveParams { tolerance: 1e-12, max_iterations: 5000 };
-    match gmres(k, &ones, &params, 50, &mut |_, _| {}) {
+    let params = SolveParams { tolerance: 1e-12, max_iterations: 5000, restart: 50, ..SolveParams::default() };
+    match gmres(k, &ones, &params, &mut |_, _| {}) {
         Ok((y, _)) => (1.0 + infinity) * y.iter().copied().fold(0.0, f64::max),
         Err(_) => f64::NAN,
     }

@@ -2,8 +2,8 @@
 //! and the partial sums `Σ_{m≤n} K^m L0` after chosen orders (the lecture's pictures after
 //! 1, 8 and 64 reflections).
 
-use super::outcome::norm;
 use super::LinOp;
+use super::outcome::norm;
 
 /// Norms of every order term and the partial sums after the requested orders.
 #[derive(Debug, Clone, PartialEq)]

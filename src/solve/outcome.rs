@@ -3,11 +3,30 @@
 
 use thiserror::Error;
 
-/// Stopping rule shared by the iterative methods.
+/// What every method takes: the stopping rule of the iterative ones, GMRES's restart
+/// length, and the memory the direct ones may use for their factors.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolveParams {
+    /// Relative residual `‖L0 + Kx − x‖₂/‖L0‖₂` at which an iteration stops.
     pub tolerance: f64,
+    /// Kernel applications after which an iteration gives up.
     pub max_iterations: usize,
+    /// GMRES restart length `m`.
+    pub restart: usize,
+    /// Largest memory of LU factors, bytes.
+    pub memory_limit: u64,
+}
+
+impl Default for SolveParams {
+    /// Tolerance 1e-8, 10,000 iterations, GMRES(30), half the machine's memory.
+    fn default() -> Self {
+        SolveParams {
+            tolerance: 1e-8,
+            max_iterations: 10_000,
+            restart: 30,
+            memory_limit: crate::kernel::memory::default_limit(),
+        }
+    }
 }
 
 /// What a successful solve did.

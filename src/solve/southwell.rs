@@ -4,8 +4,8 @@
 //! `x = L0 + K(x − ΔL)` makes the residual `K ΔL`, evaluated after every `N` shots (one
 //! application's worth of work, counted as one kernel application, plus one for the check).
 
-use super::history::residual_norm;
 use super::history::History;
+use super::history::residual_norm;
 use super::outcome::{SolveError, SolveInfo, SolveParams};
 use crate::kernel::Explicit;
 

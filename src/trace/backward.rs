@@ -12,9 +12,8 @@
 //! `Σ_{m≤n} Kᵐ L0`. Luminaires are gathered exactly at every vertex (`luminaires.rs`);
 //! their light, reflected once in `L0`, is kept at the vertices up to `n`.
 
-use crate::random::Rng;
-use super::sampling::{self, is_delta};
 use super::world::World;
+use crate::random::Rng;
 use crate::visibility::NO_FACE;
 use glam::DVec3;
 use std::f64::consts::FRAC_1_PI;
@@ -89,26 +88,26 @@ pub fn luminance_along(world: &World, start: Start, rng: &mut Rng, options: &Tra
         let material = world.material(hit.patch);
         let frame = patch.frame();
         let out = frame.local(-direction);
-        if !is_delta(material) {
+        if !material.is_delta() {
             total += beta * world.luminaires.reflected(&world.visibility, material, &frame, hit.point, patch.face, out);
         }
         if order == last {
             break;
         }
-        if !is_delta(material)
+        if !material.is_delta()
             && let Some(light) = world.emitters.sample_towards(mesh, hit.point, rng.uniform3())
         {
             let l_in = frame.local(light.direction);
-            let rho = sampling::evaluate(material, out, l_in);
+            let rho = material.luminance_factor(out, l_in);
             if rho > 0.0 {
                 *rays += 1;
                 if world.visibility.visible(hit.point, light.point, [patch.face, light.face]) {
-                    let weight = power_heuristic(light.pdf, sampling::pdf(material, out, l_in));
+                    let weight = power_heuristic(light.pdf, material.pdf(out, l_in));
                     total += beta * rho * l_in.z.abs() * FRAC_1_PI * light.luminance / light.pdf * weight;
                 }
             }
         }
-        let Some(s) = sampling::sample(material, out, rng.uniform3()) else { break };
+        let Some(s) = material.sample(out, rng.uniform3()) else { break };
         beta *= s.weight;
         if beta <= 0.0 || !beta.is_finite() {
             break;

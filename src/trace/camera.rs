@@ -5,9 +5,9 @@
 //! by `(seed, p)`, so the image does not depend on the thread count.
 
 use super::backward::{Start, TraceOptions, luminance_along};
-use crate::random::Rng;
 use super::statistics::Tally;
 use super::world::World;
+use crate::random::Rng;
 use crate::render::{Image, Projection};
 use crate::scene::Camera;
 use rayon::prelude::*;

@@ -8,8 +8,8 @@
 //! and for photon emission (a point and a Lambertian direction). Luminaires are sampled
 //! apart, exactly (`luminaires.rs`).
 
-use super::sampling::cosine_direction;
 use crate::geometry::{Mesh, Patch};
+use crate::material::cosine_direction;
 use glam::DVec3;
 use std::f64::consts::PI;
 

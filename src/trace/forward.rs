@@ -20,12 +20,11 @@
 //! are added in chunk order, so the result depends only on the seed and the count.
 
 use super::backward::{LONGEST_PATH, TraceOptions};
-use crate::random::Rng;
-use super::sampling;
 use super::statistics::Tally;
 use super::world::World;
 use crate::directions::DirectionSet;
 use crate::geometry::NO_TWIN;
+use crate::random::Rng;
 use rayon::prelude::*;
 use std::time::Instant;
 
@@ -186,7 +185,7 @@ fn follow(
         deposits.push((n * k + hit.patch, flux));
         let patch = &mesh.patches[hit.patch];
         let frame = patch.frame();
-        let Some(s) = sampling::sample(world.material(hit.patch), frame.local(-direction), rng.uniform3()) else {
+        let Some(s) = world.material(hit.patch).sample(frame.local(-direction), rng.uniform3()) else {
             return;
         };
         let outgoing = flux * s.weight;

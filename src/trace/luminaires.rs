@@ -14,11 +14,10 @@
 //! sphere, carrying `E_n π R²`.
 
 use super::emitters::Departure;
-use super::sampling;
 use crate::geometry::{Frame, Mesh};
 use crate::luminaire::{Light, Source, incoming};
-use crate::scene::Scene;
 use crate::material::MaterialModel;
+use crate::scene::Scene;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
 use std::f64::consts::{FRAC_1_PI, PI, TAU};
@@ -73,7 +72,7 @@ impl Luminaires {
         for source in &self.sources {
             if let Some((towards, normal)) = incoming(source, visibility, point, face) {
                 let l_in = frame.local(towards);
-                l += sampling::evaluate(material, out, l_in) * normal * l_in.z.abs() * FRAC_1_PI;
+                l += material.luminance_factor(out, l_in) * normal * l_in.z.abs() * FRAC_1_PI;
             }
         }
         l

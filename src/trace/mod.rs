@@ -11,8 +11,9 @@
 //! * [`agreement`]: a deterministic result against either, in units of the standard error.
 //!
 //! The pieces they share: [`world`] (geometry, materials, ray casting), [`emitters`]
-//! (sources sampled by flux), [`luminaires`] (delta lights gathered exactly, photon sources), [`sampling`] (the continuous materials, importance-sampled),
-//! [`rng`] (reproducible streams) and [`statistics`] (means and standard errors).
+//! (sources sampled by flux), [`luminaires`] (delta lights gathered exactly, photon
+//! sources) and [`statistics`] (means and standard errors). The continuous materials and
+//! their samplers are `crate::material`'s; the random streams `crate::random`'s.
 
 pub mod agreement;
 pub mod backward;
@@ -21,7 +22,6 @@ pub mod emitters;
 pub mod forward;
 pub mod luminaires;
 pub mod probe;
-pub mod sampling;
 pub mod statistics;
 pub mod world;
 

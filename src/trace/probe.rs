@@ -9,11 +9,11 @@
 //! direct light at the point is added exactly.
 
 use super::backward::{Start, TraceOptions, luminance_along, power_heuristic};
-use crate::random::Rng;
-use super::sampling::cosine_direction;
 use super::statistics::Tally;
 use super::world::World;
 use crate::geometry::Frame;
+use crate::material::cosine_direction;
+use crate::random::Rng;
 use crate::scene::Probe;
 use crate::visibility::NO_FACE;
 use rayon::prelude::*;

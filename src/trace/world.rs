@@ -6,8 +6,8 @@
 use super::emitters::Emitters;
 use super::luminaires::Luminaires;
 use crate::geometry::Mesh;
-use crate::scene::Scene;
 use crate::material::MaterialModel;
+use crate::scene::Scene;
 use crate::visibility::{Faces, Visibility};
 use glam::DVec3;
 

@@ -99,7 +99,8 @@ pub fn cut_along_shadows(
 ) -> usize {
     let test = piece_visibility(piece, sees);
     if !test.uniform && depth < SHADOW_DEPTH {
-        return test.rays + piece.split().iter().map(|part| cut_along_shadows(part, depth + 1, sees, visit)).sum::<usize>();
+        return test.rays
+            + piece.split().iter().map(|part| cut_along_shadows(part, depth + 1, sees, visit)).sum::<usize>();
     }
     if test.seen > 0 {
         visit(piece, test.seen as f64 / POINTS as f64);

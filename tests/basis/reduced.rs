@@ -6,13 +6,15 @@ use crate::support::{build_with, lambert, material, rectangle, scene, surface};
 use glam::DVec3;
 use ugo::basis::{Basis, BasisError, Factorization, Reduced};
 use ugo::directions::DirectionSet;
-use ugo::kernel::{Explicit, Factored};
-use ugo::model::Model;
 use ugo::geometry::{Emission, Shape};
+use ugo::kernel::{Explicit, Factored};
 use ugo::material::MaterialModel;
+use ugo::model::Model;
 use ugo::solve::{Method, SolveParams, System, solve};
 
-const TIGHT: SolveParams = SolveParams { tolerance: 1e-12, max_iterations: 5000 };
+fn tight() -> SolveParams {
+    SolveParams { tolerance: 1e-12, max_iterations: 5000, ..SolveParams::default() }
+}
 
 /// A closed unit room of `walls` lit by a black 0.4 m square lamp under the ceiling.
 fn room(walls: MaterialModel, cells: usize) -> Model {
@@ -29,7 +31,7 @@ fn room(walls: MaterialModel, cells: usize) -> Model {
 fn full(model: &Model) -> Vec<f64> {
     let factored = Factored::new(&model.kernel);
     let system = System::of(&model.kernel, &factored, None, &[], &model.l0);
-    solve(Method::Gmres { restart: 50 }, &system, &TIGHT, u64::MAX, &mut |_, _| {}).unwrap().0
+    solve(Method::Gmres { restart: 50 }, &system, &tight(), &mut |_, _| {}).unwrap().0
 }
 
 /// The reduced solution in `basis` by `method`, as a full field.
@@ -39,7 +41,7 @@ fn reduced(model: &Model, basis: Basis, method: Method) -> Vec<f64> {
     let source = op.source(&model.l0);
     let explicit = method.needs_explicit().then(|| Explicit(op.explicit(u64::MAX).unwrap()));
     let system = System { operator: &op, explicit: explicit.as_ref(), areas: &[], l0: &source };
-    let c = solve(method, &system, &TIGHT, u64::MAX, &mut |_, _| {}).unwrap().0;
+    let c = solve(method, &system, &tight(), &mut |_, _| {}).unwrap().0;
     op.field(&model.l0, &c)
 }
 

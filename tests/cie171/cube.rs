@@ -4,9 +4,9 @@
 
 use super::{compare, solve_model, solved};
 use std::f64::consts::PI;
-use ugo::readout::illuminance::patch_illuminance;
 use ugo::kernel::Factored;
 use ugo::material::MaterialModel;
+use ugo::readout::illuminance::patch_illuminance;
 use ugo::solve::Method;
 use ugo::solve::orders::reflection_orders;
 
@@ -30,8 +30,14 @@ fn cie_5_8_interreflection_in_a_cube_up_to_rho_0_95() {
     let mut s = solved("5.8-interreflection");
     let model = &mut s.model;
     let area: f64 = model.mesh.patches.iter().map(|p| p.area).sum();
-    let direct: f64 =
-        model.mesh.patches.iter().zip(patch_illuminance(&model.direct.arriving, 1)).map(|(p, e)| p.area * e).sum::<f64>() / area;
+    let direct: f64 = model
+        .mesh
+        .patches
+        .iter()
+        .zip(patch_illuminance(&model.direct.arriving, 1))
+        .map(|(p, e)| p.area * e)
+        .sum::<f64>()
+        / area;
     compare("5.8", &[("E_dir,avg", 104.17, direct)]);
     let indirect = |model: &ugo::model::Model, x: &[f64]| {
         let mut gx = vec![0.0; x.len()];

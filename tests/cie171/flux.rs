@@ -2,8 +2,8 @@
 //! lumen lands on a surface, `Φ_surfaces / Φ = 1`.
 
 use super::{compare, solved};
-use ugo::readout::illuminance::patch_illuminance;
 use ugo::readout::energy::EnergyBalance;
+use ugo::readout::illuminance::patch_illuminance;
 
 #[test]
 fn cie_5_4_flux_lands_on_the_surfaces() {

@@ -12,9 +12,9 @@ mod point_source;
 mod reflection;
 
 use std::path::Path;
-use ugo::readout::field::Field;
 use ugo::kernel::{Explicit, Factored};
 use ugo::model::{Model, ModelOptions};
+use ugo::readout::field::Field;
 use ugo::readout::probe::{ProbeReading, read_probes};
 use ugo::scene::Scene;
 use ugo::solve::{Method, SolveParams, System, solve};
@@ -46,8 +46,9 @@ pub fn solve_model(model: &Model, method: Method) -> Vec<f64> {
     let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
     let factored = Factored::new(&model.kernel);
     let system = System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &model.l0);
-    let params = SolveParams { tolerance: 1e-10, max_iterations: 10_000 };
-    solve(method, &system, &params, limit, &mut |_, _| {}).expect("converges").0
+    let params =
+        SolveParams { tolerance: 1e-10, max_iterations: 10_000, memory_limit: limit, ..SolveParams::default() };
+    solve(method, &system, &params, &mut |_, _| {}).expect("converges").0
 }
 
 impl Solved {

@@ -2,8 +2,8 @@
 //! a black obstruction. `E/(E_v ρ)` in %, the corrected values (the printed Table 19 was
 //! computed with the wrong geometry; references.md).
 
-use ugo::readout::illuminance::patch_illuminance;
 use super::{compare, solved};
+use ugo::readout::illuminance::patch_illuminance;
 
 /// Corrected CIE 171:2006 Table 19, E/(E_v ρ) in %: wall A–F, floor G–K.
 const CORRECTED_19: [(&str, f64); 11] = [

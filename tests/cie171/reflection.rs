@@ -1,8 +1,8 @@
 //! 5.6, light reflection over diffuse surfaces (scenario 2): a 4 × 4 m floor of ρ = 0.3
 //! under E_hz = 10 000 lx; `E/(E_hz ρ)` in % is the configuration factor (Table 17).
 
-use ugo::readout::illuminance::patch_illuminance;
 use super::{compare, solved};
+use ugo::readout::illuminance::patch_illuminance;
 
 /// CIE 171:2006 Table 17 (scenario 2), E/(E_hz ρ) in %: vertical plane B–F, horizontal G–N.
 const TABLE_17: [(&str, f64); 13] = [

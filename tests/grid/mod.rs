@@ -5,10 +5,10 @@
 use crate::support::{build, corner_factor, lambert, rectangle, scene, scratch, solve, surface, ugo};
 use glam::DVec3;
 use std::f64::consts::PI;
+use ugo::geometry::Emission;
 use ugo::readout::field::Field;
 use ugo::readout::grid::GridReading;
 use ugo::scene::Grid;
-use ugo::geometry::Emission;
 
 /// `E = π L F` at `(x, 0, z)` facing up under the rectangle `[x0, x1] × [z0, z1]` at
 /// height `h` (superposition of the four corner factors, references.md item 1).

@@ -3,9 +3,9 @@
 use crate::support::{build, furnace, lambert, scene, surface};
 use glam::DVec3;
 use ugo::geometry::Mesh;
+use ugo::geometry::{Emission, Shape};
 use ugo::kernel::facing;
 use ugo::transfer::form_factor::{Quadrature, form_factor};
-use ugo::geometry::{Emission, Shape};
 
 /// Raw (unbalanced, unoccluded) form factors of every facing pair.
 fn raw_matrix(mesh: &Mesh) -> Vec<Vec<f64>> {

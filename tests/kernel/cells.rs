@@ -2,8 +2,8 @@
 
 use crate::support::{build_with, furnace};
 use ugo::directions::DirectionSet;
-use ugo::transfer::form_factor::{Binning, Quadrature, binned_pair_integral, pair_integral};
 use ugo::kernel::{Explicit, Factored, facing};
+use ugo::transfer::form_factor::{Binning, Quadrature, binned_pair_integral, pair_integral};
 
 #[test]
 fn binned_pieces_sum_to_the_one_cell_form_factors() {

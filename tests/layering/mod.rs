@@ -48,8 +48,12 @@ fn made_up(files: &[(&str, &str)]) -> Vec<Fault> {
 
 #[test]
 fn an_import_up_a_floor_is_found() {
-    let faults = made_up(&[("low.rs", "use crate::high::Thing;\npub struct Low;\n"), ("high.rs", "pub struct Thing;\n")]);
-    assert!(matches!(faults.as_slice(), [Fault::Up { from, to, .. }] if from == "low.rs" && to == "high"), "{faults:?}");
+    let faults =
+        made_up(&[("low.rs", "use crate::high::Thing;\npub struct Low;\n"), ("high.rs", "pub struct Thing;\n")]);
+    assert!(
+        matches!(faults.as_slice(), [Fault::Up { from, to, .. }] if from == "low.rs" && to == "high"),
+        "{faults:?}"
+    );
 }
 
 #[test]

@@ -41,7 +41,8 @@ fn split_uses(code: &str) -> (Vec<(bool, Vec<Path>)>, String) {
         let public = trimmed.starts_with("pub");
         let body = trimmed.strip_prefix("use ").or_else(|| {
             let after_pub = trimmed.strip_prefix("pub")?;
-            let after_scope = if after_pub.starts_with('(') { &after_pub[after_pub.find(')')? + 1..] } else { after_pub };
+            let after_scope =
+                if after_pub.starts_with('(') { &after_pub[after_pub.find(')')? + 1..] } else { after_pub };
             after_scope.trim_start().strip_prefix("use ")
         });
         let Some(body) = body else {

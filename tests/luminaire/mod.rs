@@ -10,8 +10,8 @@ mod trace;
 
 use glam::DVec3;
 use std::path::Path;
-use ugo::photometry::{Distribution, read_ies};
 use ugo::luminaire::{Luminaire, LuminaireKind, PointLuminaire};
+use ugo::photometry::{Distribution, read_ies};
 
 /// A point luminaire named `name` at `position` aimed along `aim`.
 pub fn point(name: &str, position: DVec3, aim: DVec3, distribution: Distribution) -> Luminaire {

@@ -4,8 +4,8 @@
 use super::{point, table};
 use glam::DVec3;
 use std::f64::consts::PI;
-use ugo::luminaire::{Source, frame};
 use ugo::luminaire::LuminaireKind;
+use ugo::luminaire::{Source, frame};
 
 #[test]
 fn a_downlight_frame_has_c0_along_x_and_c90_counter_clockwise_seen_from_above() {

@@ -6,16 +6,16 @@ use super::{point, table};
 use crate::support::{build, build_with, lambert, material, rectangle, scene, surface};
 use glam::DVec3;
 use std::f64::consts::PI;
-use ugo::readout::illuminance::patch_illuminance;
 use ugo::directions::DirectionSet;
+use ugo::geometry::{Emission, Shape};
+use ugo::kernel::Factored;
+use ugo::material::MaterialModel;
+use ugo::photometry::Distribution;
 use ugo::readout::energy::EnergyBalance;
 use ugo::readout::field::Field;
-use ugo::kernel::Factored;
-use ugo::photometry::Distribution;
+use ugo::readout::illuminance::patch_illuminance;
 use ugo::readout::probe::read_probes;
 use ugo::scene::{Probe, Scene};
-use ugo::geometry::{Emission, Shape};
-use ugo::material::MaterialModel;
 use ugo::solve::{Method, SolveParams, System, solve};
 
 /// A closed 3 × 2.5 × 4 m room of reflectance `rho`, seen from inside.
@@ -28,8 +28,8 @@ fn solved(model: &ugo::model::Model) -> Vec<f64> {
     let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
     let factored = Factored::new(&model.kernel);
     let system = System::of(&model.kernel, &factored, None, &areas, &model.l0);
-    let params = SolveParams { tolerance: 1e-11, max_iterations: 10_000 };
-    solve(Method::Gmres { restart: 30 }, &system, &params, 1 << 30, &mut |_, _| {}).unwrap().0
+    let params = SolveParams { tolerance: 1e-11, max_iterations: 10_000, ..SolveParams::default() };
+    solve(Method::Gmres { restart: 30 }, &system, &params, &mut |_, _| {}).unwrap().0
 }
 
 #[test]

@@ -7,12 +7,12 @@ use super::{point, table};
 use crate::support::{build_with, lambert, rectangle, scene, solve, surface};
 use glam::DVec3;
 use std::f64::consts::PI;
-use ugo::readout::illuminance::patch_illuminance;
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
-use ugo::photometry::Distribution;
-use ugo::scene::{Probe, Scene};
 use ugo::luminaire::LuminaireKind;
+use ugo::photometry::Distribution;
+use ugo::readout::illuminance::patch_illuminance;
+use ugo::scene::{Probe, Scene};
 use ugo::trace::{Start, TraceOptions, World, agreement, luminance_along, trace_photons, trace_probes};
 
 fn floor_under(luminaires: Vec<ugo::luminaire::Luminaire>) -> Scene {

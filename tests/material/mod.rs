@@ -10,8 +10,8 @@ mod reciprocity;
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
-use ugo::material::Block;
 use ugo::directions::DirectionSet;
+use ugo::material::Block;
 use ugo::material::MaterialModel;
 
 pub const LAMBERT: MaterialModel = MaterialModel::Lambert { reflectance: 0.6, transmittance: 0.3 };

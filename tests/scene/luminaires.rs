@@ -4,9 +4,9 @@
 use super::{BASE, CASE, TempDir, assert_error, parse, rejected};
 use glam::DVec3;
 use std::path::Path;
+use ugo::luminaire::LuminaireKind;
 use ugo::photometry::Distribution;
 use ugo::scene::Scene;
-use ugo::luminaire::LuminaireKind;
 
 /// A floor and `luminaires`, nothing else emitting.
 fn with(luminaires: &str) -> String {

@@ -2,9 +2,9 @@
 
 use super::{BASE, TempDir, lit, parse};
 use glam::DVec3;
-use ugo::scene::Scene;
 use ugo::geometry::{Emission, Shape};
 use ugo::material::MaterialModel;
+use ugo::scene::Scene;
 
 const EVERY_SHAPE: &str = r#"
 [scene]

@@ -1,11 +1,13 @@
 //! The white furnace `L = L0/(1 − ρ)` and the divergence of a lossless closed scene.
 
 use crate::support::{build, furnace};
-use ugo::readout::energy::EnergyBalance;
 use ugo::kernel::Factored;
+use ugo::readout::energy::EnergyBalance;
 use ugo::solve::{SolveError, SolveParams, successive_approximation};
 
-const PARAMS: SolveParams = SolveParams { tolerance: 1e-10, max_iterations: 10_000 };
+fn params() -> SolveParams {
+    SolveParams { tolerance: 1e-10, max_iterations: 10_000, ..SolveParams::default() }
+}
 
 #[test]
 fn furnace_box_is_five_everywhere_and_conserves_energy() {
@@ -13,7 +15,7 @@ fn furnace_box_is_five_everywhere_and_conserves_energy() {
     let model = build(&scene);
     assert!(model.mesh.len() >= 600);
     let (x, info) =
-        successive_approximation(&Factored::new(&model.kernel), &model.l0, &PARAMS, &mut |_, _| {}).unwrap();
+        successive_approximation(&Factored::new(&model.kernel), &model.l0, &params(), &mut |_, _| {}).unwrap();
     let worst = x.iter().map(|l| (l / 5.0 - 1.0).abs()).fold(0.0, f64::max);
     eprintln!(
         "furnace: {} patches, {} iterations, worst relative error {worst:.2e}",
@@ -31,7 +33,8 @@ fn furnace_box_is_five_everywhere_and_conserves_energy() {
 fn lossless_closed_box_is_reported_divergent() {
     let scene = furnace(1.0, 1.0, 1.0, 0.25);
     let model = build(&scene);
-    let err = successive_approximation(&Factored::new(&model.kernel), &model.l0, &PARAMS, &mut |_, _| {}).unwrap_err();
+    let err =
+        successive_approximation(&Factored::new(&model.kernel), &model.l0, &params(), &mut |_, _| {}).unwrap_err();
     assert!(matches!(err, SolveError::Diverges { .. }), "{err}");
     assert!(err.to_string().contains("spectral radius"));
 }

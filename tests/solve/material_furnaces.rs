@@ -17,8 +17,8 @@
 
 use crate::support::{build_with, furnace_of, solve};
 use ugo::directions::DirectionSet;
-use ugo::model::Model;
 use ugo::material::MaterialModel;
+use ugo::model::Model;
 
 const PATCH: f64 = 0.2;
 

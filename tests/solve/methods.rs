@@ -3,19 +3,21 @@
 use crate::support::{build_with, furnace, furnace_of};
 use ugo::directions::DirectionSet;
 use ugo::kernel::{Explicit, Factored};
-use ugo::model::Model;
 use ugo::material::MaterialModel;
+use ugo::model::Model;
 use ugo::solve::norms::Norms;
 use ugo::solve::orders::reflection_orders;
 use ugo::solve::{Method, SolveError, SolveParams, System, solve};
 
-const TIGHT: SolveParams = SolveParams { tolerance: 1e-12, max_iterations: 5000 };
+fn tight() -> SolveParams {
+    SolveParams { tolerance: 1e-12, max_iterations: 5000, ..SolveParams::default() }
+}
 
 fn run(model: &Model, explicit: &Explicit, method: Method) -> Result<Vec<f64>, SolveError> {
     let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
     let factored = Factored::new(&model.kernel);
     let system = System::of(&model.kernel, &factored, Some(explicit), &areas, &model.l0);
-    solve(method, &system, &TIGHT, u64::MAX, &mut |_, _| {}).map(|r| r.0)
+    solve(method, &system, &tight(), &mut |_, _| {}).map(|r| r.0)
 }
 
 fn relative_difference(a: &[f64], b: &[f64]) -> f64 {
@@ -111,7 +113,8 @@ fn a_direct_solve_over_the_limit_is_refused_with_the_estimate() {
     let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
     let factored = Factored::new(&model.kernel);
     let system = System::of(&model.kernel, &factored, Some(&explicit), &areas, &model.l0);
-    let err = solve(Method::Direct, &system, &TIGHT, 1 << 20, &mut |_, _| {}).unwrap_err();
+    let err =
+        solve(Method::Direct, &system, &SolveParams { memory_limit: 1 << 20, ..tight() }, &mut |_, _| {}).unwrap_err();
     assert!(matches!(err, SolveError::TooLarge(_)) && err.to_string().contains("GMRES"), "{err}");
 }
 
@@ -119,8 +122,8 @@ fn a_direct_solve_over_the_limit_is_refused_with_the_estimate() {
 fn sparse_and_dense_lu_agree() {
     let model = glossy_model();
     let explicit = Explicit(model.kernel.explicit(u64::MAX).unwrap());
-    let (dense, _) = ugo::solve::direct(&explicit, &model.l0, u64::MAX).unwrap();
-    let (sparse, info) = ugo::solve::direct_sparse(&explicit, &model.l0, u64::MAX).unwrap();
+    let (dense, _) = ugo::solve::direct(&explicit, &model.l0, &tight(), &mut |_, _| {}).unwrap();
+    let (sparse, info) = ugo::solve::direct_sparse(&explicit, &model.l0, &tight(), &mut |_, _| {}).unwrap();
     assert_eq!(info.method, "direct (sparse LU)");
     assert!(relative_difference(&sparse, &dense) < 1e-12);
     assert!(info.residual() < 1e-13);

@@ -19,11 +19,11 @@ use glam::DVec3;
 use std::f64::consts::PI;
 use ugo::directions::DirectionSet;
 use ugo::geometry::ConvexPolygon;
-use ugo::transfer::contour::point_to_polygon;
-use ugo::model::Model;
-use ugo::scene::Scene;
 use ugo::geometry::Emission;
 use ugo::material::MaterialModel;
+use ugo::model::Model;
+use ugo::scene::Scene;
+use ugo::transfer::contour::point_to_polygon;
 
 const LUMINANCE: f64 = 1000.0;
 const RHO: f64 = 0.8;

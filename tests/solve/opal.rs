@@ -18,8 +18,8 @@ use crate::support::{build, build_with, corner_factor, mean_over, solve};
 use std::f64::consts::PI;
 use std::path::Path;
 use ugo::directions::DirectionSet;
-use ugo::readout::field::Field;
 use ugo::model::Model;
+use ugo::readout::field::Field;
 use ugo::readout::probe::{ProbeReading, read_probes};
 use ugo::scene::Scene;
 

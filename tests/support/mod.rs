@@ -3,11 +3,11 @@
 use glam::DVec3;
 use std::path::PathBuf;
 use ugo::directions::DirectionSet;
+use ugo::geometry::{Emission, Shape, Surface};
 use ugo::kernel::Factored;
+use ugo::material::MaterialModel;
 use ugo::model::{Model, ModelOptions};
 use ugo::scene::{Discretization, Material, Scene, SolverSettings};
-use ugo::geometry::{Emission, Shape, Surface};
-use ugo::material::MaterialModel;
 use ugo::solve::{SolveParams, successive_approximation};
 
 pub fn lambert(name: &str, reflectance: f64) -> Material {
@@ -73,7 +73,7 @@ pub fn rectangle(origin: [f64; 3], u: [f64; 3], v: [f64; 3]) -> Shape {
 
 /// `x = L0 + K x` by successive approximation to a relative residual of 1e-10.
 pub fn solve(model: &Model) -> Vec<f64> {
-    let params = SolveParams { tolerance: 1e-10, max_iterations: 10_000 };
+    let params = SolveParams { tolerance: 1e-10, max_iterations: 10_000, ..SolveParams::default() };
     successive_approximation(&Factored::new(&model.kernel), &model.l0, &params, &mut |_, _| {}).expect("converges").0
 }
 

@@ -13,9 +13,9 @@
 
 use crate::support::{build_with, lambert, material, rectangle, scene, solve, surface};
 use ugo::directions::DirectionSet;
-use ugo::scene::Scene;
 use ugo::geometry::{Emission, Surface};
 use ugo::material::MaterialModel;
+use ugo::scene::Scene;
 use ugo::trace::{TraceOptions, World, agreement, trace_photons};
 
 pub fn lamp_over_floor() -> Scene {

@@ -6,8 +6,8 @@ use crate::support::furnace;
 use glam::DVec3;
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
-use ugo::scene::{Camera, Scene};
 use ugo::material::MaterialModel;
+use ugo::scene::{Camera, Scene};
 use ugo::trace::{TraceOptions, World, agreement, trace_camera, trace_photons};
 
 const EXACT: f64 = 5.0;

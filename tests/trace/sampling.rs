@@ -11,7 +11,6 @@ use glam::DVec3;
 use std::f64::consts::{FRAC_1_PI, PI, TAU};
 use ugo::material::MaterialModel;
 use ugo::random::Rng;
-use ugo::trace::sampling::{evaluate, pdf, sample};
 
 const N: usize = 200_000;
 
@@ -53,12 +52,12 @@ fn sampled_weights_and_densities_match_the_luminance_factor() {
     for model in &models {
         for theta in [0.0, 35.0, 70.0] {
             let l = outgoing(theta);
-            let (weight, we) = mean(&mut rng, |r| sample(model, l, r.uniform3()).map_or(0.0, |s| s.weight));
+            let (weight, we) = mean(&mut rng, |r| model.sample(l, r.uniform3()).map_or(0.0, |s| s.weight));
             let (albedo, ae) = mean(&mut rng, |r| {
                 let d = sphere(r);
-                4.0 * PI * evaluate(model, l, d) * d.z.abs() * FRAC_1_PI
+                4.0 * PI * model.luminance_factor(l, d) * d.z.abs() * FRAC_1_PI
             });
-            let (total, te) = mean(&mut rng, |r| 4.0 * PI * pdf(model, l, sphere(r)));
+            let (total, te) = mean(&mut rng, |r| 4.0 * PI * model.pdf(l, sphere(r)));
             let z = (weight - albedo) / (we * we + ae * ae).sqrt();
             eprintln!(
                 "{model:?} at {theta}°: mean weight {weight:.4} ± {we:.4}, albedo {albedo:.4} ± {ae:.4} (z {z:+.2}), ∫pdf {total:.4} ± {te:.4}"

@@ -34,7 +34,7 @@ pub fn step(scene: &Scene, options: &ModelOptions, patch_size: f64) -> Result<(S
     let model = Model::build(scene, &options, &|_| {}, &|_| {})?;
     let assembly_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
-    let params = SolveParams { tolerance: 1e-8, max_iterations: 10_000 };
+    let params = SolveParams { tolerance: 1e-8, max_iterations: 10_000, ..SolveParams::default() };
     successive_approximation(&Factored::new(&model.kernel), &model.l0, &params, &mut |_, _| {})?;
     let solve_seconds = t.elapsed().as_secs_f64();
     let step = Step {
