@@ -8,7 +8,7 @@ use cli::options::{Discretize, ScaleArg, ShadingArg, Stopping, method};
 use cli::solve::Job;
 use std::path::PathBuf;
 use std::process::ExitCode;
-use ugo::solve::Method;
+use ugo::solve::{Method, RESTART, SolveParams};
 
 /// A numerical laboratory for the global illumination equation of a 3D scene.
 #[derive(Parser)]
@@ -184,89 +184,43 @@ fn main() -> ExitCode {
         }
         Err(e) => e.exit(),
     };
-    let result = match cli.command {
-        Command::Solve {
-            case,
-            output,
-            discretize,
-            stopping: Stopping { tolerance, max_iterations },
-            method,
-            orders,
-            norms,
-            basis,
-        } => Ok(method.into_iter().collect::<Vec<_>>()).and_then(|methods| {
-            let basis = basis.choice()?;
-            let job = Job {
-                methods,
-                tolerance,
-                max_iterations,
-                orders,
-                norms,
-                output,
-                suffix: "",
-                plot: None,
-                basis,
-                photons: None,
-                seed: 1,
-            };
-            cli::solve::run(&case, &discretize, job)
-        }),
-        Command::Norms { case, output, discretize, stopping: Stopping { tolerance, max_iterations } } => {
-            let job = Job {
-                methods: vec![Method::Neumann],
-                tolerance,
-                max_iterations,
-                orders: None,
-                norms: true,
-                output,
-                suffix: "-norms",
-                plot: None,
-                basis: None,
-                photons: None,
-                seed: 1,
-            };
+    match run(cli.command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("ugo: error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(command: Command) -> anyhow::Result<()> {
+    match command {
+        Command::Solve { case, output, discretize, stopping, method, orders, norms, basis } => {
+            let methods = method.into_iter().collect();
+            let job = Job { methods, orders, norms, output, basis: basis.choice()?, ..Job::new("", stopping) };
             cli::solve::run(&case, &discretize, job)
         }
-        Command::Compare {
-            case,
-            methods,
-            output,
-            plot,
-            discretize,
-            stopping: Stopping { tolerance, max_iterations },
-            basis,
-            bases,
-            photons,
-            seed,
-        } => Ok(methods).and_then(|methods: Vec<Method>| {
+        Command::Norms { case, output, discretize, stopping } => {
+            let job = Job { methods: vec![Method::Neumann], norms: true, output, ..Job::new("-norms", stopping) };
+            cli::solve::run(&case, &discretize, job)
+        }
+        Command::Compare { case, methods, output, plot, discretize, stopping, basis, bases, photons, seed } => {
             let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
             if !bases.is_empty() {
                 let plot = plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-bases.png")));
-                let params = ugo::solve::SolveParams {
-                    tolerance: tolerance.unwrap_or(1e-10),
-                    max_iterations: max_iterations.unwrap_or(10_000),
-                    ..Default::default()
+                let params = SolveParams {
+                    tolerance: stopping.tolerance.unwrap_or(1e-10),
+                    max_iterations: stopping.max_iterations.unwrap_or(10_000),
+                    ..SolveParams::default()
                 };
-                let method = methods.first().copied().unwrap_or(Method::Gmres { restart: ugo::solve::RESTART });
+                let method = methods.first().copied().unwrap_or(Method::Gmres { restart: RESTART });
                 return cli::basis::study(&case, &discretize, &bases, method, params, &plot);
             }
             let plot = Some(plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-compare.png"))));
             let basis = basis.choice()?;
-            let job = Job {
-                methods,
-                tolerance,
-                max_iterations,
-                orders: None,
-                norms: false,
-                output,
-                suffix: "-compare",
-                plot,
-                basis,
-                photons,
-                seed,
-            };
+            let job = Job { methods, output, plot, basis, photons, seed, ..Job::new("-compare", stopping) };
             cli::solve::run(&case, &discretize, job)
-        }),
+        }
         Command::Render { solution, cameras, exposure, output, false_colour, orders, shading, gather_rays, view } => {
             let look = cli::render::Look { view, exposure, false_colour, orders: &orders, shading, gather_rays };
             cli::render::run(&solution, &cameras, &output, &look)
@@ -283,12 +237,5 @@ fn main() -> ExitCode {
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench(options) => cli::bench::run(&options),
-    };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("ugo: error: {e:#}");
-            ExitCode::FAILURE
-        }
     }
 }

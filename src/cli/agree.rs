@@ -10,7 +10,7 @@ use super::render::{describe, shading_of};
 use super::trace::sibling;
 use anyhow::{Result, bail};
 use std::path::Path;
-use ugo::io::{read_exr, read_solution};
+use ugo::io::{StoredSolution, read_exr, read_solution};
 use ugo::render::render;
 use ugo::trace::{Agreement, agreement};
 
@@ -30,43 +30,7 @@ pub fn run(solution: &Path, reference: &Path, rendering: &Rendering) -> Result<(
     let stored = read_solution(solution)?;
     let is_image = reference.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"));
     if !is_image {
-        let mc = read_solution(reference)?;
-        let Some(error) = &mc.standard_error else {
-            bail!(
-                "{} holds no standard errors: it is not a Monte Carlo estimate (ugo trace --forward)",
-                reference.display()
-            );
-        };
-        let (n, k) = (stored.mesh.len(), stored.directions.len());
-        if mc.mesh.len() != n || mc.directions.name() != stored.directions.name() {
-            bail!(
-                "the two files discretize differently: {n} patches × {} cells against {} × {} (trace with the \
-                 solve's --patch-size and --directions)",
-                stored.directions.name(),
-                mc.mesh.len(),
-                mc.directions.name()
-            );
-        }
-        println!("ugo agree: {} against the forward estimate {}", solution.display(), reference.display());
-        println!("  per (patch, cell): {n} × {k}");
-        summary(&agreement(&stored.luminance, &mc.luminance, error));
-        let names: Vec<&str> = stored.scene.surfaces.iter().map(|s| s.name.as_str()).collect();
-        println!("  {:<26} {:>8} {:>10} {:>10}", "surface", "rms z", "rel. L1", "noise L2");
-        for (s, name) in names.iter().enumerate() {
-            let pick = |v: &[f64]| -> Vec<f64> {
-                stored
-                    .mesh
-                    .patches
-                    .iter()
-                    .enumerate()
-                    .filter(|(_, p)| p.surface as usize == s)
-                    .flat_map(|(i, _)| v[i * k..(i + 1) * k].to_vec())
-                    .collect()
-            };
-            let a = agreement(&pick(&stored.luminance), &pick(&mc.luminance), &pick(error));
-            println!("  {:<26} {:>8.3} {:>10.3e} {:>10.3e}", name, a.rms_z, a.relative_l1, a.noise_l2);
-        }
-        return Ok(());
+        return against_estimate(solution, reference, &stored);
     }
     let mean = read_exr(reference)?;
     let error_path = sibling(&reference.with_extension(""), "-stderr.exr");
@@ -110,6 +74,47 @@ pub fn run(solution: &Path, reference: &Path, rendering: &Rendering) -> Result<(
     );
     println!("  per pixel: {} × {}", mean.width, mean.height);
     summary(&agreement(&image.luminance, &mean.luminance, &error.luminance));
+    Ok(())
+}
+
+/// Per (patch, cell) against a forward Monte Carlo estimate, as a whole and per surface.
+fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution) -> Result<()> {
+    let mc = read_solution(reference)?;
+    let Some(error) = &mc.standard_error else {
+        bail!(
+            "{} holds no standard errors: it is not a Monte Carlo estimate (ugo trace --forward)",
+            reference.display()
+        );
+    };
+    let (n, k) = (stored.mesh.len(), stored.directions.len());
+    if mc.mesh.len() != n || mc.directions.name() != stored.directions.name() {
+        bail!(
+            "the two files discretize differently: {n} patches × {} cells against {} × {} (trace with the \
+             solve's --patch-size and --directions)",
+            stored.directions.name(),
+            mc.mesh.len(),
+            mc.directions.name()
+        );
+    }
+    println!("ugo agree: {} against the forward estimate {}", solution.display(), reference.display());
+    println!("  per (patch, cell): {n} × {k}");
+    summary(&agreement(&stored.luminance, &mc.luminance, error));
+    let names: Vec<&str> = stored.scene.surfaces.iter().map(|s| s.name.as_str()).collect();
+    println!("  {:<26} {:>8} {:>10} {:>10}", "surface", "rms z", "rel. L1", "noise L2");
+    for (s, name) in names.iter().enumerate() {
+        let pick = |v: &[f64]| -> Vec<f64> {
+            stored
+                .mesh
+                .patches
+                .iter()
+                .enumerate()
+                .filter(|(_, p)| p.surface as usize == s)
+                .flat_map(|(i, _)| v[i * k..(i + 1) * k].to_vec())
+                .collect()
+        };
+        let a = agreement(&pick(&stored.luminance), &pick(&mc.luminance), &pick(error));
+        println!("  {:<26} {:>8.3} {:>10.3e} {:>10.3e}", name, a.rms_z, a.relative_l1, a.noise_l2);
+    }
     Ok(())
 }
 

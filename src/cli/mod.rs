@@ -81,6 +81,43 @@ pub fn bar(total: u64, what: &str) -> indicatif::ProgressBar {
     bar
 }
 
+/// Progress bars on stderr, one stage at a time (hidden when stderr is not a terminal).
+#[derive(Default)]
+pub struct Bars {
+    current: std::sync::Mutex<Option<indicatif::ProgressBar>>,
+}
+
+impl Bars {
+    fn with(&self, f: impl FnOnce(&indicatif::ProgressBar)) {
+        if let Some(b) = self.current.lock().unwrap_or_else(|e| e.into_inner()).as_ref() {
+            f(b);
+        }
+    }
+}
+
+impl ugo::study::Progress for Bars {
+    fn begin(&self, what: &str, total: u64) {
+        *self.current.lock().unwrap_or_else(|e| e.into_inner()) = Some(bar(total, what));
+    }
+
+    fn advance(&self, done: u64) {
+        self.with(|b| b.inc(done));
+    }
+
+    fn at(&self, position: u64, message: &str) {
+        self.with(|b| {
+            b.set_position(position);
+            b.set_message(message.to_string());
+        });
+    }
+
+    fn end(&self) {
+        if let Some(b) = self.current.lock().unwrap_or_else(|e| e.into_inner()).take() {
+            b.finish_and_clear();
+        }
+    }
+}
+
 /// Bytes as GiB/MiB text.
 pub fn bytes(b: f64) -> String {
     if b >= (1u64 << 30) as f64 {

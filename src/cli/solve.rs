@@ -1,29 +1,20 @@
-//! The solve pipeline shared by `ugo solve`, `ugo norms` and `ugo compare`: mesh,
-//! assemble, run one or more methods on `x = L0 + K x`, read the probes, check the energy
-//! balance, optionally record reflection orders and norms, write HDF5 (and a plot), and
-//! print a summary; `compare --photons P` adds each method's agreement with a forward Monte
-//! Carlo estimate of the same discretization.
+//! `ugo solve`, `ugo norms` and `ugo compare`: the case and the options turned into a
+//! `study::Job`, the solve (`study::solve_case`), the HDF5 file, the CSV files and plot
+//! beside it, and the printed summary and tables.
 
-use super::options::Discretize;
-use super::{bar, bytes, describe, file_name, load};
+use super::options::{Discretize, Stopping};
+use super::{Bars, bytes, describe, file_name, load};
 use anyhow::{Context, Result, bail};
 use std::path::{Path, PathBuf};
-use ugo::basis::{Basis, Factorization, Reduced};
+use ugo::basis::Basis;
 use ugo::io::{
     BasisRecord, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
 };
-use ugo::kernel::{Explicit, Factored};
-use ugo::model::Model;
-use ugo::readout::energy::EnergyBalance;
-use ugo::readout::field::Field;
-use ugo::readout::grid::{GridReading, read_grids};
-use ugo::readout::illuminance::{arriving, patch_illuminance};
-use ugo::readout::probe::read_probes;
-use ugo::scene::Scene;
+use ugo::readout::grid::GridReading;
 use ugo::solve::norms::Norms;
-use ugo::solve::orders::{OrderRecord, reflection_orders};
-use ugo::solve::{Method, SolveParams, System, relative_residual, solve};
-use ugo::trace::{Agreement, TraceOptions, World, agreement, trace_photons};
+use ugo::solve::orders::OrderRecord;
+use ugo::solve::{Method, SolveParams};
+use ugo::study::{self, MonteCarlo, solve_case};
 
 /// What one command asks of the pipeline.
 pub struct Job {
@@ -46,6 +37,25 @@ pub struct Job {
     pub seed: u64,
 }
 
+impl Job {
+    /// One method (the case's), no extras, the output named `<case>{suffix}.h5`.
+    pub fn new(suffix: &'static str, stopping: Stopping) -> Job {
+        Job {
+            methods: Vec::new(),
+            tolerance: stopping.tolerance,
+            max_iterations: stopping.max_iterations,
+            orders: None,
+            norms: false,
+            output: None,
+            suffix,
+            plot: None,
+            basis: None,
+            photons: None,
+            seed: 1,
+        }
+    }
+}
+
 pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let (scene, options) = load(case, d)?;
     let params = SolveParams {
@@ -57,136 +67,63 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     if !(params.tolerance > 0.0 && params.tolerance < 1.0) {
         bail!("--tolerance must lie in (0, 1), got {}", params.tolerance);
     }
-    let methods = if job.methods.is_empty() { vec![scene.solver.method] } else { job.methods.clone() };
     let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
     let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}{}.h5", job.suffix)));
-
-    let assembly = bar(0, "assembly");
-    let model = Model::build(&scene, &options, &|total| assembly.set_length(total), &|done| assembly.inc(done))?;
-    assembly.finish_and_clear();
-
-    let factors =
-        job.basis.map(|b| Factorization::new(b, &model.kernel.blocks, &model.kernel.directions)).transpose()?;
-    let reduced = factors.as_ref().map(|f| Reduced::new(&model.kernel, f));
-    let source = reduced.as_ref().map(|r| r.source(&model.l0));
-    let explicit = if job.norms || methods.iter().any(Method::needs_explicit) {
-        Some(Explicit(match &reduced {
-            Some(r) => r.explicit(options.memory_limit)?,
-            None => model.kernel.explicit(options.memory_limit)?,
-        }))
-    } else {
-        None
+    let study = study::Job {
+        methods: job.methods.clone(),
+        params,
+        orders: job.orders.clone(),
+        norms: job.norms,
+        basis: job.basis,
+        photons: job.photons,
+        seed: job.seed,
     };
-    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
-    let factored = Factored::new(&model.kernel);
-    let mut runs: Vec<(Run, Vec<f64>)> = Vec::new();
-    for method in &methods {
-        let solving = bar(params.max_iterations as u64, &method.name());
-        let system = match (&reduced, &source) {
-            (Some(r), Some(s)) => System { operator: r, explicit: explicit.as_ref(), areas: &[], l0: s },
-            _ => System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &model.l0),
-        };
-        let result = solve(*method, &system, &params, &mut |n, r| {
-            solving.set_position(n as u64);
-            solving.set_message(format!("{} {r:.1e}", method.name()));
-        });
-        solving.finish_and_clear();
-        match result {
-            Ok((x, info)) => runs.push((Run { method: *method, info, difference: 0.0 }, x)),
-            Err(e) if methods.len() > 1 => eprintln!("ugo: {} failed: {e}", method.name()),
-            Err(e) => return Err(e.into()),
-        }
+    let s = solve_case(&scene, &options, &study, &Bars::default())?;
+    for (method, e) in &s.failures {
+        eprintln!("ugo: {} failed: {e}", method.name());
     }
-    if runs.is_empty() {
-        bail!("every method failed");
-    }
-    let reference = runs.iter().position(|(r, _)| r.method == Method::Direct).unwrap_or_else(|| {
-        (0..runs.len()).min_by(|&a, &b| runs[a].0.info.residual().total_cmp(&runs[b].0.info.residual())).unwrap_or(0)
+    let basis = s.basis.as_ref().map(|(factors, full_residual)| BasisRecord {
+        factors,
+        coefficients: &s.coefficients,
+        full_residual: *full_residual,
     });
-    let coefficients = runs[reference].1.clone();
-    let x = match &reduced {
-        Some(r) => r.field(&model.l0, &coefficients),
-        None => coefficients.clone(),
-    };
-    let basis = factors.as_ref().map(|f| BasisRecord {
-        factors: f,
-        coefficients: &coefficients,
-        full_residual: relative_residual(&factored, &model.l0, &x),
-    });
-    let x_ref = &coefficients;
-    let scale = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    for (run, y) in &mut runs {
-        run.difference = y.iter().zip(x_ref).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / scale;
-    }
-    let reference_mc = job.photons.map(|p| {
-        // each run's field (a reduced solve holds basis coefficients)
-        let fields: Vec<Vec<f64>> =
-            runs.iter().map(|(_, y)| reduced.as_ref().map_or_else(|| y.clone(), |r| r.field(&model.l0, y))).collect();
-        forward_reference(&scene, &model, p, job.seed, &fields)
-    });
-    let runs: Vec<Run> = runs.into_iter().map(|(r, _)| r).collect();
-
-    let k = model.kernel.cells();
-    let field = Field::from_unknowns(&x, k);
-    let illuminance = patch_illuminance(&arriving(&model, &x), k);
-    let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
-    let probes = read_probes(&scene.probes, &model, &field);
-    let grids = read_grids(&scene.grids, &model, &field);
-    let orders = order_record(&job, &methods, &model);
-    let norms = explicit.as_ref().filter(|_| job.norms).map(Norms::of);
     let solution = Solution {
         scene: &scene,
-        model: &model,
-        field: &field,
-        illuminance: &illuminance,
+        model: &s.model,
+        field: &s.field,
+        illuminance: &s.illuminance,
         params: &params,
-        info: &runs[reference].info,
-        energy: &energy,
-        probes: &probes,
-        grids: &grids,
-        orders: orders.as_ref(),
-        runs: &runs,
-        norms: norms.as_ref(),
+        info: &s.runs[s.reference].info,
+        energy: &s.energy,
+        probes: &s.probes,
+        grids: &s.grids,
+        orders: s.orders.as_ref(),
+        runs: &s.runs,
+        norms: s.norms.as_ref(),
         basis: basis.as_ref(),
     };
     write_solution(&output, &solution).with_context(|| format!("writing {}", output.display()))?;
     summary(&solution, &output);
-    write_grids(&grids, &output)?;
-    if !probes.is_empty() {
+    write_grids(&s.grids, &output)?;
+    if !s.probes.is_empty() {
         let csv = PathBuf::from(format!("{}-probes.csv", output.with_extension("").display()));
-        write_probes_csv(&csv, &probes)?;
+        write_probes_csv(&csv, &s.probes)?;
         println!("  probes             {}", csv.display());
     }
-    if let Some(orders) = &orders {
-        print_orders(orders, &x);
+    if let Some(orders) = &s.orders {
+        print_orders(orders, &s.x);
     }
-    if let Some(norms) = &norms {
-        print_norms(norms, &params, &runs);
+    if let Some(norms) = &s.norms {
+        print_norms(norms, &params, &s.runs);
     }
-    if runs.len() > 1 || reference_mc.is_some() {
-        print_comparison(&runs, reference_mc.as_ref());
+    if s.runs.len() > 1 || s.monte_carlo.is_some() {
+        print_comparison(&s.runs, s.monte_carlo.as_ref());
     }
     if let Some(plot) = &job.plot {
-        convergence_plot(plot, &format!("{}: convergence of every method", scene.name), &runs)
-            .map_err(|e| anyhow::anyhow!("writing {}: {e}", plot.display()))?;
+        convergence_plot(plot, &format!("{}: convergence of every method", scene.name), &s.runs)?;
         println!("  plot               {}", plot.display());
     }
     Ok(())
-}
-
-fn order_record(job: &Job, methods: &[Method], model: &Model) -> Option<OrderRecord> {
-    if job.basis.is_some() {
-        return None;
-    }
-    let orders = match &job.orders {
-        Some(o) => o.clone(),
-        None if methods.contains(&Method::Neumann) => vec![1, 8, 64],
-        None => return None,
-    };
-    if model.l0.iter().all(|&l| l == 0.0) {
-        return None;
-    }
-    Some(reflection_orders(&Factored::new(&model.kernel), &model.l0, &orders))
 }
 
 fn summary(s: &Solution, output: &Path) {
@@ -302,23 +239,6 @@ fn print_orders(orders: &OrderRecord, x: &[f64]) {
 
 fn converged(ok: bool) -> &'static str {
     if ok { "" } else { ", NOT converged" }
-}
-
-/// The forward Monte Carlo estimate of the same discretization, and each run's agreement with it.
-struct MonteCarlo {
-    photons: u64,
-    seconds: f64,
-    agreements: Vec<Agreement>,
-}
-
-fn forward_reference(scene: &Scene, model: &Model, photons: u64, seed: u64, fields: &[Vec<f64>]) -> MonteCarlo {
-    let world = World::new(scene, model.mesh.clone());
-    let progress = bar(photons, "photons");
-    let options = TraceOptions { seed, max_order: None };
-    let estimate = trace_photons(&world, &model.kernel.directions, photons, &options, &|n| progress.inc(n));
-    progress.finish_and_clear();
-    let agreements = fields.iter().map(|x| agreement(x, &estimate.luminance, &estimate.luminance_error)).collect();
-    MonteCarlo { photons, seconds: estimate.seconds, agreements }
 }
 
 fn print_comparison(runs: &[Run], mc: Option<&MonteCarlo>) {

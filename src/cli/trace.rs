@@ -11,6 +11,7 @@ use anyhow::{Result, bail};
 use std::path::{Path, PathBuf};
 use ugo::geometry::Mesh;
 use ugo::io::{EstimateFile, auto_exposure, write_estimate, write_exr_as, write_png};
+use ugo::model::ModelOptions;
 use ugo::scene::Scene;
 use ugo::trace::{TraceOptions, World, trace_camera, trace_photons, trace_probes};
 
@@ -33,46 +34,8 @@ pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
     if world.emitters.is_empty() {
         bail!("nothing in {} emits light: give a surface an emission", case.display());
     }
-    let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
-    let order = job.options.max_order.map_or("every order".to_string(), |n| format!("orders ≤ {n}"));
     if let Some(photons) = job.photons {
-        if photons < 2 {
-            bail!("--photons must be at least 2 (standard errors need two samples), got {photons}");
-        }
-        let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}-forward.h5")));
-        let progress = bar(photons, "photons");
-        let estimate = trace_photons(&world, &options.directions, photons, &job.options, &|n| progress.inc(n));
-        progress.finish_and_clear();
-        let file = EstimateFile {
-            scene: &scene,
-            mesh: &world.mesh,
-            directions: &options.directions,
-            estimate: &estimate,
-            options: &job.options,
-            emitted: world.emitters.flux(),
-        };
-        write_estimate(&output, &file)?;
-        let lit: Vec<f64> = estimate
-            .luminance
-            .iter()
-            .zip(&estimate.luminance_error)
-            .filter(|(l, e)| **e > 0.0 && **l > 0.0)
-            .map(|(l, e)| e / l)
-            .collect();
-        println!("ugo trace --forward: {} ({}), seed {}, {order}", scene.name, case.display(), job.options.seed);
-        println!(
-            "  patches N × cells K  {} × {} ({})",
-            world.mesh.len(),
-            options.directions.len(),
-            options.directions.name()
-        );
-        println!("  photons              {photons}");
-        throughput(photons, estimate.rays, estimate.seconds, "photons");
-        println!("  emitted flux         {:.6e} lm", world.emitters.flux());
-        println!("  scattered flux       {:.6e} ± {:.2e} lm", estimate.scattered.0, estimate.scattered.1);
-        println!("  relative std. error  median {:.2e} over {} lit (patch, cell) bins", median(lit.clone()), lit.len());
-        println!("  written              {}", output.display());
-        return Ok(());
+        return forward(case, &scene, &world, &options, job, photons);
     }
     if job.spp == 0 {
         bail!("--spp must be at least 1");
@@ -80,13 +43,76 @@ pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
     if scene.cameras.is_empty() && job.cameras.is_empty() && !scene.probes.is_empty() {
         return probes(&scene, &world, job);
     }
+    camera_images(case, &scene, &world, job)?;
+    if scene.probes.is_empty() { Ok(()) } else { probes(&scene, &world, job) }
+}
+
+/// What a trace keeps: every reflection order, or those up to `--max-order`.
+fn orders_kept(job: &TraceJob) -> String {
+    job.options.max_order.map_or("every order".to_string(), |n| format!("orders ≤ {n}"))
+}
+
+/// `ugo trace --forward`: photons into the (patch, cell) bins, written as HDF5.
+fn forward(
+    case: &Path,
+    scene: &Scene,
+    world: &World,
+    options: &ModelOptions,
+    job: &TraceJob,
+    photons: u64,
+) -> Result<()> {
+    let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+    let order = orders_kept(job);
+    if photons < 2 {
+        bail!("--photons must be at least 2 (standard errors need two samples), got {photons}");
+    }
+    let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}-forward.h5")));
+    let progress = bar(photons, "photons");
+    let estimate = trace_photons(&world, &options.directions, photons, &job.options, &|n| progress.inc(n));
+    progress.finish_and_clear();
+    let file = EstimateFile {
+        scene,
+        mesh: &world.mesh,
+        directions: &options.directions,
+        estimate: &estimate,
+        options: &job.options,
+        emitted: world.emitters.flux(),
+    };
+    write_estimate(&output, &file)?;
+    let lit: Vec<f64> = estimate
+        .luminance
+        .iter()
+        .zip(&estimate.luminance_error)
+        .filter(|(l, e)| **e > 0.0 && **l > 0.0)
+        .map(|(l, e)| e / l)
+        .collect();
+    println!("ugo trace --forward: {} ({}), seed {}, {order}", scene.name, case.display(), job.options.seed);
+    println!(
+        "  patches N × cells K  {} × {} ({})",
+        world.mesh.len(),
+        options.directions.len(),
+        options.directions.name()
+    );
+    println!("  photons              {photons}");
+    throughput(photons, estimate.rays, estimate.seconds, "photons");
+    println!("  emitted flux         {:.6e} lm", world.emitters.flux());
+    println!("  scattered flux       {:.6e} ± {:.2e} lm", estimate.scattered.0, estimate.scattered.1);
+    println!("  relative std. error  median {:.2e} over {} lit (patch, cell) bins", median(lit.clone()), lit.len());
+    println!("  written              {}", output.display());
+    Ok(())
+}
+
+/// Mean and standard-error images of each chosen camera.
+fn camera_images(case: &Path, scene: &Scene, world: &World, job: &TraceJob) -> Result<()> {
+    let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+    let order = orders_kept(job);
     let cameras = chosen(&scene.cameras, &job.cameras, case)?;
     let dir = job.output.clone().unwrap_or_else(|| PathBuf::from("."));
     std::fs::create_dir_all(&dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
     for camera in cameras {
         let [w, h] = camera.resolution;
         let progress = bar(h as u64, &camera.name);
-        let traced = trace_camera(&world, camera, job.spp, &job.options, &|n| progress.inc(n));
+        let traced = trace_camera(world, camera, job.spp, &job.options, &|n| progress.inc(n));
         progress.finish_and_clear();
         let base = dir.join(format!("{stem}-{}-trace", file_name(&camera.name)));
         let (mean, error, png) = (sibling(&base, ".exr"), sibling(&base, "-stderr.exr"), sibling(&base, ".png"));
@@ -121,7 +147,7 @@ pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
         println!("  relative std. error  median {:.2e} per pixel", median(relative));
         println!("  {}\n  {}\n  {}", mean.display(), error.display(), png.display());
     }
-    if scene.probes.is_empty() { Ok(()) } else { probes(&scene, &world, job) }
+    Ok(())
 }
 
 /// The probes' readings, `job.probe_samples` paths each.

@@ -2,6 +2,7 @@
 //! the HDF5 file of a forward Monte Carlo estimate, convergence plots, and rendered images
 //! (linear EXR, read back for comparisons; tone-mapped PNG; false colour).
 
+mod basis_plot;
 mod error;
 mod estimate_file;
 mod exr_file;
@@ -13,6 +14,7 @@ mod read;
 mod readings;
 mod triptych;
 
+pub use basis_plot::basis_plot;
 pub use error::IoError;
 pub use estimate_file::{EstimateFile, write_estimate};
 pub use exr_file::{read_exr, write_exr, write_exr_as};

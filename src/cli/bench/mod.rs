@@ -18,7 +18,8 @@ use anyhow::{Context, Result, bail};
 use serde_json::json;
 use std::path::PathBuf;
 use ugo::kernel::Factored;
-use ugo::model::Model;
+use ugo::model::{Model, ModelOptions};
+use ugo::scene::Scene;
 use ugo::visibility::Visibility;
 
 /// What `ugo bench` measures.
@@ -58,14 +59,7 @@ pub fn run(o: &BenchOptions) -> Result<()> {
     println!("ugo bench: {} ({} threads)", scene.name, threads);
 
     let mesh = Model::mesh(&scene, &options);
-    let Some(segments) = layouts::segments(&mesh, o.rays) else {
-        bail!(
-            "{}: no two of its {} patches face each other, so there are no occlusion rays or kernel entries \
-             to time; bench a case with interreflection (e.g. cases/cornell-box.toml)",
-            o.case.display(),
-            mesh.len()
-        );
-    };
+    let segments = facing_segments(o, &mesh)?;
     let visibility = Visibility::build(&mesh);
     let rays = layouts::rays_per_second(&visibility, &segments).max(layouts::rays_per_second(&visibility, &segments));
     println!(
@@ -91,23 +85,7 @@ pub fn run(o: &BenchOptions) -> Result<()> {
         model.stats.rays as f64 / model.stats.kernel_seconds
     );
     let g = &model.kernel.g;
-    let spmv = bandwidth::spmv_seconds(g);
-    let traffic = g.bytes() / spmv;
-    println!(
-        "  sparse product G x    {:>12.2} GB/s     ({:.0} % of the triad; {} non-zeros, {:.1} B each ({}), {:.2} ms)",
-        traffic / 1e9,
-        100.0 * traffic / triad,
-        g.nnz(),
-        g.bytes() / g.nnz() as f64,
-        g.precision().name(),
-        spmv * 1e3
-    );
-    let factored = bandwidth::apply_seconds(&Factored::new(&model.kernel));
-    println!(
-        "  factored K x = B(G x) {:>12.2} ms       ({:.3e} unknowns/s)",
-        factored * 1e3,
-        model.l0.len() as f64 / factored
-    );
+    let (spmv, traffic, factored) = product_figures(&model, triad);
 
     let one = scaling::assembly_with_threads(&scene, &options, 1)?;
     let all = full.assembly_seconds;
@@ -116,30 +94,7 @@ pub fn run(o: &BenchOptions) -> Result<()> {
         one / all
     );
 
-    let sizes = if o.scaling.is_empty() {
-        [2.5, 2.0, 1.5, 1.25].map(|f| f * options.patch_size).to_vec()
-    } else {
-        o.scaling.clone()
-    };
-    let mut steps = Vec::new();
-    for h in sizes {
-        steps.push(scaling::step(&scene, &options, h)?.0);
-    }
-    steps.push(full);
-    steps.sort_by_key(|s| s.patches);
-    let exponent = scaling::exponent(&steps);
-    println!("  scaling (assemble + solve, Neumann to 1e-8), time ∝ N^{exponent:.2}");
-    println!(
-        "    {:>10} {:>9} {:>11} {:>11} {:>10} {:>9} {:>11}",
-        "patch m", "patches", "pairs", "non-zeros", "assembly s", "solve s", "+peak MiB"
-    );
-    for s in &steps {
-        let peak = s.peak_bytes.map_or("-".into(), |b| format!("{:.0}", b / (1u64 << 20) as f64));
-        println!(
-            "    {:>10.4} {:>9} {:>11} {:>11} {:>10.2} {:>9.3} {:>11}",
-            s.patch_size, s.patches, s.pairs, s.nonzeros, s.assembly_seconds, s.solve_seconds, peak
-        );
-    }
+    let (steps, exponent) = scaling_curve(&scene, &options, &o.scaling, full)?;
     let report = json!({
         "case": scene.name,
         "threads": threads,
@@ -161,10 +116,99 @@ pub fn run(o: &BenchOptions) -> Result<()> {
         println!("  json                  {}", path.display());
     }
     if let Some(dir) = &o.export {
-        let meta = json!({ "ugo_occlusion_rays_per_second": rays, "ugo_spmv_seconds": spmv, "threads": threads });
-        let g = g.as_double().context("--export needs the matrix in double precision (--precision f64)")?;
-        export::export(dir, &mesh, &visibility, &segments, g, meta)?;
-        println!("  exported              {} (run docs/peers/peers.py {})", dir.display(), dir.display());
+        export_peers(
+            dir,
+            &mesh,
+            &visibility,
+            &segments,
+            g,
+            json!({ "ugo_occlusion_rays_per_second": rays, "ugo_spmv_seconds": spmv, "threads": threads }),
+        )?;
     }
     Ok(())
+}
+
+/// Assembly and solve at several patch sizes (`sizes`, default 2.5, 2, 1.5 and 1.25 times
+/// the case's) beside the case's own `full` step, printed, with the fitted exponent of time
+/// against the number of patches.
+fn scaling_curve(
+    scene: &Scene,
+    options: &ModelOptions,
+    sizes: &[f64],
+    full: scaling::Step,
+) -> Result<(Vec<scaling::Step>, f64)> {
+    let sizes =
+        if sizes.is_empty() { [2.5, 2.0, 1.5, 1.25].map(|f| f * options.patch_size).to_vec() } else { sizes.to_vec() };
+    let mut steps = Vec::new();
+    for h in sizes {
+        steps.push(scaling::step(scene, options, h)?.0);
+    }
+    steps.push(full);
+    steps.sort_by_key(|s| s.patches);
+    let exponent = scaling::exponent(&steps);
+    println!("  scaling (assemble + solve, Neumann to 1e-8), time ∝ N^{exponent:.2}");
+    println!(
+        "    {:>10} {:>9} {:>11} {:>11} {:>10} {:>9} {:>11}",
+        "patch m", "patches", "pairs", "non-zeros", "assembly s", "solve s", "+peak MiB"
+    );
+    for s in &steps {
+        let peak = s.peak_bytes.map_or("-".into(), |b| format!("{:.0}", b / (1u64 << 20) as f64));
+        println!(
+            "    {:>10.4} {:>9} {:>11} {:>11} {:>10.2} {:>9.3} {:>11}",
+            s.patch_size, s.patches, s.pairs, s.nonzeros, s.assembly_seconds, s.solve_seconds, peak
+        );
+    }
+    Ok((steps, exponent))
+}
+
+/// `--rays` segments between facing patches, or a clear refusal when no patches face.
+fn facing_segments(o: &BenchOptions, mesh: &ugo::geometry::Mesh) -> Result<Vec<layouts::Segment>> {
+    let Some(segments) = layouts::segments(mesh, o.rays) else {
+        bail!(
+            "{}: no two of its {} patches face each other, so there are no occlusion rays or kernel entries \
+             to time; bench a case with interreflection (e.g. cases/cornell-box.toml)",
+            o.case.display(),
+            mesh.len()
+        );
+    };
+    Ok(segments)
+}
+
+/// The rays, triangles and matrix for `docs/peers/peers.py`.
+fn export_peers(
+    dir: &std::path::Path,
+    mesh: &ugo::geometry::Mesh,
+    visibility: &Visibility,
+    segments: &[layouts::Segment],
+    g: &ugo::kernel::TransportMatrix,
+    meta: serde_json::Value,
+) -> Result<()> {
+    let g = g.as_double().context("--export needs the matrix in double precision (--precision f64)")?;
+    export::export(dir, mesh, visibility, segments, g, meta)?;
+    println!("  exported              {} (run docs/peers/peers.py {})", dir.display(), dir.display());
+    Ok(())
+}
+
+/// The sparse product `G x` (seconds, bytes/s) and the factored `K x` (seconds), printed
+/// against the triad's bandwidth `triad`.
+fn product_figures(model: &Model, triad: f64) -> (f64, f64, f64) {
+    let g = &model.kernel.g;
+    let spmv = bandwidth::spmv_seconds(g);
+    let traffic = g.bytes() / spmv;
+    println!(
+        "  sparse product G x    {:>12.2} GB/s     ({:.0} % of the triad; {} non-zeros, {:.1} B each ({}), {:.2} ms)",
+        traffic / 1e9,
+        100.0 * traffic / triad,
+        g.nnz(),
+        g.bytes() / g.nnz() as f64,
+        g.precision().name(),
+        spmv * 1e3
+    );
+    let factored = bandwidth::apply_seconds(&Factored::new(&model.kernel));
+    println!(
+        "  factored K x = B(G x) {:>12.2} ms       ({:.3e} unknowns/s)",
+        factored * 1e3,
+        model.l0.len() as f64 / factored
+    );
+    (spmv, traffic, factored)
 }

@@ -1,0 +1,219 @@
+//! The solve of a case (`design.md` §4, §6), as `ugo solve`, `norms` and `compare` run it:
+//! the model, every method asked for on `x = L0 + K x` (in the full cell basis or a
+//! factored angular one), the reference run, and every readout of its field: patch
+//! illuminance, energy balance, probes, grids, reflection orders, norms and, on request,
+//! each run's agreement with a forward Monte Carlo estimate of the same discretization.
+
+use super::progress::Progress;
+use crate::basis::{Basis, BasisError, Factorization, Reduced};
+use crate::io::Run;
+use crate::kernel::{Explicit, Factored, TooLarge};
+use crate::model::{Model, ModelOptions};
+use crate::readout::energy::EnergyBalance;
+use crate::readout::field::Field;
+use crate::readout::grid::{GridReading, read_grids};
+use crate::readout::illuminance::{arriving, patch_illuminance};
+use crate::readout::probe::{ProbeReading, read_probes};
+use crate::scene::Scene;
+use crate::solve::norms::Norms;
+use crate::solve::orders::{OrderRecord, reflection_orders};
+use crate::solve::{Method, SolveError, SolveParams, System, relative_residual, solve};
+use crate::trace::{Agreement, TraceOptions, World, agreement, trace_photons};
+use thiserror::Error;
+
+/// What a command asks of the solve.
+#[derive(Debug, Clone)]
+pub struct Job {
+    /// Methods to run; empty means the case's `[solver] method`.
+    pub methods: Vec<Method>,
+    pub params: SolveParams,
+    /// Reflection orders whose partial sums are recorded (`None`: 1, 8, 64 with `neumann`).
+    pub orders: Option<Vec<usize>>,
+    pub norms: bool,
+    /// Solve for the coefficients of this angular basis instead of the cell values.
+    pub basis: Option<Basis>,
+    /// Photons of a forward Monte Carlo reference to compare every run with.
+    pub photons: Option<u64>,
+    /// Seed of that reference.
+    pub seed: u64,
+}
+
+/// Why a solve gave no field.
+#[derive(Debug, Error)]
+pub enum StudyError {
+    #[error(transparent)]
+    TooLarge(#[from] TooLarge),
+    #[error(transparent)]
+    Basis(#[from] BasisError),
+    #[error(transparent)]
+    Solve(#[from] SolveError),
+    #[error("every method failed: {}", .0.iter().map(|(m, e)| format!("{}: {e}", m.name())).collect::<Vec<_>>().join("; "))]
+    EveryMethodFailed(Vec<(Method, SolveError)>),
+}
+
+/// A solved case: the model, every run, the reference field and its readouts.
+pub struct Solved {
+    pub model: Model,
+    pub runs: Vec<Run>,
+    /// The run whose field is kept: `direct` if it ran, else the smallest final residual.
+    pub reference: usize,
+    /// Methods that failed while others succeeded.
+    pub failures: Vec<(Method, SolveError)>,
+    /// The reference run's unknowns (basis coefficients in a reduced solve).
+    pub coefficients: Vec<f64>,
+    /// The field `x[i·K + k]`, cd/m².
+    pub x: Vec<f64>,
+    /// The factored basis of a reduced solve, and the field's residual in the full system.
+    pub basis: Option<(Factorization, f64)>,
+    pub field: Field,
+    /// Illuminance of each patch, lx.
+    pub illuminance: Vec<f64>,
+    pub energy: EnergyBalance,
+    pub probes: Vec<ProbeReading>,
+    pub grids: Vec<GridReading>,
+    pub orders: Option<OrderRecord>,
+    pub norms: Option<Norms>,
+    pub monte_carlo: Option<MonteCarlo>,
+}
+
+/// The forward Monte Carlo estimate of the same discretization, and each run's agreement.
+pub struct MonteCarlo {
+    pub photons: u64,
+    pub seconds: f64,
+    pub agreements: Vec<Agreement>,
+}
+
+/// Builds the model of `scene` and solves it as `job` asks; `progress` hears of the
+/// assembly, each method's iterations and the photons.
+pub fn solve_case(
+    scene: &Scene,
+    options: &ModelOptions,
+    job: &Job,
+    progress: &dyn Progress,
+) -> Result<Solved, StudyError> {
+    let methods = if job.methods.is_empty() { vec![scene.solver.method] } else { job.methods.clone() };
+    let model =
+        Model::build(scene, options, &|total| progress.begin("assembly", total), &|done| progress.advance(done));
+    progress.end();
+    let model = model?;
+    let factors =
+        job.basis.map(|b| Factorization::new(b, &model.kernel.blocks, &model.kernel.directions)).transpose()?;
+    let reduced = factors.as_ref().map(|f| Reduced::new(&model.kernel, f));
+    let needs_explicit = job.norms || methods.iter().any(Method::needs_explicit);
+    let explicit = match (&reduced, needs_explicit) {
+        (_, false) => None,
+        (Some(r), true) => Some(Explicit(r.explicit(options.memory_limit)?)),
+        (None, true) => Some(Explicit(model.kernel.explicit(options.memory_limit)?)),
+    };
+    let factored = Factored::new(&model.kernel);
+    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+    let source = reduced.as_ref().map(|r| r.source(&model.l0));
+    let system = match (&reduced, &source) {
+        (Some(r), Some(s)) => System { operator: r, explicit: explicit.as_ref(), areas: &[], l0: s },
+        _ => System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &model.l0),
+    };
+    let (mut runs, failures) = run_methods(&methods, &system, &job.params, progress)?;
+    let reference = reference_run(&runs);
+    let coefficients = runs[reference].1.clone();
+    let field_of = |y: &[f64]| reduced.as_ref().map_or_else(|| y.to_vec(), |r| r.field(&model.l0, y));
+    let x = field_of(&coefficients);
+    let scale = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    for (run, y) in &mut runs {
+        run.difference = y.iter().zip(&coefficients).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / scale;
+    }
+    let monte_carlo = job.photons.map(|photons| {
+        let fields: Vec<Vec<f64>> = runs.iter().map(|(_, y)| field_of(y)).collect();
+        forward_reference(scene, &model, photons, job.seed, &fields, progress)
+    });
+    let basis = factors.map(|f| (f, relative_residual(&factored, &model.l0, &x)));
+    let orders = order_record(job, &methods, &model);
+    let norms = explicit.as_ref().filter(|_| job.norms).map(Norms::of);
+    let runs = runs.into_iter().map(|(r, _)| r).collect();
+    let k = model.kernel.cells();
+    let field = Field::from_unknowns(&x, k);
+    let illuminance = patch_illuminance(&arriving(&model, &x), k);
+    let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
+    let probes = read_probes(&scene.probes, &model, &field);
+    let grids = read_grids(&scene.grids, &model, &field);
+    Ok(Solved {
+        model,
+        runs,
+        reference,
+        failures,
+        coefficients,
+        x,
+        basis,
+        field,
+        illuminance,
+        energy,
+        probes,
+        grids,
+        orders,
+        norms,
+        monte_carlo,
+    })
+}
+
+/// Every method on `system`: the runs that succeeded with their unknowns, and the failures
+/// (an error when every method failed; the one method's own error when only one ran).
+#[allow(clippy::type_complexity)]
+fn run_methods(
+    methods: &[Method],
+    system: &System,
+    params: &SolveParams,
+    progress: &dyn Progress,
+) -> Result<(Vec<(Run, Vec<f64>)>, Vec<(Method, SolveError)>), StudyError> {
+    let (mut runs, mut failures) = (Vec::new(), Vec::new());
+    for &method in methods {
+        progress.begin(&method.name(), params.max_iterations as u64);
+        let result =
+            solve(method, system, params, &mut |n, r| progress.at(n as u64, &format!("{} {r:.1e}", method.name())));
+        progress.end();
+        match result {
+            Ok((x, info)) => runs.push((Run { method, info, difference: 0.0 }, x)),
+            Err(e) if methods.len() == 1 => return Err(e.into()),
+            Err(e) => failures.push((method, e)),
+        }
+    }
+    if runs.is_empty() {
+        return Err(StudyError::EveryMethodFailed(failures));
+    }
+    Ok((runs, failures))
+}
+
+/// `direct` if it ran, else the run with the smallest final residual.
+fn reference_run(runs: &[(Run, Vec<f64>)]) -> usize {
+    runs.iter().position(|(r, _)| r.method == Method::Direct).unwrap_or_else(|| {
+        (0..runs.len()).min_by(|&a, &b| runs[a].0.info.residual().total_cmp(&runs[b].0.info.residual())).unwrap_or(0)
+    })
+}
+
+/// The partial sums asked for (1, 8 and 64 by default with `neumann`); none in a basis.
+fn order_record(job: &Job, methods: &[Method], model: &Model) -> Option<OrderRecord> {
+    if job.basis.is_some() || model.l0.iter().all(|&l| l == 0.0) {
+        return None;
+    }
+    let orders = match &job.orders {
+        Some(o) => o.clone(),
+        None if methods.contains(&Method::Neumann) => vec![1, 8, 64],
+        None => return None,
+    };
+    Some(reflection_orders(&Factored::new(&model.kernel), &model.l0, &orders))
+}
+
+fn forward_reference(
+    scene: &Scene,
+    model: &Model,
+    photons: u64,
+    seed: u64,
+    fields: &[Vec<f64>],
+    progress: &dyn Progress,
+) -> MonteCarlo {
+    let world = World::new(scene, model.mesh.clone());
+    progress.begin("photons", photons);
+    let options = TraceOptions { seed, max_order: None };
+    let estimate = trace_photons(&world, &model.kernel.directions, photons, &options, &|n| progress.advance(n));
+    progress.end();
+    let agreements = fields.iter().map(|x| agreement(x, &estimate.luminance, &estimate.luminance_error)).collect();
+    MonteCarlo { photons, seconds: estimate.seconds, agreements }
+}
