@@ -253,7 +253,19 @@ fn write_grid(g: &hdf5::Group, grid: &GridReading) -> hdf5::Result<()> {
     Ok(())
 }
 
-/// The attributes every file of a field carries: method, scene, version, direction set, units.
+/// Copies of the files the case names (OBJ, photometric): `/case_files/paths` and the bytes
+/// of file `i` in `/case_files/<i>` (u8), so that the solution is read back without them.
+fn write_case_files(g: &hdf5::Group, scene: &Scene) -> hdf5::Result<()> {
+    let paths: Vec<String> = scene.files.iter().map(|f| f.path.display().to_string()).collect();
+    strings(g, "paths", paths.iter().map(String::as_str))?;
+    for (i, f) in scene.files.iter().enumerate() {
+        dataset(g, &i.to_string(), &Array1::from(f.bytes.clone()))?;
+    }
+    Ok(())
+}
+
+/// The attributes every file of a field carries: method, scene, version, direction set, units
+/// (and the case's own files, `/case_files`).
 pub(super) fn write_identity(
     file: &hdf5::File,
     method: &str,
@@ -264,6 +276,7 @@ pub(super) fn write_identity(
     text_attr(file, "scene_name", &scene.name)?;
     text_attr(file, "scene_file", &scene.path.display().to_string())?;
     text_attr(file, "scene_text", &scene.source)?;
+    write_case_files(&file.create_group("case_files")?, scene)?;
     text_attr(file, "version", env!("CARGO_PKG_VERSION"))?;
     text_attr(file, "directions", directions.name())?;
     text_attr(file, "units", "luminance cd/m2, illuminance lx, flux lm, lengths m")

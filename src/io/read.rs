@@ -6,10 +6,10 @@ use super::IoError;
 use crate::directions::{DirectionSet, Scheme};
 use crate::geometry::{ConvexPolygon, Mesh, NO_TWIN, Patch};
 use crate::scene::Scene;
-use crate::scene::SceneError;
+use crate::scene::{CaseFile, CaseFiles, SceneError};
 use glam::DVec3;
 use hdf5::types::VarLenUnicode;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// A solve as stored: the scene, its patches and the luminance of each (patch, cell).
 pub struct StoredSolution {
@@ -65,7 +65,7 @@ macro_rules! bail {
 
 fn read_from(file: &hdf5::File) -> Result<StoredSolution> {
     let scene_file = text(file, "scene_file")?;
-    let scene = Scene::parse(Path::new(&scene_file), text(file, "scene_text")?)?;
+    let scene = Scene::parse_with(Path::new(&scene_file), text(file, "scene_text")?, case_files(file)?)?;
     let name = text(file, "directions")?;
     let directions = Scheme::parse(&name).ok_or_else(|| why!("unknown direction set \"{name}\""))?.set();
     let luminance = file.dataset("field/luminance")?.read_dyn::<f64>()?;
@@ -101,6 +101,18 @@ fn read_from(file: &hdf5::File) -> Result<StoredSolution> {
     };
     let method = text(file, "method")?;
     Ok(StoredSolution { scene, mesh, directions, luminance, orders, standard_error, method })
+}
+
+/// The stored copies of the case's files (`/case_files`), or the disk for older files.
+fn case_files(file: &hdf5::File) -> Result<CaseFiles> {
+    let Ok(group) = file.group("case_files") else { return Ok(CaseFiles::disk()) };
+    let paths = group.dataset("paths")?.read_raw::<VarLenUnicode>()?;
+    let files = paths
+        .iter()
+        .enumerate()
+        .map(|(i, p)| Ok(CaseFile { path: PathBuf::from(p.as_str()), bytes: group.dataset(&i.to_string())?.read_raw::<u8>()? }))
+        .collect::<Result<Vec<_>>>()?;
+    Ok(CaseFiles::stored(files))
 }
 
 /// The partial sums of `/orders/{orders,partial_sums}`, each `size` long.

@@ -1,5 +1,6 @@
 //! The runtime scene: what a validated case file says, in plain types (`design.md` §7).
 
+use super::files::CaseFile;
 use super::grid::Grid;
 use crate::directions::Scheme;
 use crate::geometry::Surface;
@@ -26,6 +27,8 @@ pub struct Scene {
     pub cameras: Vec<Camera>,
     pub grids: Vec<Grid>,
     pub luminaires: Vec<Luminaire>,
+    /// Every file the case names (OBJ, photometric), as read.
+    pub files: Vec<CaseFile>,
 }
 
 /// `[discretization]`: how finely surfaces are meshed.

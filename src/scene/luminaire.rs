@@ -9,7 +9,8 @@
 use super::check::{Context, unique_names};
 use super::error::SceneError;
 use crate::luminaire::{Luminaire, LuminaireKind, PointLuminaire};
-use crate::photometry::{Distribution, read_ies, read_ldt};
+use super::files::CaseFiles;
+use crate::photometry::{Distribution, PhotometryError, parse_ies, parse_ldt};
 use serde::Deserialize;
 use std::path::Path;
 
@@ -41,16 +42,16 @@ const TYPES: [(&str, &[&str]); 5] = [
 ];
 
 /// Validates the `[[luminaire]]` tables of the case file `path`.
-pub fn luminaires(path: &Path, raw: &[RawLuminaire]) -> Result<Vec<Luminaire>, SceneError> {
+pub fn luminaires(path: &Path, raw: &[RawLuminaire], files: &CaseFiles) -> Result<Vec<Luminaire>, SceneError> {
     unique_names(path, "luminaire", raw.iter().map(|l| l.name.as_str()))?;
     let luminaire = |(index, l): (usize, &RawLuminaire)| {
         let at = Context::item(path, "luminaire", &l.name, index);
-        Ok(Luminaire { name: l.name.clone(), kind: kind(&at, l)? })
+        Ok(Luminaire { name: l.name.clone(), kind: kind(&at, l, files)? })
     };
     raw.iter().enumerate().map(luminaire).collect()
 }
 
-fn kind(at: &Context, l: &RawLuminaire) -> Result<LuminaireKind, SceneError> {
+fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKind, SceneError> {
     let Some(&(name, keys)) = TYPES.iter().find(|(name, _)| *name == l.kind) else {
         let known: Vec<String> = TYPES.iter().map(|(n, _)| format!("\"{n}\"")).collect();
         return Err(at.error("type", format!("unknown luminaire type \"{}\"; known: {}", l.kind, known.join(", "))));
@@ -101,7 +102,11 @@ fn kind(at: &Context, l: &RawLuminaire) -> Result<LuminaireKind, SceneError> {
                 return Err(at.error("file", "must not be empty"));
             }
             let file = at.file.parent().unwrap_or(Path::new("")).join(given);
-            let read = if name == "ies" { read_ies(&file) } else { read_ldt(&file) };
+            let text = files
+                .read(&file)
+                .map(|bytes| String::from_utf8_lossy(&bytes).into_owned())
+                .map_err(|e| at.error("file", PhotometryError::whole(&file, format!("cannot read the file: {e}")).to_string()))?;
+            let read = if name == "ies" { parse_ies(&file, &text) } else { parse_ldt(&file, &text) };
             let table = read.map_err(|e| at.error("file", e.to_string()))?;
             (Distribution::Table(Box::new(table)), Some(file))
         }

@@ -7,6 +7,7 @@
 mod check;
 mod description;
 mod error;
+mod files;
 mod grid;
 mod luminaire;
 mod material;
@@ -16,6 +17,7 @@ mod validate;
 
 pub use description::{Camera, Discretization, Material, Probe, Scene, SolverSettings};
 pub use error::SceneError;
+pub use files::{CaseFile, CaseFiles};
 pub use grid::Grid;
 pub use schema::RawCamera;
 
@@ -39,8 +41,14 @@ impl Scene {
 
     /// Validates case text as if read from `path` (OBJ paths are relative to its folder).
     pub fn parse(path: &Path, source: String) -> Result<Scene, SceneError> {
+        Scene::parse_with(path, source, CaseFiles::disk())
+    }
+
+    /// [`Scene::parse`] reading the files the case names through `files` (a solution
+    /// file's stored copies).
+    pub fn parse_with(path: &Path, source: String, files: CaseFiles) -> Result<Scene, SceneError> {
         let raw = schema::parse(path, &source)?;
-        validate::validate(path, source, raw)
+        validate::validate(path, source, raw, files)
     }
 
     /// Looks a surface up by name.

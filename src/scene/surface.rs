@@ -3,6 +3,7 @@
 
 use super::check::{Context, REL_TOL, show, unique_names};
 use super::description::Material;
+use super::files::CaseFiles;
 use super::error::SceneError;
 use super::schema::{RawEmission, RawSurface};
 use crate::geometry::{Emission, Shape, Surface};
@@ -13,11 +14,16 @@ use std::path::Path;
 /// An area below this fraction of (size)² counts as zero.
 const ZERO_AREA: f64 = 1e-12;
 
-pub(super) fn surfaces(path: &Path, raw: &[RawSurface], materials: &[Material]) -> Result<Vec<Surface>, SceneError> {
+pub(super) fn surfaces(
+    path: &Path,
+    raw: &[RawSurface],
+    materials: &[Material],
+    files: &CaseFiles,
+) -> Result<Vec<Surface>, SceneError> {
     unique_names(path, "surface", raw.iter().map(|s| s.name.as_str()))?;
     raw.iter()
         .enumerate()
-        .map(|(index, s)| surface(&Context::item(path, "surface", &s.name, index), s, materials))
+        .map(|(index, s)| surface(&Context::item(path, "surface", &s.name, index), s, materials, files))
         .collect()
 }
 
@@ -27,7 +33,7 @@ pub(super) fn emits(emission: Emission) -> bool {
     }
 }
 
-fn surface(at: &Context, s: &RawSurface, materials: &[Material]) -> Result<Surface, SceneError> {
+fn surface(at: &Context, s: &RawSurface, materials: &[Material], files: &CaseFiles) -> Result<Surface, SceneError> {
     let material = materials.iter().position(|m| m.name == s.material).ok_or_else(|| {
         let known: Vec<String> = materials.iter().map(|m| format!("\"{}\"", m.name)).collect();
         let message = format!("unknown material \"{}\"; known: {}", s.material, known.join(", "));
@@ -43,7 +49,7 @@ fn surface(at: &Context, s: &RawSurface, materials: &[Material]) -> Result<Surfa
     }
     Ok(Surface {
         name: s.name.clone(),
-        shape: shape(at, s)?,
+        shape: shape(at, s, files)?,
         material,
         two_sided,
         inside: s.inside.unwrap_or(false),
@@ -95,7 +101,7 @@ fn shape_keys_set(s: &RawSurface) -> impl Iterator<Item = &'static str> {
     .filter_map(|(key, set)| set.then_some(key))
 }
 
-fn shape(at: &Context, s: &RawSurface) -> Result<Shape, SceneError> {
+fn shape(at: &Context, s: &RawSurface, files: &CaseFiles) -> Result<Shape, SceneError> {
     let Some(&(name, keys, build)) = SHAPES.iter().find(|(name, ..)| *name == s.shape) else {
         let known: Vec<&str> = SHAPES.iter().map(|(name, ..)| *name).collect();
         let message = format!("unknown shape \"{}\"; known: {}", s.shape, known.join(", "));
@@ -105,13 +111,15 @@ fn shape(at: &Context, s: &RawSurface) -> Result<Shape, SceneError> {
         let message = format!("not a key of shape \"{name}\" (its keys: {})", keys.join(", "));
         return Err(at.error(stray, message));
     }
-    build(&ShapeKeys { at, shape: name }, s)
+    build(&ShapeKeys { at, shape: name, files }, s)
 }
 
 /// Reads the keys of one shape, reporting missing required ones.
 struct ShapeKeys<'a> {
     at: &'a Context<'a>,
     shape: &'a str,
+    /// Where a `mesh` reads its OBJ file.
+    files: &'a CaseFiles,
 }
 
 impl ShapeKeys<'_> {
@@ -222,7 +230,7 @@ fn mesh(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
     let scale = k.at.positive("scale", s.scale.unwrap_or(1.0))?;
     let translate = k.at.point("translate", s.translate.unwrap_or([0.0; 3]))?;
     let file = k.at.file.parent().unwrap_or(Path::new("")).join(name);
-    let loaded = load_obj(&file).map_err(|message| k.at.error("file", message))?;
+    let loaded = load_obj(&file, k.files).map_err(|message| k.at.error("file", message))?;
     let placed: Vec<[DVec3; 3]> = loaded.iter().map(|t| t.map(|p| p * scale + translate)).collect();
     if placed.iter().flatten().any(|p| !p.is_finite()) {
         let message = format!("{} has a non-finite vertex (after scaling)", file.display());
@@ -242,12 +250,14 @@ fn zero_area([a, b, c]: &[DVec3; 3]) -> bool {
 }
 
 /// The triangles of an OBJ file, as loaded; the error names the file.
-fn load_obj(file: &Path) -> Result<Vec<[DVec3; 3]>, String> {
+fn load_obj(file: &Path, files: &CaseFiles) -> Result<Vec<[DVec3; 3]>, String> {
     let shown = file.display();
-    std::fs::metadata(file).map_err(|e| format!("cannot open the OBJ file {shown}: {e}"))?;
+    let bytes = files.read(file).map_err(|e| format!("cannot open the OBJ file {shown}: {e}"))?;
     let options = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
-    let (models, _materials) =
-        tobj::load_obj(file, &options).map_err(|e| format!("cannot read the OBJ file {shown}: {e}"))?;
+    // Materials of the OBJ file (`mtllib`) are not used: ugo's come from the case.
+    let no_materials = |_: &Path| Err(tobj::LoadError::OpenFileFailed);
+    let (models, _materials) = tobj::load_obj_buf(&mut bytes.as_slice(), &options, no_materials)
+        .map_err(|e| format!("cannot read the OBJ file {shown}: {e}"))?;
     let mut triangles = Vec::new();
     for model in &models {
         let mesh = &model.mesh;

@@ -9,6 +9,7 @@
 use super::check::{Context, REL_TOL, show, unique_names};
 use super::description::{Camera, Discretization, Probe, Scene, SolverSettings};
 use super::error::SceneError;
+use super::files::CaseFiles;
 use super::grid::grids;
 use super::luminaire::luminaires;
 use super::material::materials;
@@ -19,7 +20,7 @@ use crate::solve::Method;
 use std::path::Path;
 
 /// Validates the raw tables of the case file `path` (whose text is `source`).
-pub fn validate(path: &Path, source: String, raw: RawScene) -> Result<Scene, SceneError> {
+pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) -> Result<Scene, SceneError> {
     let (name, description) = scene_info(path, raw.scene);
     let discretization = discretization(path, raw.discretization)?;
     let solver = solver(path, raw.solver)?;
@@ -27,11 +28,11 @@ pub fn validate(path: &Path, source: String, raw: RawScene) -> Result<Scene, Sce
         return Err(SceneError::new(path, "[[surface]]", "", "the scene has no [[surface]]"));
     }
     let materials = materials(path, &raw.material)?;
-    let surfaces = surfaces(path, &raw.surface, &materials)?;
+    let surfaces = surfaces(path, &raw.surface, &materials, &files)?;
     let probes = probes(path, &raw.probe)?;
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid)?;
-    let luminaires = luminaires(path, &raw.luminaire)?;
+    let luminaires = luminaires(path, &raw.luminaire, &files)?;
     if luminaires.is_empty() && !surfaces.iter().any(|s| s.emission.is_some_and(emits)) {
         let message = "nothing emits light: give a [[surface]] an `emission` greater than 0, or add a [[luminaire]]";
         return Err(SceneError::new(path, "", "emission", message));
@@ -49,6 +50,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene) -> Result<Scene, Sce
         cameras,
         grids,
         luminaires,
+        files: files.into_read(),
     })
 }
 

@@ -164,3 +164,23 @@ fn render_refuses_a_material_id_outside_the_stored_scene() {
     assert!(text(&o).contains("/mesh/material_id[3] = 7"), "{}", text(&o));
     assert!(!text(&o).contains("panicked"), "{}", text(&o));
 }
+
+/// Issue 13.7: a solution file holds copies of the files its case names (here an IES file),
+/// so `ugo render` works after they are moved away.
+#[test]
+fn render_works_after_the_photometric_file_is_moved_away() {
+    let dir = scratch("self-contained");
+    for name in ["5.4-flux-conservation.toml", "isotropic-10000lm.ies"] {
+        std::fs::copy(Path::new("cases/cie171").join(name), dir.join(name)).unwrap();
+    }
+    let (case, h5) = (dir.join("5.4-flux-conservation.toml"), dir.join("lit.h5"));
+    let o = ugo(&["solve", case.to_str().unwrap(), "--patch-size", "0.5", "-o", h5.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o));
+    std::fs::rename(dir.join("isotropic-10000lm.ies"), dir.join("moved.ies")).unwrap();
+    let view = ["--position", "2,1.5,2", "--look-at", "0,0,0", "--resolution", "16,16", "--shading", "gather"];
+    let o = ugo(&[&["render", h5.to_str().unwrap(), "-o", dir.to_str().unwrap()][..], &view[..]].concat());
+    assert!(o.status.success(), "{}", text(&o));
+    // The case itself, solved again, does need the file.
+    let o = ugo(&["solve", case.to_str().unwrap(), "-o", h5.to_str().unwrap()]);
+    assert!(!o.status.success() && text(&o).contains("isotropic-10000lm.ies"), "{}", text(&o));
+}

@@ -32,6 +32,7 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         cameras: Vec::new(),
         grids: Vec::new(),
         luminaires: Vec::new(),
+        files: Vec::new(),
     }
 }
 
