@@ -5,6 +5,7 @@ mod brdf;
 mod cie171;
 mod cli;
 mod directions;
+mod geometry;
 mod grid;
 mod kernel;
 mod luminaire;
