@@ -4,6 +4,7 @@ mod basis;
 mod cie171;
 mod cli;
 mod directions;
+mod geometry;
 mod grid;
 mod kernel;
 mod layering;

@@ -157,30 +157,46 @@ fn is_convex(v: &[DVec3], normal: DVec3) -> bool {
     })
 }
 
-/// Ear clipping of a simple planar polygon (counter-clockwise about `normal`).
+/// Below this fraction of the polygon's squared size, twice a corner's area is round-off.
+const FLAT: f64 = 1e-10;
+
+/// Ear clipping of a simple planar polygon (counter-clockwise about `normal`) into
+/// triangles of positive area. A corner of no area to round-off (a straight angle, a
+/// fold) is dropped without a triangle; a vertex on an ear's boundary, to round-off,
+/// blocks the ear as one inside it does (clipping it would leave a fold).
 fn ear_clip(vertices: &[DVec3], normal: DVec3) -> Vec<[DVec3; 3]> {
+    let size = vertices.iter().map(|v| v.distance(vertices[0])).fold(0.0, f64::max);
+    let flat = FLAT * size * size;
+    // twice the signed area of the corner at b, positive when convex
+    let turn = |[a, b, c]: [DVec3; 3]| (b - a).cross(c - b).dot(normal);
     let mut idx: Vec<usize> = (0..vertices.len()).collect();
     let mut out = Vec::with_capacity(vertices.len() - 2);
-    while idx.len() > 3 {
+    while idx.len() >= 3 {
         let n = idx.len();
+        let corner = |k: usize| [vertices[idx[(k + n - 1) % n]], vertices[idx[k]], vertices[idx[(k + 1) % n]]];
+        if let Some(k) = (0..n).find(|&k| turn(corner(k)).abs() <= flat) {
+            idx.remove(k);
+            continue;
+        }
         let ear = (0..n).find(|&k| {
-            let (a, b, c) = (vertices[idx[(k + n - 1) % n]], vertices[idx[k]], vertices[idx[(k + 1) % n]]);
-            let convex = (b - a).cross(c - b).dot(normal) > 0.0;
-            convex
+            let [a, b, c] = corner(k);
+            turn([a, b, c]) > 0.0
                 && idx.iter().all(|&m| {
                     let p = vertices[m];
-                    p == a || p == b || p == c || !inside_triangle(p, a, b, c, normal)
+                    p == a || p == b || p == c || !inside_triangle(p, a, b, c, normal, flat)
                 })
         });
-        // A simple polygon always has an ear; fall back to the first vertex on round-off.
-        let k = ear.unwrap_or(0);
-        out.push([vertices[idx[(k + n - 1) % n]], vertices[idx[k]], vertices[idx[(k + 1) % n]]]);
+        // A simple polygon always has an ear; on round-off, clip the most convex corner.
+        let k = ear.unwrap_or_else(|| (0..n).max_by(|&i, &j| turn(corner(i)).total_cmp(&turn(corner(j)))).unwrap_or(0));
+        out.push(corner(k));
         idx.remove(k);
     }
-    out.push([vertices[idx[0]], vertices[idx[1]], vertices[idx[2]]]);
     out
 }
 
-fn inside_triangle(p: DVec3, a: DVec3, b: DVec3, c: DVec3, n: DVec3) -> bool {
-    (b - a).cross(p - a).dot(n) >= 0.0 && (c - b).cross(p - b).dot(n) >= 0.0 && (a - c).cross(p - c).dot(n) >= 0.0
+/// True when `p` lies in the closed triangle `abc`, or within `tolerance` (twice an area) of it.
+fn inside_triangle(p: DVec3, a: DVec3, b: DVec3, c: DVec3, n: DVec3, tolerance: f64) -> bool {
+    (b - a).cross(p - a).dot(n) >= -tolerance
+        && (c - b).cross(p - b).dot(n) >= -tolerance
+        && (a - c).cross(p - c).dot(n) >= -tolerance
 }

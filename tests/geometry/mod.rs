@@ -1,0 +1,3 @@
+//! Meshing: the tessellation of shapes into patches.
+
+mod concave;
