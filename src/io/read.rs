@@ -110,7 +110,9 @@ fn case_files(file: &hdf5::File) -> Result<CaseFiles> {
     let files = paths
         .iter()
         .enumerate()
-        .map(|(i, p)| Ok(CaseFile { path: PathBuf::from(p.as_str()), bytes: group.dataset(&i.to_string())?.read_raw::<u8>()? }))
+        .map(|(i, p)| {
+            Ok(CaseFile { path: PathBuf::from(p.as_str()), bytes: group.dataset(&i.to_string())?.read_raw::<u8>()? })
+        })
         .collect::<Result<Vec<_>>>()?;
     Ok(CaseFiles::stored(files))
 }

@@ -8,8 +8,8 @@
 
 use super::check::{Context, unique_names};
 use super::error::SceneError;
-use crate::luminaire::{Luminaire, LuminaireKind, PointLuminaire};
 use super::files::CaseFiles;
+use crate::luminaire::{Luminaire, LuminaireKind, PointLuminaire};
 use crate::photometry::{Distribution, PhotometryError, parse_ies, parse_ldt};
 use serde::Deserialize;
 use std::path::Path;
@@ -102,10 +102,9 @@ fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKi
                 return Err(at.error("file", "must not be empty"));
             }
             let file = at.file.parent().unwrap_or(Path::new("")).join(given);
-            let text = files
-                .read(&file)
-                .map(|bytes| String::from_utf8_lossy(&bytes).into_owned())
-                .map_err(|e| at.error("file", PhotometryError::whole(&file, format!("cannot read the file: {e}")).to_string()))?;
+            let text = files.read(&file).map(|bytes| String::from_utf8_lossy(&bytes).into_owned()).map_err(|e| {
+                at.error("file", PhotometryError::whole(&file, format!("cannot read the file: {e}")).to_string())
+            })?;
             let read = if name == "ies" { parse_ies(&file, &text) } else { parse_ldt(&file, &text) };
             let table = read.map_err(|e| at.error("file", e.to_string()))?;
             (Distribution::Table(Box::new(table)), Some(file))

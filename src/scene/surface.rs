@@ -3,8 +3,8 @@
 
 use super::check::{Context, REL_TOL, show, unique_names};
 use super::description::Material;
-use super::files::CaseFiles;
 use super::error::SceneError;
+use super::files::CaseFiles;
 use super::schema::{RawEmission, RawSurface};
 use crate::geometry::{Emission, Shape, Surface};
 use crate::material::MaterialModel;

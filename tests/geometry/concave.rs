@@ -24,10 +24,11 @@
 
 use crate::support::{build, furnace, lambert, scene, surface};
 use glam::DVec3;
-use ugo::energy::EnergyBalance;
 use ugo::geometry::{ConvexPolygon, tessellate};
+use ugo::geometry::{Emission, Shape};
 use ugo::kernel::Factored;
-use ugo::scene::{Emission, Scene, Shape};
+use ugo::readout::energy::EnergyBalance;
+use ugo::scene::Scene;
 use ugo::solve::{SolveParams, successive_approximation};
 
 /// The issue's L (0.03 m²) in the coordinates it is placed with below.
@@ -171,7 +172,9 @@ fn concave_polygons_are_covered_exactly_by_convex_pieces() {
     );
 }
 
-const PARAMS: SolveParams = SolveParams { tolerance: 1e-10, max_iterations: 10_000 };
+fn params() -> SolveParams {
+    SolveParams { tolerance: 1e-10, max_iterations: 10_000, ..SolveParams::default() }
+}
 
 /// The rectangle completing each outline to its bounding box: `(min, max)` in `(u, v)`.
 const PLUGS: [([f64; 2], [f64; 2]); 3] = [([0.2, 0.2], [0.3, 0.3]), ([0.2, 0.2], [0.3, 0.4]), ([0.3, 0.4], [0.5, 0.6])];
@@ -218,7 +221,7 @@ fn tiled_box(floor: &[[f64; 2]], ceiling: &[[f64; 2]], plug: ([f64; 2], [f64; 2]
 /// after checking absorbed = emitted; an error says what went wrong.
 fn furnace_error(scene: &Scene) -> Result<f64, String> {
     let model = build(scene);
-    let (x, _) = successive_approximation(&Factored::new(&model.kernel), &model.l0, &PARAMS, &mut |_, _| {})
+    let (x, _) = successive_approximation(&Factored::new(&model.kernel), &model.l0, &params(), &mut |_, _| {})
         .map_err(|e| e.to_string())?;
     let e = EnergyBalance::of(&model, &x, scene.surfaces.len());
     let conserved = (e.absorbed / e.emitted - 1.0).abs() < 1e-6;
@@ -262,7 +265,7 @@ fn the_issues_l_in_the_furnace_box_solves() {
         let mut s = furnace(1.0, 0.8, 1.0, 0.25);
         s.surfaces.push(surface("L", Shape::Polygon { vertices: place(&v, &horizontal()) }, 0, false, None));
         let model = build(&s);
-        match successive_approximation(&Factored::new(&model.kernel), &model.l0, &PARAMS, &mut |_, _| {}) {
+        match successive_approximation(&Factored::new(&model.kernel), &model.l0, &params(), &mut |_, _| {}) {
             Ok((x, _)) => {
                 let e = EnergyBalance::of(&model, &x, s.surfaces.len());
                 imbalance = imbalance.max((e.imbalance / e.emitted).abs());
