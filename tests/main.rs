@@ -6,6 +6,7 @@ mod cie171;
 mod cli;
 mod directions;
 mod grid;
+mod hierarchy;
 mod kernel;
 mod luminaire;
 mod photometry;

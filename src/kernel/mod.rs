@@ -6,6 +6,7 @@ mod assembly;
 mod balance;
 pub mod contour;
 pub mod form_factor;
+pub mod hierarchy;
 mod matrix;
 pub mod memory;
 pub mod occlusion;
