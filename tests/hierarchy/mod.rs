@@ -2,6 +2,7 @@
 //! closed forms, and its own invariants (coverage of leaf pairs, growth of links).
 
 mod closure;
+mod clusters;
 mod coverage;
 mod explicit;
 mod growth;

@@ -5,15 +5,19 @@
 //! `δ = r + K δ` with `r = L0 + K x0 − x0` is solved and `x = x0 + δ`. The solver gets the
 //! factor `‖L0‖/‖r‖` by which it may relax its relative tolerance for the same absolute one.
 
-use super::hierarchy::Hierarchy;
+use super::kernel::Hierarchy;
 use super::operator::Operator;
 use std::time::Instant;
+
+/// The caller's solver: `x = b + K x` for the operator and right-hand side `b`, with the
+/// factor by which it may relax its relative tolerance.
+pub type Solver<'a, E> = dyn FnMut(&Operator, &[f64], f64) -> Result<Vec<f64>, E> + 'a;
 
 /// Solves, refines and solves again until a pass refines nothing or `options.passes`
 /// passes ran; returns the field on the final leaves and the final operator.
 pub fn iterate<E>(
     hierarchy: &mut Hierarchy,
-    solve: &mut dyn FnMut(&Operator, &[f64], f64) -> Result<Vec<f64>, E>,
+    solve: &mut Solver<E>,
 ) -> Result<(Vec<f64>, Operator), E> {
     let mut operator = hierarchy.operator();
     let l0 = hierarchy.source();

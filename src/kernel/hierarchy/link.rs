@@ -26,7 +26,7 @@ pub struct Link {
     pub source: u32,
     /// `F_pq` with visibility, dimensionless.
     pub factor: f64,
-    /// The visible fraction in `factor` (1 for a link of a cluster, which is not tested).
+    /// The visible fraction in `factor`.
     pub visible: f64,
     /// What the oracle multiplies by `ρ_p L_q`: the variation of the factor over the two
     /// nodes, its largest value where visibility is partial, a bound for a cluster.

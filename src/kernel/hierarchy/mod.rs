@@ -9,9 +9,9 @@
 //! the leaves (a `LinOp`), `h.leaf_mesh()` and `h.source()` the leaves' mesh and `L0`.
 
 mod cluster;
-mod hierarchy;
 mod history;
 mod iterate;
+mod kernel;
 mod link;
 mod linop;
 mod node;
@@ -22,9 +22,9 @@ mod refine;
 mod sight;
 mod tree;
 
-pub use hierarchy::{Hierarchy, Options};
+pub use iterate::{Solver, iterate};
+pub use kernel::{Hierarchy, Options};
 pub use history::Pass;
-pub use iterate::iterate;
 pub use link::{ALL_CELLS, Link, Piece};
 pub use node::{Kind, NONE, Node};
 pub use operator::Operator;

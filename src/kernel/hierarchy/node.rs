@@ -10,6 +10,7 @@ pub const NONE: u32 = u32::MAX;
 
 /// What a node is.
 #[derive(Debug, Clone, Copy)]
+#[allow(clippy::large_enum_variant)] // clusters are a small fraction of the nodes
 pub enum Kind {
     /// A set of input elements (Smits–Arvo–Greenberg 1994, Sillion 1995).
     Cluster,

@@ -1,14 +1,19 @@
 //! The push of `design.md` §3b ("each node's gathered value added to all its leaves"),
 //! weighted by each leaf's own view of the node's sources. A link `(a, q)` holds the factor
-//! averaged over `a`; a leaf `i` of `a` sees `q` more or less than that average (a leaf by
-//! a corner sees the adjacent walls more). Each leaf therefore takes the share
-//! `w_ia = S_ia / C_a` of the light gathered at its ancestor `a`, with `C_a = Σ_q F_aq` and
-//! `S_ia = Σ_q v_aq F̄_{i→q}` the same sum with the exact point factors averaged over the
-//! leaf's four stratified points (a cluster source counts with its link factor; a cluster
-//! ancestor pushes with weight 1). For a source field that is uniform over `a`'s sources
-//! this is exact at the leaf's points, so every leaf of a closed scene closes
-//! (`Σ_a S_ia` covers its hemisphere once) whatever the level of its links; for any
-//! field it corrects the first-order variation of the factors over `a`.
+//! averaged over `a`; a leaf `i` of `a` sees `q` more or less than that average (a leaf by a
+//! corner sees the adjacent walls more). Each leaf takes the share `w_ia` of the light
+//! gathered at its ancestor `a`, from `S_ia = Σ_q v_aq F̄_{i→q}`: the exact point factors
+//! to `a`'s sources averaged over the leaf's four stratified points (a cluster source counts
+//! with its link factor; under a cluster ancestor with the leaf's own cosine towards it
+//! instead of the mean 1/4, so that an element facing away gets nothing, Sillion 1995).
+//!
+//! * Under an element, `w_ia = S_ia / S̄_a`, `S̄_a` the area-weighted mean of `S_ia` over the
+//!   leaves of `a`: the light `a` gathers with its accurate factors is distributed, never
+//!   created or lost. For a source field uniform over `a`'s sources every leaf gets its own
+//!   view, so the leaves of a closed scene close whatever the level of their links (the
+//!   first-order variation of the factors over `a` is corrected for any field).
+//! * Under a cluster, whose factors are isotropic estimates, `w_ia = S_ia / C_a` with
+//!   `C_a = Σ_q F_aq`: each leaf gets its own estimate `S_ia x̄_q`.
 
 use super::link::Link;
 use super::node::NONE;
@@ -38,7 +43,7 @@ pub fn push_rows(tree: &Tree, links: &[Link], position: &[u32], leaves: &[u32]) 
             row
         })
         .collect();
-    // S̄_a: the area-weighted mean of S_ia over the leaves of a
+    // S̄_a: the area-weighted mean of S_ia over the leaves of an element a
     let (mut sum, mut area) = (vec![0.0; tree.len()], vec![0.0; tree.len()]);
     for (row, &leaf) in rows.iter().zip(leaves) {
         let a_i = tree.node(leaf).area;
@@ -53,25 +58,31 @@ pub fn push_rows(tree: &Tree, links: &[Link], position: &[u32], leaves: &[u32]) 
         row.push(row[row.len() - 1] + r.len());
     }
     let entries = rows.into_iter().flatten().map(|(a, s)| {
-        let mean = sum[a as usize] / area[a as usize];
-        (position[a as usize], if mean > 0.0 { s / mean } else { 1.0 })
+        let total = match tree.node(a).patch() {
+            Some(_) => sum[a as usize] / area[a as usize],
+            None => own(a).iter().map(|&l| links[l as usize].factor).sum(),
+        };
+        (position[a as usize], if total > 0.0 { s / total } else { 1.0 })
     });
     (row, entries.collect())
 }
 
-/// `S_ia` of `leaf` under the element `a` with links `own`; 1 under a cluster.
+/// `S_ia` of `leaf` under `a`, whose links are `own`.
 fn seen(tree: &Tree, links: &[Link], own: &[u32], a: u32, leaf: &Patch) -> f64 {
-    if tree.node(a).patch().is_none() {
-        return 1.0;
-    }
+    let under_cluster = tree.node(a).patch().is_none();
     let points = polygon_points(&leaf.polygon);
     own.iter()
         .map(|&l| {
             let link = &links[l as usize];
-            match tree.node(link.source).patch() {
+            let source = tree.node(link.source);
+            match source.patch() {
                 Some(q) => {
                     let f: f64 = points.iter().map(|&x| point_to_polygon(x, leaf.normal, &q.polygon)).sum();
                     link.visible * f / points.len() as f64
+                }
+                None if under_cluster => {
+                    let u = (source.centre() - leaf.centroid).normalize_or_zero();
+                    4.0 * link.factor * leaf.normal.dot(u).max(0.0)
                 }
                 None => link.factor,
             }

@@ -8,7 +8,7 @@
 use super::link::{Link, cluster_factor, element_factor};
 use super::node::Node;
 use super::oracle::{Oracle, cluster_bound, variation};
-use super::sight::{Sight, sight};
+use super::sight::{Sight, sight, stand_in_sight, stand_ins};
 use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::geometry::Patch;
@@ -105,25 +105,33 @@ fn evaluate(
     }
     match (a.patch(), b.patch()) {
         (Some(pa), Some(pb)) => elements(tree, brightness[q as usize], settings, binning, (p, pa), (q, pb), blocker),
-        _ => (clusters(tree, brightness[q as usize], settings, p, q), 0),
+        _ => clusters(tree, brightness[q as usize], settings, p, q, blocker),
     }
 }
 
-/// A pair with a cluster at one end (or both).
-fn clusters(tree: &Tree, brightness: f64, settings: &Settings, p: u32, q: u32) -> Outcome {
+/// A pair with a cluster at one end (or both). The bound ignores visibility; the factor of
+/// an accepted link is multiplied by the visible fraction of the stand-ins' segments.
+fn clusters(tree: &Tree, brightness: f64, settings: &Settings, p: u32, q: u32, blocker: &mut Blocker) -> (Outcome, usize) {
     let (a, b) = (tree.node(p), tree.node(q));
     if !in_front(a, b) || !in_front(b, a) {
-        return Outcome::Drop;
+        return (Outcome::Drop, 0);
     }
     let bound = cluster_bound(a, b);
     let error = settings.oracle.error(a.albedo, bound, brightness);
     if settings.oracle.refines(error)
         && let Some(n) = settings.oracle.choose(tree, p, q)
     {
-        return Outcome::Split(n);
+        return (Outcome::Split(n), 0);
     }
-    let (factor, pieces) = cluster_factor(a, b, settings.directions);
-    Outcome::Keep(Link { receiver: p, source: q, factor, visible: 1.0, bound, sight: Sight::Untested, pieces })
+    let (from, to) = (stand_ins(tree, p, b.centre()), stand_ins(tree, q, a.centre()));
+    let (seen, visible, rays) = stand_in_sight(settings.visibility, &from, &to, blocker);
+    if seen == Sight::Occluded {
+        return (Outcome::Drop, rays);
+    }
+    let (factor, mut pieces) = cluster_factor(a, b, settings.directions);
+    pieces.iter_mut().for_each(|piece| piece.2 *= visible);
+    let link = Link { receiver: p, source: q, factor: visible * factor, visible, bound, sight: seen, pieces };
+    (Outcome::Keep(link), rays)
 }
 
 /// False when `a` is an element and `b` lies wholly behind its plane.
