@@ -34,3 +34,14 @@ fn white_furnace_is_five_on_every_leaf_with_every_solver() {
     }
     eprintln!("furnace passes: {:?}", h.history());
 }
+
+#[test]
+fn white_furnace_with_direction_cells_is_five_in_every_cell() {
+    let directions = DirectionSet::hemisphere(8);
+    let mut h = hierarchy(&furnace(1.0, 0.8, 1.0, 1.0), 1.0, directions, options(1e-2, 0.1));
+    let (x, op) = solved(&mut h, Method::Gmres { restart: 30 });
+    let worst = x.iter().map(|l| (l / 5.0 - 1.0).abs()).fold(0.0, f64::max);
+    eprintln!("furnace, K = 8: {} unknowns, {} links, worst relative error {worst:.2e}", op.dim(), op.links());
+    assert_eq!(op.dim(), 8 * h.leaf_mesh().len());
+    assert!(worst < 1e-3, "worst relative error {worst}");
+}

@@ -16,6 +16,8 @@ pub struct Pass {
     pub nodes: usize,
     /// Occlusion rays traced in the pass.
     pub rays: usize,
+    /// The error allowed per link in the pass, cd/m².
+    pub epsilon: f64,
     /// Wall time of the pass, s.
     pub seconds: f64,
     /// Wall time of the solve that followed the pass, s (0 until it ran).

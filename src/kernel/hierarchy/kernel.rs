@@ -21,9 +21,10 @@ use std::time::Instant;
 /// How the hierarchy refines.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Options {
-    /// Error allowed per link relative to the scene's mean luminance: a link is refined
-    /// while `ρ_p ΔF_pq L_q > tolerance · L̄` (dimensionless), `L̄` the area-weighted mean
-    /// of the first guess (emission plus the ambient term). Default 1e-2.
+    /// Error allowed per link relative to the scene's mean reflected luminance: a link is
+    /// refined while `ρ_p ΔF_pq L_q > ε = tolerance · L̄_r` (dimensionless), `L̄_r` the
+    /// area-weighted mean of `x − L0`: of the ambient term in the first pass, of the solved
+    /// field in the later ones. Default 1e-2.
     pub tolerance: f64,
     /// Smallest element size: elements whose longest edge is at most this do not split, m.
     /// Default 0.05 m.
@@ -64,8 +65,8 @@ impl Hierarchy {
         let start = Instant::now();
         let albedo: Vec<f64> = blocks.iter().map(|b| largest_albedo(b, &directions)).collect();
         let tree = Tree::new(roots, &albedo);
-        let (guess, mean) = first_guess(&tree);
-        let oracle = Oracle { epsilon: options.tolerance * mean, smallest: options.smallest };
+        let (guess, ambient) = first_guess(&tree);
+        let oracle = Oracle { epsilon: options.tolerance * ambient, smallest: options.smallest };
         let visibility = Visibility::build(roots);
         let mut h = Hierarchy { tree, links: Vec::new(), visibility, directions, blocks, options, oracle, history: Vec::new() };
         let k = h.directions.len();
@@ -83,7 +84,9 @@ impl Hierarchy {
     /// number of links refined (0: the hierarchy is final for this field).
     pub fn refine(&mut self, x: &[f64]) -> usize {
         let start = Instant::now();
-        let mut brightness = self.brightness(&self.tree.leaves(), x);
+        let leaves = self.tree.leaves();
+        self.oracle.epsilon = self.options.tolerance * self.mean_reflected(&leaves, x);
+        let mut brightness = self.brightness(&leaves, x);
         let (mut redo, mut keep) = (Vec::new(), Vec::with_capacity(self.links.len()));
         for link in std::mem::take(&mut self.links) {
             let (p, q) = (link.receiver, link.source);
@@ -122,6 +125,7 @@ impl Hierarchy {
             leaves: self.tree.leaves().len(),
             nodes: self.tree.len(),
             rays,
+            epsilon: self.oracle.epsilon,
             seconds: start.elapsed().as_secs_f64(),
             solve_seconds: 0.0,
         };
@@ -133,6 +137,20 @@ impl Hierarchy {
         if let Some(last) = self.history.last_mut() {
             last.solve_seconds = seconds;
         }
+    }
+
+    /// Area-weighted mean over the leaves of `x − L0` (exitance-weighted over cells), cd/m².
+    fn mean_reflected(&self, leaves: &[u32], x: &[f64]) -> f64 {
+        let share: Vec<f64> = self.directions.cells().iter().map(|c| c.projected / std::f64::consts::PI).collect();
+        let (mut sum, mut area) = (0.0, 0.0);
+        for (l, &id) in leaves.iter().enumerate() {
+            let node = self.tree.node(id);
+            let cells = x.get(l * share.len()..(l + 1) * share.len()).unwrap_or(&[]);
+            let value: f64 = cells.iter().zip(&share).map(|(v, s)| v * s).sum();
+            sum += node.area * (value - node.emission);
+            area += node.area;
+        }
+        if area > 0.0 { (sum / area).max(0.0) } else { 0.0 }
     }
 
     /// Largest value under every node of the leaf field `x` (cd/m²).
@@ -245,7 +263,7 @@ impl Hierarchy {
 /// The first guess of the field, per leaf of `tree` (its roots): each leaf's emission plus
 /// the ambient term of progressive radiosity (Cohen, Chen, Wallace & Greenberg 1988),
 /// `ρ̄ L̄_e / (1 − ρ̄)` with area-weighted means, so that the first pass links the unlit
-/// surfaces sensibly too; and the area-weighted mean of the guess, cd/m².
+/// surfaces sensibly too; and the ambient term, cd/m².
 fn first_guess(tree: &Tree) -> (Vec<f64>, f64) {
     let leaves = tree.leaves();
     let (mut area, mut emitted, mut reflected) = (0.0, 0.0, 0.0);
@@ -260,8 +278,7 @@ fn first_guess(tree: &Tree) -> (Vec<f64>, f64) {
     }
     let albedo = (reflected / area).min(AMBIENT_ALBEDO);
     let ambient = albedo * emitted / area / (1.0 - albedo);
-    let guess = leaves.iter().map(|&id| tree.node(id).emission + ambient).collect();
-    (guess, emitted / area + ambient)
+    (leaves.iter().map(|&id| tree.node(id).emission + ambient).collect(), ambient)
 }
 
 /// The largest fraction of light arriving in any cell that `block` reflects or transmits.
