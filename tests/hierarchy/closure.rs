@@ -29,7 +29,12 @@ fn white_furnace_is_five_on_every_leaf_with_every_solver() {
         (Method::Bicgstab, solver(Method::Bicgstab)(&op, &l0, 1.0).unwrap()),
     ] {
         let worst = x.iter().map(|l| (l / 5.0 - 1.0).abs()).fold(0.0, f64::max);
-        eprintln!("furnace, {}: {} leaves, {} links, worst relative error {worst:.2e}", method.name(), op.dim(), op.links());
+        eprintln!(
+            "furnace, {}: {} leaves, {} links, worst relative error {worst:.2e}",
+            method.name(),
+            op.dim(),
+            op.links()
+        );
         assert!(worst < 1e-3, "{}: worst relative error {worst}", method.name());
     }
     eprintln!("furnace passes: {:?}", h.history());

@@ -20,14 +20,24 @@ fn cloud(n: usize) -> Scene {
         let c = DVec3::splat(0.5) + DVec3::new(i as f64, j as f64, k as f64) / n as f64;
         let shape = Shape::Box { min: c, max: c + DVec3::splat(0.05), rotate_y_deg: 30.0 * (i + j + k) as f64 };
         let emission = Some(Emission::Luminance(1.0));
-        s.surfaces.push(Surface { name: format!("cube {i} {j} {k}"), shape, material: 0, two_sided: false, inside: false, emission });
+        s.surfaces.push(Surface {
+            name: format!("cube {i} {j} {k}"),
+            shape,
+            material: 0,
+            two_sided: false,
+            inside: false,
+            emission,
+        });
     }
     s
 }
 
 fn cluster_links(h: &Hierarchy) -> usize {
     let tree = h.tree();
-    h.links().iter().filter(|l| tree.node(l.receiver).patch().is_none() || tree.node(l.source).patch().is_none()).count()
+    h.links()
+        .iter()
+        .filter(|l| tree.node(l.receiver).patch().is_none() || tree.node(l.source).patch().is_none())
+        .count()
 }
 
 #[test]
@@ -49,7 +59,8 @@ fn cluster_links_agree_with_the_explicit_kernel() {
     op.arriving(&x, &mut a);
     kernel.apply_transport(&x, &mut b);
     let worst = relative_difference(&a, &b);
-    let rms = (a.iter().zip(&b).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / b.iter().map(|b| b * b).sum::<f64>()).sqrt();
+    let rms =
+        (a.iter().zip(&b).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / b.iter().map(|b| b * b).sum::<f64>()).sqrt();
     eprintln!(
         "clusters: {} leaves, {} links of which {} of clusters; G x against explicit: worst {worst:.2e}, rms {rms:.2e}",
         op.dim(),
@@ -67,7 +78,12 @@ fn links_grow_much_slower_than_input_elements_squared() {
         .map(|&n| {
             let h = hierarchy(&cloud(n), 10.0, DirectionSet::single(), options(1e-2, 0.25));
             let k = (6 + 6 * n * n * n) as f64;
-            eprintln!("clusters: k = {k} input elements: {} links ({} of clusters), {:?}", h.links().len(), cluster_links(&h), h.history()[0]);
+            eprintln!(
+                "clusters: k = {k} input elements: {} links ({} of clusters), {:?}",
+                h.links().len(),
+                cluster_links(&h),
+                h.history()[0]
+            );
             (k, h.links().len() as f64)
         })
         .collect();

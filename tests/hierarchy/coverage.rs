@@ -46,6 +46,10 @@ fn every_facing_leaf_pair_is_covered_once() {
             assert_eq!(count[i * n + j], expected, "leaves {i} and {j}");
         }
     }
-    eprintln!("coverage: {n} leaves, {} links, {} distinct (receiver leaves, source leaves) sizes", h.links().len(), levels.len());
+    eprintln!(
+        "coverage: {n} leaves, {} links, {} distinct (receiver leaves, source leaves) sizes",
+        h.links().len(),
+        levels.len()
+    );
     assert!(levels.len() > 2, "links at several levels");
 }

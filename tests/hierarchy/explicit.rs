@@ -3,10 +3,10 @@
 
 use super::{box_with_block, hierarchy, options, relative_difference};
 use crate::support::furnace;
-use ugo::scene::Scene;
 use ugo::directions::DirectionSet;
 use ugo::kernel::form_factor::Quadrature;
 use ugo::kernel::{Factored, Kernel, LinOp, Precision, TransportMatrix, assemble};
+use ugo::scene::Scene;
 use ugo::visibility::Visibility;
 
 fn compare(scene: Scene, directions: DirectionSet, limit: f64) {

@@ -11,7 +11,10 @@ fn links_grow_much_slower_than_leaves_squared() {
         .map(|&h| {
             let hier = hierarchy(&scene, 1.0, DirectionSet::single(), options(1e-2, h));
             let pass = hier.history()[0];
-            eprintln!("growth: smallest {h} m: {} leaves, {} links, {} rays, {:.2} s", pass.leaves, pass.links, pass.rays, pass.seconds);
+            eprintln!(
+                "growth: smallest {h} m: {} leaves, {} links, {} rays, {:.2} s",
+                pass.leaves, pass.links, pass.rays, pass.seconds
+            );
             (pass.leaves as f64, pass.links as f64)
         })
         .collect();

@@ -30,7 +30,10 @@ fn receiver(rho: f64, tolerance: f64) -> (f64, f64, usize) {
     for (p, &zl) in mesh.patches.iter().zip(&z).filter(|(p, _)| p.surface == 1) {
         flux += zl * p.area;
         area += p.area;
-        let (lo, hi) = (p.polygon.vertices().iter().fold(p.centroid, |a, v| a.min(*v)), p.polygon.vertices().iter().fold(p.centroid, |a, v| a.max(*v)));
+        let (lo, hi) = (
+            p.polygon.vertices().iter().fold(p.centroid, |a, v| a.min(*v)),
+            p.polygon.vertices().iter().fold(p.centroid, |a, v| a.max(*v)),
+        );
         let exact = mean_over((lo.x, hi.x), (lo.y, hi.y), 2, point_factor);
         worst = worst.max((zl / L - exact).abs());
         leaves += 1;

@@ -3,8 +3,8 @@
 //! bounding-box centres along the longest axis, so that the initial linking starts from one
 //! self-link of the top cluster instead of all k² pairs of the k input elements.
 
-use super::tree::Tree;
 use super::node::NONE;
+use super::tree::Tree;
 use glam::DVec3;
 
 /// Builds clusters over the elements `ids` (they become the leaves of the cluster tree)

@@ -15,10 +15,7 @@ pub type Solver<'a, E> = dyn FnMut(&Operator, &[f64], f64) -> Result<Vec<f64>, E
 
 /// Solves, refines and solves again until a pass refines nothing or `options.passes`
 /// passes ran; returns the field on the final leaves and the final operator.
-pub fn iterate<E>(
-    hierarchy: &mut Hierarchy,
-    solve: &mut Solver<E>,
-) -> Result<(Vec<f64>, Operator), E> {
+pub fn iterate<E>(hierarchy: &mut Hierarchy, solve: &mut Solver<E>) -> Result<(Vec<f64>, Operator), E> {
     let mut operator = hierarchy.operator();
     let l0 = hierarchy.source();
     let start = Instant::now();

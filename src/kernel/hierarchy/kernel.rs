@@ -68,7 +68,8 @@ impl Hierarchy {
         let (guess, ambient) = first_guess(&tree);
         let oracle = Oracle { epsilon: options.tolerance * ambient, smallest: options.smallest };
         let visibility = Visibility::build(roots);
-        let mut h = Hierarchy { tree, links: Vec::new(), visibility, directions, blocks, options, oracle, history: Vec::new() };
+        let mut h =
+            Hierarchy { tree, links: Vec::new(), visibility, directions, blocks, options, oracle, history: Vec::new() };
         let k = h.directions.len();
         let x: Vec<f64> = guess.iter().flat_map(|&l| std::iter::repeat_n(l, k)).collect();
         let mut brightness = h.brightness(&h.tree.leaves(), &x);
@@ -245,18 +246,8 @@ impl Hierarchy {
         &self.options
     }
 
-    /// The refinement threshold `ε`, cd/m².
-    pub fn epsilon(&self) -> f64 {
-        self.oracle.epsilon
-    }
-
     pub fn directions(&self) -> &DirectionSet {
         &self.directions
-    }
-
-    /// The ray caster over the root elements.
-    pub fn visibility(&self) -> &Visibility {
-        &self.visibility
     }
 }
 

@@ -22,9 +22,9 @@ mod refine;
 mod sight;
 mod tree;
 
+pub use history::Pass;
 pub use iterate::{Solver, iterate};
 pub use kernel::{Hierarchy, Options};
-pub use history::Pass;
 pub use link::{ALL_CELLS, Link, Piece};
 pub use node::{Kind, NONE, Node};
 pub use operator::Operator;

@@ -13,8 +13,8 @@ use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::geometry::Patch;
 use crate::kernel::facing;
-use crate::kernel::occlusion::polygon_points;
 use crate::kernel::form_factor::{Binning, Quadrature};
+use crate::kernel::occlusion::polygon_points;
 use crate::visibility::{Blocker, NO_BLOCKER, Visibility};
 use rayon::prelude::*;
 
@@ -47,7 +47,10 @@ pub fn refine(
     while !candidates.is_empty() {
         let outcomes: Vec<(Outcome, usize)> = candidates
             .par_iter()
-            .map_init(|| NO_BLOCKER, |blocker, &(p, q)| evaluate(tree, brightness, settings, binning.as_ref(), p, q, blocker))
+            .map_init(
+                || NO_BLOCKER,
+                |blocker, &(p, q)| evaluate(tree, brightness, settings, binning.as_ref(), p, q, blocker),
+            )
             .collect();
         let mut split = Vec::new();
         for ((outcome, r), &(p, q)) in outcomes.into_iter().zip(&candidates) {
@@ -111,7 +114,14 @@ fn evaluate(
 
 /// A pair with a cluster at one end (or both). The bound ignores visibility; the factor of
 /// an accepted link is multiplied by the visible fraction of the stand-ins' segments.
-fn clusters(tree: &Tree, brightness: f64, settings: &Settings, p: u32, q: u32, blocker: &mut Blocker) -> (Outcome, usize) {
+fn clusters(
+    tree: &Tree,
+    brightness: f64,
+    settings: &Settings,
+    p: u32,
+    q: u32,
+    blocker: &mut Blocker,
+) -> (Outcome, usize) {
     let (a, b) = (tree.node(p), tree.node(q));
     if !in_front(a, b) || !in_front(b, a) {
         return (Outcome::Drop, 0);

@@ -49,11 +49,15 @@ pub fn stand_ins(tree: &Tree, id: u32, towards: DVec3) -> [(DVec3, u32); POINTS]
         .flat_map(|&c| halves(tree, c))
         .map(|q| Elements { tree, stack: vec![q] }.take(STAND_IN_SEARCH).collect())
         .collect();
-    let facing: Vec<Vec<&Patch>> =
-        quarters.iter().map(|q| q.iter().copied().filter(|p| (towards - p.centroid).dot(p.normal) > 0.0).collect()).collect();
+    let facing: Vec<Vec<&Patch>> = quarters
+        .iter()
+        .map(|q| q.iter().copied().filter(|p| (towards - p.centroid).dot(p.normal) > 0.0).collect())
+        .collect();
     let pool = if facing.iter().any(|q| !q.is_empty()) { &facing } else { &quarters };
     let chosen = in_turn(pool);
-    std::array::from_fn(|k| chosen.get(k % chosen.len().max(1)).map_or((tree.node(id).centre(), u32::MAX), |p| (p.centroid, p.face)))
+    std::array::from_fn(|k| {
+        chosen.get(k % chosen.len().max(1)).map_or((tree.node(id).centre(), u32::MAX), |p| (p.centroid, p.face))
+    })
 }
 
 /// Up to [`POINTS`] elements, one from each non-empty list in turn.
