@@ -6,6 +6,7 @@ mod cli;
 mod directions;
 mod geometry;
 mod grid;
+mod hierarchy;
 mod kernel;
 mod layering;
 mod luminaire;

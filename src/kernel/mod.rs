@@ -1,9 +1,11 @@
 //! The kernel `K = B·G` of `design.md` §3: balanced assembly of `G` from the transfer
 //! toolkit (`crate::transfer`), its storage, the material blocks `B`, the memory estimate
-//! and its refusal, and the operators (factored and explicit) that solvers apply.
+//! and its refusal, the operators (factored and explicit) that solvers apply, and the
+//! hierarchical form of the same operator (`hierarchy/`, `design.md` §3b).
 
 mod assembly;
 mod balance;
+pub mod hierarchy;
 mod matrix;
 pub mod memory;
 mod operator;

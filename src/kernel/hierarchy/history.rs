@@ -1,0 +1,25 @@
+//! The refinement history (`design.md` §3b, "Oracle": solve, refine where the current
+//! field says it matters, solve again): one record per pass.
+
+/// What one refinement pass produced and cost.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Pass {
+    /// 0 for the initial linking, then 1, 2, … after each solve.
+    pub pass: usize,
+    /// Links after the pass.
+    pub links: usize,
+    /// Links of the previous pass that the oracle refined (the initial self-link in pass 0).
+    pub refined: usize,
+    /// Leaf elements (unknowns per cell) after the pass.
+    pub leaves: usize,
+    /// Nodes of the hierarchy (clusters and elements) after the pass.
+    pub nodes: usize,
+    /// Occlusion rays traced in the pass.
+    pub rays: usize,
+    /// The error allowed per link in the pass, cd/m².
+    pub epsilon: f64,
+    /// Wall time of the pass, s.
+    pub seconds: f64,
+    /// Wall time of the solve that followed the pass, s (0 until it ran).
+    pub solve_seconds: f64,
+}

@@ -1,0 +1,91 @@
+//! Links (`design.md` §3b, "Links"): a receiver node `p` gathers `F_pq x̄_q` from a source
+//! node `q`. Between two elements `F_pq = (1/A_p) ∫_p F_{dA→q} dA` by the exact contour
+//! integral and adaptive quadrature (`form_factor::pair_integral`), times the visible
+//! fraction; for `K > 1` split by cells `(d, m)` like `G[(i,d),(j,m)]`
+//! (`binned_pair_integral`). A link of a cluster is isotropic (Sillion 1995): the cluster's
+//! elements count with the mean positive cosine of random orientations, 1/4, and the light
+//! a cluster receives arrives from all cells alike (`μ_d/π` each), so it holds in any frame.
+
+use super::node::Node;
+use super::sight::Sight;
+use crate::directions::DirectionSet;
+use crate::geometry::Patch;
+use crate::transfer::form_factor::{Binning, Quadrature, binned_pair_integral, pair_integral};
+use std::f64::consts::PI;
+
+/// Receiver cell of a piece that arrives from all directions alike (`μ_d/π` in cell `d`).
+pub const ALL_CELLS: u16 = u16::MAX;
+
+/// One piece of a factor: receiver cell `d`, source cell `m`, `F^{d,m}`.
+pub type Piece = (u16, u16, f64);
+
+/// A link from source `source` to receiver `receiver` (node ids).
+#[derive(Debug, Clone)]
+pub struct Link {
+    pub receiver: u32,
+    pub source: u32,
+    /// `F_pq` with visibility, dimensionless.
+    pub factor: f64,
+    /// The visible fraction in `factor`.
+    pub visible: f64,
+    /// What the oracle multiplies by `ρ_p L_q`: the variation of the factor over the two
+    /// nodes, its largest value where visibility is partial, a bound for a cluster.
+    pub bound: f64,
+    pub sight: Sight,
+    /// The factor by cells; empty means the one piece `(0, 0, factor)` (`K = 1`).
+    pub pieces: Vec<Piece>,
+}
+
+/// `F_pq` of two elements with visible fraction `visible`, and its cell pieces when binned.
+pub fn element_factor(
+    p: &Patch,
+    q: &Patch,
+    visible: f64,
+    quadrature: &Quadrature,
+    binning: Option<&Binning>,
+) -> (f64, Vec<Piece>) {
+    let Some(binning) = binning else {
+        return (visible * pair_integral(p, q, quadrature).adaptive / p.area, Vec::new());
+    };
+    let mut bins = Vec::new();
+    let whole = binned_pair_integral(p, q, quadrature, binning, &mut bins);
+    let scale = visible / p.area;
+    bins.iter_mut().for_each(|b| b.2 *= scale);
+    (visible * whole.adaptive / p.area, merged(bins))
+}
+
+/// The isotropic factor of a link with a cluster at one end (or both), and its one piece.
+pub fn cluster_factor(p: &Node, q: &Node, directions: &DirectionSet) -> (f64, Vec<Piece>) {
+    let offset = q.centre() - p.centre();
+    let distance = offset.length().max(p.box_distance(q));
+    let u = offset / distance;
+    let (cos_p, cell_p) = end(p, u, directions);
+    let (cos_q, cell_q) = end(q, -u, directions);
+    let cell_q = if cell_q == ALL_CELLS { 0 } else { cell_q };
+    let factor = (q.area * cos_p * cos_q / (PI * distance * distance)).min(1.0);
+    let pieces = if directions.len() > 1 { vec![(cell_p, cell_q, factor)] } else { Vec::new() };
+    (factor, pieces)
+}
+
+/// Mean positive cosine towards `u` and the cell of `u`: an element's own, 1/4 and
+/// [`ALL_CELLS`] for a cluster (cell 0 as a source: a cluster's value is the same in all).
+fn end(node: &Node, u: glam::DVec3, directions: &DirectionSet) -> (f64, u16) {
+    match node.patch() {
+        Some(patch) => (patch.normal.dot(u).max(0.0), directions.lookup(patch.frame().local(u)) as u16),
+        None => (0.25, ALL_CELLS),
+    }
+}
+
+/// Pieces merged by cell pair, in `(d, m)` order.
+fn merged(mut bins: Vec<Piece>) -> Vec<Piece> {
+    bins.sort_unstable_by_key(|&(d, m, _)| (d, m));
+    let mut out: Vec<Piece> = Vec::with_capacity(bins.len());
+    for (d, m, f) in bins {
+        match out.last_mut() {
+            Some(last) if last.0 == d && last.1 == m => last.2 += f,
+            _ => out.push((d, m, f)),
+        }
+    }
+    out.shrink_to_fit();
+    out
+}

@@ -1,0 +1,31 @@
+//! The hierarchical kernel of `design.md` §3b (Hanrahan, Salzman & Aupperle 1991; clusters
+//! after Smits, Arvo & Greenberg 1994 and Sillion 1995): element trees over a coarse mesh,
+//! a cluster tree above them, links accepted by a brightness-weighted oracle, and `K x`
+//! applied on the leaves by pull, gather and push. The explicit kernel is the special case
+//! of all links between leaves.
+//!
+//! Use: `Hierarchy::new(&roots, directions, blocks, options)` links the roots (a coarse
+//! `Mesh`); `iterate(&mut h, solve)` solves and refines in passes; `h.operator()` is `K` on
+//! the leaves (a `LinOp`), `h.leaf_mesh()` and `h.source()` the leaves' mesh and `L0`.
+
+mod cluster;
+mod history;
+mod iterate;
+mod kernel;
+mod link;
+mod node;
+mod operator;
+mod oracle;
+mod push;
+mod refine;
+mod sight;
+mod tree;
+
+pub use history::Pass;
+pub use iterate::{Solver, iterate};
+pub use kernel::{Hierarchy, Options};
+pub use link::{ALL_CELLS, Link, Piece};
+pub use node::{Kind, NONE, Node};
+pub use operator::Operator;
+pub use sight::Sight;
+pub use tree::Tree;

@@ -1,0 +1,109 @@
+//! One node of the hierarchy (`design.md` §3b, "Element trees" and "Clusters"): a cluster
+//! of input elements or a planar element of one surface, with what the oracle and the
+//! operator need to know about it (area, bounding box, largest albedo, emission).
+
+use crate::geometry::{ConvexPolygon, Patch};
+use glam::DVec3;
+
+/// Marks a missing node (no parent, no twin).
+pub const NONE: u32 = u32::MAX;
+
+/// What a node is.
+#[derive(Debug, Clone, Copy)]
+#[allow(clippy::large_enum_variant)] // clusters are a small fraction of the nodes
+pub enum Kind {
+    /// A set of input elements (Smits–Arvo–Greenberg 1994, Sillion 1995).
+    Cluster,
+    /// A planar piece of one surface; `level` 0 is an input (root) element. A two-sided
+    /// element's back is its `twin`; the two split together.
+    Element { patch: Patch, twin: u32, level: u8 },
+}
+
+/// A node: its kind, its place in the tree and its summaries.
+#[derive(Debug, Clone, Copy)]
+pub struct Node {
+    pub kind: Kind,
+    pub parent: u32,
+    /// Children are `Tree::children[first_child..first_child + child_count]`.
+    pub first_child: u32,
+    pub child_count: u32,
+    /// Area of the elements under it, m² (both sides of a two-sided element count).
+    pub area: f64,
+    /// Axis-aligned bounding box, m.
+    pub lo: DVec3,
+    pub hi: DVec3,
+    /// Largest fraction of arriving light any element under it reflects or transmits.
+    pub albedo: f64,
+    /// Emitted luminance of an element, cd/m² (0 for a cluster).
+    pub emission: f64,
+}
+
+impl Node {
+    /// An unsplit element of `patch`.
+    pub fn element(patch: Patch, twin: u32, level: u8, albedo: f64, emission: f64) -> Node {
+        let (lo, hi) = polygon_bounds(&patch.polygon);
+        Node {
+            kind: Kind::Element { patch, twin, level },
+            parent: NONE,
+            first_child: 0,
+            child_count: 0,
+            area: patch.area,
+            lo,
+            hi,
+            albedo,
+            emission,
+        }
+    }
+
+    /// The patch of an element, `None` for a cluster.
+    pub fn patch(&self) -> Option<&Patch> {
+        match &self.kind {
+            Kind::Element { patch, .. } => Some(patch),
+            Kind::Cluster => None,
+        }
+    }
+
+    pub fn is_leaf(&self) -> bool {
+        self.child_count == 0
+    }
+
+    /// Diagonal of the bounding box, m.
+    pub fn diagonal(&self) -> f64 {
+        (self.hi - self.lo).length()
+    }
+
+    pub fn centre(&self) -> DVec3 {
+        0.5 * (self.lo + self.hi)
+    }
+
+    /// Shortest distance between the two bounding boxes, m (0 when they touch or overlap).
+    pub fn box_distance(&self, other: &Node) -> f64 {
+        let gap = (self.lo - other.hi).max(other.lo - self.hi).max(DVec3::ZERO);
+        gap.length()
+    }
+
+    /// True when some corner of the bounding box lies strictly in front of `patch`'s plane.
+    pub fn reaches_front_of(&self, patch: &Patch) -> bool {
+        let eps = 1e-9 * patch.area.sqrt();
+        (0..8).any(|c| {
+            let corner = DVec3::new(
+                if c & 1 == 0 { self.lo.x } else { self.hi.x },
+                if c & 2 == 0 { self.lo.y } else { self.hi.y },
+                if c & 4 == 0 { self.lo.z } else { self.hi.z },
+            );
+            (corner - patch.centroid).dot(patch.normal) > eps
+        })
+    }
+}
+
+/// Bounding box of a polygon.
+pub fn polygon_bounds(polygon: &ConvexPolygon) -> (DVec3, DVec3) {
+    let v = polygon.vertices();
+    v.iter().fold((v[0], v[0]), |(lo, hi), p| (lo.min(*p), hi.max(*p)))
+}
+
+/// Longest edge of a polygon, m: the size compared with the smallest element size.
+pub fn longest_edge(polygon: &ConvexPolygon) -> f64 {
+    let v = polygon.vertices();
+    (0..v.len()).map(|i| v[i].distance(v[(i + 1) % v.len()])).fold(0.0, f64::max)
+}

@@ -1,0 +1,256 @@
+//! `K x` on the leaf unknowns (`design.md` §3b, "Apply K x"): pull (leaf values up the trees
+//! as area averages; into a cluster as the cell-weighted mean `Σ_m (μ_m/π) x_m`, which means
+//! the same in every frame), gather over the links at every level (`z_p += F_pq x̄_q`, by
+//! cells), push (each node's gathered light to all its leaves, each leaf with its own share,
+//! `push.rs`), then the material blocks of every leaf: `y = ρ̄ z + τ̄ z_twin`, as
+//! `Kernel::apply_materials` does for `G x`. Nodes are stored in depth-first order, so pull
+//! is one backward sweep; gather (over receivers) and push (over leaves) run in parallel.
+//! Nothing is allocated per application.
+
+use super::link::{ALL_CELLS, Link};
+use super::node::{Kind, NONE};
+use super::push::push_rows;
+use super::tree::Tree;
+use crate::directions::DirectionSet;
+use crate::material::Block;
+use rayon::prelude::*;
+use std::f64::consts::PI;
+use std::sync::Mutex;
+
+/// One gathered piece: `z[receiver, d] += f · x̄[source, m]` (`d` = [`ALL_CELLS`]: `μ_d/π` each).
+#[derive(Debug, Clone, Copy)]
+struct Entry {
+    source: u32,
+    d: u16,
+    m: u16,
+    f: f64,
+}
+
+/// Work arrays: `nodes × K` (means, gathered light) and `leaves × K` (arriving light).
+struct Scratch {
+    mean: Vec<f64>,
+    gathered: Vec<f64>,
+    arriving: Vec<f64>,
+}
+
+/// The hierarchical kernel `K = B·G` as an operator on `x[leaf·K + k]`.
+pub struct Operator {
+    k: usize,
+    /// Tree node of each leaf, in unknown order.
+    leaves: Vec<u32>,
+    /// Depth-first position of each leaf.
+    leaf_position: Vec<u32>,
+    /// Each leaf's ancestors with links and its share of their light (CSR, `push.rs`).
+    push_row: Vec<usize>,
+    push: Vec<(u32, f64)>,
+    /// By depth-first position: parent position ([`NONE`] at the top), area share in the
+    /// parent, and whether the parent is a cluster.
+    parent: Vec<u32>,
+    weight: Vec<f64>,
+    into_cluster: Vec<bool>,
+    /// Gathered pieces by receiver position (CSR).
+    row: Vec<usize>,
+    entries: Vec<Entry>,
+    links: usize,
+    /// `μ_d/π` of each cell.
+    share: Vec<f64>,
+    blocks: Vec<Block>,
+    leaf_block: Vec<u32>,
+    /// The leaf on the other side of a two-sided leaf, or [`NONE`].
+    leaf_twin: Vec<u32>,
+    scratch: Mutex<Scratch>,
+}
+
+impl Operator {
+    /// The operator of `links` over the leaves of `tree`.
+    pub fn new(tree: &Tree, links: &[Link], blocks: &[Block], directions: &DirectionSet) -> Operator {
+        let k = directions.len();
+        let order = tree.preorder();
+        let mut position = vec![NONE; tree.len()];
+        for (pos, &id) in order.iter().enumerate() {
+            position[id as usize] = pos as u32;
+        }
+        let (parent, weight, into_cluster) = parents(tree, &order, &position);
+        let leaves: Vec<u32> = order.iter().copied().filter(|&id| tree.node(id).is_leaf()).collect();
+        let leaf_position = leaves.iter().map(|&id| position[id as usize]).collect();
+        let (push_row, push) = push_rows(tree, links, &position, &leaves);
+        let (row, entries) = gather_rows(links, &position, order.len());
+        let mut leaf_index = vec![NONE; tree.len()];
+        leaves.iter().enumerate().for_each(|(l, &id)| leaf_index[id as usize] = l as u32);
+        let leaf_twin = leaves.iter().map(|&id| twin_of(tree, id).map_or(NONE, |t| leaf_index[t as usize])).collect();
+        let leaf_block = leaves.iter().map(|&id| tree.node(id).patch().map_or(0, |p| p.material)).collect();
+        let (nodes, dim) = (order.len(), leaves.len() * k);
+        Operator {
+            k,
+            leaves,
+            leaf_position,
+            push_row,
+            push,
+            parent,
+            weight,
+            into_cluster,
+            row,
+            entries,
+            links: links.len(),
+            share: directions.cells().iter().map(|c| c.projected / PI).collect(),
+            blocks: blocks.to_vec(),
+            leaf_block,
+            leaf_twin,
+            scratch: Mutex::new(Scratch {
+                mean: vec![0.0; nodes * k],
+                gathered: vec![0.0; nodes * k],
+                arriving: vec![0.0; dim],
+            }),
+        }
+    }
+
+    /// Number of unknowns, leaves × K.
+    pub fn dim(&self) -> usize {
+        self.leaves.len() * self.k
+    }
+
+    /// Tree node of each leaf, in unknown order.
+    pub fn leaves(&self) -> &[u32] {
+        &self.leaves
+    }
+
+    pub fn links(&self) -> usize {
+        self.links
+    }
+
+    pub fn cells(&self) -> usize {
+        self.k
+    }
+
+    /// `y = K x`.
+    pub fn apply(&self, x: &[f64], y: &mut [f64]) {
+        let mut s = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
+        let Scratch { mean, gathered, arriving } = &mut *s;
+        self.transport(x, mean, gathered, arriving);
+        let k = self.k;
+        y.par_chunks_mut(k).enumerate().for_each(|(l, yl)| {
+            let block = &self.blocks[self.leaf_block[l] as usize];
+            block.apply(&arriving[l * k..(l + 1) * k], yl);
+            let twin = self.leaf_twin[l] as usize;
+            if block.transmits() && twin != NONE as usize {
+                block.apply_transmit(&arriving[twin * k..(twin + 1) * k], yl);
+            }
+        });
+    }
+
+    /// `z = G x`: the light arriving at every leaf and cell (as `Kernel::apply_transport`;
+    /// illuminance `E = π Σ_d z_d`, lx).
+    pub fn arriving(&self, x: &[f64], z: &mut [f64]) {
+        let mut s = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
+        let Scratch { mean, gathered, .. } = &mut *s;
+        self.transport(x, mean, gathered, z);
+    }
+
+    /// Pull, gather, push: `arriving` holds every leaf's arriving light afterwards.
+    fn transport(&self, x: &[f64], mean: &mut [f64], gathered: &mut [f64], arriving: &mut [f64]) {
+        self.pull(x, mean);
+        self.gather(mean, gathered);
+        self.push(gathered, arriving);
+    }
+
+    /// Area averages of the leaf values at every node.
+    fn pull(&self, x: &[f64], mean: &mut [f64]) {
+        let k = self.k;
+        mean.fill(0.0);
+        for (l, &pos) in self.leaf_position.iter().enumerate() {
+            mean[pos as usize * k..(pos as usize + 1) * k].copy_from_slice(&x[l * k..(l + 1) * k]);
+        }
+        for pos in (1..self.parent.len()).rev() {
+            let (up, down) = mean.split_at_mut(pos * k);
+            let parent = &mut up[self.parent[pos] as usize * k..][..k];
+            let child = &down[..k];
+            let w = self.weight[pos];
+            if self.into_cluster[pos] {
+                let m: f64 = child.iter().zip(&self.share).map(|(v, s)| v * s).sum();
+                parent.iter_mut().for_each(|p| *p += w * m);
+            } else {
+                parent.iter_mut().zip(child).for_each(|(p, c)| *p += w * c);
+            }
+        }
+    }
+
+    /// `z_p = Σ_q F_pq x̄_q` over every node's links, in parallel over receivers.
+    fn gather(&self, mean: &[f64], gathered: &mut [f64]) {
+        let k = self.k;
+        gathered.par_chunks_mut(k).enumerate().for_each(|(pos, z)| {
+            z.fill(0.0);
+            for e in &self.entries[self.row[pos]..self.row[pos + 1]] {
+                let v = e.f * mean[e.source as usize * k + e.m as usize];
+                if e.d == ALL_CELLS {
+                    z.iter_mut().zip(&self.share).for_each(|(z, s)| *z += v * s);
+                } else {
+                    z[e.d as usize] += v;
+                }
+            }
+        });
+    }
+
+    /// Every leaf's share of the light gathered at its ancestors, in parallel over leaves.
+    fn push(&self, gathered: &[f64], arriving: &mut [f64]) {
+        let k = self.k;
+        arriving.par_chunks_mut(k).enumerate().for_each(|(l, z)| {
+            z.fill(0.0);
+            for &(pos, w) in &self.push[self.push_row[l]..self.push_row[l + 1]] {
+                let g = &gathered[pos as usize * k..(pos as usize + 1) * k];
+                z.iter_mut().zip(g).for_each(|(z, g)| *z += w * g);
+            }
+        });
+    }
+}
+
+/// Parent position, area share and "parent is a cluster" of every depth-first position.
+fn parents(tree: &Tree, order: &[u32], position: &[u32]) -> (Vec<u32>, Vec<f64>, Vec<bool>) {
+    let mut parent = vec![NONE; order.len()];
+    let mut weight = vec![0.0; order.len()];
+    let mut into_cluster = vec![false; order.len()];
+    for (pos, &id) in order.iter().enumerate() {
+        let children = tree.children(id);
+        let total: f64 = children.iter().map(|&c| tree.node(c).area).sum();
+        for &c in children {
+            let cp = position[c as usize] as usize;
+            parent[cp] = pos as u32;
+            weight[cp] = tree.node(c).area / total;
+            into_cluster[cp] = matches!(tree.node(id).kind, Kind::Cluster);
+        }
+    }
+    (parent, weight, into_cluster)
+}
+
+/// The links' pieces as CSR rows by receiver position.
+fn gather_rows(links: &[Link], position: &[u32], nodes: usize) -> (Vec<usize>, Vec<Entry>) {
+    let pieces = |l: &Link| l.pieces.len().max(1);
+    let mut row = vec![0usize; nodes + 1];
+    for l in links {
+        row[position[l.receiver as usize] as usize + 1] += pieces(l);
+    }
+    for r in 0..nodes {
+        row[r + 1] += row[r];
+    }
+    let mut fill = row.clone();
+    let mut entries = vec![Entry { source: 0, d: 0, m: 0, f: 0.0 }; row[nodes]];
+    for l in links {
+        let r = position[l.receiver as usize] as usize;
+        let source = position[l.source as usize];
+        let mut put = |d: u16, m: u16, f: f64| {
+            entries[fill[r]] = Entry { source, d, m, f };
+            fill[r] += 1;
+        };
+        match l.pieces.is_empty() {
+            true => put(0, 0, l.factor),
+            false => l.pieces.iter().for_each(|&(d, m, f)| put(d, m, f)),
+        }
+    }
+    (row, entries)
+}
+
+fn twin_of(tree: &Tree, id: u32) -> Option<u32> {
+    match tree.node(id).kind {
+        Kind::Element { twin, .. } if twin != NONE => Some(twin),
+        _ => None,
+    }
+}

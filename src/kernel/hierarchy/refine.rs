@@ -1,0 +1,194 @@
+//! Refinement of links (`design.md` §3b, "Links" and "Oracle"): candidate pairs of nodes are
+//! evaluated in parallel (dropped when they cannot exchange light, kept as links when the
+//! oracle accepts them, or marked for a split), the marked nodes are split, and their
+//! children's pairs are the next round's candidates, until no candidate is left. A candidate
+//! `(p, q)` covers every pair of a leaf under `p` and a leaf under `q`, and its children's
+//! pairs partition that set, so every pair of leaves stays covered by exactly one link.
+
+use super::link::{Link, cluster_factor, element_factor};
+use super::node::Node;
+use super::oracle::{Oracle, cluster_bound, variation};
+use super::sight::{Sight, sight, stand_in_sight, stand_ins};
+use super::tree::Tree;
+use crate::directions::DirectionSet;
+use crate::geometry::Patch;
+use crate::kernel::facing;
+use crate::transfer::form_factor::{Binning, Quadrature};
+use crate::transfer::occlusion::polygon_points;
+use crate::visibility::{Blocker, NO_BLOCKER, Visibility};
+use rayon::prelude::*;
+
+/// What stays fixed during refinement.
+pub struct Settings<'a> {
+    pub visibility: &'a Visibility,
+    pub oracle: Oracle,
+    pub quadrature: &'a Quadrature,
+    pub directions: &'a DirectionSet,
+}
+
+/// What became of one candidate.
+enum Outcome {
+    Drop,
+    Split(u32),
+    Keep(Link),
+}
+
+/// Refines `candidates` into `links`; `brightness` (per node, cd/m²) grows with the tree,
+/// new nodes taking their parent's. Returns the occlusion rays traced.
+pub fn refine(
+    tree: &mut Tree,
+    brightness: &mut Vec<f64>,
+    settings: &Settings,
+    mut candidates: Vec<(u32, u32)>,
+    links: &mut Vec<Link>,
+) -> usize {
+    let binning = (settings.directions.len() > 1).then(|| Binning::new(settings.directions));
+    let mut rays = 0;
+    while !candidates.is_empty() {
+        let outcomes: Vec<(Outcome, usize)> = candidates
+            .par_iter()
+            .map_init(
+                || NO_BLOCKER,
+                |blocker, &(p, q)| evaluate(tree, brightness, settings, binning.as_ref(), p, q, blocker),
+            )
+            .collect();
+        let mut split = Vec::new();
+        for ((outcome, r), &(p, q)) in outcomes.into_iter().zip(&candidates) {
+            rays += r;
+            match outcome {
+                Outcome::Drop => {}
+                Outcome::Keep(link) => links.push(link),
+                Outcome::Split(n) => split.push((p, q, n)),
+            }
+        }
+        candidates = Vec::with_capacity(4 * split.len());
+        for &(p, q, n) in &split {
+            split_node(tree, brightness, n);
+            children_pairs(tree, p, q, n, &mut candidates);
+        }
+    }
+    rays
+}
+
+/// Splits `n` (a no-op for a cluster or an element already split); new nodes inherit
+/// their parent's brightness.
+pub fn split_node(tree: &mut Tree, brightness: &mut Vec<f64>, n: u32) {
+    tree.split(n);
+    for id in brightness.len()..tree.len() {
+        let parent = tree.node(id as u32).parent;
+        brightness.push(brightness[parent as usize]);
+    }
+}
+
+/// The pairs that replace `(p, q)` once `n` (one of them) is split.
+pub fn children_pairs(tree: &Tree, p: u32, q: u32, n: u32, out: &mut Vec<(u32, u32)>) {
+    let children = tree.children(n);
+    if p == q {
+        out.extend(children.iter().flat_map(|&a| children.iter().map(move |&b| (a, b))));
+    } else if n == p {
+        out.extend(children.iter().map(|&c| (c, q)));
+    } else {
+        out.extend(children.iter().map(|&c| (p, c)));
+    }
+}
+
+fn evaluate(
+    tree: &Tree,
+    brightness: &[f64],
+    settings: &Settings,
+    binning: Option<&Binning>,
+    p: u32,
+    q: u32,
+    blocker: &mut Blocker,
+) -> (Outcome, usize) {
+    let (a, b) = (tree.node(p), tree.node(q));
+    if p == q {
+        // a planar element does not see itself; a cluster's self-link is always split
+        return (if a.patch().is_some() { Outcome::Drop } else { Outcome::Split(p) }, 0);
+    }
+    match (a.patch(), b.patch()) {
+        (Some(pa), Some(pb)) => elements(tree, brightness[q as usize], settings, binning, (p, pa), (q, pb), blocker),
+        _ => clusters(tree, brightness[q as usize], settings, p, q, blocker),
+    }
+}
+
+/// A pair with a cluster at one end (or both). The bound ignores visibility; the factor of
+/// an accepted link is multiplied by the visible fraction of the stand-ins' segments.
+fn clusters(
+    tree: &Tree,
+    brightness: f64,
+    settings: &Settings,
+    p: u32,
+    q: u32,
+    blocker: &mut Blocker,
+) -> (Outcome, usize) {
+    let (a, b) = (tree.node(p), tree.node(q));
+    if !in_front(a, b) || !in_front(b, a) {
+        return (Outcome::Drop, 0);
+    }
+    let bound = cluster_bound(a, b);
+    let error = settings.oracle.error(a.albedo, bound, brightness);
+    if settings.oracle.refines(error)
+        && let Some(n) = settings.oracle.choose(tree, p, q)
+    {
+        return (Outcome::Split(n), 0);
+    }
+    let (from, to) = (stand_ins(tree, p, b.centre()), stand_ins(tree, q, a.centre()));
+    let (seen, visible, rays) = stand_in_sight(settings.visibility, &from, &to, blocker);
+    if seen == Sight::Occluded {
+        return (Outcome::Drop, rays);
+    }
+    let (factor, mut pieces) = cluster_factor(a, b, settings.directions);
+    pieces.iter_mut().for_each(|piece| piece.2 *= visible);
+    let link = Link { receiver: p, source: q, factor: visible * factor, visible, bound, sight: seen, pieces };
+    (Outcome::Keep(link), rays)
+}
+
+/// False when `a` is an element and `b` lies wholly behind its plane.
+fn in_front(a: &Node, b: &Node) -> bool {
+    a.patch().is_none_or(|patch| b.reaches_front_of(patch))
+}
+
+/// A pair of elements.
+fn elements(
+    tree: &Tree,
+    brightness: f64,
+    settings: &Settings,
+    binning: Option<&Binning>,
+    (p, a): (u32, &Patch),
+    (q, b): (u32, &Patch),
+    blocker: &mut Blocker,
+) -> (Outcome, usize) {
+    if !facing(a, b) {
+        return (Outcome::Drop, 0);
+    }
+    let oracle = &settings.oracle;
+    let albedo = tree.node(p).albedo;
+    let v = variation(a, b);
+    let split = oracle.choose(tree, p, q);
+    let (seen, visible, rays) = sight(settings.visibility, a, b, blocker);
+    // the light varies over the pair when a shadow boundary may cross it (4 or 16 blocked
+    // segments do not prove that nothing passes) or some sample points see nothing of the
+    // other element (their segments say nothing about visibility)
+    let straddles = straddles(a, b) || straddles(b, a);
+    let bound = if seen == Sight::Clear && !straddles { v.spread } else { v.largest };
+    if oracle.refines(oracle.error(albedo, bound, brightness))
+        && let Some(n) = split
+    {
+        return (Outcome::Split(n), rays);
+    }
+    if seen == Sight::Occluded {
+        return (Outcome::Drop, rays);
+    }
+    let (factor, pieces) = element_factor(a, b, visible, settings.quadrature, binning);
+    if factor <= 0.0 {
+        return (Outcome::Drop, rays);
+    }
+    (Outcome::Keep(Link { receiver: p, source: q, factor, visible, bound, sight: seen, pieces }), rays)
+}
+
+/// True when some sample point of `a` is not in front of `b`'s plane: the segments from it
+/// say nothing about the light `a` gets from `b`, so its visibility test is not trusted.
+fn straddles(a: &Patch, b: &Patch) -> bool {
+    polygon_points(&a.polygon).iter().any(|&x| (x - b.centroid).dot(b.normal) <= 0.0)
+}

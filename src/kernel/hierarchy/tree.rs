@@ -1,0 +1,165 @@
+//! The element trees and the cluster tree above them, in one arena (`design.md` §3b,
+//! "Element trees"): every input element (a patch of the coarse mesh) is a root; an element
+//! splits lazily into the 4 pieces of `ConvexPolygon::split` (quads by their edges,
+//! triangles by their edge midpoints), the two sides of a two-sided element together.
+//! Node ids never change: the arena only grows.
+
+use super::cluster;
+use super::node::{Kind, NONE, Node, longest_edge};
+use crate::geometry::{ConvexPolygon, Mesh, Patch};
+
+/// Every node of the hierarchy.
+#[derive(Debug, Clone)]
+pub struct Tree {
+    nodes: Vec<Node>,
+    /// Child lists: a node's children are a contiguous run.
+    children: Vec<u32>,
+    top: u32,
+}
+
+impl Tree {
+    /// The roots are the patches of `roots` (node `i` is patch `i`), clustered above;
+    /// `albedo[m]` is material `m`'s largest albedo.
+    pub fn new(roots: &Mesh, albedo: &[f64]) -> Tree {
+        let nodes = roots
+            .patches
+            .iter()
+            .zip(&roots.emission)
+            .map(|(p, &e)| Node::element(*p, p.twin, 0, albedo.get(p.material as usize).copied().unwrap_or(1.0), e))
+            .collect();
+        let mut tree = Tree { nodes, children: Vec::new(), top: NONE };
+        let mut ids: Vec<u32> = (0..roots.len() as u32).collect();
+        let centres: Vec<glam::DVec3> = tree.nodes.iter().map(Node::centre).collect();
+        tree.top = cluster::build(&centres, &mut ids, &mut |members| tree.add_cluster(members));
+        tree
+    }
+
+    /// The node at the top: the root cluster (or the only element, or [`NONE`] when empty).
+    pub fn top(&self) -> u32 {
+        self.top
+    }
+
+    pub fn node(&self, id: u32) -> &Node {
+        &self.nodes[id as usize]
+    }
+
+    pub fn len(&self) -> usize {
+        self.nodes.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.nodes.is_empty()
+    }
+
+    pub fn children(&self, id: u32) -> &[u32] {
+        let n = &self.nodes[id as usize];
+        &self.children[n.first_child as usize..(n.first_child + n.child_count) as usize]
+    }
+
+    /// Appends a cluster over `members` (already in the arena) and returns its id.
+    pub(super) fn add_cluster(&mut self, members: &[u32]) -> u32 {
+        let id = self.nodes.len() as u32;
+        let first = &self.nodes[members[0] as usize];
+        let mut node = Node { kind: Kind::Cluster, parent: NONE, first_child: self.children.len() as u32, ..*first };
+        node.child_count = members.len() as u32;
+        node.area = 0.0;
+        node.emission = 0.0;
+        for &m in members {
+            let member = &mut self.nodes[m as usize];
+            member.parent = id;
+            node.area += member.area;
+            node.lo = node.lo.min(member.lo);
+            node.hi = node.hi.max(member.hi);
+            node.albedo = node.albedo.max(member.albedo);
+        }
+        self.children.extend_from_slice(members);
+        self.nodes.push(node);
+        id
+    }
+
+    /// True when `id` has children or can get them: a cluster, or an element whose
+    /// longest edge exceeds `smallest` (m).
+    pub fn can_split(&self, id: u32, smallest: f64) -> bool {
+        let node = &self.nodes[id as usize];
+        match &node.kind {
+            Kind::Cluster => true,
+            Kind::Element { patch, .. } => !node.is_leaf() || longest_edge(&patch.polygon) > smallest * (1.0 + 1e-9),
+        }
+    }
+
+    /// Gives element `id` (and its twin) their four children, unless they have them.
+    pub fn split(&mut self, id: u32) {
+        let node = self.nodes[id as usize];
+        let Kind::Element { patch, twin, .. } = node.kind else { return };
+        if !node.is_leaf() {
+            return;
+        }
+        let pieces = patch.polygon.split();
+        let front = self.add_children(id, pieces);
+        if twin == NONE {
+            return;
+        }
+        let back = self.add_children(twin, pieces.map(|p| p.reversed()));
+        for (f, b) in front.into_iter().zip(back) {
+            self.set_twin(f, b);
+            self.set_twin(b, f);
+        }
+    }
+
+    /// Appends the elements of `polygons` as the children of element `id`; returns their ids.
+    fn add_children(&mut self, id: u32, polygons: [ConvexPolygon; 4]) -> [u32; 4] {
+        let parent = self.nodes[id as usize];
+        let first = self.nodes.len() as u32;
+        if let Kind::Element { patch, level, .. } = parent.kind {
+            for polygon in polygons {
+                let mut p = Patch::from_polygon(polygon, patch.surface, patch.material, patch.face);
+                inherit_frame(&mut p, &patch);
+                let child = Node::element(p, NONE, level + 1, parent.albedo, parent.emission);
+                self.nodes.push(Node { parent: id, ..child });
+            }
+            self.link_children(id, first, 4);
+        }
+        [first, first + 1, first + 2, first + 3]
+    }
+
+    fn set_twin(&mut self, id: u32, other: u32) {
+        if let Kind::Element { twin, .. } = &mut self.nodes[id as usize].kind {
+            *twin = other;
+        }
+    }
+
+    fn link_children(&mut self, id: u32, first: u32, count: u32) {
+        let start = self.children.len() as u32;
+        self.children.extend(first..first + count);
+        let node = &mut self.nodes[id as usize];
+        node.first_child = start;
+        node.child_count = count;
+    }
+
+    /// All nodes, parents before children, each subtree contiguous (depth first from the top).
+    pub fn preorder(&self) -> Vec<u32> {
+        let mut order = Vec::with_capacity(self.nodes.len());
+        let mut stack = Vec::new();
+        if self.top != NONE {
+            stack.push(self.top);
+        }
+        while let Some(id) = stack.pop() {
+            order.push(id);
+            stack.extend(self.children(id).iter().rev());
+        }
+        order
+    }
+
+    /// The leaf elements in depth-first order: the unknowns.
+    pub fn leaves(&self) -> Vec<u32> {
+        self.preorder().into_iter().filter(|&id| self.nodes[id as usize].is_leaf()).collect()
+    }
+}
+
+/// A piece keeps its parent's plane and frame exactly, so that cell values of all the
+/// elements of one surface are expressed in the same frame.
+fn inherit_frame(piece: &mut Patch, parent: &Patch) {
+    piece.normal = parent.normal;
+    piece.tangent = parent.tangent;
+    piece.bitangent = parent.bitangent;
+}

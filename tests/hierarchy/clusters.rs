@@ -1,0 +1,94 @@
+//! Clusters: a closed room with a cloud of small cubes (k input elements). The isotropic
+//! links of clusters (with their stand-ins' visibility) agree with the explicit kernel on the
+//! same leaves within what sampled visibility allows, and the links grow much slower than k².
+
+use super::{hierarchy, options, relative_difference};
+use crate::support::furnace;
+use glam::DVec3;
+use ugo::directions::DirectionSet;
+use ugo::geometry::{Emission, Shape, Surface};
+use ugo::kernel::hierarchy::Hierarchy;
+use ugo::kernel::{Kernel, Precision, TransportMatrix, assemble};
+use ugo::scene::Scene;
+use ugo::transfer::form_factor::Quadrature;
+use ugo::visibility::Visibility;
+
+/// A closed 2 m room (reflectance 0.5, emitting 1 cd/m²) with `n³` emitting 5 cm cubes,
+/// turned by multiples of 30°, on a grid in its middle.
+fn cloud(n: usize) -> Scene {
+    let mut s = furnace(2.0, 0.5, 1.0, 10.0);
+    for (i, j, k) in (0..n).flat_map(|i| (0..n).flat_map(move |j| (0..n).map(move |k| (i, j, k)))) {
+        let c = DVec3::splat(0.5) + DVec3::new(i as f64, j as f64, k as f64) / n as f64;
+        let shape = Shape::Box { min: c, max: c + DVec3::splat(0.05), rotate_y_deg: 30.0 * (i + j + k) as f64 };
+        let emission = Some(Emission::Luminance(1.0));
+        s.surfaces.push(Surface {
+            name: format!("cube {i} {j} {k}"),
+            shape,
+            material: 0,
+            two_sided: false,
+            inside: false,
+            emission,
+        });
+    }
+    s
+}
+
+fn cluster_links(h: &Hierarchy) -> usize {
+    let tree = h.tree();
+    h.links()
+        .iter()
+        .filter(|l| tree.node(l.receiver).patch().is_none() || tree.node(l.source).patch().is_none())
+        .count()
+}
+
+#[test]
+fn cluster_links_agree_with_the_explicit_kernel() {
+    let h = hierarchy(&cloud(3), 10.0, DirectionSet::single(), options(1e-2, 0.25));
+    let op = h.operator();
+    let leaves = h.leaf_mesh();
+    let directions = DirectionSet::single();
+    let t = assemble(&leaves, &Visibility::build(&leaves), &directions, &Quadrature::default(), &|_| {});
+    let kernel = Kernel {
+        g: TransportMatrix::new(t.g, Precision::Double),
+        directions,
+        blocks: Vec::new(),
+        patch_material: Vec::new(),
+        twin: Vec::new(),
+    };
+    let x: Vec<f64> = (0..op.dim()).map(|i| 1.0 + 0.5 * (i as f64 * 0.37).sin()).collect();
+    let (mut a, mut b) = (vec![0.0; x.len()], vec![0.0; x.len()]);
+    op.arriving(&x, &mut a);
+    kernel.apply_transport(&x, &mut b);
+    let worst = relative_difference(&a, &b);
+    let rms =
+        (a.iter().zip(&b).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / b.iter().map(|b| b * b).sum::<f64>()).sqrt();
+    eprintln!(
+        "clusters: {} leaves, {} links of which {} of clusters; G x against explicit: worst {worst:.2e}, rms {rms:.2e}",
+        op.dim(),
+        op.links(),
+        cluster_links(&h)
+    );
+    assert!(cluster_links(&h) > 1000, "the cloud is linked through clusters");
+    assert!(worst < 5e-2 && rms < 2e-2, "worst {worst}, rms {rms}");
+}
+
+#[test]
+fn links_grow_much_slower_than_input_elements_squared() {
+    let counts: Vec<(f64, f64)> = [3, 6]
+        .iter()
+        .map(|&n| {
+            let h = hierarchy(&cloud(n), 10.0, DirectionSet::single(), options(1e-2, 0.25));
+            let k = (6 + 6 * n * n * n) as f64;
+            eprintln!(
+                "clusters: k = {k} input elements: {} links ({} of clusters), {:?}",
+                h.links().len(),
+                cluster_links(&h),
+                h.history()[0]
+            );
+            (k, h.links().len() as f64)
+        })
+        .collect();
+    let exponent = (counts[1].1 / counts[0].1).ln() / (counts[1].0 / counts[0].0).ln();
+    eprintln!("clusters: links ∝ k^{exponent:.2}");
+    assert!(exponent < 1.3, "growth exponent {exponent}");
+}
