@@ -9,6 +9,7 @@ use cli::solve::Job;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use ugo::solve::{Method, RESTART, SolveParams};
+use ugo::study;
 
 /// A numerical laboratory for the global illumination equation of a 3D scene.
 #[derive(Parser)]
@@ -197,12 +198,12 @@ fn run(command: Command) -> anyhow::Result<()> {
     match command {
         Command::Solve { case, output, discretize, stopping, method, orders, norms, basis } => {
             let methods = method.into_iter().collect();
-            let job = Job { methods, orders, norms, output, basis: basis.choice()?, ..Job::new("", stopping) };
-            cli::solve::run(&case, &discretize, job)
+            let run = study::Job { methods, orders, norms, basis: basis.choice()?, ..Default::default() };
+            cli::solve::run(&case, &discretize, Job { output, ..Job::new(run, stopping, "") })
         }
         Command::Norms { case, output, discretize, stopping } => {
-            let job = Job { methods: vec![Method::Neumann], norms: true, output, ..Job::new("-norms", stopping) };
-            cli::solve::run(&case, &discretize, job)
+            let run = study::Job { methods: vec![Method::Neumann], norms: true, ..Default::default() };
+            cli::solve::run(&case, &discretize, Job { output, ..Job::new(run, stopping, "-norms") })
         }
         Command::Compare { case, methods, output, plot, discretize, stopping, basis, bases, photons, seed } => {
             let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
@@ -217,9 +218,8 @@ fn run(command: Command) -> anyhow::Result<()> {
                 return cli::basis::study(&case, &discretize, &bases, method, params, &plot);
             }
             let plot = Some(plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-compare.png"))));
-            let basis = basis.choice()?;
-            let job = Job { methods, output, plot, basis, photons, seed, ..Job::new("-compare", stopping) };
-            cli::solve::run(&case, &discretize, job)
+            let run = study::Job { methods, basis: basis.choice()?, photons, seed, ..Default::default() };
+            cli::solve::run(&case, &discretize, Job { output, plot, ..Job::new(run, stopping, "-compare") })
         }
         Command::Render { solution, cameras, exposure, output, false_colour, orders, shading, gather_rays, view } => {
             let look = cli::render::Look { view, exposure, false_colour, orders: &orders, shading, gather_rays };

@@ -6,7 +6,6 @@ use super::options::{Discretize, Stopping};
 use super::{Bars, bytes, describe, file_name, load};
 use anyhow::{Context, Result, bail};
 use std::path::{Path, PathBuf};
-use ugo::basis::Basis;
 use ugo::io::{
     BasisRecord, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
 };
@@ -16,51 +15,29 @@ use ugo::solve::orders::OrderRecord;
 use ugo::solve::{Method, SolveParams};
 use ugo::study::{self, MonteCarlo, solve_case};
 
-/// What one command asks of the pipeline.
+/// What one command asks: the solve (its stopping rule from the command line or the
+/// case) and where its files go.
 pub struct Job {
-    /// Methods to run; empty means the case's `[solver] method`.
-    pub methods: Vec<Method>,
-    pub tolerance: Option<f64>,
-    pub max_iterations: Option<usize>,
-    /// Reflection orders whose partial sums are recorded (`None`: 1, 8, 64 for `neumann`).
-    pub orders: Option<Vec<usize>>,
-    pub norms: bool,
+    pub run: study::Job,
+    pub stopping: Stopping,
     pub output: Option<PathBuf>,
     /// Suffix of the default output name (`cornell-box{suffix}.h5`).
     pub suffix: &'static str,
     pub plot: Option<PathBuf>,
-    /// Solve for the coefficients of this angular basis instead of the cell values.
-    pub basis: Option<Basis>,
-    /// Photons of a forward Monte Carlo reference to compare every method with (`compare`).
-    pub photons: Option<u64>,
-    /// Seed of that reference.
-    pub seed: u64,
 }
 
 impl Job {
-    /// One method (the case's), no extras, the output named `<case>{suffix}.h5`.
-    pub fn new(suffix: &'static str, stopping: Stopping) -> Job {
-        Job {
-            methods: Vec::new(),
-            tolerance: stopping.tolerance,
-            max_iterations: stopping.max_iterations,
-            orders: None,
-            norms: false,
-            output: None,
-            suffix,
-            plot: None,
-            basis: None,
-            photons: None,
-            seed: 1,
-        }
+    /// The solve `run`, the output named `<case>{suffix}.h5`, no plot.
+    pub fn new(run: study::Job, stopping: Stopping, suffix: &'static str) -> Job {
+        Job { run, stopping, output: None, suffix, plot: None }
     }
 }
 
 pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let (scene, options) = load(case, d)?;
     let params = SolveParams {
-        tolerance: job.tolerance.unwrap_or(scene.solver.tolerance),
-        max_iterations: job.max_iterations.unwrap_or(scene.solver.max_iterations),
+        tolerance: job.stopping.tolerance.unwrap_or(scene.solver.tolerance),
+        max_iterations: job.stopping.max_iterations.unwrap_or(scene.solver.max_iterations),
         memory_limit: options.memory_limit,
         ..SolveParams::default()
     };
@@ -69,15 +46,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     }
     let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
     let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}{}.h5", job.suffix)));
-    let study = study::Job {
-        methods: job.methods.clone(),
-        params,
-        orders: job.orders.clone(),
-        norms: job.norms,
-        basis: job.basis,
-        photons: job.photons,
-        seed: job.seed,
-    };
+    let study = study::Job { params, ..job.run };
     let s = solve_case(&scene, &options, &study, &Bars::default())?;
     for (method, e) in &s.failures {
         eprintln!("ugo: {} failed: {e}", method.name());

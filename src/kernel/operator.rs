@@ -45,15 +45,7 @@ impl Kernel {
     /// `y = B z`, block by block: reflection of what arrives at the patch, plus
     /// transmission of what arrives at its twin.
     pub fn apply_materials(&self, z: &[f64], y: &mut [f64]) {
-        let k = self.cells();
-        y.par_chunks_mut(k).enumerate().for_each(|(i, yi)| {
-            let block = &self.blocks[self.patch_material[i] as usize];
-            block.apply(&z[i * k..(i + 1) * k], yi);
-            let twin = self.twin[i] as usize;
-            if block.transmits() && twin != NO_TWIN as usize {
-                block.apply_transmit(&z[twin * k..(twin + 1) * k], yi);
-            }
-        });
+        apply_blocks(&self.blocks, &self.patch_material, &self.twin, self.cells(), z, y);
     }
 
     /// Upper bound of the non-zeros of the explicit product `B·G`: each row `(i,d)` of `G`
@@ -106,6 +98,20 @@ impl Kernel {
         }
         Ok(tri.to_csr())
     }
+}
+
+/// `y = B z` over patches of `k` cells each: patch `i` reflects what arrives at it through
+/// `blocks[material[i]]` and, when that block transmits, what arrives at `twin[i]`
+/// ([`NO_TWIN`] for none). Shared by the explicit kernel and the hierarchy's leaves.
+pub(super) fn apply_blocks(blocks: &[Block], material: &[u32], twin: &[u32], k: usize, z: &[f64], y: &mut [f64]) {
+    y.par_chunks_mut(k).enumerate().for_each(|(i, yi)| {
+        let block = &blocks[material[i] as usize];
+        block.apply(&z[i * k..(i + 1) * k], yi);
+        let twin = twin[i] as usize;
+        if block.transmits() && twin != NO_TWIN as usize {
+            block.apply_transmit(&z[twin * k..(twin + 1) * k], yi);
+        }
+    });
 }
 
 /// The factored operator: `K x = B (G x)`, never forming the product.

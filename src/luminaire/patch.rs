@@ -104,8 +104,7 @@ impl Onto<'_> {
         }
         let (visibility, face) = (self.visibility, self.patch.face);
         let sees = |x: DVec3| visibility.visible(s, x, [NO_FACE, face]);
-        let mut rays = 0;
-        rays += cut_along_shadows(piece, depth, &sees, &mut |part, seen| {
+        let rays = cut_along_shadows(piece, depth, &sees, &mut |part, seen| {
             let w = (part.centroid() - s).normalize();
             self.add(-w, source.intensity(w) * part.solid_angle(s) * seen);
         });

@@ -38,6 +38,21 @@ pub struct Job {
     pub seed: u64,
 }
 
+impl Default for Job {
+    /// The case's own method with the default stopping rule, no extras.
+    fn default() -> Job {
+        Job {
+            methods: Vec::new(),
+            params: SolveParams::default(),
+            orders: None,
+            norms: false,
+            basis: None,
+            photons: None,
+            seed: 1,
+        }
+    }
+}
+
 /// Why a solve gave no field.
 #[derive(Debug, Error)]
 pub enum StudyError {

@@ -12,6 +12,7 @@ use super::node::{Kind, NONE};
 use super::push::push_rows;
 use super::tree::Tree;
 use crate::directions::DirectionSet;
+use crate::kernel::operator::apply_blocks;
 use crate::material::Block;
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -127,15 +128,7 @@ impl Operator {
         let mut s = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
         let Scratch { mean, gathered, arriving } = &mut *s;
         self.transport(x, mean, gathered, arriving);
-        let k = self.k;
-        y.par_chunks_mut(k).enumerate().for_each(|(l, yl)| {
-            let block = &self.blocks[self.leaf_block[l] as usize];
-            block.apply(&arriving[l * k..(l + 1) * k], yl);
-            let twin = self.leaf_twin[l] as usize;
-            if block.transmits() && twin != NONE as usize {
-                block.apply_transmit(&arriving[twin * k..(twin + 1) * k], yl);
-            }
-        });
+        apply_blocks(&self.blocks, &self.leaf_block, &self.leaf_twin, self.k, arriving, y);
     }
 
     /// `z = G x`: the light arriving at every leaf and cell (as `Kernel::apply_transport`;
