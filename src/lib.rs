@@ -4,7 +4,7 @@
 //! the floors below it, and no two files import each other (`tests/layering/` reads
 //! `src/` and enforces both). From the bottom up:
 //!
-//! 1. vocabulary: [`directions`], [`geometry`], [`visibility`], [`random`]
+//! 1. vocabulary: [`directions`], [`geometry`], [`visibility`], [`random`], [`progress`]
 //! 2. physics: [`material`], [`photometry`], [`transfer`], [`luminaire`]
 //! 3. kernel: [`kernel`]
 //! 4. solve: [`solve`], [`basis`]
@@ -26,6 +26,7 @@ pub mod luminaire;
 pub mod material;
 pub mod model;
 pub mod photometry;
+pub mod progress;
 pub mod random;
 pub mod readout;
 pub mod render;

@@ -63,7 +63,7 @@ fn kernel_applications_and_ray_queries_do_not_allocate() {
     let scene = Scene::load(std::path::Path::new("cases/glossy-cornell.toml")).unwrap();
     let options =
         ModelOptions { patch_size: 0.15, directions: DirectionSet::hemisphere(16), ..ModelOptions::of(&scene) };
-    let model = Model::build(&scene, &options, &|_| {}, &|_| {}).unwrap();
+    let model = Model::build(&scene, &options, &ugo::progress::Silent).unwrap();
     let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build().unwrap();
     let n = model.l0.len();
     let x: Vec<f64> = (0..n).map(|i| 1.0 + (i % 7) as f64).collect();

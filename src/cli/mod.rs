@@ -10,12 +10,12 @@ pub mod solve;
 pub mod trace;
 
 use anyhow::{Result, bail};
-use options::Discretize;
+use options::{AssemblyArg, Discretize};
 use std::path::Path;
 use ugo::luminaire::{Light, Source};
 use ugo::model::ModelOptions;
 use ugo::photometry::Distribution;
-use ugo::scene::Scene;
+use ugo::scene::{Assembly, Scene};
 
 /// Loads a case and applies the command-line overrides: the discretization to the scene
 /// (the one place it is held), the memory limit and precision to the model options.
@@ -30,6 +30,7 @@ pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
     if let Some(directions) = d.directions {
         scene.discretization.directions = directions;
     }
+    scene.discretization.assembly = assembly(scene.discretization.assembly, d)?;
     let mut options = ModelOptions::of(&scene);
     if let Some(precision) = d.precision {
         options.precision = precision.into();
@@ -41,6 +42,30 @@ pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
         options.memory_limit = (gib * (1u64 << 30) as f64) as u64;
     }
     Ok((scene, options))
+}
+
+/// The case's assembly with `--assembly`, `--link-tolerance` and `--smallest` applied.
+fn assembly(case: Assembly, d: &Discretize) -> Result<Assembly> {
+    let base = match (d.assembly, case) {
+        (Some(AssemblyArg::Explicit), _) => Assembly::Explicit,
+        (Some(AssemblyArg::Hierarchical), Assembly::Explicit) => Assembly::hierarchical(),
+        (_, case) => case,
+    };
+    let Assembly::Hierarchical { tolerance, smallest } = base else {
+        if d.link_tolerance.is_some() || d.smallest.is_some() {
+            bail!("--link-tolerance and --smallest apply only to the hierarchical kernel (--assembly hierarchical)");
+        }
+        return Ok(base);
+    };
+    let positive = |value: Option<f64>, default: f64, flag: &str| match value {
+        Some(v) if !(v.is_finite() && v > 0.0) => bail!("{flag} must be a positive number, got {v}"),
+        Some(v) => Ok(v),
+        None => Ok(default),
+    };
+    Ok(Assembly::Hierarchical {
+        tolerance: positive(d.link_tolerance, tolerance, "--link-tolerance")?,
+        smallest: positive(d.smallest, smallest, "--smallest (m)")?,
+    })
 }
 
 /// One line about a luminaire: its distribution, the flux integrated from it and the
@@ -95,7 +120,7 @@ impl Bars {
     }
 }
 
-impl ugo::study::Progress for Bars {
+impl ugo::progress::Progress for Bars {
     fn begin(&self, what: &str, total: u64) {
         *self.current.lock().unwrap_or_else(|e| e.into_inner()) = Some(bar(total, what));
     }

@@ -24,6 +24,26 @@ pub struct Discretize {
     /// (f32 values and u32 indices, 8 bytes; products still accumulate in f64).
     #[arg(long, value_enum)]
     pub precision: Option<PrecisionArg>,
+    /// How the kernel is built: `explicit` (every facing pair of patches) or `hierarchical`
+    /// (element trees under patches of `--patch-size`, links where the oracle accepts
+    /// them; docs/hierarchy.md). Default: the case's `method`.
+    #[arg(long, value_enum)]
+    pub assembly: Option<AssemblyArg>,
+    /// Error allowed per link of the hierarchical kernel, relative to the mean reflected
+    /// luminance (default: the case's `tolerance`, else 1e-2).
+    #[arg(long)]
+    pub link_tolerance: Option<f64>,
+    /// Smallest element edge of the hierarchical kernel, m (default: the case's `smallest`,
+    /// else 0.05).
+    #[arg(long)]
+    pub smallest: Option<f64>,
+}
+
+/// `--assembly`.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AssemblyArg {
+    Explicit,
+    Hierarchical,
 }
 
 /// Options that override the case file's `[solver]` stopping rule.

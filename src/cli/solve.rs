@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 use ugo::io::{
     BasisRecord, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
 };
+use ugo::model::HierarchyRecord;
 use ugo::readout::grid::GridReading;
 use ugo::solve::norms::Norms;
 use ugo::solve::orders::OrderRecord;
@@ -95,6 +96,22 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     Ok(())
 }
 
+/// The hierarchical kernel's line of the summary and one line per refinement pass.
+fn print_hierarchy(assembly: f64, rays: usize, h: &HierarchyRecord) {
+    let leaves = h.census.leaf_level.len();
+    let links: usize = h.census.element_links.iter().sum::<usize>() + h.census.cluster_links;
+    println!(
+        "  assembly           {assembly:>12.3} s   (hierarchical, tolerance {:.0e}, smallest {} m: {} roots → {leaves} leaves, {links} links ({} with clusters, {} partly visible), {rays} occlusion rays)",
+        h.refinement.tolerance, h.refinement.smallest, h.roots, h.census.cluster_links, h.census.partial
+    );
+    for p in &h.history {
+        println!(
+            "    pass {}            {:>12.3} s   ({} links refined, {} leaves split along the luminaires' light; {} links, {} leaves, ε {:.2e} cd/m²; solve {:.3} s)",
+            p.pass, p.seconds, p.refined, p.source_splits, p.links, p.leaves, p.epsilon, p.solve_seconds
+        );
+    }
+}
+
 fn summary(s: &Solution, output: &Path) {
     let m = s.model;
     let st = &m.stats;
@@ -105,15 +122,19 @@ fn summary(s: &Solution, output: &Path) {
     println!("  unknowns           {:>12}", g.rows());
     println!("  non-zeros of G     {:>12}   ({}, {})", g.nnz(), bytes(g.bytes()), g.precision().name());
     let assembly = st.mesh_seconds + st.bvh_seconds + st.kernel_seconds + st.light_seconds;
-    println!(
-        "  assembly           {assembly:>12.3} s   ({} pairs, {} occlusion rays, balanced by {}: correction {:.1e}, {} sweeps, row error {:.0e})",
-        st.pairs,
-        st.rays,
-        if st.balance.by_cell { "cell" } else { "patch" },
-        st.balance.max_correction,
-        st.balance.iterations,
-        st.balance.residual
-    );
+    match (&st.balance, &m.hierarchy) {
+        (Some(b), _) => println!(
+            "  assembly           {assembly:>12.3} s   ({} pairs, {} occlusion rays, balanced by {}: correction {:.1e}, {} sweeps, row error {:.0e})",
+            st.pairs,
+            st.rays,
+            if b.by_cell { "cell" } else { "patch" },
+            b.max_correction,
+            b.iterations,
+            b.residual
+        ),
+        (None, Some(h)) => print_hierarchy(assembly, st.rays, h),
+        (None, None) => println!("  assembly           {assembly:>12.3} s   ({} occlusion rays)", st.rays),
+    }
     let i = s.info;
     println!(
         "  solve              {:>12.3} s   ({}, {} iterations, residual {:.2e})",

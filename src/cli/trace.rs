@@ -68,7 +68,7 @@ fn forward(
     }
     let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}-forward.h5")));
     let progress = bar(photons, "photons");
-    let estimate = trace_photons(&world, &options.directions, photons, &job.options, &|n| progress.inc(n));
+    let estimate = trace_photons(world, &options.directions, photons, &job.options, &|n| progress.inc(n));
     progress.finish_and_clear();
     let file = EstimateFile {
         scene,

@@ -130,6 +130,9 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
         write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
     }
     write_luminaires(&file.create_group("luminaires")?, s)?;
+    if let Some(h) = &s.model.hierarchy {
+        super::hierarchy_group::write_hierarchy(&file.create_group("hierarchy")?, h)?;
+    }
     write_attributes(&file, s)
 }
 
@@ -334,7 +337,7 @@ fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
         ("assembly_seconds", st.kernel_seconds),
         ("luminaire_seconds", st.light_seconds),
         ("solve_seconds", s.info.seconds),
-        ("balance_max_correction", st.balance.max_correction),
+        ("balance_max_correction", st.balance.map_or(0.0, |b| b.max_correction)),
         ("flux_emitted", s.energy.emitted),
         ("flux_absorbed", s.energy.absorbed),
         ("flux_escaped", s.energy.escaped),

@@ -8,6 +8,7 @@ mod estimate_file;
 mod exr_file;
 mod false_colour;
 mod hdf5_file;
+mod hierarchy_group;
 mod plot;
 mod png_file;
 mod read;

@@ -20,7 +20,7 @@ use sprs::CsMat;
 
 /// The assembled transport matrix and what it cost.
 #[derive(Debug, Clone)]
-pub struct Transport {
+pub struct Assembled {
     /// `G`, `N·K × N·K`.
     pub g: CsMat<f64>,
     pub balance: BalanceReport,
@@ -58,7 +58,7 @@ pub fn assemble(
     directions: &DirectionSet,
     quadrature: &Quadrature,
     progress: &(dyn Fn(u64) + Sync),
-) -> Transport {
+) -> Assembled {
     let n = mesh.len();
     let k = directions.len();
     let points: Vec<[glam::DVec3; POINTS]> = mesh.patches.par_iter().map(sample_points).collect();
@@ -85,7 +85,7 @@ pub fn assemble(
             *v *= d[r] * d[c] / areas[r / k];
         }
     }
-    Transport {
+    Assembled {
         g,
         balance: report,
         pairs: work.iter().map(|w| w.visited).sum(),

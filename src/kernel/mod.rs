@@ -5,13 +5,17 @@
 
 mod assembly;
 mod balance;
+mod blocks;
 pub mod hierarchy;
 mod matrix;
 pub mod memory;
 mod operator;
+mod transport;
 
-pub use assembly::{Transport, assemble, facing};
+pub use assembly::{Assembled, assemble, facing};
 pub use balance::BalanceReport;
+pub use blocks::apply_blocks;
 pub use matrix::{Precision, TransportMatrix, spmv};
 pub use memory::{Estimate, Footprint, TooLarge};
 pub use operator::{Explicit, Factored, Kernel};
+pub use transport::Transport;

@@ -4,18 +4,17 @@
 //! Solvers see both through `crate::solve::LinOp`; the factored form never builds the
 //! product, the explicit one is there for norms, direct solves and export.
 
-use super::TransportMatrix;
+use super::blocks::apply_blocks;
 use super::memory::{BYTES_PER_NONZERO, Footprint, TooLarge};
+use super::transport::Transport;
 use crate::directions::DirectionSet;
 use crate::geometry::NO_TWIN;
 use crate::material::Block;
-use rayon::prelude::*;
 use sprs::{CsMat, TriMat};
 
 /// `K = B·G`: transport `G` over `(patch, cell)` unknowns and per-material blocks `B`.
-#[derive(Debug, Clone)]
 pub struct Kernel {
-    pub g: TransportMatrix,
+    pub g: Transport,
     pub directions: DirectionSet,
     /// One block per material.
     pub blocks: Vec<Block>,
@@ -98,20 +97,6 @@ impl Kernel {
         }
         Ok(tri.to_csr())
     }
-}
-
-/// `y = B z` over patches of `k` cells each: patch `i` reflects what arrives at it through
-/// `blocks[material[i]]` and, when that block transmits, what arrives at `twin[i]`
-/// ([`NO_TWIN`] for none). Shared by the explicit kernel and the hierarchy's leaves.
-pub(super) fn apply_blocks(blocks: &[Block], material: &[u32], twin: &[u32], k: usize, z: &[f64], y: &mut [f64]) {
-    y.par_chunks_mut(k).enumerate().for_each(|(i, yi)| {
-        let block = &blocks[material[i] as usize];
-        block.apply(&z[i * k..(i + 1) * k], yi);
-        let twin = twin[i] as usize;
-        if block.transmits() && twin != NO_TWIN as usize {
-            block.apply_transmit(&z[twin * k..(twin + 1) * k], yi);
-        }
-    });
 }
 
 /// The factored operator: `K x = B (G x)`, never forming the product.

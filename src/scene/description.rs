@@ -34,10 +34,42 @@ pub struct Scene {
 /// `[discretization]`: how finely surfaces are meshed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Discretization {
-    /// Target edge length of the patches, m.
+    /// Target edge length of the patches, m; for the hierarchical kernel, of its roots
+    /// (the largest elements).
     pub patch_size: f64,
     /// Direction set (default one cell: radiosity).
     pub directions: Scheme,
+    /// How the kernel is built (`method`, default explicit).
+    pub assembly: Assembly,
+}
+
+/// `[discretization] method`: how the kernel `K` is built.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Assembly {
+    /// Every facing pair of patches gets its entry (`design.md` §3).
+    Explicit,
+    /// Element trees over patches of `patch_size`, links where the oracle accepts them
+    /// (`design.md` §3b): `tolerance` is the error allowed per link relative to the mean
+    /// reflected luminance, `smallest` the smallest element edge, m.
+    Hierarchical { tolerance: f64, smallest: f64 },
+}
+
+impl Assembly {
+    /// The names of `method`.
+    pub const NAMES: &'static str = "\"explicit\" or \"hierarchical\"";
+
+    /// The hierarchical kernel with its default tolerance and smallest element.
+    pub fn hierarchical() -> Assembly {
+        let defaults = crate::kernel::hierarchy::Options::default();
+        Assembly::Hierarchical { tolerance: defaults.tolerance, smallest: defaults.smallest }
+    }
+
+    pub fn name(&self) -> &'static str {
+        match self {
+            Assembly::Explicit => "explicit",
+            Assembly::Hierarchical { .. } => "hierarchical",
+        }
+    }
 }
 
 /// `[solver]`: the method and its stopping rule.

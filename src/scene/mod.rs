@@ -15,7 +15,7 @@ mod schema;
 mod surface;
 mod validate;
 
-pub use description::{Camera, Discretization, Material, Probe, Scene, SolverSettings};
+pub use description::{Assembly, Camera, Discretization, Material, Probe, Scene, SolverSettings};
 pub use error::SceneError;
 pub use files::{CaseFile, CaseFiles};
 pub use grid::Grid;

@@ -43,6 +43,9 @@ pub struct RawSceneInfo {
 pub struct RawDiscretization {
     pub patch_size: f64,
     pub directions: Option<RawDirections>,
+    pub method: Option<String>,
+    pub tolerance: Option<f64>,
+    pub smallest: Option<f64>,
 }
 
 /// `directions = 64` or `directions = "klems"`.

@@ -7,7 +7,7 @@
 //! (`[[surface]] "floor" (#3)`) and the key.
 
 use super::check::{Context, REL_TOL, show, unique_names};
-use super::description::{Camera, Discretization, Probe, Scene, SolverSettings};
+use super::description::{Assembly, Camera, Discretization, Probe, Scene, SolverSettings};
 use super::error::SceneError;
 use super::files::CaseFiles;
 use super::grid::grids;
@@ -67,14 +67,41 @@ fn discretization(path: &Path, raw: Option<RawDiscretization>) -> Result<Discret
     let at = Context::new(path, "[discretization]");
     let raw = raw.ok_or_else(|| at.error("", "the table [discretization] is required"))?;
     let patch_size = at.positive("patch_size", raw.patch_size)?;
-    let name = match raw.directions {
+    let name = match &raw.directions {
         None => "1".to_string(),
         Some(RawDirections::Count(k)) => k.to_string(),
-        Some(RawDirections::Name(name)) => name,
+        Some(RawDirections::Name(name)) => name.clone(),
     };
     let directions = Scheme::parse(&name)
         .ok_or_else(|| at.error("directions", format!("unknown direction set \"{name}\"; give {}", Scheme::NAMES)))?;
-    Ok(Discretization { patch_size, directions })
+    let assembly = assembly(&at, &raw, patch_size)?;
+    Ok(Discretization { patch_size, directions, assembly })
+}
+
+/// `method`, and the hierarchy's `tolerance` and `smallest` (refused with the explicit one).
+fn assembly(at: &Context, raw: &RawDiscretization, patch_size: f64) -> Result<Assembly, SceneError> {
+    let method = raw.method.as_deref().unwrap_or("explicit");
+    let defaults = crate::kernel::hierarchy::Options::default();
+    match method {
+        "explicit" => {
+            for (key, value) in [("tolerance", raw.tolerance), ("smallest", raw.smallest)] {
+                if value.is_some() {
+                    return Err(at.error(key, "applies only to method = \"hierarchical\""));
+                }
+            }
+            Ok(Assembly::Explicit)
+        }
+        "hierarchical" => {
+            let tolerance = at.positive("tolerance", raw.tolerance.unwrap_or(defaults.tolerance))?;
+            let smallest = at.positive("smallest", raw.smallest.unwrap_or(defaults.smallest))?;
+            if smallest > patch_size {
+                let message = format!("the smallest element ({smallest} m) exceeds patch_size ({patch_size} m)");
+                return Err(at.error("smallest", message));
+            }
+            Ok(Assembly::Hierarchical { tolerance, smallest })
+        }
+        other => Err(at.error("method", format!("unknown method \"{other}\"; give {}", Assembly::NAMES))),
+    }
 }
 
 fn solver(path: &Path, raw: Option<RawSolver>) -> Result<SolverSettings, SceneError> {

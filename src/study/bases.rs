@@ -3,11 +3,11 @@
 //! SVD), each with its error against the full angular solution, its unknowns, the memory
 //! of its assembled operator, its time and its residual in the full system.
 
-use super::progress::Progress;
 use super::solve::StudyError;
 use crate::basis::{Basis, Factorization, Reduced};
 use crate::kernel::Factored;
 use crate::model::{Model, ModelOptions};
+use crate::progress::Progress;
 use crate::scene::Scene;
 use crate::solve::{Method, SolveParams, System, relative_residual, solve};
 use std::time::Instant;
@@ -44,10 +44,7 @@ pub fn compare_bases(
     progress: &dyn Progress,
 ) -> Result<BasisStudy, StudyError> {
     let params = SolveParams { memory_limit: options.memory_limit, ..params };
-    let model =
-        Model::build(scene, options, &|total| progress.begin("assembly", total), &|done| progress.advance(done));
-    progress.end();
-    let model = model?;
+    let model = Model::build(scene, options, progress)?;
     let factored = Factored::new(&model.kernel);
     let start = Instant::now();
     let system = System::of(&model.kernel, &factored, None, &[], &model.l0);

@@ -4,11 +4,9 @@
 //! parses its arguments, calls these and prints what they return.
 
 mod bases;
-mod progress;
 mod solve;
 mod view;
 
 pub use bases::{BasisRow, BasisStudy, compare_bases};
-pub use progress::{Progress, Silent};
 pub use solve::{Job, MonteCarlo, Solved, StudyError, solve_case};
 pub use view::lit_scene;

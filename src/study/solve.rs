@@ -4,11 +4,11 @@
 //! illuminance, energy balance, probes, grids, reflection orders, norms and, on request,
 //! each run's agreement with a forward Monte Carlo estimate of the same discretization.
 
-use super::progress::Progress;
 use crate::basis::{Basis, BasisError, Factorization, Reduced};
 use crate::io::Run;
 use crate::kernel::{Explicit, Factored, TooLarge};
-use crate::model::{Model, ModelOptions};
+use crate::model::{Model, ModelError, ModelOptions};
+use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
 use crate::readout::grid::{GridReading, read_grids};
@@ -59,6 +59,8 @@ pub enum StudyError {
     #[error(transparent)]
     TooLarge(#[from] TooLarge),
     #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
     Basis(#[from] BasisError),
     #[error(transparent)]
     Solve(#[from] SolveError),
@@ -107,10 +109,7 @@ pub fn solve_case(
     progress: &dyn Progress,
 ) -> Result<Solved, StudyError> {
     let methods = if job.methods.is_empty() { vec![scene.solver.method] } else { job.methods.clone() };
-    let model =
-        Model::build(scene, options, &|total| progress.begin("assembly", total), &|done| progress.advance(done));
-    progress.end();
-    let model = model?;
+    let model = Model::build(scene, options, progress)?;
     let factors =
         job.basis.map(|b| Factorization::new(b, &model.kernel.blocks, &model.kernel.directions)).transpose()?;
     let reduced = factors.as_ref().map(|f| Reduced::new(&model.kernel, f));

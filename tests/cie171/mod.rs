@@ -33,7 +33,7 @@ pub struct Solved {
 /// Loads `cases/cie171/<name>.toml` and solves it.
 pub fn solved(name: &str) -> Solved {
     let scene = Scene::load(&Path::new("cases/cie171").join(format!("{name}.toml"))).unwrap_or_else(|e| panic!("{e}"));
-    let model = Model::build(&scene, &ModelOptions::of(&scene), &|_| {}, &|_| {}).expect("fits in memory");
+    let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).expect("fits in memory");
     let x = solve_model(&model, scene.solver.method);
     let probes = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()));
     Solved { scene, model, x, probes }

@@ -22,7 +22,7 @@ fn a_closed_box_closes_on_every_leaf() {
 fn white_furnace_is_five_on_every_leaf_with_every_solver() {
     let mut h = hierarchy(&furnace(1.0, 0.8, 1.0, 1.0), 1.0, DirectionSet::single(), options(1e-2, 0.1));
     let (x, op) = solved(&mut h, Method::Gmres { restart: 30 });
-    let l0 = h.source();
+    let l0 = h.emission();
     for (method, x) in [
         (Method::Gmres { restart: 30 }, x),
         (Method::Neumann, solver(Method::Neumann)(&op, &l0, 1.0).unwrap()),

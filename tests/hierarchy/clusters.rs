@@ -8,7 +8,7 @@ use glam::DVec3;
 use ugo::directions::DirectionSet;
 use ugo::geometry::{Emission, Shape, Surface};
 use ugo::kernel::hierarchy::Hierarchy;
-use ugo::kernel::{Kernel, Precision, TransportMatrix, assemble};
+use ugo::kernel::{Kernel, Precision, Transport, TransportMatrix, assemble};
 use ugo::scene::Scene;
 use ugo::transfer::form_factor::Quadrature;
 use ugo::visibility::Visibility;
@@ -49,7 +49,7 @@ fn cluster_links_agree_with_the_explicit_kernel() {
     let directions = DirectionSet::single();
     let t = assemble(&leaves, &Visibility::build(&leaves), &directions, &Quadrature::default(), &|_| {});
     let kernel = Kernel {
-        g: TransportMatrix::new(t.g, Precision::Double),
+        g: Transport::Explicit(TransportMatrix::new(t.g, Precision::Double)),
         directions,
         blocks: Vec::new(),
         patch_material: Vec::new(),

@@ -4,7 +4,7 @@
 use super::{box_with_block, hierarchy, options, relative_difference};
 use crate::support::furnace;
 use ugo::directions::DirectionSet;
-use ugo::kernel::{Factored, Kernel, Precision, TransportMatrix, assemble};
+use ugo::kernel::{Factored, Kernel, Precision, Transport, TransportMatrix, assemble};
 use ugo::scene::Scene;
 use ugo::transfer::form_factor::Quadrature;
 use ugo::visibility::Visibility;
@@ -16,7 +16,7 @@ fn compare(scene: Scene, directions: DirectionSet, limit: f64) {
     let visibility = Visibility::build(&leaves);
     let t = assemble(&leaves, &visibility, &directions, &Quadrature::default(), &|_| {});
     let kernel = Kernel {
-        g: TransportMatrix::new(t.g, Precision::Double),
+        g: Transport::Explicit(TransportMatrix::new(t.g, Precision::Double)),
         directions: directions.clone(),
         blocks: blocks(&scene, &directions),
         patch_material: leaves.patches.iter().map(|p| p.material).collect(),
@@ -40,7 +40,7 @@ fn compare(scene: Scene, directions: DirectionSet, limit: f64) {
 }
 
 fn blocks(scene: &Scene, directions: &DirectionSet) -> Vec<ugo::material::Block> {
-    scene.materials.iter().map(|m| m.model.block(&directions)).collect()
+    scene.materials.iter().map(|m| m.model.block(directions)).collect()
 }
 
 #[test]

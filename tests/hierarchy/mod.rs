@@ -6,13 +6,14 @@ mod clusters;
 mod coverage;
 mod explicit;
 mod growth;
+mod model;
 mod plates;
 
 use glam::DVec3;
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
 use ugo::geometry::{Emission, Shape};
-use ugo::kernel::hierarchy::{Hierarchy, Operator, Options, iterate};
+use ugo::kernel::hierarchy::{Hierarchy, Iterated, Operator, Options, iterate};
 use ugo::scene::Scene;
 use ugo::solve::{Method, SolveError, SolveParams, System, solve};
 
@@ -22,7 +23,9 @@ use crate::support::{furnace, lambert, surface};
 pub fn hierarchy(scene: &Scene, root_size: f64, directions: DirectionSet, options: Options) -> Hierarchy {
     let roots = Mesh::build(&scene.surfaces, root_size);
     let blocks = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
-    Hierarchy::new(&roots, directions, blocks, options)
+    let k = directions.len();
+    let l0: Vec<f64> = roots.emission.iter().flat_map(|&e| std::iter::repeat_n(e, k)).collect();
+    Hierarchy::new(&roots, directions, blocks, options, &l0)
 }
 
 /// Options with `tolerance` and `smallest` (m), the rest default.
@@ -41,7 +44,9 @@ pub fn solver(method: Method) -> impl FnMut(&Operator, &[f64], f64) -> Result<Ve
 
 /// Solves and refines in passes with `method`.
 pub fn solved(h: &mut Hierarchy, method: Method) -> (Vec<f64>, Operator) {
-    iterate(h, &mut solver(method)).expect("the solve converges")
+    let Iterated { x, operator, .. } =
+        iterate(h, &mut |h| Ok(h.emission()), &mut solver(method)).expect("the solve converges");
+    (x, operator)
 }
 
 /// A closed unit cube seen from inside (reflectance `rho`, every face emitting 1 cd/m²)

@@ -24,7 +24,7 @@ fn receiver(rho: f64, tolerance: f64) -> (f64, f64, usize) {
     let h = hierarchy(&scene, 1.0, DirectionSet::single(), options(tolerance, 0.05));
     let op = h.operator();
     let mesh = h.leaf_mesh();
-    let l0 = h.source();
+    let l0 = h.emission();
     let mut z = vec![0.0; l0.len()];
     op.arriving(&l0, &mut z);
     let (mut flux, mut area, mut worst, mut leaves) = (0.0, 0.0, 0.0f64, 0);

@@ -9,7 +9,7 @@ use ugo::scene::Scene;
 
 fn model(scene: &Scene, patch_size: f64, precision: Precision) -> Model {
     let options = ModelOptions { patch_size, precision, ..ModelOptions::of(scene) };
-    Model::build(scene, &options, &|_| {}, &|_| {}).unwrap()
+    Model::build(scene, &options, &ugo::progress::Silent).unwrap()
 }
 
 #[test]

@@ -14,7 +14,7 @@ use ugo::solve::{SolveParams, successive_approximation};
 #[test]
 fn receiver_illuminance_is_pi_l_f() {
     let scene = Scene::load(Path::new("cases/parallel-plates.toml")).unwrap();
-    let model = Model::build(&scene, &ModelOptions::of(&scene), &|_| {}, &|_| {}).unwrap();
+    let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).unwrap();
     let params = SolveParams { tolerance: 1e-10, max_iterations: 100, ..SolveParams::default() };
     let (x, _) = successive_approximation(&Factored::new(&model.kernel), &model.l0, &params, &mut |_, _| {}).unwrap();
     let mut gx = vec![0.0; x.len()];

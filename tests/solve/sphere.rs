@@ -11,7 +11,7 @@ use ugo::solve::{SolveParams, successive_approximation};
 #[test]
 fn indirect_illuminance_on_the_wall_is_uniform_and_as_predicted() {
     let scene = Scene::load(Path::new("cases/integrating-sphere.toml")).unwrap();
-    let model = Model::build(&scene, &ModelOptions::of(&scene), &|_| {}, &|_| {}).unwrap();
+    let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).unwrap();
     let params = SolveParams { tolerance: 1e-10, max_iterations: 1000, ..SolveParams::default() };
     let (x, _) = successive_approximation(&Factored::new(&model.kernel), &model.l0, &params, &mut |_, _| {}).unwrap();
     let (mut total, mut direct) = (vec![0.0; x.len()], vec![0.0; x.len()]);

@@ -24,7 +24,11 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         source: String::new(),
         name: "test".into(),
         description: String::new(),
-        discretization: Discretization { patch_size, directions: ugo::directions::Scheme::Cells(1) },
+        discretization: Discretization {
+            patch_size,
+            directions: ugo::directions::Scheme::Cells(1),
+            assembly: ugo::scene::Assembly::Explicit,
+        },
         solver: SolverSettings::default(),
         materials,
         surfaces,
@@ -47,13 +51,13 @@ pub fn furnace(side: f64, reflectance: f64, luminance: f64, patch_size: f64) -> 
 }
 
 pub fn build(scene: &Scene) -> Model {
-    Model::build(scene, &ModelOptions::of(scene), &|_| {}, &|_| {}).expect("model fits in memory")
+    Model::build(scene, &ModelOptions::of(scene), &ugo::progress::Silent).expect("model fits in memory")
 }
 
 /// The model of `scene` with another direction set.
 pub fn build_with(scene: &Scene, directions: DirectionSet) -> Model {
     let options = ModelOptions { directions, ..ModelOptions::of(scene) };
-    Model::build(scene, &options, &|_| {}, &|_| {}).expect("model fits in memory")
+    Model::build(scene, &options, &ugo::progress::Silent).expect("model fits in memory")
 }
 
 /// A closed cube of `material`, every face emitting `luminance`.

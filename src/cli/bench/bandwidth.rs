@@ -1,11 +1,11 @@
 //! Memory-bound parts of `ugo bench`: a STREAM-like triad (`a = b + s·c`, 24 bytes per
 //! element) giving the machine's attainable bandwidth, and the sparse products of the
 //! solver measured in bytes of matrix traffic per second (values, column indices and row
-//! pointers: `TransportMatrix::bytes`) against it.
+//! pointers: `Transport::bytes`) against it.
 
 use rayon::prelude::*;
 use std::time::Instant;
-use ugo::kernel::TransportMatrix;
+use ugo::kernel::Transport;
 use ugo::solve::LinOp;
 
 /// Elements per triad array (3 × 256 MiB: far beyond any cache).
@@ -37,7 +37,7 @@ pub fn triad() -> f64 {
 }
 
 /// Seconds per `y = G x` (best of 10).
-pub fn spmv_seconds(g: &TransportMatrix) -> f64 {
+pub fn spmv_seconds(g: &Transport) -> f64 {
     let x = vec![1.0; g.rows()];
     let mut y = vec![0.0; g.rows()];
     best(10, || g.apply(&x, &mut y))

@@ -180,10 +180,12 @@ fn export_peers(
     mesh: &ugo::geometry::Mesh,
     visibility: &Visibility,
     segments: &[layouts::Segment],
-    g: &ugo::kernel::TransportMatrix,
+    g: &ugo::kernel::Transport,
     meta: serde_json::Value,
 ) -> Result<()> {
-    let g = g.as_double().context("--export needs the matrix in double precision (--precision f64)")?;
+    let g = g
+        .as_double()
+        .context("--export needs the explicit kernel (`--assembly explicit`) in double precision (--precision f64)")?;
     export::export(dir, mesh, visibility, segments, g, meta)?;
     println!("  exported              {} (run docs/peers/peers.py {})", dir.display(), dir.display());
     Ok(())

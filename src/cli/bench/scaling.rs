@@ -7,6 +7,7 @@ use serde::Serialize;
 use std::time::Instant;
 use ugo::kernel::Factored;
 use ugo::model::{Model, ModelOptions};
+use ugo::progress::Silent;
 use ugo::scene::Scene;
 use ugo::solve::{SolveParams, successive_approximation};
 
@@ -31,7 +32,7 @@ pub fn step(scene: &Scene, options: &ModelOptions, patch_size: f64) -> Result<(S
     let reset = reset_peak();
     let options = ModelOptions { patch_size, ..options.clone() };
     let t = Instant::now();
-    let model = Model::build(scene, &options, &|_| {}, &|_| {})?;
+    let model = Model::build(scene, &options, &Silent)?;
     let assembly_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let params = SolveParams { tolerance: 1e-8, max_iterations: 10_000, ..SolveParams::default() };
@@ -66,7 +67,7 @@ pub fn assembly_with_threads(scene: &Scene, options: &ModelOptions, threads: usi
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build()?;
     pool.install(|| {
         let t = Instant::now();
-        Model::build(scene, options, &|_| {}, &|_| {})?;
+        Model::build(scene, options, &Silent)?;
         Ok(t.elapsed().as_secs_f64())
     })
 }

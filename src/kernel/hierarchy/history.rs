@@ -14,6 +14,9 @@ pub struct Pass {
     pub leaves: usize,
     /// Nodes of the hierarchy (clusters and elements) after the pass.
     pub nodes: usize,
+    /// Leaf elements split after the pass where the luminaires' light varies over them
+    /// ([`super::Hierarchy::split_leaves`]).
+    pub source_splits: usize,
     /// Occlusion rays traced in the pass.
     pub rays: usize,
     /// The error allowed per link in the pass, cd/m².

@@ -12,10 +12,11 @@ use super::oracle::Oracle;
 use super::refine::{Settings, children_pairs, refine, split_node};
 use super::tree::Tree;
 use crate::directions::DirectionSet;
-use crate::geometry::{Mesh, NO_TWIN};
+use crate::geometry::{Mesh, NO_TWIN, Patch};
 use crate::material::Block;
 use crate::transfer::form_factor::Quadrature;
 use crate::visibility::Visibility;
+use rayon::prelude::*;
 use std::time::Instant;
 
 /// How the hierarchy refines.
@@ -60,24 +61,64 @@ const AMBIENT_ALBEDO: f64 = 0.95;
 
 impl Hierarchy {
     /// The roots are the patches of `roots` (e.g. `Mesh::build(scene, root_size)`), with
-    /// one block per material; links start from the top cluster's self-link.
-    pub fn new(roots: &Mesh, directions: DirectionSet, blocks: Vec<Block>, options: Options) -> Hierarchy {
+    /// one block per material; `l0` is the source term on the roots (`x[root·K + k]`,
+    /// cd/m²), which with the ambient term of its interreflections is the first guess of
+    /// the field. Links start from the top cluster's self-link.
+    pub fn new(roots: &Mesh, directions: DirectionSet, blocks: Vec<Block>, options: Options, l0: &[f64]) -> Hierarchy {
         let start = Instant::now();
         let albedo: Vec<f64> = blocks.iter().map(|b| largest_albedo(b, &directions)).collect();
         let tree = Tree::new(roots, &albedo);
-        let (guess, ambient) = first_guess(&tree);
+        let share = cell_shares(&directions);
+        let (guess, ambient) = first_guess(&tree, l0, &share);
         let oracle = Oracle { epsilon: options.tolerance * ambient, smallest: options.smallest };
         let visibility = Visibility::build(roots);
         let mut h =
             Hierarchy { tree, links: Vec::new(), visibility, directions, blocks, options, oracle, history: Vec::new() };
-        let k = h.directions.len();
-        let x: Vec<f64> = guess.iter().flat_map(|&l| std::iter::repeat_n(l, k)).collect();
-        let mut brightness = h.brightness(&h.tree.leaves(), &x);
+        let roots: Vec<u32> = (0..roots.len() as u32).collect();
+        let mut brightness = h.brightness(&roots, &guess);
         let top = h.tree.top();
         let candidates = if top == NONE { Vec::new() } else { vec![(top, top)] };
         let rays = h.refine_candidates(&mut brightness, candidates);
         h.record(1, rays, start);
         h
+    }
+
+    /// Splits leaf elements, down to the smallest element size, while
+    /// `varies(visibility, element, albedo, ε)` says that the light they receive from outside the links
+    /// (the luminaires') changes over them by more than the error allowed (`ε`, cd/m²):
+    /// their shadow boundaries. Links stay where they are (a split element is still covered
+    /// by its ancestors' links). Returns the number of elements split.
+    pub fn split_leaves(&mut self, varies: &(dyn Fn(&Visibility, &Patch, f64, f64) -> bool + Sync)) -> usize {
+        let (smallest, epsilon) = (self.options.smallest, self.oracle.epsilon);
+        let mut todo = self.tree.leaves();
+        let mut splits = 0;
+        while !todo.is_empty() {
+            let (tree, visibility) = (&self.tree, &self.visibility);
+            let chosen: Vec<u32> = todo
+                .par_iter()
+                .copied()
+                .filter(|&id| {
+                    let node = tree.node(id);
+                    tree.can_split(id, smallest)
+                        && node.patch().is_some_and(|p| varies(visibility, p, node.albedo, epsilon))
+                })
+                .collect();
+            todo.clear();
+            for id in chosen {
+                if !self.tree.node(id).is_leaf() {
+                    continue; // the twin of an element split just before
+                }
+                self.tree.split(id);
+                splits += 1;
+                todo.extend_from_slice(self.tree.children(id));
+            }
+        }
+        if let Some(last) = self.history.last_mut() {
+            last.source_splits += splits;
+            last.leaves = self.tree.leaves().len();
+            last.nodes = self.tree.len();
+        }
+        splits
     }
 
     /// One more pass with the field `x` of the current leaves (the order of
@@ -128,7 +169,7 @@ impl Hierarchy {
             rays,
             epsilon: self.oracle.epsilon,
             seconds: start.elapsed().as_secs_f64(),
-            solve_seconds: 0.0,
+            ..Pass::default()
         };
         self.history.push(pass);
     }
@@ -142,7 +183,7 @@ impl Hierarchy {
 
     /// Area-weighted mean over the leaves of `x − L0` (exitance-weighted over cells), cd/m².
     fn mean_reflected(&self, leaves: &[u32], x: &[f64]) -> f64 {
-        let share: Vec<f64> = self.directions.cells().iter().map(|c| c.projected / std::f64::consts::PI).collect();
+        let share = cell_shares(&self.directions);
         let (mut sum, mut area) = (0.0, 0.0);
         for (l, &id) in leaves.iter().enumerate() {
             let node = self.tree.node(id);
@@ -193,19 +234,19 @@ impl Hierarchy {
                 _ => NO_TWIN,
             };
             let face = if twin != NO_TWIN && (twin as usize) < l {
-                patches.get(twin as usize).map_or(faces, |p: &crate::geometry::Patch| p.face)
+                patches.get(twin as usize).map_or(faces, |p: &Patch| p.face)
             } else {
                 faces += 1;
                 faces - 1
             };
-            patches.push(crate::geometry::Patch { face, twin, ..patch });
+            patches.push(Patch { face, twin, ..patch });
         }
         let emission = leaves.iter().map(|&id| self.tree.node(id).emission).collect();
         Mesh { patches, emission, faces: faces as usize }
     }
 
-    /// `L0` of the leaves: their emission in every cell, cd/m².
-    pub fn source(&self) -> Vec<f64> {
+    /// The leaves' own emission in every cell, cd/m² (`L0` without luminaires).
+    pub fn emission(&self) -> Vec<f64> {
         let k = self.directions.len();
         self.tree.leaves().iter().flat_map(|&id| std::iter::repeat_n(self.tree.node(id).emission, k)).collect()
     }
@@ -249,27 +290,43 @@ impl Hierarchy {
     pub fn directions(&self) -> &DirectionSet {
         &self.directions
     }
+
+    /// The ray caster of the roots (the scene's surfaces as meshed for the roots).
+    pub fn visibility(&self) -> &Visibility {
+        &self.visibility
+    }
+
+    /// The error allowed per link in the last pass, cd/m².
+    pub fn epsilon(&self) -> f64 {
+        self.oracle.epsilon
+    }
 }
 
-/// The first guess of the field, per leaf of `tree` (its roots): each leaf's emission plus
-/// the ambient term of progressive radiosity (Cohen, Chen, Wallace & Greenberg 1988),
-/// `ρ̄ L̄_e / (1 − ρ̄)` with area-weighted means, so that the first pass links the unlit
-/// surfaces sensibly too; and the ambient term, cd/m².
-fn first_guess(tree: &Tree) -> (Vec<f64>, f64) {
-    let leaves = tree.leaves();
-    let (mut area, mut emitted, mut reflected) = (0.0, 0.0, 0.0);
-    for &id in &leaves {
-        let n = tree.node(id);
+/// The first guess of the field on the roots (node `i` is root `i`): the source term
+/// `l0` plus the ambient term of progressive radiosity (Cohen, Chen, Wallace & Greenberg
+/// 1988), `ρ̄ L̄0 / (1 − ρ̄)` with area-weighted means (`L̄0` weighted over cells by `share`),
+/// so that the first pass links the surfaces the sources do not reach sensibly too; and the
+/// ambient term, cd/m².
+fn first_guess(tree: &Tree, l0: &[f64], share: &[f64]) -> (Vec<f64>, f64) {
+    let k = share.len();
+    let (mut area, mut source, mut reflected) = (0.0, 0.0, 0.0);
+    for (i, cells) in l0.chunks(k).enumerate() {
+        let n = tree.node(i as u32);
         area += n.area;
-        emitted += n.area * n.emission;
+        source += n.area * cells.iter().zip(share).map(|(l, s)| l * s).sum::<f64>();
         reflected += n.area * n.albedo;
     }
     if area <= 0.0 {
-        return (vec![0.0; leaves.len()], 0.0);
+        return (l0.to_vec(), 0.0);
     }
     let albedo = (reflected / area).min(AMBIENT_ALBEDO);
-    let ambient = albedo * emitted / area / (1.0 - albedo);
-    (leaves.iter().map(|&id| tree.node(id).emission + ambient).collect(), ambient)
+    let ambient = albedo * source / area / (1.0 - albedo);
+    (l0.iter().map(|l| l + ambient).collect(), ambient)
+}
+
+/// `μ_d/π` of every cell (they sum to 1).
+fn cell_shares(directions: &DirectionSet) -> Vec<f64> {
+    directions.cells().iter().map(|c| c.projected / std::f64::consts::PI).collect()
 }
 
 /// The largest fraction of light arriving in any cell that `block` reflects or transmits.

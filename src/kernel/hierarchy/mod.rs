@@ -4,11 +4,14 @@
 //! applied on the leaves by pull, gather and push. The explicit kernel is the special case
 //! of all links between leaves.
 //!
-//! Use: `Hierarchy::new(&roots, directions, blocks, options)` links the roots (a coarse
-//! `Mesh`); `iterate(&mut h, solve)` solves and refines in passes; `h.operator()` is `K` on
-//! the leaves (a `LinOp`), `h.leaf_mesh()` and `h.source()` the leaves' mesh and `L0`.
+//! Use: `Hierarchy::new(&roots, directions, blocks, options, l0)` links the roots (a coarse
+//! `Mesh`, with its source term); `iterate(&mut h, source, solve)` solves and refines in
+//! passes; `h.operator()` is `K` on the leaves (a `LinOp`), `h.leaf_mesh()` the leaves'
+//! mesh, `h.split_leaves(varies)` splits them along the luminaires' shadows.
 
+mod census;
 mod cluster;
+mod expand;
 mod history;
 mod iterate;
 mod kernel;
@@ -21,8 +24,9 @@ mod refine;
 mod sight;
 mod tree;
 
+pub use census::Census;
 pub use history::Pass;
-pub use iterate::{Solver, iterate};
+pub use iterate::{Iterated, Solver, SourceTerm, iterate};
 pub use kernel::{Hierarchy, Options};
 pub use link::{ALL_CELLS, Link, Piece};
 pub use node::{Kind, NONE, Node};

@@ -12,7 +12,7 @@ use super::node::{Kind, NONE};
 use super::push::push_rows;
 use super::tree::Tree;
 use crate::directions::DirectionSet;
-use crate::kernel::operator::apply_blocks;
+use crate::kernel::blocks::apply_blocks;
 use crate::material::Block;
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -20,11 +20,11 @@ use std::sync::Mutex;
 
 /// One gathered piece: `z[receiver, d] += f · x̄[source, m]` (`d` = [`ALL_CELLS`]: `μ_d/π` each).
 #[derive(Debug, Clone, Copy)]
-struct Entry {
-    source: u32,
-    d: u16,
-    m: u16,
-    f: f64,
+pub(super) struct Entry {
+    pub(super) source: u32,
+    pub(super) d: u16,
+    pub(super) m: u16,
+    pub(super) f: f64,
 }
 
 /// Work arrays: `nodes × K` (means, gathered light) and `leaves × K` (arriving light).
@@ -36,25 +36,29 @@ struct Scratch {
 
 /// The hierarchical kernel `K = B·G` as an operator on `x[leaf·K + k]`.
 pub struct Operator {
-    k: usize,
+    pub(super) k: usize,
     /// Tree node of each leaf, in unknown order.
     leaves: Vec<u32>,
-    /// Depth-first position of each leaf.
-    leaf_position: Vec<u32>,
+    /// Depth-first position of each leaf (ascending).
+    pub(super) leaf_position: Vec<u32>,
     /// Each leaf's ancestors with links and its share of their light (CSR, `push.rs`).
-    push_row: Vec<usize>,
-    push: Vec<(u32, f64)>,
+    pub(super) push_row: Vec<usize>,
+    pub(super) push: Vec<(u32, f64)>,
     /// By depth-first position: parent position ([`NONE`] at the top), area share in the
     /// parent, and whether the parent is a cluster.
-    parent: Vec<u32>,
-    weight: Vec<f64>,
+    pub(super) parent: Vec<u32>,
+    pub(super) weight: Vec<f64>,
     into_cluster: Vec<bool>,
+    /// By depth-first position: one past the last position of its subtree, and whether it is
+    /// a cluster (for the expansion, `expand.rs`).
+    pub(super) subtree_end: Vec<u32>,
+    pub(super) cluster: Vec<bool>,
     /// Gathered pieces by receiver position (CSR).
-    row: Vec<usize>,
-    entries: Vec<Entry>,
+    pub(super) row: Vec<usize>,
+    pub(super) entries: Vec<Entry>,
     links: usize,
     /// `μ_d/π` of each cell.
-    share: Vec<f64>,
+    pub(super) share: Vec<f64>,
     blocks: Vec<Block>,
     leaf_block: Vec<u32>,
     /// The leaf on the other side of a two-sided leaf, or [`NONE`].
@@ -72,6 +76,8 @@ impl Operator {
             position[id as usize] = pos as u32;
         }
         let (parent, weight, into_cluster) = parents(tree, &order, &position);
+        let cluster = order.iter().map(|&id| tree.node(id).patch().is_none()).collect();
+        let subtree_end = subtree_ends(&parent);
         let leaves: Vec<u32> = order.iter().copied().filter(|&id| tree.node(id).is_leaf()).collect();
         let leaf_position = leaves.iter().map(|&id| position[id as usize]).collect();
         let (push_row, push) = push_rows(tree, links, &position, &leaves);
@@ -90,6 +96,8 @@ impl Operator {
             parent,
             weight,
             into_cluster,
+            subtree_end,
+            cluster,
             row,
             entries,
             links: links.len(),
@@ -121,6 +129,21 @@ impl Operator {
 
     pub fn cells(&self) -> usize {
         self.k
+    }
+
+    /// Gathered pieces of all links (one per link for `K = 1`, one per cell pair otherwise).
+    pub fn pieces(&self) -> usize {
+        self.entries.len()
+    }
+
+    /// Bytes held: the pieces, the push weights, the per-node arrays and the work arrays.
+    pub fn bytes(&self) -> f64 {
+        let nodes = self.parent.len() as f64;
+        let per_node = 4.0 + 8.0 + 1.0 + 8.0 + 2.0 * 8.0 * self.k as f64;
+        let per_leaf = 4.0 * 5.0 + 8.0 + 8.0 * self.k as f64;
+        (self.entries.len() * std::mem::size_of::<Entry>() + self.push.len() * 16) as f64
+            + nodes * per_node
+            + self.leaves.len() as f64 * per_leaf
     }
 
     /// `y = K x`.
@@ -212,6 +235,16 @@ fn parents(tree: &Tree, order: &[u32], position: &[u32]) -> (Vec<u32>, Vec<f64>,
         }
     }
     (parent, weight, into_cluster)
+}
+
+/// One past the last depth-first position of every position's subtree.
+fn subtree_ends(parent: &[u32]) -> Vec<u32> {
+    let mut end: Vec<u32> = (1..=parent.len() as u32).collect();
+    for pos in (0..parent.len()).rev().filter(|&pos| parent[pos] != NONE) {
+        let up = parent[pos] as usize;
+        end[up] = end[up].max(end[pos]);
+    }
+    end
 }
 
 /// The links' pieces as CSR rows by receiver position.

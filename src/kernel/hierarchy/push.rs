@@ -4,18 +4,20 @@
 //! corner sees the adjacent walls more). Each leaf takes the share `w_ia` of the light
 //! gathered at its ancestor `a`, from `S_ia = Σ_q v_aq F̄_{i→q}`: the exact point factors
 //! to `a`'s sources averaged over the leaf's four stratified points (a cluster source counts
-//! with its link factor; under a cluster ancestor with the leaf's own cosine towards it
-//! instead of the mean 1/4, so that an element facing away gets nothing, Sillion 1995).
+//! with its link factor; under a cluster ancestor with the leaf's own projected area towards it
+//! instead of the cluster's, so that an element facing away gets nothing, Sillion 1995).
 //!
 //! * Under an element, `w_ia = S_ia / S̄_a`, `S̄_a` the area-weighted mean of `S_ia` over the
 //!   leaves of `a`: the light `a` gathers with its accurate factors is distributed, never
 //!   created or lost. For a source field uniform over `a`'s sources every leaf gets its own
 //!   view, so the leaves of a closed scene close whatever the level of their links (the
 //!   first-order variation of the factors over `a` is corrected for any field).
-//! * Under a cluster, whose factors are isotropic estimates, `w_ia = S_ia / C_a` with
-//!   `C_a = Σ_q F_aq`: each leaf gets its own estimate `S_ia x̄_q`.
+//! * Under a cluster, whose factors are estimates, `w_ia = S_ia / C_a` with `C_a = Σ_q F_aq`:
+//!   each leaf gets its own estimate `S_ia x̄_q` (normalising by `S̄_a` instead was measured
+//!   worse: CIE 171 5.8 at ρ = 0.95 and tolerance 1e-2 absorbs 7.0 % too much flux, against
+//!   2.3 % this way).
 
-use super::link::Link;
+use super::link::{Link, axis};
 use super::node::NONE;
 use super::tree::Tree;
 use crate::geometry::Patch;
@@ -81,8 +83,14 @@ fn seen(tree: &Tree, links: &[Link], own: &[u32], a: u32, leaf: &Patch) -> f64 {
                     link.visible * f / points.len() as f64
                 }
                 None if under_cluster => {
-                    let u = (source.centre() - leaf.centroid).normalize_or_zero();
-                    4.0 * link.factor * leaf.normal.dot(u).max(0.0)
+                    // the link's factor with the leaf's own projected area for the cluster's
+                    let (u, _) = axis(tree.node(a), source);
+                    let projected = tree.node(a).projected(u);
+                    if projected > 0.0 {
+                        link.factor * tree.node(a).area * leaf.normal.dot(u).max(0.0) / projected
+                    } else {
+                        0.0
+                    }
                 }
                 None => link.factor,
             }

@@ -64,6 +64,7 @@ impl Tree {
         node.child_count = members.len() as u32;
         node.area = 0.0;
         node.emission = 0.0;
+        node.facing = [0.0; 6];
         for &m in members {
             let member = &mut self.nodes[m as usize];
             member.parent = id;
@@ -71,6 +72,7 @@ impl Tree {
             node.lo = node.lo.min(member.lo);
             node.hi = node.hi.max(member.hi);
             node.albedo = node.albedo.max(member.albedo);
+            node.facing.iter_mut().zip(member.facing).for_each(|(f, m)| *f += m);
         }
         self.children.extend_from_slice(members);
         self.nodes.push(node);

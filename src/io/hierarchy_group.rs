@@ -1,0 +1,42 @@
+//! `/hierarchy` of the HDF5 dump (`design.md` §3b, §8): what the hierarchical kernel made.
+//! `leaf_level` and `leaf_root` give each patch of `/mesh` (a leaf element) its level
+//! (0 = a root) and the root element it lies in; `element_links` counts links between two
+//! elements by the deeper level; `passes/` holds the refinement history, one entry per
+//! pass. Written only for a hierarchical model.
+
+use crate::kernel::hierarchy::Pass;
+use crate::model::HierarchyRecord;
+use ndarray::Array1;
+
+pub(super) fn write_hierarchy(g: &hdf5::Group, h: &HierarchyRecord) -> hdf5::Result<()> {
+    fn dataset<T: hdf5::H5Type>(g: &hdf5::Group, name: &str, data: &Array1<T>) -> hdf5::Result<()> {
+        g.new_dataset_builder().with_data(data).create(name).map(|_| ())
+    }
+    let c = &h.census;
+    dataset(g, "leaf_level", &Array1::from(c.leaf_level.clone()))?;
+    dataset(g, "leaf_root", &Array1::from(c.leaf_root.clone()))?;
+    dataset(g, "element_links", &Array1::from(c.element_links.iter().map(|&n| n as u64).collect::<Vec<_>>()))?;
+    let attributes = [
+        ("tolerance", h.refinement.tolerance),
+        ("smallest_m", h.refinement.smallest),
+        ("roots", h.roots as f64),
+        ("cluster_links", c.cluster_links as f64),
+        ("clear_links", c.clear as f64),
+        ("partial_links", c.partial as f64),
+    ];
+    for (name, value) in attributes {
+        g.new_attr::<f64>().create(name)?.write_scalar(&value)?;
+    }
+    let passes = g.create_group("passes")?;
+    let column = |f: fn(&Pass) -> f64| Array1::from_iter(h.history.iter().map(f));
+    dataset(&passes, "links", &column(|p| p.links as f64))?;
+    dataset(&passes, "refined", &column(|p| p.refined as f64))?;
+    dataset(&passes, "source_splits", &column(|p| p.source_splits as f64))?;
+    dataset(&passes, "leaves", &column(|p| p.leaves as f64))?;
+    dataset(&passes, "nodes", &column(|p| p.nodes as f64))?;
+    dataset(&passes, "rays", &column(|p| p.rays as f64))?;
+    dataset(&passes, "epsilon_cd_m2", &column(|p| p.epsilon))?;
+    dataset(&passes, "seconds", &column(|p| p.seconds))?;
+    dataset(&passes, "solve_seconds", &column(|p| p.solve_seconds))?;
+    Ok(())
+}

@@ -1,0 +1,59 @@
+//! The explicit model (`design.md` §3): the uniform mesh, every facing pair of patches
+//! integrated and balanced into `G`, the luminaires' direct light on every patch.
+
+use super::source::source_term;
+use super::system::{AssemblyStats, Model, ModelOptions};
+use crate::geometry::Mesh;
+use crate::kernel::{Assembled, Estimate, Footprint, Kernel, TooLarge, Transport, TransportMatrix, assemble};
+use crate::luminaire::{Source, direct_light};
+use crate::progress::Progress;
+use crate::scene::Scene;
+use crate::visibility::{Faces, Visibility};
+use std::time::Instant;
+
+/// Meshes, checks the kernel's estimate against the memory limit, assembles.
+pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> Result<Model, TooLarge> {
+    let t = Instant::now();
+    let mesh = Mesh::build(&scene.surfaces, options.patch_size);
+    let directions = options.directions.clone();
+    let estimate = Estimate::of(&mesh, &directions);
+    Footprint {
+        what: "kernel G",
+        bytes: estimate.peak_bytes(),
+        nonzeros: estimate.nonzeros,
+        patches: estimate.patches,
+        cells: estimate.cells,
+    }
+    .check(options.memory_limit)?;
+    let mesh_seconds = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let visibility = Visibility::build(&mesh);
+    let bvh_seconds = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let n = mesh.len() as u64;
+    progress.begin("assembly", n * n.saturating_sub(1) / 2);
+    let Assembled { g, balance, pairs, rays } =
+        assemble(&mesh, &visibility, &directions, &options.quadrature, &|done| progress.advance(done));
+    progress.end();
+    let blocks = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
+    let patch_material = mesh.patches.iter().map(|p| p.material).collect();
+    let twin = mesh.patches.iter().map(|p| p.twin).collect();
+    let g = Transport::Explicit(TransportMatrix::new(g, options.precision));
+    let kernel = Kernel { g, directions, blocks, patch_material, twin };
+    let kernel_seconds = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
+    let direct = direct_light(&sources, &mesh, &visibility, &kernel.directions);
+    let stats = AssemblyStats {
+        mesh_seconds,
+        bvh_seconds,
+        kernel_seconds,
+        light_seconds: t.elapsed().as_secs_f64(),
+        pairs,
+        rays: rays + direct.rays,
+        balance: Some(balance),
+    };
+    let l0 = source_term(&kernel.blocks, &mesh, &direct, kernel.cells());
+    let faces = Faces::of(&mesh);
+    Ok(Model { mesh, visibility, faces, kernel, l0, sources, direct, stats, hierarchy: None })
+}

@@ -1,0 +1,127 @@
+//! The hierarchical model (`design.md` §3b): roots meshed at `patch_size`, the luminaires'
+//! direct light on them as the first source term, then passes of refinement iterated with
+//! a solve (`kernel::hierarchy::iterate`). Before every solve the leaves are split where
+//! the luminaires' light varies over them by more than the error allowed (their shadow
+//! boundaries and the fall-off under them), and `L0 = L_e + B·D` is integrated on the
+//! leaves exactly as on a uniform mesh (`luminaire::direct_light`). The refinement solves
+//! use GMRES(30) to [`REFINEMENT_RESIDUAL`]; the final solve is the caller's, with the
+//! case's method and stopping rule, on the final leaves.
+
+use super::source::source_term;
+use super::system::{AssemblyStats, HierarchyRecord, Model, ModelError, ModelOptions, Refinement};
+use crate::directions::DirectionSet;
+use crate::geometry::{Mesh, Patch};
+use crate::kernel::hierarchy::{Hierarchy, Iterated, Operator, Options, iterate};
+use crate::kernel::{Footprint, Kernel, Transport};
+use crate::luminaire::{DirectLight, Source, direct_light, incoming};
+use crate::material::Block;
+use crate::progress::Progress;
+use crate::scene::Scene;
+use crate::solve::{Method, SolveParams, System, solve};
+use crate::transfer::occlusion::polygon_points;
+use crate::visibility::{Faces, Visibility};
+use std::f64::consts::PI;
+use std::time::Instant;
+
+/// Relative residual of the solves between refinement passes: the oracle needs the field
+/// to a fraction of the link tolerance, not to the final stopping rule.
+pub const REFINEMENT_RESIDUAL: f64 = 1e-5;
+
+/// Leaves, their ray caster and the luminaires' light on them.
+struct Lit {
+    mesh: Mesh,
+    visibility: Visibility,
+    direct: DirectLight,
+}
+
+impl Lit {
+    fn of(mesh: Mesh, sources: &[Source], directions: &DirectionSet) -> Lit {
+        let visibility = Visibility::build(&mesh);
+        let direct = direct_light(sources, &mesh, &visibility, directions);
+        Lit { mesh, visibility, direct }
+    }
+}
+
+pub fn build(
+    scene: &Scene,
+    options: &ModelOptions,
+    refinement: Refinement,
+    progress: &dyn Progress,
+) -> Result<Model, ModelError> {
+    let t = Instant::now();
+    let roots = Mesh::build(&scene.surfaces, options.patch_size);
+    let directions = options.directions.clone();
+    let k = directions.len();
+    let blocks: Vec<Block> = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
+    let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
+    let mesh_seconds = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let on_roots = Lit::of(roots, &sources, &directions);
+    let root_l0 = source_term(&blocks, &on_roots.mesh, &on_roots.direct, k);
+    let mut light_seconds = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let hierarchy_options =
+        Options { tolerance: refinement.tolerance, smallest: refinement.smallest, ..Options::default() };
+    progress.begin("refinement", hierarchy_options.passes as u64);
+    let mut h = Hierarchy::new(&on_roots.mesh, directions.clone(), blocks.clone(), hierarchy_options, &root_l0);
+    let mut lit = None;
+    let mut source = |h: &mut Hierarchy| -> Result<Vec<f64>, ModelError> {
+        let start = Instant::now();
+        h.split_leaves(&|visibility, patch, albedo, epsilon| varies(&sources, visibility, patch, albedo, epsilon));
+        let leaves = Lit::of(h.leaf_mesh(), &sources, &directions);
+        let l0 = source_term(&blocks, &leaves.mesh, &leaves.direct, k);
+        lit = Some(leaves);
+        light_seconds += start.elapsed().as_secs_f64();
+        Ok(l0)
+    };
+    let mut solver = |op: &Operator, b: &[f64], scale: f64| -> Result<Vec<f64>, ModelError> {
+        let (what, bytes, nonzeros, patches, cells) =
+            ("hierarchical kernel", op.bytes(), op.pieces() as f64, op.dim() / k, k);
+        Footprint { what, bytes, nonzeros, patches, cells }.check(options.memory_limit)?;
+        let params = SolveParams { tolerance: (REFINEMENT_RESIDUAL * scale).min(0.5), ..SolveParams::default() };
+        let system = System { operator: op, explicit: None, areas: &[], l0: b };
+        let (x, _) = solve(Method::Gmres { restart: 30 }, &system, &params, &mut |_, _| {})?;
+        progress.advance(1);
+        Ok(x)
+    };
+    let Iterated { operator, l0, .. } = iterate(&mut h, &mut source, &mut solver)?;
+    progress.end();
+    let Lit { mesh, visibility, direct } = lit.expect("iterate computes the source term at least once");
+    let history = h.history().to_vec();
+    let passes: f64 = history.iter().map(|p| p.seconds + p.solve_seconds).sum();
+    let stats = AssemblyStats {
+        mesh_seconds,
+        bvh_seconds: 0.0,
+        kernel_seconds: t.elapsed().as_secs_f64() - light_seconds.min(passes),
+        light_seconds,
+        pairs: operator.links(),
+        rays: history.iter().map(|p| p.rays).sum::<usize>() + direct.rays,
+        balance: None,
+    };
+    let record = HierarchyRecord { refinement, roots: on_roots.mesh.len(), history, census: h.census() };
+    let patch_material = mesh.patches.iter().map(|p| p.material).collect();
+    let twin = mesh.patches.iter().map(|p| p.twin).collect();
+    let kernel = Kernel { g: Transport::Hierarchical(Box::new(operator)), directions, blocks, patch_material, twin };
+    let faces = Faces::of(&mesh);
+    Ok(Model { mesh, visibility, faces, kernel, l0, sources, direct, stats, hierarchy: Some(record) })
+}
+
+/// True when the luminaires' light reflected by `patch` (albedo `albedo`) varies over it by
+/// more than `epsilon` (cd/m²): `ρ (E_max − E_min)/π` over its four stratified points, its
+/// centroid and its corners pulled 1 % inwards, one shadow ray per point and source.
+fn varies(sources: &[Source], visibility: &Visibility, patch: &Patch, albedo: f64, epsilon: f64) -> bool {
+    if sources.is_empty() || albedo <= 0.0 {
+        return false;
+    }
+    let corners = patch.polygon.vertices().iter().map(|v| v.lerp(patch.centroid, 0.01));
+    let points = polygon_points(&patch.polygon).into_iter().chain(corners).chain([patch.centroid]);
+    let (lo, hi) = points.fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
+        let e: f64 = sources
+            .iter()
+            .filter_map(|s| incoming(s, visibility, x, patch.face))
+            .map(|(towards, normal)| normal * towards.dot(patch.normal).max(0.0))
+            .sum();
+        (lo.min(e), hi.max(e))
+    });
+    albedo * (hi - lo) / PI > epsilon
+}

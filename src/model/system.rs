@@ -1,0 +1,106 @@
+//! The discretized system `x = L0 + K x` of a scene (`design.md` §6): the model's parts
+//! (mesh, ray caster, kernel, source term, luminaires), how it is discretized, what its
+//! assembly cost, and why none was built.
+
+use crate::directions::DirectionSet;
+use crate::geometry::Mesh;
+use crate::kernel::hierarchy::{Census, Pass};
+use crate::kernel::{BalanceReport, Kernel, Precision, TooLarge};
+use crate::luminaire::{DirectLight, Source};
+use crate::scene::Scene;
+use crate::solve::SolveError;
+use crate::transfer::form_factor::Quadrature;
+use crate::visibility::{Faces, Visibility};
+use thiserror::Error;
+
+/// How a scene is discretized.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelOptions {
+    /// Target patch edge length, m (the hierarchy's roots).
+    pub patch_size: f64,
+    /// Direction cells of every patch.
+    pub directions: DirectionSet,
+    /// Largest kernel memory allowed, bytes.
+    pub memory_limit: u64,
+    pub quadrature: Quadrature,
+    /// Precision of the stored `G`.
+    pub precision: Precision,
+}
+
+impl ModelOptions {
+    /// The scene's own discretization with the default limits.
+    pub fn of(scene: &Scene) -> ModelOptions {
+        ModelOptions {
+            patch_size: scene.discretization.patch_size,
+            directions: scene.discretization.directions.set(),
+            memory_limit: crate::kernel::memory::default_limit(),
+            quadrature: Quadrature::default(),
+            precision: Precision::Double,
+        }
+    }
+}
+
+/// Why no model was built.
+#[derive(Debug, Error)]
+pub enum ModelError {
+    #[error(transparent)]
+    TooLarge(#[from] TooLarge),
+    /// A solve between the hierarchy's refinement passes failed.
+    #[error("refining the hierarchical kernel: {0}")]
+    Refinement(#[from] SolveError),
+}
+
+/// Timings and counts of the assembly.
+#[derive(Debug, Clone)]
+pub struct AssemblyStats {
+    pub mesh_seconds: f64,
+    pub bvh_seconds: f64,
+    /// The kernel: the explicit assembly, or every refinement pass and its solve.
+    pub kernel_seconds: f64,
+    /// Time spent on the luminaires' direct light.
+    pub light_seconds: f64,
+    /// Patch pairs integrated (explicit), or links (hierarchical).
+    pub pairs: usize,
+    pub rays: usize,
+    /// How balancing changed the explicit kernel (the hierarchy is not balanced).
+    pub balance: Option<BalanceReport>,
+}
+
+/// A scene discretized into the linear system `x = L0 + K x`.
+pub struct Model {
+    /// The unknowns' patches: the uniform mesh, or the hierarchy's leaves.
+    pub mesh: Mesh,
+    pub visibility: Visibility,
+    /// The patches of each face, for probes and grids.
+    pub faces: Faces,
+    pub kernel: Kernel,
+    /// Source term `L0(i,k)`, flat, `x[i·K + k]`.
+    pub l0: Vec<f64>,
+    /// The luminaires, placed.
+    pub sources: Vec<Source>,
+    /// Their direct light on every (patch, cell).
+    pub direct: DirectLight,
+    pub stats: AssemblyStats,
+    /// What the hierarchical kernel made; `None` for the explicit one.
+    pub hierarchy: Option<HierarchyRecord>,
+}
+
+/// The hierarchy's two parameters (`[discretization] tolerance` and `smallest`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Refinement {
+    /// Error allowed per link relative to the mean reflected luminance (dimensionless).
+    pub tolerance: f64,
+    /// Smallest element edge, m.
+    pub smallest: f64,
+}
+
+/// What the hierarchical kernel made.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HierarchyRecord {
+    pub refinement: Refinement,
+    /// Root elements (patches of the roots' mesh).
+    pub roots: usize,
+    /// One record per refinement pass.
+    pub history: Vec<Pass>,
+    pub census: Census,
+}

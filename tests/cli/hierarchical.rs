@@ -1,0 +1,38 @@
+//! `--assembly hierarchical` and `[discretization] method = "hierarchical"` end to end: the
+//! solve, its summary of passes, `/hierarchy` in the HDF5 file and `render` of the leaves;
+//! the hierarchy's keys refused with the explicit kernel.
+
+use super::{assert_clean_failure, stderr};
+use crate::support::{scratch, ugo};
+
+#[test]
+fn a_hierarchical_solve_writes_its_passes_and_renders() {
+    let dir = scratch("hierarchical");
+    let out = dir.join("furnace.h5");
+    let args = ["solve", "cases/furnace-box.toml", "--assembly", "hierarchical", "--patch-size", "0.5"];
+    let o = ugo(&[&args[..], &["--smallest", "0.1", "-o", out.to_str().unwrap()]].concat());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary = String::from_utf8_lossy(&o.stdout);
+    assert!(summary.contains("hierarchical") && summary.contains("pass 0"), "{summary}");
+
+    let file = hdf5::File::open(&out).unwrap();
+    let luminance = file.dataset("field/luminance").unwrap().read_dyn::<f64>().unwrap();
+    let level = file.dataset("hierarchy/leaf_level").unwrap().read_1d::<u8>().unwrap();
+    assert_eq!(luminance.shape()[0], level.len());
+    assert!(level.iter().any(|&l| l > 0), "nothing was split");
+    assert!(luminance.iter().all(|l| (l / 5.0 - 1.0).abs() < 1e-3), "the white furnace on the leaves");
+    let links = file.dataset("hierarchy/passes/links").unwrap().read_1d::<f64>().unwrap();
+    assert!(!links.is_empty() && links.iter().all(|&n| n > 0.0));
+
+    let o = ugo(&["render", out.to_str().unwrap(), "-o", dir.to_str().unwrap(), "--shading", "smooth"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}
+
+#[test]
+fn the_hierarchys_keys_are_refused_with_the_explicit_kernel() {
+    let o = ugo(&["solve", "cases/furnace-box.toml", "--smallest", "0.1"]);
+    let err = assert_clean_failure(&o);
+    assert!(err.contains("--assembly hierarchical"), "{err}");
+    let o = ugo(&["solve", "cases/furnace-box.toml", "--assembly", "hierarchical", "--link-tolerance", "-1"]);
+    assert_clean_failure(&o);
+}
