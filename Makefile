@@ -10,7 +10,12 @@ DEMO_OUT ?= out/cornell-box.h5
 DEMO_IMAGES ?= out/cornell-box-camera.png out/cornell-box-camera-false.png \
 	out/cornell-box-camera-orders.png out/cornell-box-work_plane.png
 
-.PHONY: all deps build demo test clean
+# The furnished rooms of cases/ are written by a script; the seats' OBJ file of
+# cases/hall-obj.toml (about 8 MB) is not committed but written here.
+ROOMS := cases/generate/rooms.py
+HALL_OBJ := cases/hall-obj/seats.obj
+
+.PHONY: all deps build demo test cases clean
 
 all: build
 
@@ -19,6 +24,7 @@ deps:
 	pkg-config --exists hdf5 2>/dev/null || missing="$$missing libhdf5-dev"; \
 	command -v pkg-config >/dev/null || missing="$$missing pkg-config"; \
 	command -v h5dump >/dev/null || missing="$$missing hdf5-tools"; \
+	command -v python3 >/dev/null || missing="$$missing python3"; \
 	if [ -n "$$missing" ]; then \
 	  echo "ugo: installing$$missing with apt-get"; \
 	  $(SUDO) apt-get update -qq && \
@@ -36,8 +42,17 @@ demo: build
 	./target/release/ugo render $(DEMO_OUT) -o out --shading gather --false-colour log --orders 1,8,64
 	cp $(DEMO_IMAGES) docs/img/
 
-test: deps
+test: deps $(HALL_OBJ)
 	$(CARGO) test --release
+
+# Checks that the committed cases are what the script writes, then writes every file
+# (the OBJ included).
+cases: deps
+	python3 $(ROOMS) --check
+	python3 $(ROOMS)
+
+$(HALL_OBJ): $(ROOMS) | deps
+	python3 $(ROOMS)
 
 clean:
 	$(CARGO) clean

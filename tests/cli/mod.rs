@@ -4,7 +4,7 @@
 mod hierarchical;
 
 use crate::support::{scratch, ugo};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Output;
 
 fn stderr(o: &Output) -> String {
@@ -104,6 +104,11 @@ fn every_bundled_case_is_valid_and_estimated() {
     let mut cases: Vec<PathBuf> = std::fs::read_dir("cases").unwrap().map(|e| e.unwrap().path()).collect();
     cases.retain(|p| p.extension().is_some_and(|e| e == "toml"));
     assert!(cases.len() >= 7, "{cases:?}");
+    // Its seats' OBJ file is written by `make cases` or `make test`, not committed.
+    if !Path::new("cases/hall-obj/seats.obj").exists() {
+        eprintln!("skipped cases/hall-obj.toml: cases/hall-obj/seats.obj has not been generated");
+        cases.retain(|p| !p.ends_with("hall-obj.toml"));
+    }
     for case in &cases {
         let o = ugo(&["info", case.to_str().unwrap()]);
         assert!(o.status.success(), "{}: {}", case.display(), stderr(&o));

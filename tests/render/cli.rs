@@ -92,6 +92,11 @@ const CASES: [(&str, &str, &str); 7] = [
     ("parallel-plates", "0.25", "1"),
 ];
 
+/// The furnished rooms (`cases/generate/rooms.py`): too large to solve here even coarsened
+/// (the office at 1 m patches is over 1,300 patches of furniture); `tests/scene/rooms.rs`
+/// checks them.
+const FURNISHED: [&str; 3] = ["hall-obj", "lecture-hall", "office"];
+
 #[test]
 fn every_case_has_a_camera_and_renders_finite_lit_pixels() {
     let dir = scratch("cases");
@@ -99,6 +104,7 @@ fn every_case_has_a_camera_and_renders_finite_lit_pixels() {
         .unwrap()
         .filter_map(|e| e.ok()?.file_name().into_string().ok()?.strip_suffix(".toml").map(String::from))
         .collect();
+    listed.retain(|case| !FURNISHED.contains(&case.as_str()));
     listed.sort();
     assert_eq!(listed, CASES.map(|c| c.0.to_string()), "the table lists every case");
     for (case, patch, cells) in CASES {

@@ -2,6 +2,7 @@
 
 mod luminaires;
 mod parse_errors;
+mod rooms;
 mod valid;
 mod validation_errors;
 

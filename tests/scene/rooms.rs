@@ -1,0 +1,132 @@
+//! The furnished rooms of `cases/`, written by `cases/generate/rooms.py` (issue 14, point 5):
+//! they parse, hold about the number of quads (or OBJ triangles) intended, have probes,
+//! grids and a camera, keep every luminaire inside the room, and are closed: every ray
+//! from every luminaire meets the front of a face.
+
+use glam::DVec3;
+use std::path::Path;
+use ugo::geometry::{Mesh, Shape};
+use ugo::luminaire::LuminaireKind;
+use ugo::scene::Scene;
+use ugo::visibility::{Faces, NO_FACE, Visibility};
+
+/// The seats of `cases/hall-obj.toml`: written by `make cases` (or `make test`), not committed.
+const HALL_OBJ: &str = "cases/hall-obj/seats.obj";
+
+fn load(case: &str) -> Scene {
+    Scene::load(Path::new(case)).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Quads of the case file: a rectangle or polygon is one, a box six.
+fn quads(scene: &Scene) -> usize {
+    let quads = |shape: &Shape| match shape {
+        Shape::Box { .. } => 6,
+        Shape::Mesh { .. } => 0,
+        _ => 1,
+    };
+    scene.surfaces.iter().map(|s| quads(&s.shape)).sum()
+}
+
+fn triangles(scene: &Scene) -> usize {
+    let triangles = |shape: &Shape| match shape {
+        Shape::Mesh { triangles, .. } => triangles.len(),
+        _ => 0,
+    };
+    scene.surfaces.iter().map(|s| triangles(&s.shape)).sum()
+}
+
+fn luminaires(scene: &Scene) -> Vec<DVec3> {
+    let position = |kind: &LuminaireKind| match kind {
+        LuminaireKind::Point(p) => p.position,
+        LuminaireKind::Parallel { .. } => panic!("a room lit by parallel light"),
+    };
+    scene.luminaires.iter().map(|l| position(&l.kind)).collect()
+}
+
+/// The bounding box of the meshed scene.
+fn bounds(mesh: &Mesh) -> (DVec3, DVec3) {
+    let corners = mesh.patches.iter().flat_map(|p| p.polygon.vertices().iter().copied());
+    corners.fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)))
+}
+
+/// Directions spread evenly over the sphere (a Fibonacci lattice).
+fn sphere_directions(n: usize) -> impl Iterator<Item = DVec3> {
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    (0..n).map(move |i| {
+        let y = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
+        let r = (1.0 - y * y).sqrt();
+        let phi = golden * i as f64;
+        DVec3::new(r * phi.cos(), y, r * phi.sin())
+    })
+}
+
+/// Parses `case` and checks what every furnished room must have; returns the scene.
+fn furnished(case: &str, quads_in: std::ops::Range<usize>, luminaire_count: usize) -> Scene {
+    let scene = load(case);
+    let n = quads(&scene);
+    assert!(quads_in.contains(&n), "{case}: {n} quads, intended {quads_in:?}");
+    assert_eq!(scene.luminaires.len(), luminaire_count, "{case}");
+    assert!(scene.probes.len() >= 10, "{case}: {} probes", scene.probes.len());
+    assert!(!scene.grids.is_empty() && !scene.cameras.is_empty(), "{case}: no grid or camera");
+    assert!(scene.surfaces.iter().all(|s| s.emission.is_none()), "{case}: lit by luminaires only");
+    scene
+}
+
+/// Every luminaire lies inside the room's bounding box, and every ray from it meets the
+/// front of a face (none escapes, none hits the back of a one-sided face).
+fn closed_around_luminaires(scene: &Scene) {
+    let mesh = Mesh::build(&scene.surfaces, 4.0);
+    let (lo, hi) = bounds(&mesh);
+    let visibility = Visibility::build(&mesh);
+    let faces = Faces::of(&mesh);
+    for (luminaire, at) in scene.luminaires.iter().zip(luminaires(scene)) {
+        let name = &luminaire.name;
+        assert!(at.cmpgt(lo).all() && at.cmplt(hi).all(), "{name} at {at} outside the room {lo} … {hi}");
+        for direction in sphere_directions(500) {
+            let landing = faces.landing(&mesh, &visibility, at, direction, NO_FACE);
+            let Some((_, patch, _)) = landing else { panic!("{name}: the ray towards {direction} escapes") };
+            assert!(patch.is_some(), "{name}: the ray towards {direction} meets the back of a face");
+        }
+    }
+}
+
+#[test]
+fn the_office_is_furnished_closed_and_lit_from_inside() {
+    let scene = furnished("cases/office.toml", 900..1200, 12);
+    assert_eq!(scene.discretization.patch_size, 0.25);
+    let books = scene.surfaces.iter().filter(|s| s.name.starts_with("bookshelf, book")).count();
+    assert!(books >= 24, "{books} books");
+    let turned =
+        scene.surfaces.iter().filter(|s| matches!(s.shape, Shape::Box { rotate_y_deg, .. } if rotate_y_deg != 0.0));
+    assert!(turned.count() >= 20, "some furniture is turned");
+    assert!(scene.grids.iter().any(|g| g.name == "work plane"));
+    closed_around_luminaires(&scene);
+}
+
+#[test]
+fn the_lecture_hall_is_furnished_closed_and_lit_from_inside() {
+    let scene = furnished("cases/lecture-hall.toml", 2700..3300, 32);
+    let seats = scene.surfaces.iter().filter(|s| s.name.ends_with(", pan")).count();
+    assert_eq!(seats, 140);
+    closed_around_luminaires(&scene);
+}
+
+#[test]
+fn the_hall_of_meshed_seats_has_two_hundred_thousand_triangles() {
+    if !Path::new(HALL_OBJ).exists() {
+        eprintln!("skipped: {HALL_OBJ} has not been generated (`make cases` or `python3 cases/generate/rooms.py`)");
+        return;
+    }
+    let scene = furnished("cases/hall-obj.toml", 1000..1600, 32);
+    let n = triangles(&scene);
+    assert!((100_000..1_000_000).contains(&n), "{n} triangles");
+    let hall = load("cases/lecture-hall.toml");
+    let (lo, hi) = bounds(&Mesh::build(&hall.surfaces, 4.0));
+    for surface in &scene.surfaces {
+        if let Shape::Mesh { triangles, .. } = &surface.shape {
+            let inside = |p: &DVec3| p.cmpgt(lo).all() && p.cmplt(hi).all();
+            assert!(triangles.iter().flatten().all(inside), "{}: a triangle outside the hall", surface.name);
+        }
+    }
+    assert!(luminaires(&scene).iter().all(|p| p.cmpgt(lo).all() && p.cmplt(hi).all()));
+}
