@@ -7,6 +7,7 @@ mod directions;
 mod geometry;
 mod grid;
 mod hierarchy;
+mod io;
 mod kernel;
 mod layering;
 mod luminaire;

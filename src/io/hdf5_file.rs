@@ -130,7 +130,9 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
         write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
     }
     write_luminaires(&file.create_group("luminaires")?, s)?;
-    write_attributes(&file, s)
+    write_attributes(&file, s)?;
+    // Closed here, not dropped: the last metadata reaches the file now and its error counts.
+    file.close()
 }
 
 /// `/mesh`: the patches and the names of surfaces and materials.

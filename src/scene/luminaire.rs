@@ -21,13 +21,16 @@ pub struct RawLuminaire {
     pub name: String,
     #[serde(rename = "type")]
     pub kind: String,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub position: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub aim: Option<[f64; 3]>,
     pub rotate_deg: Option<f64>,
     pub multiplier: Option<f64>,
     pub flux: Option<f64>,
     pub intensity: Option<f64>,
     pub file: Option<String>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub direction: Option<[f64; 3]>,
     pub illuminance: Option<f64>,
 }

@@ -4,6 +4,7 @@
 //! `validate` turns it into a [`Scene`] or a [`SceneError`] that names the file, the
 //! table and the key. Nothing downstream (meshing, kernel, solvers) sees TOML.
 
+mod arrays;
 mod check;
 mod description;
 mod error;

@@ -87,18 +87,27 @@ pub struct RawSurface {
     pub two_sided: Option<bool>,
     pub inside: Option<bool>,
     pub emission: Option<RawEmission>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub origin: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub edge_u: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub edge_v: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_list")]
     pub vertices: Option<Vec<[f64; 3]>>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub min: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub max: Option<[f64; 3]>,
     pub rotate_y_deg: Option<f64>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub center: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub normal: Option<[f64; 3]>,
     pub radius: Option<f64>,
     pub file: Option<String>,
     pub scale: Option<f64>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub translate: Option<[f64; 3]>,
 }
 
@@ -115,7 +124,9 @@ pub struct RawEmission {
 #[serde(deny_unknown_fields)]
 pub struct RawProbe {
     pub name: String,
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub position: [f64; 3],
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub normal: [f64; 3],
 }
 
@@ -124,10 +135,14 @@ pub struct RawProbe {
 #[serde(deny_unknown_fields)]
 pub struct RawCamera {
     pub name: String,
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub position: [f64; 3],
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub look_at: [f64; 3],
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub up: Option<[f64; 3]>,
     pub fov_deg: Option<f64>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub resolution: Option<[i64; 2]>,
     pub samples: Option<i64>,
 }
