@@ -9,6 +9,9 @@ use std::path::Path;
 /// coincidence and parallel-edge tests.
 pub(super) const REL_TOL: f64 = 1e-6;
 
+/// An area below this fraction of (size)² counts as zero.
+pub(super) const ZERO_AREA: f64 = 1e-12;
+
 pub(super) struct Context<'a> {
     pub(super) file: &'a Path,
     table: String,

@@ -12,6 +12,7 @@ mod files;
 mod grid;
 mod luminaire;
 mod material;
+mod polygon;
 mod schema;
 mod surface;
 mod validate;
