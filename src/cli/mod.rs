@@ -43,6 +43,33 @@ pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
     Ok((scene, options))
 }
 
+/// Refuses, before any work, an output file that could not be written: a folder of that
+/// name, a missing folder, or one where no file can be created (tried with a file of the
+/// temporary name the writer would use, removed at once; a stale one is swept later).
+pub fn check_writable(path: &Path) -> Result<()> {
+    let shown = path.display();
+    if path.is_dir() {
+        bail!("cannot write {shown}: it is a folder; give a file name");
+    }
+    let folder = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    if !folder.is_dir() {
+        bail!("cannot write {shown}: the folder {} does not exist", folder.display());
+    }
+    let mut probe = path.file_name().unwrap_or_default().to_owned();
+    probe.push(format!(".{}.00000000.tmp", std::process::id()));
+    let probe = folder.join(probe);
+    match std::fs::OpenOptions::new().write(true).create_new(true).open(&probe) {
+        Ok(_) => {
+            let _ = std::fs::remove_file(&probe);
+            Ok(())
+        }
+        Err(e) => bail!("cannot write {shown}: cannot create a file in {}: {e}", folder.display()),
+    }
+}
+
 /// One line about a luminaire: its distribution, the flux integrated from it and the
 /// flux its file states, or the parallel light's illuminance.
 pub fn describe(source: &Source) -> String {

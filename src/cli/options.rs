@@ -11,10 +11,10 @@ use ugo::solve::Method;
 #[derive(clap::Args, Clone, Debug)]
 pub struct Discretize {
     /// Target patch edge length, m (default: the case's `patch_size`).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub patch_size: Option<f64>,
     /// Largest kernel memory allowed, GiB (default: half the machine's RAM).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub memory_limit: Option<f64>,
     /// Direction cells per patch: a count K (equal solid angle), `klems` or `tregenza`
     /// (default: the case's `directions`, else 1).
@@ -30,10 +30,10 @@ pub struct Discretize {
 #[derive(clap::Args, Clone, Debug)]
 pub struct Stopping {
     /// Relative residual at which the iteration stops (default: the case's `[solver]`).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub tolerance: Option<f64>,
     /// Most iterations (default: the case's `[solver]`).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub max_iterations: Option<usize>,
 }
 

@@ -3,7 +3,7 @@
 //! beside it, and the printed summary and tables.
 
 use super::options::{Discretize, Stopping};
-use super::{Bars, bytes, describe, file_name, load};
+use super::{Bars, bytes, check_writable, describe, file_name, load};
 use anyhow::{Context, Result, bail};
 use std::path::{Path, PathBuf};
 use ugo::io::{
@@ -46,6 +46,10 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     }
     let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
     let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}{}.h5", job.suffix)));
+    check_writable(&output)?;
+    if let Some(plot) = &job.plot {
+        check_writable(plot)?;
+    }
     let study = study::Job { params, ..job.run };
     let s = solve_case(&scene, &options, &study, &Bars::default())?;
     for (method, e) in &s.failures {

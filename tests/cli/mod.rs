@@ -1,6 +1,8 @@
 //! The `ugo` binary end to end: a solve written to HDF5 and read back, and every
 //! failure a clear message with a non-zero exit, never a panic.
 
+mod arguments;
+
 use crate::support::{scratch, ugo};
 use std::path::PathBuf;
 use std::process::Output;

@@ -1,0 +1,62 @@
+//! Command lines refused for the right reason (issue 18, items 5, 7 and 9): negative
+//! numbers reach the option's own rule, limits on `--method gmres:M` and `--orders`,
+//! the output checked before the work, and luminaire-only scenes traced.
+
+use super::{assert_clean_failure, stderr};
+use crate::support::{scratch, ugo};
+
+#[test]
+fn negative_numbers_are_refused_by_the_rule_of_their_option() {
+    let case = "cases/furnace-box.toml";
+    let err = assert_clean_failure(&ugo(&["solve", case, "--tolerance", "-1"]));
+    assert!(err.contains("--tolerance must lie in (0, 1), got -1"), "{err}");
+    let err = assert_clean_failure(&ugo(&["solve", case, "--patch-size", "-0.1"]));
+    assert!(err.contains("--patch-size must be a positive length"), "{err}");
+    let err = assert_clean_failure(&ugo(&["info", case, "--memory-limit", "-2"]));
+    assert!(err.contains("--memory-limit must be a positive number"), "{err}");
+    // Unsigned options: clap's message names the option instead of "unexpected argument".
+    let o = ugo(&["solve", case, "--max-iterations", "-1"]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("'--max-iterations <MAX_ITERATIONS>'"), "{}", stderr(&o));
+}
+
+#[test]
+fn trace_accepts_a_scene_lit_only_by_luminaires() {
+    let dir = scratch("trace-luminaires");
+    let out = dir.join("forward.h5");
+    let case = "cases/cie171/5.2-point-source.toml";
+    let o = ugo(&["trace", case, "--forward", "--photons", "2000", "-o", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let emitted: f64 =
+        hdf5::File::open(&out).unwrap().group("trace").unwrap().attr("emitted_flux").unwrap().read_scalar().unwrap();
+    assert!(emitted > 0.0, "the luminaires' flux counts as emitted: {emitted}");
+    let o = ugo(&["trace", case, "--probe-samples", "64"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("probes"));
+}
+
+#[test]
+fn an_output_that_cannot_be_written_is_refused_before_the_work() {
+    let dir = scratch("unwritable");
+    let missing = dir.join("no-such-folder").join("res.h5");
+    // The Cornell box takes seconds to solve: the refusal must come before that.
+    let start = std::time::Instant::now();
+    let err = assert_clean_failure(&ugo(&["solve", "cases/cornell-box.toml", "-o", missing.to_str().unwrap()]));
+    assert!(err.contains("does not exist") && err.contains("no-such-folder"), "{err}");
+    assert!(start.elapsed().as_secs_f64() < 2.0, "refused after {:?}", start.elapsed());
+    let err = assert_clean_failure(&ugo(&["solve", "cases/cornell-box.toml", "-o", dir.to_str().unwrap()]));
+    assert!(err.contains("it is a folder"), "{err}");
+    let plot = dir.join("nowhere").join("p.png");
+    let o = ugo(&[
+        "compare",
+        "cases/cornell-box.toml",
+        "--plot",
+        plot.to_str().unwrap(),
+        "-o",
+        dir.join("c.h5").to_str().unwrap(),
+    ]);
+    let err = assert_clean_failure(&o);
+    assert!(err.contains("nowhere"), "{err}");
+    let left: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert!(left.iter().all(|n| !n.to_string_lossy().contains(".tmp")), "{left:?}");
+}
