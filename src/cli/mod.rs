@@ -21,6 +21,9 @@ use ugo::scene::Scene;
 /// (the one place it is held), the memory limit and precision to the model options.
 pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
     let mut scene = Scene::load(case)?;
+    for warning in scene.warnings() {
+        eprintln!("ugo: warning: {warning}");
+    }
     if let Some(h) = d.patch_size {
         if !(h.is_finite() && h > 0.0) {
             bail!("--patch-size must be a positive length in metres, got {h}");

@@ -12,6 +12,7 @@ mod files;
 mod grid;
 mod luminaire;
 mod material;
+mod plausible;
 mod polygon;
 mod schema;
 mod surface;
@@ -51,6 +52,13 @@ impl Scene {
     pub fn parse_with(path: &Path, source: String, files: CaseFiles) -> Result<Scene, SceneError> {
         let raw = schema::parse(path, &source)?;
         validate::validate(path, source, raw, files)
+    }
+
+    /// Values that are valid but rarely meant (brighter than the sun, a model in
+    /// millimetres read as metres, …): each names its table and key; the caller reports
+    /// them (`ugo: warning: …`) and goes on.
+    pub fn warnings(&self) -> Vec<SceneError> {
+        plausible::warnings(self)
     }
 
     /// Looks a surface up by name.

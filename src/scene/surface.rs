@@ -1,7 +1,7 @@
 //! `[[surface]]` tables: shapes and their keys, emission, material references, degenerate
 //! geometry, and loading `mesh` OBJ files, validated into `crate::geometry::Surface`.
 
-use super::check::{Context, REL_TOL, ZERO_AREA, show, unique_names};
+use super::check::{Context, MAGNITUDE, REL_TOL, ZERO_AREA, show, unique_names};
 use super::description::Material;
 use super::error::SceneError;
 use super::files::CaseFiles;
@@ -46,24 +46,29 @@ fn surface(at: &Context, s: &RawSurface, materials: &[Material], files: &CaseFil
         return Err(at.error("two_sided", message));
     }
     let shape = shape(at, s, files)?;
-    meshable(at, &shape)?;
-    Ok(Surface {
-        name: s.name.clone(),
-        shape,
-        material,
-        two_sided,
-        inside: s.inside.unwrap_or(false),
-        emission: s.emission.as_ref().map(|e| emission(at, e)).transpose()?,
-    })
+    let area = meshable(at, &shape)?;
+    let emission = s.emission.as_ref().map(|e| emission(at, e)).transpose()?;
+    if let Some(Emission::Flux(flux)) = emission
+        && flux / (std::f64::consts::PI * area) > MAGNITUDE
+    {
+        let luminance = flux / (std::f64::consts::PI * area);
+        let message = format!(
+            "out of range: {flux:e} lm over the surface's {area:e} m² is a luminance of {luminance:e} cd/m², \
+             more than {MAGNITUDE:e}"
+        );
+        return Err(at.error("emission.flux", message));
+    }
+    Ok(Surface { name: s.name.clone(), shape, material, two_sided, inside: s.inside.unwrap_or(false), emission })
 }
 
 /// The shape meshes, at its coarsest, into patches of a total area that double precision
 /// represents: a disc of radius 1e-300 (area 0) would otherwise vanish from the scene
-/// with its emitted flux, and one of radius 1e200 (area ∞) poison every sum.
-fn meshable(at: &Context, shape: &Shape) -> Result<(), SceneError> {
+/// with its emitted flux, and one of radius 1e200 (area ∞) poison every sum. Returns the
+/// area, m².
+fn meshable(at: &Context, shape: &Shape) -> Result<f64, SceneError> {
     let area: f64 = tessellate(shape, f64::INFINITY).iter().map(|e| e.area()).sum();
     if area.is_normal() {
-        return Ok(());
+        return Ok(area);
     }
     let (key, size) = match shape {
         Shape::Disc { radius, .. } | Shape::Sphere { radius, .. } => ("radius", *radius),
@@ -86,8 +91,13 @@ fn spread(points: &[DVec3]) -> f64 {
 /// `emission = { luminance = … }` or `{ flux = … }`: exactly one, finite and ≥ 0.
 fn emission(at: &Context, raw: &RawEmission) -> Result<Emission, SceneError> {
     match (raw.luminance, raw.flux) {
-        (Some(l), None) => Ok(Emission::Luminance(at.non_negative("emission.luminance", l)?)),
-        (None, Some(f)) => Ok(Emission::Flux(at.non_negative("emission.flux", f)?)),
+        (Some(l), None) => {
+            at.non_negative("emission.luminance", l)?;
+            Ok(Emission::Luminance(at.magnitude("emission.luminance", l, " cd/m²")?))
+        }
+        (None, Some(f)) => {
+            Ok(Emission::Flux(at.magnitude("emission.flux", at.non_negative("emission.flux", f)?, " lm")?))
+        }
         (Some(_), Some(_)) => Err(at.error("emission", "give `luminance` or `flux`, not both")),
         (None, None) => Err(at.error("emission", "needs `luminance` (cd/m²) or `flux` (lm)")),
     }

@@ -60,3 +60,17 @@ fn an_output_that_cannot_be_written_is_refused_before_the_work() {
     let left: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
     assert!(left.iter().all(|n| !n.to_string_lossy().contains(".tmp")), "{left:?}");
 }
+
+#[test]
+fn warnings_go_to_stderr_and_the_work_goes_on() {
+    let dir = scratch("warning");
+    let case = dir.join("bright.toml");
+    let text = std::fs::read_to_string("cases/furnace-box.toml").unwrap();
+    let bright = text.replacen("luminance = 1.0", "luminance = 1e10", 1);
+    assert_ne!(text, bright);
+    std::fs::write(&case, bright).unwrap();
+    let o = ugo(&["info", case.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(err.starts_with("ugo: warning: ") && err.contains("emission.luminance"), "{err}");
+}

@@ -3,6 +3,7 @@
 mod degenerate;
 mod lengths;
 mod luminaires;
+mod magnitudes;
 mod parse_errors;
 mod valid;
 mod validation_errors;
