@@ -36,7 +36,7 @@ enum Command {
         #[arg(long, value_parser = method)]
         method: Option<Method>,
         /// Reflection orders whose partial sums go to /orders (default 1,8,64 with neumann).
-        #[arg(long, allow_negative_numbers = true, value_delimiter = ',')]
+        #[arg(long, allow_negative_numbers = true, value_delimiter = ',', value_parser = cli::options::order)]
         orders: Option<Vec<usize>>,
         /// Also compute the norms of K (needs the explicit product).
         #[arg(long)]

@@ -14,6 +14,7 @@ mod luminaire;
 mod material;
 mod photometry;
 mod render;
+mod robustness;
 mod scene;
 pub mod solve;
 mod support;

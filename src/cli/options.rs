@@ -42,9 +42,30 @@ fn scheme(name: &str) -> Result<Scheme, String> {
     Scheme::parse(name).ok_or_else(|| format!("--directions must be {}, got \"{name}\"", Scheme::NAMES))
 }
 
+/// Longest GMRES restart: `M + 1` Krylov vectors of the system's length are kept.
+pub const MAX_RESTART: usize = 1000;
+
+/// Highest reflection order `--orders` records (each order is one product with K).
+pub const MAX_ORDER: usize = 100_000;
+
 /// `--method`, `--methods`.
 pub fn method(name: &str) -> Result<Method, String> {
-    Method::parse(name).ok_or_else(|| format!("unknown method \"{name}\"; known: {}", Method::names()))
+    match Method::parse(name) {
+        Some(Method::Gmres { restart }) if restart > MAX_RESTART => Err(format!(
+            "gmres:M keeps M + 1 vectors of the system's length: M must lie in 1..={MAX_RESTART}, got {restart}"
+        )),
+        Some(m) => Ok(m),
+        None => Err(format!("unknown method \"{name}\"; known: {}", Method::names())),
+    }
+}
+
+/// One entry of `--orders`.
+pub fn order(text: &str) -> Result<usize, String> {
+    let n: usize = text.parse().map_err(|e| format!("a reflection order is a whole number ≥ 0: {e}"))?;
+    if n > MAX_ORDER {
+        return Err(format!("at most {MAX_ORDER} reflections (one product with K each), got {n}"));
+    }
+    Ok(n)
 }
 
 /// `--precision`.

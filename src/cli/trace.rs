@@ -33,7 +33,8 @@ pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
     let world = World::new(&scene, mesh);
     // Surfaces and luminaires both emit: the tracers start paths on the one and gather
     // (or, forward, start photons at) the other.
-    if !(world.emitters.flux() + world.luminaires.flux() > 0.0) {
+    let emitted = world.emitters.flux() + world.luminaires.flux();
+    if emitted.is_nan() || emitted <= 0.0 {
         bail!("nothing in {} emits light: give a surface an emission or add a [[luminaire]]", case.display());
     }
     if let Some(photons) = job.photons {
@@ -71,7 +72,7 @@ fn forward(
     let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}-forward.h5")));
     check_writable(&output)?;
     let progress = bar(photons, "photons");
-    let estimate = trace_photons(&world, &options.directions, photons, &job.options, &|n| progress.inc(n));
+    let estimate = trace_photons(world, &options.directions, photons, &job.options, &|n| progress.inc(n));
     progress.finish_and_clear();
     let file = EstimateFile {
         scene,

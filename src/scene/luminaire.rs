@@ -113,7 +113,8 @@ fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKi
             })?;
             let read = if name == "ies" { parse_ies(&file, &text) } else { parse_ldt(&file, &text) };
             let table = read.map_err(|e| at.error("file", e.to_string()))?;
-            if !(table.flux() * multiplier <= MAGNITUDE) {
+            let flux = table.flux() * multiplier;
+            if flux.is_nan() || flux > MAGNITUDE {
                 let message = format!(
                     "out of range: the file's intensities integrate to {:e} lm, times `multiplier` {multiplier:e}, \
                      more than {MAGNITUDE:e} lm",

@@ -212,7 +212,8 @@ fn leading_key(line: &str) -> Option<&str> {
 /// The last `key` in `… key =` at the end of `head`.
 fn nearest_key(head: &str) -> Option<&str> {
     let before = head.trim_end().strip_suffix('=')?.trim_end();
-    let start = before.rfind(|c: char| !is_key_char(c)).map_or(0, |i| i + 1);
+    // The character before the key may be several bytes long (issue 18: a `ρ` there).
+    let start = before.char_indices().rev().find(|(_, c)| !is_key_char(*c)).map_or(0, |(i, c)| i + c.len_utf8());
     let key = &before[start..];
     is_bare_key(key).then_some(key)
 }

@@ -264,8 +264,7 @@ fn load_obj(file: &Path, files: &CaseFiles) -> Result<Vec<[DVec3; 3]>, String> {
     let mut triangles = Vec::new();
     for model in &models {
         let mesh = &model.mesh;
-        let positions: Vec<DVec3> =
-            mesh.positions.chunks_exact(3).map(|p| DVec3::new(p[0].into(), p[1].into(), p[2].into())).collect();
+        let positions: Vec<DVec3> = mesh.positions.chunks_exact(3).map(|p| DVec3::new(p[0], p[1], p[2])).collect();
         for face in mesh.indices.chunks_exact(3) {
             let corner = |i: u32| positions.get(i as usize).copied();
             let (Some(a), Some(b), Some(c)) = (corner(face[0]), corner(face[1]), corner(face[2])) else {
