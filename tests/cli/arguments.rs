@@ -74,3 +74,34 @@ fn warnings_go_to_stderr_and_the_work_goes_on() {
     let err = stderr(&o);
     assert!(err.starts_with("ugo: warning: ") && err.contains("emission.luminance"), "{err}");
 }
+
+#[test]
+fn solver_sizes_from_the_command_line_are_limited() {
+    let case = "cases/furnace-box.toml";
+    let o = ugo(&["solve", case, "--method", "gmres:100000000000"]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("M must lie in 1..=1000"), "{}", stderr(&o));
+    let o = ugo(&["solve", case, "--orders", "18446744073709551615"]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("at most 100000 reflections"), "{}", stderr(&o));
+    let many: Vec<String> = (1..=65).map(|n| n.to_string()).collect();
+    let err = assert_clean_failure(&ugo(&["solve", case, "--orders", &many.join(",")]));
+    assert!(err.contains("at most 64 orders"), "{err}");
+}
+
+#[test]
+fn a_named_pipe_or_invalid_text_is_refused_without_blocking() {
+    let dir = scratch("pipe");
+    let pipe = dir.join("case.toml");
+    let _ = std::fs::remove_file(&pipe);
+    assert!(std::process::Command::new("mkfifo").arg(&pipe).status().unwrap().success());
+    // Each would block forever on opening the pipe for reading.
+    for args in [vec!["info", pipe.to_str().unwrap()], vec!["render", pipe.to_str().unwrap()]] {
+        let err = assert_clean_failure(&ugo(&args));
+        assert!(err.contains("not a regular file"), "{err}");
+    }
+    let bad = dir.join("latin1.toml");
+    std::fs::write(&bad, b"[scene]\nname = \"caf\xe9\"\n").unwrap();
+    let err = assert_clean_failure(&ugo(&["info", bad.to_str().unwrap()]));
+    assert!(err.contains("line 2: not UTF-8 text (byte 0xe9 at column 12)"), "{err}");
+}
