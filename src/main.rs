@@ -36,7 +36,7 @@ enum Command {
         #[arg(long, value_parser = method)]
         method: Option<Method>,
         /// Reflection orders whose partial sums go to /orders (default 1,8,64 with neumann).
-        #[arg(long, value_delimiter = ',')]
+        #[arg(long, allow_negative_numbers = true, value_delimiter = ',', value_parser = cli::options::order)]
         orders: Option<Vec<usize>>,
         /// Also compute the norms of K (needs the explicit product).
         #[arg(long)]
@@ -79,10 +79,10 @@ enum Command {
         bases: Vec<String>,
         /// Also trace a forward Monte Carlo estimate of the field with this many photons
         /// and show every method's agreement with it (in standard errors).
-        #[arg(long)]
+        #[arg(long, allow_negative_numbers = true)]
         photons: Option<u64>,
         /// Seed of that estimate.
-        #[arg(long, default_value_t = 1)]
+        #[arg(long, allow_negative_numbers = true, default_value_t = 1)]
         seed: u64,
     },
     /// Monte Carlo references: backward path tracing of cameras (mean and standard-error
@@ -95,22 +95,22 @@ enum Command {
         #[arg(long = "camera")]
         cameras: Vec<String>,
         /// Paths per pixel (backward).
-        #[arg(long, default_value_t = 64)]
+        #[arg(long, allow_negative_numbers = true, default_value_t = 64)]
         spp: usize,
         /// Paths per reading of each [[probe]] (backward).
-        #[arg(long, default_value_t = 65_536)]
+        #[arg(long, allow_negative_numbers = true, default_value_t = 65_536)]
         probe_samples: usize,
         /// Forward light tracing into the (patch, direction cell) bins instead of cameras.
         #[arg(long)]
         forward: bool,
         /// Photons (forward).
-        #[arg(long, default_value_t = 1_000_000)]
+        #[arg(long, allow_negative_numbers = true, default_value_t = 1_000_000)]
         photons: u64,
         /// Seed of the random streams: the same seed and counts give the same result.
-        #[arg(long, default_value_t = 1)]
+        #[arg(long, allow_negative_numbers = true, default_value_t = 1)]
         seed: u64,
         /// Keep only light reflected at most this many times (a truncated Neumann sum).
-        #[arg(long)]
+        #[arg(long, allow_negative_numbers = true)]
         max_order: Option<usize>,
         /// Folder for the images (backward, default `.`) or the HDF5 file (forward,
         /// default `<case>-forward.h5`).
@@ -129,13 +129,13 @@ enum Command {
         #[arg(long)]
         camera: Option<String>,
         /// Stratified rays per pixel for rendering the solution.
-        #[arg(long, default_value_t = 64)]
+        #[arg(long, allow_negative_numbers = true, default_value_t = 64)]
         samples: usize,
         /// Shading of the rendered solution (see `ugo render`).
         #[arg(long, value_enum, default_value_t = ShadingArg::Flat)]
         shading: ShadingArg,
         /// Final-gather rays per pixel (with --shading gather).
-        #[arg(long, default_value_t = 256)]
+        #[arg(long, allow_negative_numbers = true, default_value_t = 256)]
         gather_rays: usize,
     },
     /// Camera images (linear EXR, tone-mapped PNG) of a solution written by `solve`.
@@ -146,7 +146,7 @@ enum Command {
         #[arg(long = "camera")]
         cameras: Vec<String>,
         /// Luminance shown as white in the PNG, cd/m² (default: the 99th percentile).
-        #[arg(long)]
+        #[arg(long, allow_negative_numbers = true)]
         exposure: Option<f64>,
         /// Folder for the images.
         #[arg(short, long, default_value = ".")]
@@ -155,13 +155,13 @@ enum Command {
         #[arg(long, value_enum, value_name = "SCALE")]
         false_colour: Option<ScaleArg>,
         /// Also write the reflection-order pictures for these recorded orders, side by side.
-        #[arg(long, value_delimiter = ',')]
+        #[arg(long, allow_negative_numbers = true, value_delimiter = ',')]
         orders: Vec<usize>,
         /// How a hit point is shaded.
         #[arg(long, value_enum, default_value_t = ShadingArg::Flat)]
         shading: ShadingArg,
         /// Final-gather rays per pixel (with `--shading gather`).
-        #[arg(long, default_value_t = 64)]
+        #[arg(long, allow_negative_numbers = true, default_value_t = 64)]
         gather_rays: usize,
         #[command(flatten)]
         view: cli::render::CameraOptions,

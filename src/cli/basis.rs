@@ -19,10 +19,10 @@ pub struct BasisOptions {
     #[arg(long, value_parser = basis)]
     basis: Option<BasisArg>,
     /// Highest harmonic degree of `--basis sh`: (lmax+1)² coefficients per patch.
-    #[arg(long, requires = "basis")]
+    #[arg(long, allow_negative_numbers = true, requires = "basis")]
     lmax: Option<usize>,
     /// Rank of `--basis svd`: coefficients per patch.
-    #[arg(long, requires = "basis")]
+    #[arg(long, allow_negative_numbers = true, requires = "basis")]
     rank: Option<usize>,
 }
 
@@ -57,6 +57,7 @@ pub fn study(
         })
         .collect::<Result<_>>()?;
     let (scene, options) = load(case, d)?;
+    super::check_writable(plot)?;
     let BasisStudy { model, rows } = compare_bases(&scene, &options, &bases, method, params, &Bars::default())?;
     let n = model.mesh.len();
     println!(

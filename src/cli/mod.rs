@@ -21,6 +21,9 @@ use ugo::scene::{Assembly, Scene};
 /// (the one place it is held), the memory limit and precision to the model options.
 pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
     let mut scene = Scene::load(case)?;
+    for warning in scene.warnings() {
+        eprintln!("ugo: warning: {warning}");
+    }
     if let Some(h) = d.patch_size {
         if !(h.is_finite() && h > 0.0) {
             bail!("--patch-size must be a positive length in metres, got {h}");
@@ -66,6 +69,33 @@ fn assembly(case: Assembly, d: &Discretize) -> Result<Assembly> {
         tolerance: positive(d.link_tolerance, tolerance, "--link-tolerance")?,
         smallest: positive(d.smallest, smallest, "--smallest (m)")?,
     })
+}
+
+/// Refuses, before any work, an output file that could not be written: a folder of that
+/// name, a missing folder, or one where no file can be created (tried with a file of the
+/// temporary name the writer would use, removed at once; a stale one is swept later).
+pub fn check_writable(path: &Path) -> Result<()> {
+    let shown = path.display();
+    if path.is_dir() {
+        bail!("cannot write {shown}: it is a folder; give a file name");
+    }
+    let folder = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    if !folder.is_dir() {
+        bail!("cannot write {shown}: the folder {} does not exist", folder.display());
+    }
+    let mut probe = path.file_name().unwrap_or_default().to_owned();
+    probe.push(format!(".{}.00000000.tmp", std::process::id()));
+    let probe = folder.join(probe);
+    match std::fs::OpenOptions::new().write(true).create_new(true).open(&probe) {
+        Ok(_) => {
+            let _ = std::fs::remove_file(&probe);
+            Ok(())
+        }
+        Err(e) => bail!("cannot write {shown}: cannot create a file in {}: {e}", folder.display()),
+    }
 }
 
 /// One line about a luminaire: its distribution, the flux integrated from it and the

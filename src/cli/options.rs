@@ -11,10 +11,10 @@ use ugo::solve::Method;
 #[derive(clap::Args, Clone, Debug)]
 pub struct Discretize {
     /// Target patch edge length, m (default: the case's `patch_size`).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub patch_size: Option<f64>,
     /// Largest kernel memory allowed, GiB (default: half the machine's RAM).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub memory_limit: Option<f64>,
     /// Direction cells per patch: a count K (equal solid angle), `klems` or `tregenza`
     /// (default: the case's `directions`, else 1).
@@ -50,10 +50,10 @@ pub enum AssemblyArg {
 #[derive(clap::Args, Clone, Debug)]
 pub struct Stopping {
     /// Relative residual at which the iteration stops (default: the case's `[solver]`).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub tolerance: Option<f64>,
     /// Most iterations (default: the case's `[solver]`).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub max_iterations: Option<usize>,
 }
 
@@ -62,9 +62,30 @@ fn scheme(name: &str) -> Result<Scheme, String> {
     Scheme::parse(name).ok_or_else(|| format!("--directions must be {}, got \"{name}\"", Scheme::NAMES))
 }
 
+/// Longest GMRES restart: `M + 1` Krylov vectors of the system's length are kept.
+pub const MAX_RESTART: usize = 1000;
+
+/// Highest reflection order `--orders` records (each order is one product with K).
+pub const MAX_ORDER: usize = 100_000;
+
 /// `--method`, `--methods`.
 pub fn method(name: &str) -> Result<Method, String> {
-    Method::parse(name).ok_or_else(|| format!("unknown method \"{name}\"; known: {}", Method::names()))
+    match Method::parse(name) {
+        Some(Method::Gmres { restart }) if restart > MAX_RESTART => Err(format!(
+            "gmres:M keeps M + 1 vectors of the system's length: M must lie in 1..={MAX_RESTART}, got {restart}"
+        )),
+        Some(m) => Ok(m),
+        None => Err(format!("unknown method \"{name}\"; known: {}", Method::names())),
+    }
+}
+
+/// One entry of `--orders`.
+pub fn order(text: &str) -> Result<usize, String> {
+    let n: usize = text.parse().map_err(|e| format!("a reflection order is a whole number ≥ 0: {e}"))?;
+    if n > MAX_ORDER {
+        return Err(format!("at most {MAX_ORDER} reflections (one product with K each), got {n}"));
+    }
+    Ok(n)
 }
 
 /// `--precision`.

@@ -14,22 +14,22 @@ use ugo::scene::{Camera, RawCamera};
 #[derive(Debug, clap::Args)]
 pub struct CameraOptions {
     /// Eye position `x,y,z`, m: render from this camera (with --look-at).
-    #[arg(long, value_delimiter = ',', requires = "look_at")]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, requires = "look_at")]
     position: Option<Vec<f64>>,
     /// Point looked at, `x,y,z`, m.
-    #[arg(long, value_delimiter = ',', requires = "position")]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, requires = "position")]
     look_at: Option<Vec<f64>>,
     /// Up direction `x,y,z` (default 0,1,0).
-    #[arg(long, value_delimiter = ',', requires = "position")]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, requires = "position")]
     up: Option<Vec<f64>>,
     /// Vertical field of view, degrees (default 40).
-    #[arg(long, requires = "position")]
+    #[arg(long, allow_negative_numbers = true, requires = "position")]
     fov_deg: Option<f64>,
     /// Image size `width,height`, pixels (default 512,512).
-    #[arg(long, value_delimiter = ',', requires = "position")]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, requires = "position")]
     resolution: Option<Vec<i64>>,
     /// Primary rays per pixel (default 4).
-    #[arg(long, requires = "position")]
+    #[arg(long, allow_negative_numbers = true, requires = "position")]
     samples: Option<i64>,
 }
 

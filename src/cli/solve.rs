@@ -3,7 +3,7 @@
 //! beside it, and the printed summary and tables.
 
 use super::options::{Discretize, Stopping};
-use super::{Bars, bytes, describe, file_name, load};
+use super::{Bars, bytes, check_writable, describe, file_name, load};
 use anyhow::{Context, Result, bail};
 use std::path::{Path, PathBuf};
 use ugo::io::{
@@ -15,6 +15,9 @@ use ugo::solve::norms::Norms;
 use ugo::solve::orders::OrderRecord;
 use ugo::solve::{Method, SolveParams};
 use ugo::study::{self, MonteCarlo, solve_case};
+
+/// Most partial sums `--orders` keeps (each is a copy of the field).
+const MAX_ORDERS_KEPT: usize = 64;
 
 /// What one command asks: the solve (its stopping rule from the command line or the
 /// case) and where its files go.
@@ -45,8 +48,17 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     if !(params.tolerance > 0.0 && params.tolerance < 1.0) {
         bail!("--tolerance must lie in (0, 1), got {}", params.tolerance);
     }
+    if let Some(orders) = &job.run.orders
+        && orders.len() > MAX_ORDERS_KEPT
+    {
+        bail!("--orders keeps a copy of the field per order: at most {MAX_ORDERS_KEPT} orders, got {}", orders.len());
+    }
     let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
     let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}{}.h5", job.suffix)));
+    check_writable(&output)?;
+    if let Some(plot) = &job.plot {
+        check_writable(plot)?;
+    }
     let study = study::Job { params, ..job.run };
     let s = solve_case(&scene, &options, &study, &Bars::default())?;
     for (method, e) in &s.failures {

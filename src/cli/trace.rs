@@ -6,7 +6,7 @@
 use super::file_name;
 use super::options::Discretize;
 use super::render::chosen;
-use super::{bar, load};
+use super::{bar, check_writable, load};
 use anyhow::{Result, bail};
 use std::path::{Path, PathBuf};
 use ugo::geometry::Mesh;
@@ -31,8 +31,11 @@ pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
     let (scene, options) = load(case, d)?;
     let mesh = Mesh::build(&scene.surfaces, options.patch_size);
     let world = World::new(&scene, mesh);
-    if world.emitters.is_empty() {
-        bail!("nothing in {} emits light: give a surface an emission", case.display());
+    // Surfaces and luminaires both emit: the tracers start paths on the one and gather
+    // (or, forward, start photons at) the other.
+    let emitted = world.emitters.flux() + world.luminaires.flux();
+    if emitted.is_nan() || emitted <= 0.0 {
+        bail!("nothing in {} emits light: give a surface an emission or add a [[luminaire]]", case.display());
     }
     if let Some(photons) = job.photons {
         return forward(case, &scene, &world, &options, job, photons);
@@ -67,6 +70,7 @@ fn forward(
         bail!("--photons must be at least 2 (standard errors need two samples), got {photons}");
     }
     let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}-forward.h5")));
+    check_writable(&output)?;
     let progress = bar(photons, "photons");
     let estimate = trace_photons(world, &options.directions, photons, &job.options, &|n| progress.inc(n));
     progress.finish_and_clear();
@@ -76,7 +80,7 @@ fn forward(
         directions: &options.directions,
         estimate: &estimate,
         options: &job.options,
-        emitted: world.emitters.flux(),
+        emitted: world.emitters.flux() + world.luminaires.flux(),
     };
     write_estimate(&output, &file)?;
     let lit: Vec<f64> = estimate
@@ -95,7 +99,7 @@ fn forward(
     );
     println!("  photons              {photons}");
     throughput(photons, estimate.rays, estimate.seconds, "photons");
-    println!("  emitted flux         {:.6e} lm", world.emitters.flux());
+    println!("  emitted flux         {:.6e} lm", world.emitters.flux() + world.luminaires.flux());
     println!("  scattered flux       {:.6e} ± {:.2e} lm", estimate.scattered.0, estimate.scattered.1);
     println!("  relative std. error  median {:.2e} over {} lit (patch, cell) bins", median(lit.clone()), lit.len());
     println!("  written              {}", output.display());

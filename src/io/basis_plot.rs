@@ -7,7 +7,7 @@ use std::path::Path;
 
 /// Draws `(basis name, unknowns, relative L² error)` rows to the PNG `path`.
 pub fn basis_plot(path: &Path, title: &str, rows: &[(String, usize, f64)]) -> Result<(), IoError> {
-    draw(path, title, rows).map_err(|e| IoError::write(path, e))
+    super::atomic_png(path, |png| draw(png, title, rows).map_err(|e| e.to_string()))
 }
 
 /// Relative L² error against unknowns per patch, one line per kind of basis.

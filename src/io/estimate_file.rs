@@ -63,5 +63,7 @@ fn write_to(path: &Path, e: &EstimateFile) -> hdf5::Result<()> {
         trace.new_attr::<f64>().create(name)?.write_scalar(&value)?;
     }
     write_identity(&file, "forward", e.scene, e.directions)?;
-    file.new_attr::<f64>().create("patch_size")?.write_scalar(&e.scene.discretization.patch_size)
+    file.new_attr::<f64>().create("patch_size")?.write_scalar(&e.scene.discretization.patch_size)?;
+    // Closed here, not dropped: the last metadata reaches the file now and its error counts.
+    file.close()
 }

@@ -28,6 +28,7 @@ pub fn write_exr_as(path: &Path, image: &Image, comments: &str) -> Result<(), Io
 
 /// The channel `Y` of the first layer of an EXR file, as an image in cd/m².
 pub fn read_exr(path: &Path) -> Result<Image, IoError> {
+    crate::scene::regular_file(path).map_err(|e| IoError::read(path, e))?;
     let image = exr::prelude::read_first_flat_layer_from_file(path)
         .map_err(|e| IoError::read(path, format!("not OpenEXR: {e}")))?;
     let layer = &image.layer_data;

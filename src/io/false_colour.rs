@@ -6,7 +6,7 @@
 //! below its bottom are drawn in the bottom colour, above its top in the top colour.
 
 use super::IoError;
-use super::atomic;
+use super::atomic_png;
 use crate::render::Image;
 use plotters::prelude::*;
 use std::path::Path;
@@ -65,11 +65,7 @@ pub fn position(l: f64, lo: f64, hi: f64, scale: Scale) -> f64 {
 /// Writes the false-colour map of `image` with its legend in `unit` to `path` (PNG).
 pub fn write_false_colour(path: &Path, image: &Image, scale: Scale, unit: &str) -> Result<(), IoError> {
     let (lo, hi) = bounds(image, scale);
-    atomic(path, |tmp| {
-        let tmp_png = tmp.with_extension("tmp.png");
-        draw(&tmp_png, image, scale, (lo, hi), unit).map_err(|e| e.to_string())?;
-        std::fs::rename(&tmp_png, tmp).map_err(|e| e.to_string())
-    })
+    atomic_png(path, |png| draw(png, image, scale, (lo, hi), unit).map_err(|e| e.to_string()))
 }
 
 fn draw(

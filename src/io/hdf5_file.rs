@@ -133,7 +133,9 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     if let Some(h) = &s.model.hierarchy {
         super::hierarchy_group::write_hierarchy(&file.create_group("hierarchy")?, h)?;
     }
-    write_attributes(&file, s)
+    write_attributes(&file, s)?;
+    // Closed here, not dropped: the last metadata reaches the file now and its error counts.
+    file.close()
 }
 
 /// `/mesh`: the patches and the names of surfaces and materials.

@@ -2,6 +2,7 @@
 //! the HDF5 file of a forward Monte Carlo estimate, convergence plots, and rendered images
 //! (linear EXR, read back for comparisons; tone-mapped PNG; false colour).
 
+mod atomic;
 mod basis_plot;
 mod error;
 mod estimate_file;
@@ -27,20 +28,4 @@ pub use read::{StoredSolution, read_solution};
 pub use readings::{write_grid_csv, write_grid_map, write_probes_csv};
 pub use triptych::{CAPTION_HEIGHT, write_triptych};
 
-use std::path::{Path, PathBuf};
-
-/// Runs `write` on `path.tmp` and renames it to `path` when it succeeds; removes the
-/// temporary file when it fails. The one temporary-name-and-rename of every output.
-fn atomic(path: &Path, write: impl FnOnce(&Path) -> Result<(), String>) -> Result<(), IoError> {
-    let mut tmp = path.as_os_str().to_owned();
-    tmp.push(".tmp");
-    let tmp = PathBuf::from(tmp);
-    match write(&tmp) {
-        Ok(()) => std::fs::rename(&tmp, path)
-            .map_err(|e| IoError::write(path, format!("cannot rename {} to it: {e}", tmp.display()))),
-        Err(why) => {
-            let _ = std::fs::remove_file(&tmp);
-            Err(IoError::write(path, why))
-        }
-    }
-}
+use atomic::{atomic, atomic_png};

@@ -14,7 +14,7 @@ const FONT: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
 
 /// Writes the three-panel convergence plot of `runs` to `path` (PNG).
 pub fn convergence_plot(path: &Path, title: &str, runs: &[Run]) -> Result<(), IoError> {
-    draw_plot(path, title, runs).map_err(|why| IoError::write(path, why))
+    super::atomic_png(path, |png| draw_plot(png, title, runs))
 }
 
 fn draw_plot(path: &Path, title: &str, runs: &[Run]) -> Result<(), String> {

@@ -29,9 +29,17 @@ pub struct StoredSolution {
 }
 
 /// Opens `path` and reads the scene, mesh, direction set and luminance field.
+///
+/// A file that is not ugo's is refused with what is wrong, never a panic: a named pipe
+/// (before opening it), ids that point past the stored scene or mesh, non-finite
+/// vertices or luminances, and declared sizes larger than the file could hold (a dataset
+/// of 10⁹ elements in a small file is refused before anything is allocated).
 pub fn read_solution(path: &Path) -> std::result::Result<StoredSolution, IoError> {
-    let file = hdf5::File::open(path).map_err(|e| IoError::Open { path: path.to_path_buf(), why: e.to_string() })?;
-    read_from(&file).map_err(|Why(why)| IoError::NotASolution { path: path.to_path_buf(), why })
+    let open = |why: String| IoError::Open { path: path.to_path_buf(), why };
+    crate::scene::regular_file(path).map_err(|e| open(e.to_string()))?;
+    let bytes = std::fs::metadata(path).map_err(|e| open(e.to_string()))?.len();
+    let file = hdf5::File::open(path).map_err(|e| open(e.to_string()))?;
+    read_from(&File { h5: &file, bytes }).map_err(|Why(why)| IoError::NotASolution { path: path.to_path_buf(), why })
 }
 
 /// What is wrong with a file's layout.
@@ -63,12 +71,52 @@ macro_rules! bail {
     };
 }
 
-fn read_from(file: &hdf5::File) -> Result<StoredSolution> {
-    let scene_file = text(file, "scene_file")?;
-    let scene = Scene::parse_with(Path::new(&scene_file), text(file, "scene_text")?, case_files(file)?)?;
-    let name = text(file, "directions")?;
-    let directions = Scheme::parse(&name).ok_or_else(|| why!("unknown direction set \"{name}\""))?.set();
-    let luminance = file.dataset("field/luminance")?.read_dyn::<f64>()?;
+/// An open solution file and its size on disk, bytes.
+struct File<'a> {
+    h5: &'a hdf5::File,
+    bytes: u64,
+}
+
+impl File<'_> {
+    /// The dataset `name`, if its declared size fits in the file (ugo stores datasets
+    /// uncompressed, so a larger one is not ugo's and would allocate without bound).
+    fn dataset(&self, name: &str, element: usize) -> Result<hdf5::Dataset> {
+        let d = self.h5.dataset(name)?;
+        let declared = (d.size() as u128) * element as u128;
+        if declared > self.bytes as u128 {
+            bail!(
+                "/{name} declares {} elements ({declared} bytes), more than the file's {} bytes",
+                d.size(),
+                self.bytes
+            );
+        }
+        Ok(d)
+    }
+
+    fn f64s(&self, name: &str) -> Result<ndarray::ArrayD<f64>> {
+        Ok(self.dataset(name, 8)?.read_dyn::<f64>()?)
+    }
+
+    fn raw<T: hdf5::H5Type>(&self, name: &str) -> Result<Vec<T>> {
+        Ok(self.dataset(name, std::mem::size_of::<T>())?.read_raw::<T>()?)
+    }
+}
+
+fn read_from(file: &File) -> Result<StoredSolution> {
+    let h5 = file.h5;
+    let scene_file = text(h5, "scene_file")?;
+    let scene = Scene::parse_with(Path::new(&scene_file), text(h5, "scene_text")?, case_files(file)?)?;
+    let name = text(h5, "directions")?;
+    let scheme = Scheme::parse(&name).ok_or_else(|| why!("unknown direction set \"{name}\""))?;
+    // The cell count the name declares must be the field's before the set is built.
+    let declared = file.dataset("field/luminance", 8)?.shape();
+    if let Scheme::Cells(k) = scheme
+        && declared.get(1) != Some(&k)
+    {
+        bail!("/field/luminance has shape {declared:?}, but the file names {k} direction cells");
+    }
+    let directions = scheme.set();
+    let luminance = file.f64s("field/luminance")?;
     let k = directions.len();
     let shape = luminance.shape().to_vec();
     if shape.len() != 3 || shape[1] != k {
@@ -79,48 +127,59 @@ fn read_from(file: &hdf5::File) -> Result<StoredSolution> {
     if shape[0] != n {
         bail!("/field/luminance has {} patches, /mesh/vertices {n}", shape[0]);
     }
-    let emission = file.dataset("field/emission")?.read_dyn::<f64>()?;
+    if let Some((i, l)) = luminance.iter().enumerate().find(|(_, l)| !l.is_finite()) {
+        bail!("/field/luminance[{i}] = {l}, not a finite luminance");
+    }
+    let emission = file.f64s("field/emission")?;
     let emission: Vec<f64> = (0..n).map(|i| emission.get([i, 0, 0]).copied().unwrap_or(0.0)).collect();
     let materials = scene.materials.len();
     if let Some(i) = patches.iter().position(|p| p.material as usize >= materials) {
         bail!("/mesh/material_id[{i}] = {}, but the stored scene has {materials} materials", patches[i].material);
     }
+    let surfaces = scene.surfaces.len();
+    if let Some(i) = patches.iter().position(|p| p.surface as usize >= surfaces) {
+        bail!("/mesh/surface_id[{i}] = {}, but the stored scene has {surfaces} surfaces", patches[i].surface);
+    }
     let faces = patches.iter().map(|p| p.face as usize + 1).max().unwrap_or(0);
     let mesh = Mesh { patches, emission, faces };
     let luminance: Vec<f64> = luminance.iter().copied().collect();
-    let orders = if file.group("orders").is_ok() { orders(file, n * k)? } else { Vec::new() };
-    let standard_error = match file.dataset("field/standard_error") {
-        Ok(d) => {
-            let e = d.read_raw::<f64>()?;
+    let orders = if h5.group("orders").is_ok() { orders(file, n * k)? } else { Vec::new() };
+    let standard_error = match h5.dataset("field/standard_error") {
+        Ok(_) => {
+            let e = file.raw::<f64>("field/standard_error")?;
             if e.len() != n * k {
                 bail!("/field/standard_error holds {} values, expected {n}×{k}", e.len());
+            }
+            if let Some((i, e)) = e.iter().enumerate().find(|(_, e)| !(e.is_finite() && **e >= 0.0)) {
+                bail!("/field/standard_error[{i}] = {e}, not a standard error");
             }
             Some(e)
         }
         Err(_) => None,
     };
-    let method = text(file, "method")?;
+    let method = text(h5, "method")?;
     Ok(StoredSolution { scene, mesh, directions, luminance, orders, standard_error, method })
 }
 
 /// The stored copies of the case's files (`/case_files`), or the disk for older files.
-fn case_files(file: &hdf5::File) -> Result<CaseFiles> {
-    let Ok(group) = file.group("case_files") else { return Ok(CaseFiles::disk()) };
-    let paths = group.dataset("paths")?.read_raw::<VarLenUnicode>()?;
+fn case_files(file: &File) -> Result<CaseFiles> {
+    let Ok(group) = file.h5.group("case_files") else { return Ok(CaseFiles::disk()) };
+    let paths = file.raw::<VarLenUnicode>("case_files/paths")?;
     let files = paths
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            Ok(CaseFile { path: PathBuf::from(p.as_str()), bytes: group.dataset(&i.to_string())?.read_raw::<u8>()? })
+            Ok(CaseFile { path: PathBuf::from(p.as_str()), bytes: file.raw::<u8>(&format!("case_files/{i}"))? })
         })
         .collect::<Result<Vec<_>>>()?;
+    let _ = group;
     Ok(CaseFiles::stored(files))
 }
 
 /// The partial sums of `/orders/{orders,partial_sums}`, each `size` long.
-fn orders(file: &hdf5::File, size: usize) -> Result<Vec<(usize, Vec<f64>)>> {
-    let which = file.dataset("orders/orders")?.read_raw::<u64>()?;
-    let sums = file.dataset("orders/partial_sums")?.read_raw::<f64>()?;
+fn orders(file: &File, size: usize) -> Result<Vec<(usize, Vec<f64>)>> {
+    let which = file.raw::<u64>("orders/orders")?;
+    let sums = file.raw::<f64>("orders/partial_sums")?;
     if sums.len() != which.len() * size {
         bail!("/orders/partial_sums holds {} values, expected {} orders × {size}", sums.len(), which.len());
     }
@@ -129,11 +188,11 @@ fn orders(file: &hdf5::File, size: usize) -> Result<Vec<(usize, Vec<f64>)>> {
 
 /// The patches from `/mesh/{vertices,vertex_count,surface_id,material_id}` and, when
 /// stored, `/mesh/{face,twin}`; older files get faces by pairing back-to-back twins.
-fn patches(file: &hdf5::File) -> Result<Vec<Patch>> {
-    let vertices = file.dataset("mesh/vertices")?.read_dyn::<f64>()?;
-    let count = file.dataset("mesh/vertex_count")?.read_raw::<u8>()?;
-    let surface = file.dataset("mesh/surface_id")?.read_raw::<u32>()?;
-    let material = file.dataset("mesh/material_id")?.read_raw::<u32>()?;
+fn patches(file: &File) -> Result<Vec<Patch>> {
+    let vertices = file.f64s("mesh/vertices")?;
+    let count = file.raw::<u8>("mesh/vertex_count")?;
+    let surface = file.raw::<u32>("mesh/surface_id")?;
+    let material = file.raw::<u32>("mesh/material_id")?;
     let n = count.len();
     if vertices.shape() != [n, 4, 3] || surface.len() != n || material.len() != n {
         bail!("/mesh datasets disagree on the number of patches");
@@ -146,13 +205,30 @@ fn patches(file: &hdf5::File) -> Result<Vec<Patch>> {
         }
         let v: Vec<DVec3> =
             (0..m).map(|j| DVec3::new(vertices[[i, j, 0]], vertices[[i, j, 1]], vertices[[i, j, 2]])).collect();
-        patches.push(Patch::from_polygon(ConvexPolygon::from_slice(&v), surface[i], material[i], i as u32));
+        if !v.iter().all(|p| p.is_finite()) {
+            bail!("/mesh/vertices[{i}] has a non-finite coordinate");
+        }
+        let polygon = ConvexPolygon::from_slice(&v);
+        if !(polygon.area() > 0.0 && polygon.area().is_finite()) {
+            bail!("/mesh/vertices[{i}] is a patch of area {}", polygon.area());
+        }
+        patches.push(Patch::from_polygon(polygon, surface[i], material[i], i as u32));
     }
-    match (file.dataset("mesh/face"), file.dataset("mesh/twin")) {
-        (Ok(face), Ok(twin)) => {
-            let (face, twin) = (face.read_raw::<u32>()?, twin.read_raw::<u32>()?);
+    match (file.h5.dataset("mesh/face"), file.h5.dataset("mesh/twin")) {
+        (Ok(_), Ok(_)) => {
+            let (face, twin) = (file.raw::<u32>("mesh/face")?, file.raw::<u32>("mesh/twin")?);
             if face.len() != n || twin.len() != n || twin.iter().any(|&t| t != NO_TWIN && t as usize >= n) {
                 bail!("/mesh/face or /mesh/twin does not match the patches");
+            }
+            // A face per patch at most, a twin's twin the patch itself, twins on one face.
+            if let Some(i) = (0..n).find(|&i| face[i] as usize >= n) {
+                bail!("/mesh/face[{i}] = {}, but there are {n} patches", face[i]);
+            }
+            if let Some(i) = (0..n).find(|&i| {
+                let t = twin[i];
+                t != NO_TWIN && (t as usize == i || twin[t as usize] != i as u32 || face[t as usize] != face[i])
+            }) {
+                bail!("/mesh/twin[{i}] = {} is not a back-to-back twin of patch {i}", twin[i]);
             }
             for (p, (&f, &t)) in patches.iter_mut().zip(face.iter().zip(&twin)) {
                 (p.face, p.twin) = (f, t);

@@ -14,11 +14,7 @@ pub const CAPTION_HEIGHT: u32 = 36;
 /// Writes `panels` (caption, image; all the same size) side by side to `path` (PNG), with
 /// `exposure` cd/m² shown as white.
 pub fn write_triptych(path: &Path, panels: &[(String, Image)], exposure: f64) -> Result<(), IoError> {
-    super::atomic(path, |tmp| {
-        let tmp_png = tmp.with_extension("tmp.png");
-        draw(&tmp_png, panels, exposure).map_err(|e| e.to_string())?;
-        std::fs::rename(&tmp_png, tmp).map_err(|e| e.to_string())
-    })
+    super::atomic_png(path, |png| draw(png, panels, exposure).map_err(|e| e.to_string()))
 }
 
 fn draw(path: &Path, panels: &[(String, Image)], exposure: f64) -> Result<(), Box<dyn std::error::Error>> {

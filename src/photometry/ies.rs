@@ -56,6 +56,7 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
         );
     }
     let multiplier = positive(&mut tokens, "the candela multiplier")?;
+    let multiplier_line = tokens.line();
     let n_v = tokens.integer("the number of vertical angles", 2..=100_000)? as usize;
     let n_h = tokens.integer("the number of horizontal angles", 1..=100_000)? as usize;
     let kind = match tokens.integer("the photometric type (1 = C, 2 = B, 3 = A)", 1..=3)? {
@@ -68,9 +69,13 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
         tokens.number(&|| what.to_string())?;
     }
     let ballast = positive(&mut tokens, "the ballast factor")?;
-    let second = tokens.number(&|| "the ballast-lamp photometric factor (or future-use field)".into())?;
+    let photometric_factor = if year <= 1995 {
+        positive(&mut tokens, "the ballast-lamp photometric factor")?
+    } else {
+        tokens.number(&|| "the future-use field after the ballast factor".into())?;
+        1.0
+    };
     tokens.number(&|| "the input watts".into())?;
-    let photometric_factor = if year <= 1995 { second } else { 1.0 };
 
     let (low, high) = if kind == System::C { (0.0, 180.0) } else { (-90.0, 90.0) };
     let vertical = angles(&mut tokens, n_v, "vertical", low, high)?;
@@ -107,8 +112,19 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
     let columns = if layout.signed { signed(columns, layout.mirrors) } else { full_turn(columns, layout.mirrors) };
     let mut table = IntensityDistribution::new(kind, columns, polar, layout.periodic);
     table.scale(multiplier * ballast * photometric_factor);
+    if !table.is_finite() {
+        let message = format!(
+            "the candela values times the candela multiplier {multiplier:e}, the ballast factor {ballast:e} and the \
+             photometric factor {photometric_factor:e} overflow double precision"
+        );
+        return Err(PhotometryError::at(file, multiplier_line, message));
+    }
+    let stated = lamps as f64 * lumens;
+    if lumens > 0.0 && !stated.is_finite() {
+        return Err(PhotometryError::at(file, multiplier_line, format!("{lamps} lamps of {lumens:e} lm overflow")));
+    }
     table.tilt = tilt;
-    table.stated_flux = (lumens > 0.0).then_some(lamps as f64 * lumens);
+    table.stated_flux = (lumens > 0.0).then_some(stated);
     table.description = format!("IES LM-63-{year}, type {kind:?}, {}", layout.name);
     Ok(table)
 }

@@ -50,7 +50,11 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
     }
     r.number("the downward flux fraction")?;
     let lorl = r.number("the light output ratio LORL (%)")?;
+    if !(0.0..=100.0).contains(&lorl) {
+        return Err(r.error(format!("expected the light output ratio LORL (0 to 100 %), got {lorl}")));
+    }
     let conversion = r.number("the conversion factor for intensities")?;
+    let conversion_line = r.line();
     if conversion <= 0.0 {
         return Err(
             r.error(format!("expected the conversion factor for intensities (greater than 0), got {conversion}"))
@@ -132,6 +136,13 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
     }
     let mut table = IntensityDistribution::new(System::C, full_turn(columns, mirrors), gamma, true);
     table.scale(lamp_flux / 1000.0 * conversion);
+    if !table.is_finite() {
+        let message = format!(
+            "the intensities times the lamp flux {lamp_flux:e} lm / 1000 and the conversion factor {conversion:e} \
+             overflow double precision"
+        );
+        return Err(PhotometryError::at(file, conversion_line, message));
+    }
     table.stated_flux = Some(lorl / 100.0 * lamp_flux);
     table.description = format!("EULUMDAT, Isym {isym}: {name}");
     Ok(table)

@@ -60,6 +60,12 @@ impl IntensityDistribution {
         self.candela.iter_mut().for_each(|c| *c *= factor);
     }
 
+    /// Every intensity and the flux they integrate to are finite numbers (a file's
+    /// values times its multipliers may overflow).
+    pub fn is_finite(&self) -> bool {
+        self.candela.iter().all(|c| c.is_finite()) && self.flux().is_finite()
+    }
+
     /// The intensity towards a unit direction `l` of the luminaire frame, cd.
     pub fn intensity(&self, l: DVec3) -> f64 {
         let (a, theta) = self.system.angles(l);

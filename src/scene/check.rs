@@ -9,6 +9,14 @@ use std::path::Path;
 /// coincidence and parallel-edge tests.
 pub(super) const REL_TOL: f64 = 1e-6;
 
+/// An area below this fraction of (size)² counts as zero.
+pub(super) const ZERO_AREA: f64 = 1e-12;
+
+/// The largest luminance (cd/m²), flux (lm), intensity (cd), illuminance (lx) or
+/// multiplier a case may give: 10¹¹ times the sun's luminance, far below the range of
+/// doubles, so that no sum over patches and cells overflows.
+pub(super) const MAGNITUDE: f64 = 1e20;
+
 pub(super) struct Context<'a> {
     pub(super) file: &'a Path,
     table: String,
@@ -46,6 +54,16 @@ impl<'a> Context<'a> {
         match self.finite(key, x)? >= 0.0 {
             true => Ok(x),
             false => Err(self.error(key, format!("must be at least 0, got {x}"))),
+        }
+    }
+
+    /// A photometric magnitude (luminance, flux, intensity, illuminance, multiplier) in
+    /// `(0, MAGNITUDE]`: larger values are no light on Earth and overflow the sums of the
+    /// field before they reach a solver.
+    pub(super) fn magnitude(&self, key: &str, x: f64, unit: &str) -> Result<f64, SceneError> {
+        match self.finite(key, x)? <= MAGNITUDE {
+            true => Ok(x),
+            false => Err(self.error(key, format!("out of range: at most {MAGNITUDE:e}{unit}, got {x:e}"))),
         }
     }
 

@@ -35,7 +35,10 @@ impl CaseFiles {
     pub fn read(&self, path: &Path) -> std::io::Result<Vec<u8>> {
         let bytes = match self.stored.iter().find(|f| f.path == path) {
             Some(f) => f.bytes.clone(),
-            None => std::fs::read(path)?,
+            None => {
+                regular_file(path)?;
+                std::fs::read(path)?
+            }
         };
         let mut read = self.read.borrow_mut();
         if !read.iter().any(|f| f.path == path) {
@@ -48,4 +51,15 @@ impl CaseFiles {
     pub fn into_read(self) -> Vec<CaseFile> {
         self.read.into_inner()
     }
+}
+
+/// Refuses to read anything but a regular file: a named pipe would block the reader
+/// forever (until some writer opens it), a device could stream without end.
+pub fn regular_file(path: &Path) -> std::io::Result<()> {
+    let kind = std::fs::metadata(path)?.file_type();
+    if kind.is_file() {
+        return Ok(());
+    }
+    let what = if kind.is_dir() { "a folder" } else { "not a regular file (a named pipe, socket or device)" };
+    Err(std::io::Error::new(std::io::ErrorKind::InvalidInput, format!("it is {what}")))
 }

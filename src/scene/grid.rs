@@ -12,10 +12,15 @@ use std::path::Path;
 #[serde(deny_unknown_fields)]
 pub struct RawGrid {
     pub name: String,
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub origin: [f64; 3],
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub edge_u: [f64; 3],
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub edge_v: [f64; 3],
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub resolution: [i64; 2],
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub normal: Option<[f64; 3]>,
 }
 

@@ -6,7 +6,7 @@
 //! what was expected there). The runtime placement and the source term are in
 //! `crate::luminaire`; the distributions in `crate::photometry`.
 
-use super::check::{Context, unique_names};
+use super::check::{Context, MAGNITUDE, unique_names};
 use super::error::SceneError;
 use super::files::CaseFiles;
 use crate::luminaire::{Luminaire, LuminaireKind, PointLuminaire};
@@ -21,13 +21,16 @@ pub struct RawLuminaire {
     pub name: String,
     #[serde(rename = "type")]
     pub kind: String,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub position: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub aim: Option<[f64; 3]>,
     pub rotate_deg: Option<f64>,
     pub multiplier: Option<f64>,
     pub flux: Option<f64>,
     pub intensity: Option<f64>,
     pub file: Option<String>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub direction: Option<[f64; 3]>,
     pub illuminance: Option<f64>,
 }
@@ -81,6 +84,7 @@ fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKi
             })?,
         )?;
         let illuminance = at.positive("illuminance", required("illuminance", l.illuminance)?)?;
+        let illuminance = at.magnitude("illuminance", illuminance, " lx")?;
         return Ok(LuminaireKind::Parallel { direction, illuminance });
     }
     let position = at.point(
@@ -90,10 +94,12 @@ fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKi
     let aim = at.direction("aim", l.aim.unwrap_or([0.0, -1.0, 0.0]))?;
     let rotate_deg = at.finite("rotate_deg", l.rotate_deg.unwrap_or(0.0))?;
     let multiplier = at.positive("multiplier", l.multiplier.unwrap_or(1.0))?;
+    let multiplier = at.magnitude("multiplier", multiplier, "")?;
     let (distribution, file) = match name {
         "isotropic" => (isotropic(at, l)?, None),
         "lambertian" => {
-            (Distribution::Lambertian { peak: at.positive("intensity", required("intensity", l.intensity)?)? }, None)
+            let peak = at.positive("intensity", required("intensity", l.intensity)?)?;
+            (Distribution::Lambertian { peak: at.magnitude("intensity", peak, " cd")? }, None)
         }
         _ => {
             let given =
@@ -107,6 +113,15 @@ fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKi
             })?;
             let read = if name == "ies" { parse_ies(&file, &text) } else { parse_ldt(&file, &text) };
             let table = read.map_err(|e| at.error("file", e.to_string()))?;
+            let flux = table.flux() * multiplier;
+            if flux.is_nan() || flux > MAGNITUDE {
+                let message = format!(
+                    "out of range: the file's intensities integrate to {:e} lm, times `multiplier` {multiplier:e}, \
+                     more than {MAGNITUDE:e} lm",
+                    table.flux()
+                );
+                return Err(at.error("file", message));
+            }
             (Distribution::Table(Box::new(table)), Some(file))
         }
     };
@@ -116,8 +131,8 @@ fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKi
 /// An isotropic source: `flux` (lm) or `intensity` (cd), exactly one.
 fn isotropic(at: &Context, l: &RawLuminaire) -> Result<Distribution, SceneError> {
     let intensity = match (l.flux, l.intensity) {
-        (Some(flux), None) => at.positive("flux", flux)? / (4.0 * std::f64::consts::PI),
-        (None, Some(i)) => at.positive("intensity", i)?,
+        (Some(flux), None) => at.magnitude("flux", at.positive("flux", flux)?, " lm")? / (4.0 * std::f64::consts::PI),
+        (None, Some(i)) => at.magnitude("intensity", at.positive("intensity", i)?, " cd")?,
         (Some(_), Some(_)) => return Err(at.error("flux", "give `flux` or `intensity`, not both")),
         (None, None) => {
             return Err(at.error("flux", "an \"isotropic\" luminaire needs `flux` (lm) or `intensity` (cd)"));

@@ -4,6 +4,7 @@
 //! `validate` turns it into a [`Scene`] or a [`SceneError`] that names the file, the
 //! table and the key. Nothing downstream (meshing, kernel, solvers) sees TOML.
 
+mod arrays;
 mod check;
 mod description;
 mod error;
@@ -11,13 +12,15 @@ mod files;
 mod grid;
 mod luminaire;
 mod material;
+mod plausible;
+mod polygon;
 mod schema;
 mod surface;
 mod validate;
 
 pub use description::{Assembly, Camera, Discretization, Material, Probe, Scene, SolverSettings};
 pub use error::SceneError;
-pub use files::{CaseFile, CaseFiles};
+pub use files::{CaseFile, CaseFiles, regular_file};
 pub use grid::Grid;
 pub use schema::RawCamera;
 
@@ -34,8 +37,17 @@ impl Camera {
 impl Scene {
     /// Reads and validates a case file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
-        let source = std::fs::read_to_string(path)
-            .map_err(|e| SceneError::new(path, "", "", format!("cannot read the case file: {e}")))?;
+        let cannot = |e: std::io::Error| SceneError::new(path, "", "", format!("cannot read the case file: {e}"));
+        regular_file(path).map_err(cannot)?;
+        let bytes = std::fs::read(path).map_err(cannot)?;
+        let source = String::from_utf8(bytes).map_err(|e| {
+            let at = e.utf8_error().valid_up_to();
+            let bytes = e.as_bytes();
+            let line = bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1;
+            let column = at - bytes[..at].iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1) + 1;
+            let message = format!("line {line}: not UTF-8 text (byte 0x{:02x} at column {column})", bytes[at]);
+            SceneError::new(path, "", "", message)
+        })?;
         Scene::parse(path, source)
     }
 
@@ -49,6 +61,13 @@ impl Scene {
     pub fn parse_with(path: &Path, source: String, files: CaseFiles) -> Result<Scene, SceneError> {
         let raw = schema::parse(path, &source)?;
         validate::validate(path, source, raw, files)
+    }
+
+    /// Values that are valid but rarely meant (brighter than the sun, a model in
+    /// millimetres read as metres, …): each names its table and key; the caller reports
+    /// them (`ugo: warning: …`) and goes on.
+    pub fn warnings(&self) -> Vec<SceneError> {
+        plausible::warnings(self)
     }
 
     /// Looks a surface up by name.

@@ -90,18 +90,27 @@ pub struct RawSurface {
     pub two_sided: Option<bool>,
     pub inside: Option<bool>,
     pub emission: Option<RawEmission>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub origin: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub edge_u: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub edge_v: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_list")]
     pub vertices: Option<Vec<[f64; 3]>>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub min: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub max: Option<[f64; 3]>,
     pub rotate_y_deg: Option<f64>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub center: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub normal: Option<[f64; 3]>,
     pub radius: Option<f64>,
     pub file: Option<String>,
     pub scale: Option<f64>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub translate: Option<[f64; 3]>,
 }
 
@@ -118,7 +127,9 @@ pub struct RawEmission {
 #[serde(deny_unknown_fields)]
 pub struct RawProbe {
     pub name: String,
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub position: [f64; 3],
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub normal: [f64; 3],
 }
 
@@ -127,10 +138,14 @@ pub struct RawProbe {
 #[serde(deny_unknown_fields)]
 pub struct RawCamera {
     pub name: String,
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub position: [f64; 3],
+    #[serde(deserialize_with = "super::arrays::exact")]
     pub look_at: [f64; 3],
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub up: Option<[f64; 3]>,
     pub fov_deg: Option<f64>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub resolution: Option<[i64; 2]>,
     pub samples: Option<i64>,
 }
@@ -200,7 +215,8 @@ fn leading_key(line: &str) -> Option<&str> {
 /// The last `key` in `… key =` at the end of `head`.
 fn nearest_key(head: &str) -> Option<&str> {
     let before = head.trim_end().strip_suffix('=')?.trim_end();
-    let start = before.rfind(|c: char| !is_key_char(c)).map_or(0, |i| i + 1);
+    // The character before the key may be several bytes long (issue 18: a `ρ` there).
+    let start = before.char_indices().rev().find(|(_, c)| !is_key_char(*c)).map_or(0, |(i, c)| i + c.len_utf8());
     let key = &before[start..];
     is_bare_key(key).then_some(key)
 }

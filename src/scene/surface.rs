@@ -1,18 +1,16 @@
 //! `[[surface]]` tables: shapes and their keys, emission, material references, degenerate
 //! geometry, and loading `mesh` OBJ files, validated into `crate::geometry::Surface`.
 
-use super::check::{Context, REL_TOL, show, unique_names};
+use super::check::{Context, MAGNITUDE, REL_TOL, ZERO_AREA, show, unique_names};
 use super::description::Material;
 use super::error::SceneError;
 use super::files::CaseFiles;
+use super::polygon::polygon_defect;
 use super::schema::{RawEmission, RawSurface};
-use crate::geometry::{Emission, Shape, Surface};
+use crate::geometry::{Emission, Shape, Surface, tessellate};
 use crate::material::MaterialModel;
 use glam::DVec3;
 use std::path::Path;
-
-/// An area below this fraction of (size)² counts as zero.
-const ZERO_AREA: f64 = 1e-12;
 
 pub(super) fn surfaces(
     path: &Path,
@@ -47,21 +45,59 @@ fn surface(at: &Context, s: &RawSurface, materials: &[Material], files: &CaseFil
         let message = format!("material \"{}\" transmits light, so the surface must be two_sided = true", s.material);
         return Err(at.error("two_sided", message));
     }
-    Ok(Surface {
-        name: s.name.clone(),
-        shape: shape(at, s, files)?,
-        material,
-        two_sided,
-        inside: s.inside.unwrap_or(false),
-        emission: s.emission.as_ref().map(|e| emission(at, e)).transpose()?,
-    })
+    let shape = shape(at, s, files)?;
+    let area = meshable(at, &shape)?;
+    let emission = s.emission.as_ref().map(|e| emission(at, e)).transpose()?;
+    if let Some(Emission::Flux(flux)) = emission
+        && flux / (std::f64::consts::PI * area) > MAGNITUDE
+    {
+        let luminance = flux / (std::f64::consts::PI * area);
+        let message = format!(
+            "out of range: {flux:e} lm over the surface's {area:e} m² is a luminance of {luminance:e} cd/m², \
+             more than {MAGNITUDE:e}"
+        );
+        return Err(at.error("emission.flux", message));
+    }
+    Ok(Surface { name: s.name.clone(), shape, material, two_sided, inside: s.inside.unwrap_or(false), emission })
+}
+
+/// The shape meshes, at its coarsest, into patches of a total area that double precision
+/// represents: a disc of radius 1e-300 (area 0) would otherwise vanish from the scene
+/// with its emitted flux, and one of radius 1e200 (area ∞) poison every sum. Returns the
+/// area, m².
+fn meshable(at: &Context, shape: &Shape) -> Result<f64, SceneError> {
+    let area: f64 = tessellate(shape, f64::INFINITY).iter().map(|e| e.area()).sum();
+    if area.is_normal() {
+        return Ok(area);
+    }
+    let (key, size) = match shape {
+        Shape::Disc { radius, .. } | Shape::Sphere { radius, .. } => ("radius", *radius),
+        Shape::Rectangle { edge_u, edge_v, .. } => ("shape", edge_u.length().max(edge_v.length())),
+        Shape::Box { min, max, .. } => ("shape", (*max - *min).length()),
+        Shape::Polygon { vertices } => ("shape", spread(vertices)),
+        Shape::Mesh { triangles, .. } => ("shape", spread(triangles.as_flattened())),
+    };
+    let why = if size > 1.0 { "too large" } else { "too small" };
+    let message =
+        format!("meshes to no patch: its area, {area:e} m², is {why} for double precision (lengths are in metres)");
+    Err(at.error(key, message))
+}
+
+/// The largest distance of a point from the first, m (infinite on overflow).
+fn spread(points: &[DVec3]) -> f64 {
+    points.iter().map(|p| p.distance(points[0])).fold(0.0, f64::max)
 }
 
 /// `emission = { luminance = … }` or `{ flux = … }`: exactly one, finite and ≥ 0.
 fn emission(at: &Context, raw: &RawEmission) -> Result<Emission, SceneError> {
     match (raw.luminance, raw.flux) {
-        (Some(l), None) => Ok(Emission::Luminance(at.non_negative("emission.luminance", l)?)),
-        (None, Some(f)) => Ok(Emission::Flux(at.non_negative("emission.flux", f)?)),
+        (Some(l), None) => {
+            at.non_negative("emission.luminance", l)?;
+            Ok(Emission::Luminance(at.magnitude("emission.luminance", l, " cd/m²")?))
+        }
+        (None, Some(f)) => {
+            Ok(Emission::Flux(at.magnitude("emission.flux", at.non_negative("emission.flux", f)?, " lm")?))
+        }
         (Some(_), Some(_)) => Err(at.error("emission", "give `luminance` or `flux`, not both")),
         (None, None) => Err(at.error("emission", "needs `luminance` (cd/m²) or `flux` (lm)")),
     }
@@ -146,7 +182,10 @@ fn rectangle(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
             return Err(k.at.error(key, "must be a non-zero vector"));
         }
     }
-    if edge_u.cross(edge_v).length() <= REL_TOL * edge_u.length() * edge_v.length() {
+    // Directions scaled first, so that a tiny (or huge) rectangle is not taken for a
+    // parallel one when its squared lengths underflow (or overflow).
+    let unit = |e: DVec3| (e / e.abs().max_element()).normalize();
+    if unit(edge_u).cross(unit(edge_v)).length() <= REL_TOL {
         return Err(k.at.error("edge_v", "must not be parallel to `edge_u`"));
     }
     Ok(Shape::Rectangle { origin, edge_u, edge_v })
@@ -157,42 +196,6 @@ fn polygon(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
     let vertices = raw.iter().map(|&v| k.at.point("vertices", v)).collect::<Result<Vec<_>, _>>()?;
     polygon_defect(&vertices).map_err(|message| k.at.error("vertices", message))?;
     Ok(Shape::Polygon { vertices })
-}
-
-/// Checks that `v` is a usable planar polygon; the error says what is wrong.
-fn polygon_defect(v: &[DVec3]) -> Result<(), String> {
-    if v.len() < 3 {
-        return Err(format!("a polygon needs at least 3 vertices, got {}", v.len()));
-    }
-    let size = bounding_diagonal(v);
-    let next = |i: usize| v[(i + 1) % v.len()];
-    if let Some(i) = (0..v.len()).find(|&i| (next(i) - v[i]).length() <= REL_TOL * size) {
-        let j = (i + 1) % v.len();
-        return Err(format!("vertices #{} and #{} coincide", i + 1, j + 1));
-    }
-    let far = v.iter().map(|&p| p - v[0]).max_by(|a, b| a.length().total_cmp(&b.length()));
-    let axis = far.unwrap_or(DVec3::X).normalize_or_zero();
-    if v.iter().all(|&p| (p - v[0]).cross(axis).length() <= REL_TOL * size) {
-        return Err("all vertices lie on one line".to_string());
-    }
-    let newell: DVec3 = (0..v.len()).map(|i| v[i].cross(next(i))).sum();
-    if newell.length() / 2.0 <= ZERO_AREA * size * size {
-        return Err("the polygon has zero area".to_string());
-    }
-    let normal = newell.normalize();
-    let centre = v.iter().sum::<DVec3>() / v.len() as f64;
-    let off = |p: &DVec3| (*p - centre).dot(normal).abs();
-    match v.iter().position(|p| off(p) > REL_TOL * size) {
-        Some(i) => Err(format!("not planar: vertex #{} is {:.3e} m off the plane", i + 1, off(&v[i]))),
-        None => Ok(()),
-    }
-}
-
-/// The diagonal of the axis-aligned bounding box of `v`.
-fn bounding_diagonal(v: &[DVec3]) -> f64 {
-    let min = v.iter().fold(DVec3::INFINITY, |m, &p| m.min(p));
-    let max = v.iter().fold(DVec3::NEG_INFINITY, |m, &p| m.max(p));
-    (max - min).length()
 }
 
 /// The `box` shape (`box` is a Rust keyword).
@@ -261,8 +264,7 @@ fn load_obj(file: &Path, files: &CaseFiles) -> Result<Vec<[DVec3; 3]>, String> {
     let mut triangles = Vec::new();
     for model in &models {
         let mesh = &model.mesh;
-        let positions: Vec<DVec3> =
-            mesh.positions.chunks_exact(3).map(|p| DVec3::new(p[0].into(), p[1].into(), p[2].into())).collect();
+        let positions: Vec<DVec3> = mesh.positions.chunks_exact(3).map(|p| DVec3::new(p[0], p[1], p[2])).collect();
         for face in mesh.indices.chunks_exact(3) {
             let corner = |i: u32| positions.get(i as usize).copied();
             let (Some(a), Some(b), Some(c)) = (corner(face[0]), corner(face[1]), corner(face[2])) else {

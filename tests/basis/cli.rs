@@ -54,8 +54,10 @@ fn bad_basis_options_are_refused_clearly() {
         (vec!["--basis", "wavelet", "--rank", "2"], "`sh` or `svd`"),
         (vec!["--basis", "sh", "--lmax", "4"], "only 16 cells"),
     ] {
+        // A writable output (checked before the work) that the refused solve never writes.
+        let out = crate::support::scratch("bad-basis").join("x.h5");
         let all =
-            [&["solve", "cases/glossy-cornell.toml", "-o", "/nonexistent/x.h5"][..], &COARSE[..], &args[..]].concat();
+            [&["solve", "cases/glossy-cornell.toml", "-o", out.to_str().unwrap()][..], &COARSE[..], &args[..]].concat();
         let o = ugo(&all);
         assert!(!o.status.success() && !text(&o).contains("panicked"), "{args:?}: {}", text(&o));
         assert!(text(&o).contains(expected), "{args:?}: {}", text(&o));

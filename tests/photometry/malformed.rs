@@ -151,3 +151,31 @@ fn a_missing_file_is_named() {
     assert_eq!(error.line(), None);
     assert!(error.to_string().contains("none.ies: cannot read the file"), "{error}");
 }
+
+#[test]
+fn ies_1995_photometric_factor_must_be_positive() {
+    let t = text("c-quadrant-1995.ies");
+    let n = line_of(&t, "1 1 10");
+    for factor in ["0", "-1"] {
+        let bad = replace_line(&t, n, &format!("1 {factor} 10"));
+        check(ies(&bad), n, &["expected the ballast-lamp photometric factor (greater than 0)"]);
+    }
+}
+
+#[test]
+fn ies_values_that_overflow_with_their_multiplier_are_refused() {
+    let t = text("c-quadrant-1995.ies");
+    let n = line_of(&t, "1 3141.5927 1 19 7 1 2 0 0 0");
+    let bad = replace_line(&t, n, "1 3141.5927 1e306 19 7 1 2 0 0 0");
+    check(ies(&bad), n, &["overflow"]);
+}
+
+#[test]
+fn ldt_light_output_ratio_must_be_a_percentage() {
+    let t = text("isym1-axial-isotropic.ldt");
+    // LORL is line 23, the conversion factor line 24.
+    for lorl in ["1e308", "-5", "100.5"] {
+        check(ldt(&replace_line(&t, 23, lorl)), 23, &["LORL (0 to 100 %)"]);
+    }
+    check(ldt(&replace_line(&t, 24, "1e306")), 24, &["overflow"]);
+}

@@ -1,6 +1,9 @@
 //! Tests of the case-file reader (`ugo::scene`): valid scenes, parse errors, validation errors.
 
+mod degenerate;
+mod lengths;
 mod luminaires;
+mod magnitudes;
 mod parse_errors;
 mod rooms;
 mod valid;

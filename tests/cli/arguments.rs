@@ -1,0 +1,107 @@
+//! Command lines refused for the right reason (issue 18, items 5, 7 and 9): negative
+//! numbers reach the option's own rule, limits on `--method gmres:M` and `--orders`,
+//! the output checked before the work, and luminaire-only scenes traced.
+
+use super::{assert_clean_failure, stderr};
+use crate::support::{scratch, ugo};
+
+#[test]
+fn negative_numbers_are_refused_by_the_rule_of_their_option() {
+    let case = "cases/furnace-box.toml";
+    let err = assert_clean_failure(&ugo(&["solve", case, "--tolerance", "-1"]));
+    assert!(err.contains("--tolerance must lie in (0, 1), got -1"), "{err}");
+    let err = assert_clean_failure(&ugo(&["solve", case, "--patch-size", "-0.1"]));
+    assert!(err.contains("--patch-size must be a positive length"), "{err}");
+    let err = assert_clean_failure(&ugo(&["info", case, "--memory-limit", "-2"]));
+    assert!(err.contains("--memory-limit must be a positive number"), "{err}");
+    // Unsigned options: clap's message names the option instead of "unexpected argument".
+    let o = ugo(&["solve", case, "--max-iterations", "-1"]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("'--max-iterations <MAX_ITERATIONS>'"), "{}", stderr(&o));
+}
+
+#[test]
+fn trace_accepts_a_scene_lit_only_by_luminaires() {
+    let dir = scratch("trace-luminaires");
+    let out = dir.join("forward.h5");
+    let case = "cases/cie171/5.2-point-source.toml";
+    let o = ugo(&["trace", case, "--forward", "--photons", "2000", "-o", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let emitted: f64 =
+        hdf5::File::open(&out).unwrap().group("trace").unwrap().attr("emitted_flux").unwrap().read_scalar().unwrap();
+    assert!(emitted > 0.0, "the luminaires' flux counts as emitted: {emitted}");
+    let o = ugo(&["trace", case, "--probe-samples", "64"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("probes"));
+}
+
+#[test]
+fn an_output_that_cannot_be_written_is_refused_before_the_work() {
+    let dir = scratch("unwritable");
+    let missing = dir.join("no-such-folder").join("res.h5");
+    // The Cornell box takes seconds to solve: the refusal must come before that.
+    let start = std::time::Instant::now();
+    let err = assert_clean_failure(&ugo(&["solve", "cases/cornell-box.toml", "-o", missing.to_str().unwrap()]));
+    assert!(err.contains("does not exist") && err.contains("no-such-folder"), "{err}");
+    assert!(start.elapsed().as_secs_f64() < 2.0, "refused after {:?}", start.elapsed());
+    let err = assert_clean_failure(&ugo(&["solve", "cases/cornell-box.toml", "-o", dir.to_str().unwrap()]));
+    assert!(err.contains("it is a folder"), "{err}");
+    let plot = dir.join("nowhere").join("p.png");
+    let o = ugo(&[
+        "compare",
+        "cases/cornell-box.toml",
+        "--plot",
+        plot.to_str().unwrap(),
+        "-o",
+        dir.join("c.h5").to_str().unwrap(),
+    ]);
+    let err = assert_clean_failure(&o);
+    assert!(err.contains("nowhere"), "{err}");
+    let left: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert!(left.iter().all(|n| !n.to_string_lossy().contains(".tmp")), "{left:?}");
+}
+
+#[test]
+fn warnings_go_to_stderr_and_the_work_goes_on() {
+    let dir = scratch("warning");
+    let case = dir.join("bright.toml");
+    let text = std::fs::read_to_string("cases/furnace-box.toml").unwrap();
+    let bright = text.replacen("luminance = 1.0", "luminance = 1e10", 1);
+    assert_ne!(text, bright);
+    std::fs::write(&case, bright).unwrap();
+    let o = ugo(&["info", case.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(err.starts_with("ugo: warning: ") && err.contains("emission.luminance"), "{err}");
+}
+
+#[test]
+fn solver_sizes_from_the_command_line_are_limited() {
+    let case = "cases/furnace-box.toml";
+    let o = ugo(&["solve", case, "--method", "gmres:100000000000"]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("M must lie in 1..=1000"), "{}", stderr(&o));
+    let o = ugo(&["solve", case, "--orders", "18446744073709551615"]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("at most 100000 reflections"), "{}", stderr(&o));
+    let many: Vec<String> = (1..=65).map(|n| n.to_string()).collect();
+    let err = assert_clean_failure(&ugo(&["solve", case, "--orders", &many.join(",")]));
+    assert!(err.contains("at most 64 orders"), "{err}");
+}
+
+#[test]
+fn a_named_pipe_or_invalid_text_is_refused_without_blocking() {
+    let dir = scratch("pipe");
+    let pipe = dir.join("case.toml");
+    let _ = std::fs::remove_file(&pipe);
+    assert!(std::process::Command::new("mkfifo").arg(&pipe).status().unwrap().success());
+    // Each would block forever on opening the pipe for reading.
+    for args in [vec!["info", pipe.to_str().unwrap()], vec!["render", pipe.to_str().unwrap()]] {
+        let err = assert_clean_failure(&ugo(&args));
+        assert!(err.contains("not a regular file"), "{err}");
+    }
+    let bad = dir.join("latin1.toml");
+    std::fs::write(&bad, b"[scene]\nname = \"caf\xe9\"\n").unwrap();
+    let err = assert_clean_failure(&ugo(&["info", bad.to_str().unwrap()]));
+    assert!(err.contains("line 2: not UTF-8 text (byte 0xe9 at column 12)"), "{err}");
+}

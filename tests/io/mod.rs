@@ -1,0 +1,6 @@
+//! Output files under faults: a write that fails (a full disk, a file-size limit) leaves
+//! the previous file byte for byte and exits non-zero; a process killed mid-write leaves a
+//! temporary file that the next run removes; concurrent writers of one path all succeed
+//! and leave one whole file.
+
+mod faults;
