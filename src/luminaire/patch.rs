@@ -44,13 +44,50 @@ pub fn direct_light(
     visibility: &Visibility,
     directions: &DirectionSet,
 ) -> DirectLight {
+    let per_patch = patch_lights(sources, &mesh.patches, visibility, directions);
+    let mut light =
+        DirectLight { arriving: Vec::with_capacity(mesh.len() * directions.len()), ..DirectLight::none(sources) };
+    per_patch.iter().for_each(|p| light.add(p));
+    light
+}
+
+/// The direct light on one patch: `D(d)` per cell and the flux of each source, lm.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PatchLight {
+    pub arriving: Vec<f64>,
+    pub intercepted: Vec<f64>,
+    pub rays: usize,
+}
+
+impl DirectLight {
+    /// No patch yet, for `sources`.
+    pub fn none(sources: &[Source]) -> DirectLight {
+        DirectLight { arriving: Vec::new(), intercepted: vec![0.0; sources.len()], rays: 0 }
+    }
+
+    /// Appends the light of one more patch.
+    pub fn add(&mut self, patch: &PatchLight) {
+        self.arriving.extend_from_slice(&patch.arriving);
+        self.intercepted.iter_mut().zip(&patch.intercepted).for_each(|(t, f)| *t += f);
+        self.rays += patch.rays;
+    }
+}
+
+/// The direct light of `sources` on each of `patches` (whose faces are those of
+/// `visibility`), in parallel.
+pub fn patch_lights(
+    sources: &[Source],
+    patches: &[Patch],
+    visibility: &Visibility,
+    directions: &DirectionSet,
+) -> Vec<PatchLight> {
     let k = directions.len();
-    let mut arriving = vec![0.0; mesh.len() * k];
-    let per_patch: Vec<(Vec<f64>, usize)> = arriving
-        .par_chunks_mut(k)
-        .zip(&mesh.patches)
-        .map(|(out, patch)| {
-            let mut onto = Onto { patch, frame: patch.frame(), visibility, directions, out, flux: 0.0, rays: 0 };
+    patches
+        .par_iter()
+        .map(|patch| {
+            let mut out = vec![0.0; k];
+            let mut onto =
+                Onto { patch, frame: patch.frame(), visibility, directions, out: &mut out, flux: 0.0, rays: 0 };
             let intercepted = sources
                 .iter()
                 .map(|source| {
@@ -73,16 +110,9 @@ pub fn direct_light(
                 .collect();
             let rays = onto.rays;
             out.iter_mut().for_each(|d| *d /= PI * patch.area);
-            (intercepted, rays)
+            PatchLight { arriving: out, intercepted, rays }
         })
-        .collect();
-    let mut intercepted = vec![0.0; sources.len()];
-    let mut rays = 0;
-    for (fluxes, r) in per_patch {
-        intercepted.iter_mut().zip(fluxes).for_each(|(t, f)| *t += f);
-        rays += r;
-    }
-    DirectLight { arriving, intercepted, rays }
+        .collect()
 }
 
 /// The light of one source onto one patch, accumulated per cell (as flux, lm).

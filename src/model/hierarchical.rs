@@ -13,7 +13,7 @@ use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch};
 use crate::kernel::hierarchy::{Hierarchy, Iterated, Operator, Options, iterate};
 use crate::kernel::{Footprint, Kernel, Transport};
-use crate::luminaire::{DirectLight, Source, direct_light, incoming};
+use crate::luminaire::{DirectLight, PatchLight, Source, direct_light, incoming, patch_lights};
 use crate::material::Block;
 use crate::progress::Progress;
 use crate::scene::Scene;
@@ -27,18 +27,26 @@ use std::time::Instant;
 /// to a fraction of the link tolerance, not to the final stopping rule.
 pub const REFINEMENT_RESIDUAL: f64 = 1e-5;
 
-/// Leaves, their ray caster and the luminaires' light on them.
-struct Lit {
-    mesh: Mesh,
-    visibility: Visibility,
-    direct: DirectLight,
+/// The luminaires' light on every node that has been a leaf (by node id): computed once
+/// per element, with the roots' ray caster (the elements keep their root's face).
+struct LightCache {
+    lights: Vec<Option<PatchLight>>,
 }
 
-impl Lit {
-    fn of(mesh: Mesh, sources: &[Source], directions: &DirectionSet) -> Lit {
-        let visibility = Visibility::build(&mesh);
-        let direct = direct_light(sources, &mesh, &visibility, directions);
-        Lit { mesh, visibility, direct }
+impl LightCache {
+    /// The direct light on the current leaves of `h`, in unknown order, computing it only
+    /// for the leaves new since the last call.
+    fn on_leaves(&mut self, h: &Hierarchy, sources: &[Source], directions: &DirectionSet) -> DirectLight {
+        let leaves = h.tree().leaves();
+        self.lights.resize(h.tree().len(), None);
+        let new: Vec<u32> = leaves.iter().copied().filter(|&id| self.lights[id as usize].is_none()).collect();
+        let patches: Vec<Patch> = new.iter().filter_map(|&id| h.tree().node(id).patch().copied()).collect();
+        for (id, light) in new.iter().zip(patch_lights(sources, &patches, h.visibility(), directions)) {
+            self.lights[*id as usize] = Some(light);
+        }
+        let mut direct = DirectLight::none(sources);
+        leaves.iter().filter_map(|&id| self.lights[id as usize].as_ref()).for_each(|l| direct.add(l));
+        direct
     }
 }
 
@@ -56,21 +64,21 @@ pub fn build(
     let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
     let mesh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
-    let on_roots = Lit::of(roots, &sources, &directions);
-    let root_l0 = source_term(&blocks, &on_roots.mesh, &on_roots.direct, k);
+    let root_visibility = Visibility::build(&roots);
+    let root_light = direct_light(&sources, &roots, &root_visibility, &directions);
+    let root_l0 = source_term(&blocks, &roots, &root_light, k);
     let mut light_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let hierarchy_options =
         Options { tolerance: refinement.tolerance, smallest: refinement.smallest, ..Options::default() };
     progress.begin("refinement", hierarchy_options.passes as u64);
-    let mut h = Hierarchy::new(&on_roots.mesh, directions.clone(), blocks.clone(), hierarchy_options, &root_l0);
-    let mut lit = None;
+    let mut h = Hierarchy::new(&roots, directions.clone(), blocks.clone(), hierarchy_options, &root_l0);
+    let mut cache = LightCache { lights: Vec::new() };
     let mut source = |h: &mut Hierarchy| -> Result<Vec<f64>, ModelError> {
         let start = Instant::now();
         h.split_leaves(&|visibility, patch, albedo, epsilon| varies(&sources, visibility, patch, albedo, epsilon));
-        let leaves = Lit::of(h.leaf_mesh(), &sources, &directions);
-        let l0 = source_term(&blocks, &leaves.mesh, &leaves.direct, k);
-        lit = Some(leaves);
+        let direct = cache.on_leaves(h, &sources, &directions);
+        let l0 = source_term(&blocks, &h.leaf_mesh(), &direct, k);
         light_seconds += start.elapsed().as_secs_f64();
         Ok(l0)
     };
@@ -86,19 +94,23 @@ pub fn build(
     };
     let Iterated { operator, l0, .. } = iterate(&mut h, &mut source, &mut solver)?;
     progress.end();
-    let Lit { mesh, visibility, direct } = lit.expect("iterate computes the source term at least once");
+    let direct = cache.on_leaves(&h, &sources, &directions);
+    let mesh = h.leaf_mesh();
+    let t_bvh = Instant::now();
+    let visibility = Visibility::build(&mesh);
+    let bvh_seconds = t_bvh.elapsed().as_secs_f64();
     let history = h.history().to_vec();
     let passes: f64 = history.iter().map(|p| p.seconds + p.solve_seconds).sum();
     let stats = AssemblyStats {
         mesh_seconds,
-        bvh_seconds: 0.0,
+        bvh_seconds,
         kernel_seconds: t.elapsed().as_secs_f64() - light_seconds.min(passes),
         light_seconds,
         pairs: operator.links(),
         rays: history.iter().map(|p| p.rays).sum::<usize>() + direct.rays,
         balance: None,
     };
-    let record = HierarchyRecord { refinement, roots: on_roots.mesh.len(), history, census: h.census() };
+    let record = HierarchyRecord { refinement, roots: roots.len(), history, census: h.census() };
     let patch_material = mesh.patches.iter().map(|p| p.material).collect();
     let twin = mesh.patches.iter().map(|p| p.twin).collect();
     let kernel = Kernel { g: Transport::Hierarchical(Box::new(operator)), directions, blocks, patch_material, twin };

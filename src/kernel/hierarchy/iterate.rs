@@ -29,15 +29,15 @@ pub struct Iterated {
 /// Solves, refines and solves again until a pass refines nothing or `options.passes`
 /// passes ran.
 pub fn iterate<E>(hierarchy: &mut Hierarchy, source: &mut SourceTerm<E>, solve: &mut Solver<E>) -> Result<Iterated, E> {
-    let start = Instant::now();
     let mut l0 = source(hierarchy)?;
     let mut operator = hierarchy.operator();
+    let start = Instant::now();
     let mut x = solve(&operator, &l0, 1.0)?;
     hierarchy.record_solve(start.elapsed().as_secs_f64());
     while hierarchy.history().len() < hierarchy.options().passes && hierarchy.refine(&x) > 0 {
-        let start = Instant::now();
         l0 = source(hierarchy)?;
         let next = hierarchy.operator();
+        let start = Instant::now();
         let x0 = hierarchy.prolong(&operator, &x);
         let mut r = vec![0.0; x0.len()];
         next.apply(&x0, &mut r);

@@ -166,6 +166,12 @@ fn elements(
     let albedo = tree.node(p).albedo;
     let v = variation(a, b);
     let split = oracle.choose(tree, p, q);
+    // the bound is at least the spread: a pair the spread alone refines is split unseen
+    if oracle.refines(oracle.error(albedo, v.spread, brightness))
+        && let Some(n) = split
+    {
+        return (Outcome::Split(n), 0);
+    }
     let (seen, visible, rays) = sight(settings.visibility, a, b, blocker);
     // the light varies over the pair when a shadow boundary may cross it (4 or 16 blocked
     // segments do not prove that nothing passes) or some sample points see nothing of the
