@@ -1,5 +1,6 @@
 //! Tests of the case-file reader (`ugo::scene`): valid scenes, parse errors, validation errors.
 
+mod assembly;
 mod degenerate;
 mod lengths;
 mod luminaires;
