@@ -9,7 +9,7 @@
 # on two cores (add 0.025 m with FINE=1: about 1.5 minutes more).
 #
 # REFERENCE=1 re-measures the reference first (`ugo trace`, 10^6 paths per probe on a copy
-# of the case without cameras, about 10 minutes) and prints it; the figures below are the
+# of the case without cameras, about a minute) and prints it; the figures below are the
 # committed reference, as `ugo solve` prints its probe table, cd/m² ± one standard error.
 set -euo pipefail
 ugo=${UGO:-./target/release/ugo}
