@@ -36,3 +36,30 @@ fn the_hierarchys_keys_are_refused_with_the_explicit_kernel() {
     let o = ugo(&["solve", "cases/furnace-box.toml", "--assembly", "hierarchical", "--link-tolerance", "-1"]);
     assert_clean_failure(&o);
 }
+
+/// Issue 14.6: `ugo bench --assembly hierarchical` reports leaves, links and time over
+/// smallest element sizes with the fitted exponents, and refuses `--export` (no matrix).
+#[test]
+fn bench_reports_the_hierarchys_links_against_the_leaves() {
+    let json = scratch("bench-hierarchical").join("bench.json");
+    let args = ["bench", "--assembly", "hierarchical", "--patch-size", "0.25", "--link-tolerance", "3e-2"];
+    let sizes = ["--smallest", "0.1", "--rays", "20000", "--scaling", "0.25,0.15", "--json", json.to_str().unwrap()];
+    let o = ugo(&[&args[..], &sizes[..]].concat());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let report: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    for key in ["occlusion_rays_per_second", "factored_apply_seconds", "links_exponent", "time_exponent"] {
+        assert!(report[key].as_f64().is_some_and(f64::is_finite), "{key}: {}", report[key]);
+    }
+    let levels = report["hierarchy"].as_array().unwrap();
+    assert_eq!(levels.len(), 3, "two sizes and the case's own");
+    for l in levels {
+        let (n, links) = (l["leaves"].as_f64().unwrap(), l["links"].as_f64().unwrap());
+        assert!(links > 0.0 && links < n * n, "{l}");
+        for key in ["rays", "nodes", "seconds", "links_per_n2", "operator_bytes"] {
+            assert!(l[key].as_f64().is_some_and(|v| v > 0.0), "{key}: {l}");
+        }
+    }
+    assert!(levels[0]["leaves"].as_u64() < levels[2]["leaves"].as_u64(), "sorted by N");
+    let err = assert_clean_failure(&ugo(&[&args[..], &["--export", "/tmp/never"]].concat()));
+    assert!(err.contains("stores none"), "{err}");
+}

@@ -5,11 +5,15 @@
 //! a STREAM-like triad measured in the same run, the time per application of the
 //! factored operator, and assemble-and-solve time and peak memory over several patch
 //! sizes with the fitted growth exponent. `--export DIR` writes the same rays and matrix
-//! for the peers (Embree, scipy).
+//! for the peers (Embree, scipy). With `--assembly hierarchical` it measures the rays, the
+//! operator's application and the hierarchy's curve over smallest element sizes instead:
+//! leaves, links, rays and time against N with their fitted exponents (`hierarchy.rs`).
 
 mod bandwidth;
 mod export;
+mod hierarchy;
 mod layouts;
+mod peak;
 mod scaling;
 
 use super::load;
@@ -19,7 +23,7 @@ use serde_json::json;
 use std::path::PathBuf;
 use ugo::kernel::Factored;
 use ugo::model::{Model, ModelOptions};
-use ugo::scene::Scene;
+use ugo::scene::{Assembly, Scene};
 use ugo::visibility::Visibility;
 
 /// What `ugo bench` measures.
@@ -36,7 +40,9 @@ pub struct BenchOptions {
     /// Also time every BVH layout (with a correctness column).
     #[arg(long)]
     layouts: bool,
-    /// Patch sizes of the scaling curve, m (default: 2.5, 2, 1.5 and 1.25 times the case's).
+    /// Patch sizes of the scaling curve, m (default: 2.5, 2, 1.5 and 1.25 times the case's);
+    /// with `--assembly hierarchical`, smallest element sizes under roots of `--patch-size`
+    /// (default: 4, 2.8, 2 and 1.4 times the case's `smallest`).
     #[arg(long, value_delimiter = ',')]
     scaling: Vec<f64>,
     /// Also time dense LU (faer against nalgebra) at these sizes.
@@ -55,21 +61,12 @@ pub fn run(o: &BenchOptions) -> Result<()> {
         layouts::dense_lu(n);
     }
     let (scene, options) = load(&o.case, &o.discretize)?;
+    if let Assembly::Hierarchical { tolerance, smallest } = scene.discretization.assembly {
+        return run_hierarchical(o, &scene, &options, (tolerance, smallest));
+    }
     let threads = rayon::current_num_threads();
     println!("ugo bench: {} ({} threads)", scene.name, threads);
-
-    let mesh = Model::mesh(&scene, &options);
-    let segments = facing_segments(o, &mesh)?;
-    let visibility = Visibility::build(&mesh);
-    let rays = layouts::rays_per_second(&visibility, &segments).max(layouts::rays_per_second(&visibility, &segments));
-    println!(
-        "  occlusion rays        {rays:>12.3e} rays/s   ({} patches, {} rays, default BVH)",
-        mesh.len(),
-        segments.len()
-    );
-    if o.layouts {
-        layouts::all_layouts(&mesh, &segments);
-    }
+    let (mesh, visibility, segments, rays) = occlusion(o, &scene, &options)?;
 
     let triad = bandwidth::triad();
     println!("  memory bandwidth      {:>12.2} GB/s     (STREAM-like triad, 3 × 256 MiB)", triad / 1e9);
@@ -110,11 +107,7 @@ pub fn run(o: &BenchOptions) -> Result<()> {
         "scaling": steps,
         "scaling_exponent": exponent,
     });
-    if let Some(path) = &o.json {
-        std::fs::write(path, serde_json::to_string_pretty(&report)?)
-            .with_context(|| format!("writing {}", path.display()))?;
-        println!("  json                  {}", path.display());
-    }
+    write_json(o, &report)?;
     if let Some(dir) = &o.export {
         export_peers(
             dir,
@@ -124,6 +117,79 @@ pub fn run(o: &BenchOptions) -> Result<()> {
             g,
             json!({ "ugo_occlusion_rays_per_second": rays, "ugo_spmv_seconds": spmv, "threads": threads }),
         )?;
+    }
+    Ok(())
+}
+
+/// `ugo bench --assembly hierarchical`: the occlusion rays, the operator's application
+/// and the hierarchy's curve over smallest element sizes (`--scaling`); the figures of a
+/// stored matrix (its sparse product against the triad, `--export`) do not apply.
+/// `refinement` is the case's (link tolerance, smallest element size).
+fn run_hierarchical(o: &BenchOptions, scene: &Scene, options: &ModelOptions, refinement: (f64, f64)) -> Result<()> {
+    let (tolerance, smallest) = refinement;
+    if o.export.is_some() {
+        bail!(
+            "--export writes the stored matrix G for the peers; the hierarchical kernel stores none (use --assembly explicit)"
+        );
+    }
+    let threads = rayon::current_num_threads();
+    println!("ugo bench: {} ({} threads, hierarchical kernel, roots of {} m)", scene.name, threads, options.patch_size);
+    let rays = occlusion(o, scene, options)?.3;
+    let (own, model) = hierarchy::level(scene, options, tolerance, smallest)?;
+    println!("  sparse product G x    skipped: the hierarchy stores no matrix (links applied by pull, gather, push)");
+    let factored = bandwidth::apply_seconds(&Factored::new(&model.kernel));
+    println!(
+        "  factored K x = B(G x) {:>12.2} ms       ({:.3e} unknowns/s; {} links, {:.1} MiB)",
+        factored * 1e3,
+        model.l0.len() as f64 / factored,
+        model.stats.pairs,
+        model.kernel.g.bytes() / (1u64 << 20) as f64
+    );
+    let curve = hierarchy::curve(scene, options, tolerance, &o.scaling, own)?;
+    let report = json!({
+        "case": scene.name,
+        "threads": threads,
+        "assembly": "hierarchical",
+        "patch_size": options.patch_size,
+        "link_tolerance": tolerance,
+        "occlusion_rays_per_second": rays,
+        "factored_apply_seconds": factored,
+        "hierarchy": curve.levels,
+        "links_exponent": curve.links_exponent,
+        "time_exponent": curve.time_exponent,
+        "skipped": ["spmv_bytes_per_second", "triad_bytes_per_second", "assembly_speedup", "scaling", "export"],
+    });
+    write_json(o, &report)
+}
+
+/// The root mesh, its ray caster, `--rays` segments between facing patches and the
+/// occlusion rays per second through them, printed (with every layout for `--layouts`).
+fn occlusion(
+    o: &BenchOptions,
+    scene: &Scene,
+    options: &ModelOptions,
+) -> Result<(ugo::geometry::Mesh, Visibility, Vec<layouts::Segment>, f64)> {
+    let mesh = Model::mesh(scene, options);
+    let segments = facing_segments(o, &mesh)?;
+    let visibility = Visibility::build(&mesh);
+    let rays = layouts::rays_per_second(&visibility, &segments).max(layouts::rays_per_second(&visibility, &segments));
+    println!(
+        "  occlusion rays        {rays:>12.3e} rays/s   ({} patches, {} rays, default BVH)",
+        mesh.len(),
+        segments.len()
+    );
+    if o.layouts {
+        layouts::all_layouts(&mesh, &segments);
+    }
+    Ok((mesh, visibility, segments, rays))
+}
+
+/// Writes `report` to `--json`, if given.
+fn write_json(o: &BenchOptions, report: &serde_json::Value) -> Result<()> {
+    if let Some(path) = &o.json {
+        std::fs::write(path, serde_json::to_string_pretty(report)?)
+            .with_context(|| format!("writing {}", path.display()))?;
+        println!("  json                  {}", path.display());
     }
     Ok(())
 }

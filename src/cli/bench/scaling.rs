@@ -2,6 +2,7 @@
 //! (time, peak memory, unknowns), the growth exponent fitted to `time ∝ N^p`, and the
 //! assembly's speed-up from one thread to all.
 
+use super::peak::Peak;
 use anyhow::Result;
 use serde::Serialize;
 use std::time::Instant;
@@ -28,8 +29,7 @@ pub struct Step {
 
 /// Assembles and solves `scene` at `patch_size`.
 pub fn step(scene: &Scene, options: &ModelOptions, patch_size: f64) -> Result<(Step, Model)> {
-    let before = status("VmRSS:");
-    let reset = reset_peak();
+    let peak = Peak::start();
     let options = ModelOptions { patch_size, ..options.clone() };
     let t = Instant::now();
     let model = Model::build(scene, &options, &Silent)?;
@@ -46,15 +46,19 @@ pub fn step(scene: &Scene, options: &ModelOptions, patch_size: f64) -> Result<(S
         pairs: model.stats.pairs,
         assembly_seconds,
         solve_seconds,
-        peak_bytes: if reset { status("VmHWM:").zip(before).map(|(p, b)| (p - b).max(0.0)) } else { None },
+        peak_bytes: peak.bytes(),
     };
     Ok((step, model))
 }
 
 /// Least-squares slope of `ln(total time)` against `ln N`.
 pub fn exponent(steps: &[Step]) -> f64 {
-    let points: Vec<(f64, f64)> =
-        steps.iter().map(|s| ((s.patches as f64).ln(), (s.assembly_seconds + s.solve_seconds).ln())).collect();
+    slope(steps.iter().map(|s| (s.patches as f64, s.assembly_seconds + s.solve_seconds)))
+}
+
+/// Growth exponent `p` of `y ∝ x^p`: the least-squares slope of `ln y` against `ln x`.
+pub fn slope(xy: impl Iterator<Item = (f64, f64)>) -> f64 {
+    let points: Vec<(f64, f64)> = xy.map(|(x, y)| (x.ln(), y.ln())).collect();
     let n = points.len() as f64;
     let (mx, my) = (points.iter().map(|p| p.0).sum::<f64>() / n, points.iter().map(|p| p.1).sum::<f64>() / n);
     let sxy: f64 = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
@@ -70,19 +74,4 @@ pub fn assembly_with_threads(scene: &Scene, options: &ModelOptions, threads: usi
         Model::build(scene, options, &Silent)?;
         Ok(t.elapsed().as_secs_f64())
     })
-}
-
-/// Resets the kernel's peak-RSS counter of this process (Linux `clear_refs` 5); false
-/// when the system does not support it (the peak then stays above the resident size).
-fn reset_peak() -> bool {
-    std::fs::write("/proc/self/clear_refs", "5").is_ok()
-        && status("VmHWM:").zip(status("VmRSS:")).is_some_and(|(peak, now)| peak <= now + 4.0 * 1024.0 * 1024.0)
-}
-
-/// A `kB` line (`VmHWM:`, `VmRSS:`) of this process's status, bytes.
-fn status(key: &str) -> Option<f64> {
-    let status = std::fs::read_to_string("/proc/self/status").ok()?;
-    let line = status.lines().find(|l| l.starts_with(key))?;
-    let kib: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
-    Some(kib * 1024.0)
 }
