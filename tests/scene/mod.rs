@@ -5,6 +5,7 @@ mod lengths;
 mod luminaires;
 mod magnitudes;
 mod parse_errors;
+mod ranges;
 mod rooms;
 mod valid;
 mod validation_errors;
