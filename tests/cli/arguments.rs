@@ -146,3 +146,33 @@ fn an_obj_model_in_millimetres_is_warned_about_and_refused_before_meshing() {
     assert!(err.starts_with("ugo: warning: ") && err.contains("scale = 0.001"), "{err}");
     assert!(err.contains("ugo: error: the model would need") && err.contains("patches"), "{err}");
 }
+
+#[test]
+fn physics_warnings_reach_stderr_the_summary_and_the_file_and_strict_makes_them_errors() {
+    let dir = scratch("physics-warnings");
+    let case = dir.join("probe-down.toml");
+    let text = std::fs::read_to_string("cases/furnace-box.toml").unwrap();
+    let down = text.replacen(
+        "position = [0.5, 0.0, 0.5]\nnormal = [0.0, 1.0, 0.0]",
+        "position = [0.5, 0.0, 0.5]\nnormal = [0.0, -1.0, 0.0]",
+        1,
+    );
+    assert_ne!(text, down);
+    std::fs::write(&case, down).unwrap();
+    let out = dir.join("res.h5");
+    let args = ["solve", case.to_str().unwrap(), "--patch-size", "0.25", "-o", out.to_str().unwrap()];
+    let o = ugo(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(err.contains("ugo: warning: probe \"floor centre\": its normal points into the surface"), "{err}");
+    assert!(String::from_utf8_lossy(&o.stdout).contains("warnings                      1"));
+    let file = hdf5::File::open(&out).unwrap();
+    let stored: Vec<hdf5::types::VarLenUnicode> = file.dataset("warnings").unwrap().read_raw().unwrap();
+    assert_eq!(stored.len(), 1);
+    assert!(stored[0].as_str().contains("floor centre"));
+    drop(file);
+    std::fs::remove_file(&out).unwrap();
+    let err = assert_clean_failure(&ugo(&[&args[..], &["--strict"]].concat()));
+    assert!(err.contains("--strict") && err.contains("floor centre"), "{err}");
+    assert!(!out.exists(), "--strict wrote the file");
+}
