@@ -30,7 +30,8 @@ pub struct TraceJob {
 pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
     let (scene, options) = load(case, d)?;
     let f = ugo::model::Model::forecast(&scene, &options);
-    if !(f.mesh_bytes + f.vector_bytes <= options.memory_limit as f64) {
+    let need = f.mesh_bytes + f.vector_bytes;
+    if need.is_nan() || need > options.memory_limit as f64 {
         bail!(
             "the mesh would need {} for {:.3e} patches (estimated before meshing), over the limit of {}: \
              a larger --patch-size, or a higher --memory-limit if the machine has the RAM",

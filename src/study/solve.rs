@@ -169,7 +169,7 @@ pub fn solve_case(
         monte_carlo,
         warnings: Vec::new(),
     };
-    solved.warnings = super::physics_warnings(scene, &solved);
+    solved.warnings = super::physics_warnings(scene, &solved.model, &solved.x, &solved.energy);
     Ok(solved)
 }
 

@@ -17,12 +17,12 @@
 //!
 //! The rays are stratified with fixed seeds: the same case gives the same warnings.
 
-use super::solve::Solved;
 use crate::geometry::Frame;
 use crate::luminaire::Light;
 use crate::material::cosine_direction;
 use crate::model::Model;
 use crate::random::Rng;
+use crate::readout::energy::EnergyBalance;
 use crate::scene::Scene;
 use crate::visibility::NO_FACE;
 use glam::DVec3;
@@ -36,12 +36,13 @@ const SENSOR_RAYS: usize = 256;
 const BACKS: f64 = 0.02;
 
 /// Every warning of a solved case, one sentence each.
-pub fn physics_warnings(scene: &Scene, s: &Solved) -> Vec<String> {
+/// Every warning of the solved field `x` of `model` (of `scene`), with its energy balance.
+pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance) -> Vec<String> {
     let mut out = Vec::new();
-    backs(scene, s, &mut out);
-    luminaires(scene, &s.model, &mut out);
-    sensors(scene, &s.model, &mut out);
-    let e = &s.energy;
+    backs(scene, model, x, energy, &mut out);
+    luminaires(scene, model, &mut out);
+    sensors(scene, model, &mut out);
+    let e = energy;
     if e.escaped < -1e-9 * e.emitted.abs() {
         out.push(format!(
             "the escaped flux is negative ({:.4} lm, {:.3} % of the {:.4} lm emitted): no light enters from outside, \
@@ -67,15 +68,14 @@ fn back_hit(model: &Model, origin: DVec3, direction: DVec3, ignore: u32) -> Opti
     })
 }
 
-fn backs(scene: &Scene, s: &Solved, out: &mut Vec<String>) {
-    let model = &s.model;
+fn backs(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, out: &mut Vec<String>) {
     let (mesh, k) = (&model.mesh, model.kernel.cells());
     let cells = model.kernel.directions.cells();
     let outgoing: Vec<f64> = mesh
         .patches
         .iter()
         .enumerate()
-        .map(|(i, p)| p.area * (0..k).map(|c| s.x[i * k + c] * cells[c].projected).sum::<f64>())
+        .map(|(i, p)| p.area * (0..k).map(|c| x[i * k + c] * cells[c].projected).sum::<f64>())
         .collect();
     let total: f64 = outgoing.iter().sum();
     let mut lost = vec![0.0; scene.surfaces.len()];
@@ -96,7 +96,7 @@ fn backs(scene: &Scene, s: &Solved, out: &mut Vec<String>) {
             }
         }
     }
-    for (source, flux) in model.sources.iter().zip(&s.energy.luminaire_emitted) {
+    for (source, flux) in model.sources.iter().zip(&energy.luminaire_emitted) {
         if let Light::Point { position, .. } = source.light {
             for (direction, weight) in photons(source, *flux) {
                 if let Some(Some(surface)) = back_hit(model, position, direction, NO_FACE) {
@@ -106,7 +106,7 @@ fn backs(scene: &Scene, s: &Solved, out: &mut Vec<String>) {
         }
     }
     let sum: f64 = lost.iter().sum();
-    if sum <= BACKS * s.energy.emitted {
+    if sum <= BACKS * energy.emitted {
         return;
     }
     let mut order: Vec<usize> = (0..lost.len()).filter(|&i| lost[i] > 0.0).collect();
@@ -116,7 +116,7 @@ fn backs(scene: &Scene, s: &Solved, out: &mut Vec<String>) {
     out.push(format!(
         "about {sum:.4} lm ({:.1} % of the flux emitted) meets the back of one-sided surfaces, where it is lost: \
          {}; a surface facing the wrong way (`inside`, the order of its vertices) or one meant to be two_sided",
-        100.0 * sum / s.energy.emitted,
+        100.0 * sum / energy.emitted,
         named.join(", ")
     ));
 }

@@ -77,7 +77,7 @@ fn probes_facing_into_a_surface_or_behind_one_are_reported() {
 fn a_negative_escaped_flux_is_explained_and_bounded() {
     let (scene, mut s) = solved(&room(false, ""));
     s.energy.escaped = -6.8385;
-    let w = physics_warnings(&scene, &s);
+    let w = physics_warnings(&scene, &s.model, &s.x, &s.energy);
     let w = w.iter().find(|w| w.contains("negative")).unwrap_or_else(|| panic!("{w:?}"));
     assert!(w.contains("-6.8385 lm") && w.contains("discretization error") && w.contains("0.684 %"), "{w}");
 }
