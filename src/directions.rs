@@ -210,15 +210,19 @@ pub enum Scheme {
 }
 
 impl Scheme {
-    /// What [`Scheme::parse`] accepts, for error messages.
-    pub const NAMES: &'static str = "a cell count ≥ 1, \"klems\" or \"tregenza\"";
+    /// The most cells a set may have: the kernel stores cell indices as 16-bit integers.
+    pub const MAX_CELLS: usize = u16::MAX as usize;
 
-    /// A cell count (`"64"`), `"klems"` or `"tregenza"`.
+    /// What [`Scheme::parse`] accepts, for error messages.
+    pub const NAMES: &'static str =
+        "a cell count from 1 to 65535 (cells are stored as 16-bit indices), \"klems\" or \"tregenza\"";
+
+    /// A cell count (`"64"`, at most [`Scheme::MAX_CELLS`]), `"klems"` or `"tregenza"`.
     pub fn parse(name: &str) -> Option<Scheme> {
         match name {
             "klems" => Some(Scheme::Klems),
             "tregenza" => Some(Scheme::Tregenza),
-            n => n.parse::<usize>().ok().filter(|&k| k >= 1).map(Scheme::Cells),
+            n => n.parse::<usize>().ok().filter(|&k| (1..=Scheme::MAX_CELLS).contains(&k)).map(Scheme::Cells),
         }
     }
 

@@ -1,15 +1,20 @@
-//! `ugo info CASE`: what the case will cost, before any assembly.
+//! `ugo info CASE`: what the case will cost, before any assembly: first from the surfaces'
+//! closed forms, before meshing (a model over the memory limit is refused there), then
+//! counted on the mesh.
 
 use super::options::Discretize;
 use super::{bytes, describe, load};
 use anyhow::Result;
 use std::path::Path;
-use ugo::kernel::Estimate;
+use ugo::kernel::{Estimate, Forecast};
 use ugo::luminaire::Source;
 use ugo::model::Model;
 
 pub fn run(case: &Path, d: &Discretize) -> Result<()> {
     let (scene, options) = load(case, d)?;
+    let forecast = Model::forecast(&scene, &options);
+    print_forecast(&forecast, scene.discretization.assembly.name());
+    forecast.check(options.memory_limit)?;
     let mesh = Model::mesh(&scene, &options);
     let estimate = Estimate::of(&mesh, &options.directions);
     let areas = mesh.surface_areas(scene.surfaces.len());
@@ -40,4 +45,18 @@ pub fn run(case: &Path, d: &Discretize) -> Result<()> {
     println!("  assembly peak      {:>12}", bytes(estimate.assembly_bytes));
     println!("  memory limit       {:>12}", bytes(options.memory_limit as f64));
     Ok(())
+}
+
+/// The figures known before meshing.
+fn print_forecast(f: &Forecast, assembly: &str) {
+    println!("ugo info: before meshing ({assembly} kernel, from the surfaces' areas and the patch size)");
+    println!("  patches N          {:>12.4e}", f.patches);
+    if let Some(leaves) = f.leaves {
+        println!("  leaves at most     {:>12.4e}   (links are known only after refinement)", leaves);
+    } else {
+        println!("  facing pairs       {:>12.4e}{}", f.facing_pairs, if f.sampled { " (sampled)" } else { "" });
+        println!("  non-zeros of G     {:>12.4e}", f.nonzeros);
+    }
+    println!("  unknowns           {:>12.4e}   ({} cells)", f.unknowns, f.cells);
+    println!("  memory at peak     {:>12}", bytes(f.peak_bytes()));
 }

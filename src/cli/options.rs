@@ -55,6 +55,9 @@ pub struct Stopping {
     /// Most iterations (default: the case's `[solver]`).
     #[arg(long, allow_negative_numbers = true)]
     pub max_iterations: Option<usize>,
+    /// Turn every warning (the case's and the solved field's) into an error: nothing is written.
+    #[arg(long)]
+    pub strict: bool,
 }
 
 /// `--directions`.

@@ -39,6 +39,10 @@ impl Job {
 
 pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let (scene, options) = load(case, d)?;
+    let strict = job.stopping.strict;
+    if strict && let Some(first) = scene.warnings().first() {
+        bail!("--strict: the case's warning is an error: {first}");
+    }
     let params = SolveParams {
         tolerance: job.stopping.tolerance.unwrap_or(scene.solver.tolerance),
         max_iterations: job.stopping.max_iterations.unwrap_or(scene.solver.max_iterations),
@@ -64,6 +68,16 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     for (method, e) in &s.failures {
         eprintln!("ugo: {} failed: {e}", method.name());
     }
+    for warning in &s.warnings {
+        eprintln!("ugo: warning: {warning}");
+    }
+    if strict && !s.warnings.is_empty() {
+        bail!(
+            "--strict: {} warning(s) about the solved field, nothing written: {}",
+            s.warnings.len(),
+            s.warnings.join("; ")
+        );
+    }
     let basis = s.basis.as_ref().map(|(factors, full_residual)| BasisRecord {
         factors,
         coefficients: &s.coefficients,
@@ -83,6 +97,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         runs: &s.runs,
         norms: s.norms.as_ref(),
         basis: basis.as_ref(),
+        warnings: &s.warnings,
     };
     write_solution(&output, &solution).with_context(|| format!("writing {}", output.display()))?;
     summary(&solution, &output);
@@ -175,6 +190,9 @@ fn summary(s: &Solution, output: &Path) {
     println!("  flux absorbed      {:>12.4} lm", e.absorbed);
     println!("  flux escaped       {:>12.4} lm", e.escaped);
     println!("  imbalance          {:>12.3e} (relative to emitted)", e.imbalance / e.emitted);
+    if !s.warnings.is_empty() {
+        println!("  warnings           {:>12}   (on stderr and in /warnings)", s.warnings.len());
+    }
     if !s.probes.is_empty() {
         println!("  probes                   luminance cd/m²   illuminance lx   of it direct lx");
         for p in s.probes {

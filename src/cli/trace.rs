@@ -29,6 +29,17 @@ pub struct TraceJob {
 
 pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
     let (scene, options) = load(case, d)?;
+    let f = ugo::model::Model::forecast(&scene, &options);
+    let need = f.mesh_bytes + f.vector_bytes;
+    if need.is_nan() || need > options.memory_limit as f64 {
+        bail!(
+            "the mesh would need {} for {:.3e} patches (estimated before meshing), over the limit of {}: \
+             a larger --patch-size, or a higher --memory-limit if the machine has the RAM",
+            super::bytes(f.mesh_bytes + f.vector_bytes),
+            f.patches,
+            super::bytes(options.memory_limit as f64)
+        );
+    }
     let mesh = Mesh::build(&scene.surfaces, options.patch_size);
     let world = World::new(&scene, mesh);
     // Surfaces and luminaires both emit: the tracers start paths on the one and gather

@@ -11,4 +11,4 @@ pub use frame::Frame;
 pub use mesh::{Mesh, NO_TWIN, Patch};
 pub use polygon::{ConvexPolygon, MAX_CLIPPED};
 pub use surface::{Emission, Shape, Surface};
-pub use tessellate::tessellate;
+pub use tessellate::{element_count, tessellate};

@@ -22,6 +22,32 @@ pub fn tessellate(shape: &Shape, h: f64) -> Vec<ConvexPolygon> {
     }
 }
 
+/// How many elements [`tessellate`] makes of `shape` at edge length `h`, counted without
+/// making them (in floating point, so that a count past any memory stays a number): the
+/// grids' `nu × nv`, the triangles' `m²`. An upper bound where a grid cell collapses.
+pub fn element_count(shape: &Shape, h: f64) -> f64 {
+    let cuts = |length: f64| (length / h).ceil().max(1.0);
+    let triangle = |a: DVec3, b: DVec3, c: DVec3| cuts(a.distance(b).max(b.distance(c)).max(c.distance(a))).powi(2);
+    match shape {
+        Shape::Rectangle { edge_u, edge_v, .. } => cuts(edge_u.length()) * cuts(edge_v.length()),
+        Shape::Polygon { vertices } => {
+            let normal = newell_normal(vertices);
+            if vertices.len() == 4 && is_convex(vertices, normal) {
+                let [a, b, c, d] = [vertices[0], vertices[1], vertices[2], vertices[3]];
+                return cuts((b - a).length().max((c - d).length())) * cuts((d - a).length().max((c - b).length()));
+            }
+            ear_clip(vertices, normal).iter().map(|&[a, b, c]| triangle(a, b, c)).sum()
+        }
+        Shape::Box { min, max, .. } => {
+            let [x, y, z] = (*max - *min).to_array().map(cuts);
+            2.0 * (x * y + y * z + z * x)
+        }
+        Shape::Disc { radius, .. } => cuts(*radius) * cuts(2.0 * PI * radius).max(16.0),
+        Shape::Sphere { radius, .. } => cuts(PI * radius).max(4.0) * cuts(2.0 * PI * radius).max(8.0),
+        Shape::Mesh { triangles, .. } => triangles.iter().map(|t| triangle(t[0], t[1], t[2])).sum(),
+    }
+}
+
 fn divisions(length: f64, h: f64) -> usize {
     ((length / h).ceil() as usize).max(1)
 }

@@ -58,6 +58,8 @@ pub struct Solution<'a> {
     pub norms: Option<&'a Norms>,
     /// The angular basis of a reduced solve, when one was used.
     pub basis: Option<&'a BasisRecord<'a>>,
+    /// The physics warnings of the solve (`/warnings`, one string each, empty when none).
+    pub warnings: &'a [String],
 }
 
 /// A solve in a factored angular basis: the factors and the coefficients solved for.
@@ -99,6 +101,7 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     dataset(&field, "illuminance", &Array1::from(s.illuminance.to_vec()))?;
     dataset(&field, "direct_illuminance", &Array1::from(patch_illuminance(&s.model.direct.arriving, k)))?;
 
+    strings(&file, "warnings", s.warnings.iter().map(String::as_str))?;
     let solver = file.create_group("solver")?;
     write_history(&solver, s.info)?;
     if s.runs.len() > 1 {

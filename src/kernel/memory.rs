@@ -18,6 +18,8 @@ use thiserror::Error;
 pub const BYTES_PER_NONZERO: u64 = 16;
 /// Transient bytes per unordered pair during assembly (row work plus symmetric rows).
 const BYTES_PER_PAIR_ASSEMBLY: u64 = 24 + 2 * 16;
+/// The same, as a float (`super::forecast`).
+pub(super) const ASSEMBLY_BYTES_PER_PAIR: f64 = BYTES_PER_PAIR_ASSEMBLY as f64;
 
 /// What the kernel of a mesh will cost.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -95,7 +97,7 @@ fn sample_facing(mesh: &Mesh, cells: usize) -> (f64, f64) {
 }
 
 /// Estimated cell pairs `(d, m)` that the exchange between `a` and `b` spreads over.
-fn pieces(a: &Patch, b: &Patch, cells: usize) -> f64 {
+pub(super) fn pieces(a: &Patch, b: &Patch, cells: usize) -> f64 {
     if cells == 1 {
         return 1.0;
     }

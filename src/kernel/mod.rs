@@ -6,6 +6,7 @@
 mod assembly;
 mod balance;
 mod blocks;
+mod forecast;
 pub mod hierarchy;
 mod matrix;
 pub mod memory;
@@ -15,6 +16,7 @@ mod transport;
 pub use assembly::{Assembled, assemble, facing};
 pub use balance::BalanceReport;
 pub use blocks::apply_blocks;
+pub use forecast::{Forecast, OverLimit};
 pub use matrix::{Precision, TransportMatrix, spmv};
 pub use memory::{Estimate, Footprint, TooLarge};
 pub use operator::{Explicit, Factored, Kernel};

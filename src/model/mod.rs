@@ -16,6 +16,7 @@ mod system;
 pub use system::{AssemblyStats, HierarchyRecord, Model, ModelError, ModelOptions, Refinement};
 
 use crate::geometry::Mesh;
+use crate::kernel::Forecast;
 use crate::progress::Progress;
 use crate::scene::{Assembly, Scene};
 use source::source_term;
@@ -26,9 +27,22 @@ impl Model {
         Mesh::build(&scene.surfaces, options.patch_size)
     }
 
-    /// Builds the full model with the scene's assembly (`[discretization] method`);
-    /// `progress` hears of the pair evaluations, or of the hierarchy's refinement passes.
+    /// What the model of `scene` will cost, from its surfaces, before meshing.
+    pub fn forecast(scene: &Scene, options: &ModelOptions) -> Forecast {
+        let (surfaces, materials) = (&scene.surfaces, scene.materials.len());
+        match scene.discretization.assembly {
+            Assembly::Explicit => Forecast::explicit(surfaces, materials, options.patch_size, &options.directions),
+            Assembly::Hierarchical { smallest, .. } => {
+                Forecast::hierarchical(surfaces, materials, options.patch_size, smallest, &options.directions)
+            }
+        }
+    }
+
+    /// Builds the full model with the scene's assembly (`[discretization] method`), after
+    /// its forecast is checked against the memory limit; `progress` hears of the pair
+    /// evaluations, or of the hierarchy's refinement passes.
     pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> Result<Model, ModelError> {
+        Model::forecast(scene, options).check(options.memory_limit)?;
         match scene.discretization.assembly {
             Assembly::Explicit => Ok(explicit::build(scene, options, progress)?),
             Assembly::Hierarchical { tolerance, smallest } => {

@@ -5,7 +5,7 @@
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::kernel::hierarchy::{Census, Pass};
-use crate::kernel::{BalanceReport, Kernel, Precision, TooLarge};
+use crate::kernel::{BalanceReport, Kernel, OverLimit, Precision, TooLarge};
 use crate::luminaire::{DirectLight, Source};
 use crate::scene::Scene;
 use crate::solve::SolveError;
@@ -43,6 +43,9 @@ impl ModelOptions {
 /// Why no model was built.
 #[derive(Debug, Error)]
 pub enum ModelError {
+    /// Refused before meshing, from the surfaces' closed forms.
+    #[error(transparent)]
+    OverLimit(#[from] OverLimit),
     #[error(transparent)]
     TooLarge(#[from] TooLarge),
     /// A solve between the hierarchy's refinement passes failed.

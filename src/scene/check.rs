@@ -17,6 +17,11 @@ pub(super) const ZERO_AREA: f64 = 1e-12;
 /// doubles, so that no sum over patches and cells overflows.
 pub(super) const MAGNITUDE: f64 = 1e20;
 
+/// The largest coordinate or length of the scene's geometry, m (1,000 km): rays are cast in
+/// single precision, which at this distance from the origin tells points apart only to
+/// 6 cm, and every area and patch count stays far inside the range of doubles.
+pub(super) const COORDINATE: f64 = 1e6;
+
 pub(super) struct Context<'a> {
     pub(super) file: &'a Path,
     table: String,
@@ -75,11 +80,37 @@ impl<'a> Context<'a> {
         }
     }
 
+    /// A point (or an edge, a translation) of the geometry, finite and within
+    /// `±COORDINATE` m on every axis.
+    pub(super) fn place(&self, key: &str, v: [f64; 3]) -> Result<DVec3, SceneError> {
+        let p = self.point(key, v)?;
+        match p.abs().max_element() <= COORDINATE {
+            true => Ok(p),
+            false => Err(self.error(key, out_of_range(format!("[{:e}, {:e}, {:e}]", p.x, p.y, p.z)))),
+        }
+    }
+
+    /// A length of the geometry (a radius), m, in `(0, COORDINATE]`.
+    pub(super) fn length(&self, key: &str, x: f64) -> Result<f64, SceneError> {
+        match self.positive(key, x)? <= COORDINATE {
+            true => Ok(x),
+            false => Err(self.error(key, out_of_range(format!("{x:e} m")))),
+        }
+    }
+
     /// A non-zero vector, normalized.
     pub(super) fn direction(&self, key: &str, v: [f64; 3]) -> Result<DVec3, SceneError> {
         let d = self.point(key, v)?;
         d.try_normalize().ok_or_else(|| self.error(key, format!("must be a non-zero vector, got {}", show(d))))
     }
+}
+
+/// The refusal of a coordinate or length beyond `COORDINATE`.
+pub(super) fn out_of_range(got: String) -> String {
+    format!(
+        "out of range: coordinates and lengths are at most {COORDINATE:e} m (1,000 km; rays are cast in single \
+         precision), got {got}"
+    )
 }
 
 /// `[x, y, z]` as written in TOML.

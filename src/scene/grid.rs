@@ -56,9 +56,9 @@ pub(super) fn grids(path: &Path, raw: &[RawGrid]) -> Result<Vec<Grid>, SceneErro
 }
 
 fn grid(at: &Context, g: &RawGrid) -> Result<Grid, SceneError> {
-    let origin = at.point("origin", g.origin)?;
-    let edge_u = at.point("edge_u", g.edge_u)?;
-    let edge_v = at.point("edge_v", g.edge_v)?;
+    let origin = at.place("origin", g.origin)?;
+    let edge_u = at.place("edge_u", g.edge_u)?;
+    let edge_v = at.place("edge_v", g.edge_v)?;
     let across = edge_u.cross(edge_v);
     if across.length() <= REL_TOL * edge_u.length() * edge_v.length() || across == DVec3::ZERO {
         return Err(at.error("edge_v", "must be non-zero and not parallel to a non-zero `edge_u`"));

@@ -87,7 +87,7 @@ fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKi
         let illuminance = at.magnitude("illuminance", illuminance, " lx")?;
         return Ok(LuminaireKind::Parallel { direction, illuminance });
     }
-    let position = at.point(
+    let position = at.place(
         "position",
         l.position.ok_or_else(|| at.error("position", format!("a \"{name}\" luminaire needs `position`")))?,
     )?;

@@ -88,6 +88,20 @@ pub fn warnings(scene: &Scene) -> Vec<SceneError> {
             out.push(at.error(key, format!("{length:.4e} m across: lengths are in metres (0.1 mm is {SHORTEST:e} m)")));
         }
     }
+    let whole = scene.surfaces.iter().fold(Bounds::EMPTY, |b, s| b.union(bounds(&s.shape)));
+    let span = (whole.1 - whole.0).length();
+    if span > LONGEST && !out.iter().any(|w| w.message().contains("lengths are in metres")) {
+        out.push(SceneError::new(
+            path,
+            "[[surface]]",
+            "",
+            format!(
+                "the scene spans {span:.4e} m though no surface is longer than 1 km: lengths are in metres \
+                 (drawn in millimetres, it would span {:.4} m)",
+                span * 1e-3
+            ),
+        ));
+    }
     for (index, l) in scene.luminaires.iter().enumerate() {
         let at = Context::item(path, "luminaire", &l.name, index);
         match &l.kind {
@@ -108,14 +122,31 @@ pub fn warnings(scene: &Scene) -> Vec<SceneError> {
     out
 }
 
-/// The diagonal of the bounding box of a shape's coarsest mesh, m.
-fn extent(shape: &Shape) -> f64 {
-    let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+/// A bounding box `(lo, hi)`.
+#[derive(Clone, Copy)]
+struct Bounds(DVec3, DVec3);
+
+impl Bounds {
+    const EMPTY: Bounds = Bounds(DVec3::INFINITY, DVec3::NEG_INFINITY);
+
+    fn union(self, o: Bounds) -> Bounds {
+        Bounds(self.0.min(o.0), self.1.max(o.1))
+    }
+}
+
+/// The bounding box of a shape's coarsest mesh.
+fn bounds(shape: &Shape) -> Bounds {
+    let mut b = Bounds::EMPTY;
     for e in tessellate(shape, f64::INFINITY) {
         for &v in e.vertices() {
-            lo = lo.min(v);
-            hi = hi.max(v);
+            b = b.union(Bounds(v, v));
         }
     }
-    (hi - lo).length()
+    b
+}
+
+/// The diagonal of the bounding box of a shape's coarsest mesh, m.
+fn extent(shape: &Shape) -> f64 {
+    let b = bounds(shape);
+    (b.1 - b.0).length()
 }

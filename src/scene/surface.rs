@@ -1,7 +1,7 @@
 //! `[[surface]]` tables: shapes and their keys, emission, material references, degenerate
 //! geometry, and loading `mesh` OBJ files, validated into `crate::geometry::Surface`.
 
-use super::check::{Context, MAGNITUDE, REL_TOL, ZERO_AREA, show, unique_names};
+use super::check::{COORDINATE, Context, MAGNITUDE, REL_TOL, ZERO_AREA, out_of_range, show, unique_names};
 use super::description::Material;
 use super::error::SceneError;
 use super::files::CaseFiles;
@@ -165,11 +165,11 @@ impl ShapeKeys<'_> {
     }
 
     fn point(&self, key: &str, value: Option<[f64; 3]>) -> Result<DVec3, SceneError> {
-        self.at.point(key, self.required(key, value)?)
+        self.at.place(key, self.required(key, value)?)
     }
 
     fn radius(&self, value: Option<f64>) -> Result<f64, SceneError> {
-        self.at.positive("radius", self.required("radius", value)?)
+        self.at.length("radius", self.required("radius", value)?)
     }
 }
 
@@ -193,7 +193,7 @@ fn rectangle(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
 
 fn polygon(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
     let raw = k.required("vertices", s.vertices.as_ref())?;
-    let vertices = raw.iter().map(|&v| k.at.point("vertices", v)).collect::<Result<Vec<_>, _>>()?;
+    let vertices = raw.iter().map(|&v| k.at.place("vertices", v)).collect::<Result<Vec<_>, _>>()?;
     polygon_defect(&vertices).map_err(|message| k.at.error("vertices", message))?;
     Ok(Shape::Polygon { vertices })
 }
@@ -231,13 +231,18 @@ fn mesh(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
         return Err(k.at.error("file", "must not be empty"));
     }
     let scale = k.at.positive("scale", s.scale.unwrap_or(1.0))?;
-    let translate = k.at.point("translate", s.translate.unwrap_or([0.0; 3]))?;
+    let translate = k.at.place("translate", s.translate.unwrap_or([0.0; 3]))?;
     let file = k.at.file.parent().unwrap_or(Path::new("")).join(name);
     let loaded = load_obj(&file, k.files).map_err(|message| k.at.error("file", message))?;
     let placed: Vec<[DVec3; 3]> = loaded.iter().map(|t| t.map(|p| p * scale + translate)).collect();
     if placed.iter().flatten().any(|p| !p.is_finite()) {
         let message = format!("{} has a non-finite vertex (after scaling)", file.display());
         return Err(k.at.error("file", message));
+    }
+    if let Some(far) = placed.iter().flatten().find(|p| p.abs().max_element() > COORDINATE) {
+        let got =
+            format!("the vertex [{:e}, {:e}, {:e}] of {}, scaled and translated", far.x, far.y, far.z, file.display());
+        return Err(k.at.error("scale", out_of_range(got)));
     }
     let triangles: Vec<[DVec3; 3]> = placed.into_iter().filter(|t| !zero_area(t)).collect();
     if triangles.is_empty() {

@@ -72,8 +72,13 @@ fn discretization(path: &Path, raw: Option<RawDiscretization>) -> Result<Discret
         Some(RawDirections::Count(k)) => k.to_string(),
         Some(RawDirections::Name(name)) => name.clone(),
     };
-    let directions = Scheme::parse(&name)
-        .ok_or_else(|| at.error("directions", format!("unknown direction set \"{name}\"; give {}", Scheme::NAMES)))?;
+    let directions = Scheme::parse(&name).ok_or_else(|| match name.parse::<u128>() {
+        Ok(k) if k > Scheme::MAX_CELLS as u128 => at.error(
+            "directions",
+            format!("out of range: at most {} cells (cell indices are 16-bit), got {k}", Scheme::MAX_CELLS),
+        ),
+        _ => at.error("directions", format!("unknown direction set \"{name}\"; give {}", Scheme::NAMES)),
+    })?;
     let assembly = assembly(&at, &raw, patch_size)?;
     Ok(Discretization { patch_size, directions, assembly })
 }
@@ -132,7 +137,7 @@ fn probes(path: &Path, raw: &[RawProbe]) -> Result<Vec<Probe>, SceneError> {
     unique_names(path, "probe", raw.iter().map(|p| p.name.as_str()))?;
     let probe = |(index, p): (usize, &RawProbe)| {
         let at = Context::item(path, "probe", &p.name, index);
-        let position = at.point("position", p.position)?;
+        let position = at.place("position", p.position)?;
         let normal = at.direction("normal", p.normal)?;
         Ok(Probe { name: p.name.clone(), position, normal })
     };

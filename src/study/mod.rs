@@ -6,7 +6,9 @@
 mod bases;
 mod solve;
 mod view;
+mod warnings;
 
 pub use bases::{BasisRow, BasisStudy, compare_bases};
 pub use solve::{Job, MonteCarlo, Solved, StudyError, solve_case};
 pub use view::lit_scene;
+pub use warnings::physics_warnings;

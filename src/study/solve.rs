@@ -91,6 +91,8 @@ pub struct Solved {
     pub orders: Option<OrderRecord>,
     pub norms: Option<Norms>,
     pub monte_carlo: Option<MonteCarlo>,
+    /// What the solved field says is probably not meant (`super::physics_warnings`).
+    pub warnings: Vec<String>,
 }
 
 /// The forward Monte Carlo estimate of the same discretization, and each run's agreement.
@@ -149,7 +151,7 @@ pub fn solve_case(
     let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
     let probes = read_probes(&scene.probes, &model, &field);
     let grids = read_grids(&scene.grids, &model, &field);
-    Ok(Solved {
+    let mut solved = Solved {
         model,
         runs,
         reference,
@@ -165,7 +167,10 @@ pub fn solve_case(
         orders,
         norms,
         monte_carlo,
-    })
+        warnings: Vec::new(),
+    };
+    solved.warnings = super::physics_warnings(scene, &solved.model, &solved.x, &solved.energy);
+    Ok(solved)
 }
 
 /// Every method on `system`: the runs that succeeded with their unknowns, and the failures

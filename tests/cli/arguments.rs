@@ -105,3 +105,74 @@ fn a_named_pipe_or_invalid_text_is_refused_without_blocking() {
     let err = assert_clean_failure(&ugo(&["info", bad.to_str().unwrap()]));
     assert!(err.contains("line 2: not UTF-8 text (byte 0xe9 at column 12)"), "{err}");
 }
+
+#[test]
+fn a_model_over_the_memory_limit_is_refused_before_meshing_with_its_estimate() {
+    let case = "cases/furnace-box.toml";
+    for command in ["info", "solve"] {
+        let started = std::time::Instant::now();
+        let err = assert_clean_failure(&ugo(&[command, case, "--patch-size", "1e-12"]));
+        assert!(started.elapsed().as_secs_f64() < 5.0, "{command}: {:?}", started.elapsed());
+        for fragment in ["6.000e24 patches", "facing pairs", "estimated before meshing", "--assembly hierarchical"] {
+            assert!(err.contains(fragment), "{command}: {err}");
+        }
+    }
+    // info prints the forecast before it refuses, and the forecast of a model that fits.
+    let o = ugo(&["info", case]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("before meshing") && out.contains("memory at peak"), "{out}");
+    let o = ugo(&["info", case, "--assembly", "hierarchical", "--smallest", "0.001"]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("leaves at most") && out.contains("6.0000e6"), "{out}");
+}
+
+#[test]
+fn an_obj_model_in_millimetres_is_warned_about_and_refused_before_meshing() {
+    // A 5,000 × 3,000 × 4,000 mm room drawn in millimetres, read as metres: 13.5 GB before.
+    let dir = scratch("millimetres");
+    let mut obj = String::new();
+    for [x, y, z] in [[0, 0, 0], [5000, 0, 0], [5000, 0, 4000], [0, 0, 4000], [0, 3000, 0], [5000, 3000, 0]] {
+        obj += &format!("v {x} {y} {z}\n");
+    }
+    obj += "f 1 3 2\nf 1 4 3\nf 1 2 6\nf 1 6 5\n";
+    std::fs::write(dir.join("room.obj"), obj).unwrap();
+    let text = std::fs::read_to_string("cases/furnace-box.toml").unwrap()
+        + "\n[[surface]]\nname = \"model\"\nshape = \"mesh\"\nfile = \"room.obj\"\nmaterial = \"grey\"\n";
+    let case = dir.join("mm.toml");
+    std::fs::write(&case, text).unwrap();
+    let started = std::time::Instant::now();
+    let err = assert_clean_failure(&ugo(&["info", case.to_str().unwrap()]));
+    assert!(started.elapsed().as_secs_f64() < 5.0, "{:?}", started.elapsed());
+    assert!(err.starts_with("ugo: warning: ") && err.contains("scale = 0.001"), "{err}");
+    assert!(err.contains("ugo: error: the model would need") && err.contains("patches"), "{err}");
+}
+
+#[test]
+fn physics_warnings_reach_stderr_the_summary_and_the_file_and_strict_makes_them_errors() {
+    let dir = scratch("physics-warnings");
+    let case = dir.join("probe-down.toml");
+    let text = std::fs::read_to_string("cases/furnace-box.toml").unwrap();
+    let down = text.replacen(
+        "position = [0.5, 0.0, 0.5]\nnormal = [0.0, 1.0, 0.0]",
+        "position = [0.5, 0.0, 0.5]\nnormal = [0.0, -1.0, 0.0]",
+        1,
+    );
+    assert_ne!(text, down);
+    std::fs::write(&case, down).unwrap();
+    let out = dir.join("res.h5");
+    let args = ["solve", case.to_str().unwrap(), "--patch-size", "0.25", "-o", out.to_str().unwrap()];
+    let o = ugo(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(err.contains("ugo: warning: probe \"floor centre\": its normal points into the surface"), "{err}");
+    assert!(String::from_utf8_lossy(&o.stdout).contains("warnings                      1"));
+    let file = hdf5::File::open(&out).unwrap();
+    let stored: Vec<hdf5::types::VarLenUnicode> = file.dataset("warnings").unwrap().read_raw().unwrap();
+    assert_eq!(stored.len(), 1);
+    assert!(stored[0].as_str().contains("floor centre"));
+    drop(file);
+    std::fs::remove_file(&out).unwrap();
+    let err = assert_clean_failure(&ugo(&[&args[..], &["--strict"]].concat()));
+    assert!(err.contains("--strict") && err.contains("floor centre"), "{err}");
+    assert!(!out.exists(), "--strict wrote the file");
+}

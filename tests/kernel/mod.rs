@@ -1,4 +1,5 @@
 mod assembly;
 mod cells;
+mod forecast;
 mod form_factor;
 mod precision;

@@ -58,7 +58,7 @@ fn a_surface_that_meshes_to_no_patch_is_an_error_naming_it() {
     let tiny = "center = [0, 1, 0]\nnormal = [0, 1, 0]\nradius = 1e-300\nemission = { flux = 100 }";
     assert_error(&rejected(&surface("disc", tiny)), S, "radius", &["meshes to no patch", "too small"]);
     let huge = "center = [0, 0, 0]\nradius = 1e200";
-    assert_error(&rejected(&surface("sphere", huge)), S, "radius", &["meshes to no patch", "too large"]);
+    assert_error(&rejected(&surface("sphere", huge)), S, "radius", &["out of range", "1e6 m"]);
     let speck = "origin = [0, 0, 0]\nedge_u = [1e-170, 0, 0]\nedge_v = [0, 0, 1e-170]";
     assert_error(&rejected(&surface("rectangle", speck)), S, "shape", &["meshes to no patch", "too small"]);
     // Small but representable is accepted (a plausibility warning is another matter).
@@ -71,9 +71,15 @@ fn obj_vertices_are_read_in_double_precision() {
     dir.write("model.obj", "v 0.1 0 0\nv 1e39 0 0\nv 0.1 0 1e39\nf 1 2 3\n");
     let text = format!("{}{LAMP}", lit("").split(LAMP).next().unwrap())
         + "\n[[surface]]\nname = \"s\"\nshape = \"mesh\"\nmaterial = \"white\"\nfile = \"model.obj\"\n";
+    // 1e39 is a finite f64, read as such, but lies beyond the scene's range of coordinates.
     let case = dir.write("case.toml", &text);
-    let scene = ugo::scene::Scene::parse(&case, text).expect("1e39 is a finite f64");
+    let error = ugo::scene::Scene::parse(&case, text.clone()).expect_err("a vertex at 1e39 m accepted");
+    assert_eq!(error.key(), "scale", "{error}");
+    assert!(error.message().contains("out of range") && error.message().contains("[1e39, 0e0, 0e0]"), "{error}");
+    let text = text + "scale = 1e-36\n";
+    let case = dir.write("case.toml", &text);
+    let scene = ugo::scene::Scene::parse(&case, text).expect("scaled into range");
     let Shape::Mesh { triangles, .. } = &scene.surfaces[1].shape else { panic!() };
-    assert_eq!(triangles[0][0].x, 0.1, "0.1 read through f32 would be 0.10000000149");
-    assert_eq!(triangles[0][1].x, 1e39);
+    assert_eq!(triangles[0][0].x, 0.1 * 1e-36, "0.1 read through f32 would be 0.10000000149");
+    assert_eq!(triangles[0][1].x, 1e39 * 1e-36);
 }

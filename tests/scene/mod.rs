@@ -6,6 +6,7 @@ mod lengths;
 mod luminaires;
 mod magnitudes;
 mod parse_errors;
+mod ranges;
 mod rooms;
 mod valid;
 mod validation_errors;

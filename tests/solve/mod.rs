@@ -6,3 +6,4 @@ mod mirror;
 pub mod opal;
 mod plates;
 mod sphere;
+mod warnings;

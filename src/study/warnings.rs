@@ -1,0 +1,227 @@
+//! Physics warnings of a solved case (issue 18, item 4): the field is computed, but the
+//! scene probably is not what was meant. Each check looks at the solved model with rays:
+//!
+//! * light lost on the back of one-sided surfaces: the flux leaving every patch (its
+//!   solved outgoing flux, sent in cosine-distributed directions) and every point luminaire
+//!   (by its intensity) is followed to the first surface; what meets a back side is lost
+//!   (a one-sided surface absorbs there), which in a room means a surface facing the wrong
+//!   way. Warned above 2 % of the emitted flux, naming the three surfaces whose backs
+//!   receive most;
+//! * a luminaire whose light never reaches a front side, or mostly meets backs (inside a
+//!   box, above a ceiling);
+//! * a probe or grid whose normal points into the surface it lies on, or which sees mostly
+//!   the backs of surfaces (it lies behind one);
+//! * negative escaped flux: not light but the kernel's discretization error (each row of
+//!   `G` is balanced to closure, reciprocity between rows is not exact); its size is the
+//!   bound stated, relative to the emitted flux.
+//!
+//! The rays are stratified with fixed seeds: the same case gives the same warnings.
+
+use crate::geometry::Frame;
+use crate::luminaire::Light;
+use crate::material::cosine_direction;
+use crate::model::Model;
+use crate::random::Rng;
+use crate::readout::energy::EnergyBalance;
+use crate::scene::Scene;
+use crate::visibility::NO_FACE;
+use glam::DVec3;
+
+/// Rays followed from the surfaces' outgoing flux.
+const SURFACE_RAYS: usize = 20_000;
+/// Rays per luminaire, per probe and per grid point.
+const LUMINAIRE_RAYS: usize = 2_000;
+const SENSOR_RAYS: usize = 256;
+/// Share of the emitted flux lost on backs above which it is reported.
+const BACKS: f64 = 0.02;
+
+/// Every warning of a solved case, one sentence each.
+/// Every warning of the solved field `x` of `model` (of `scene`), with its energy balance.
+pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance) -> Vec<String> {
+    let mut out = Vec::new();
+    backs(scene, model, x, energy, &mut out);
+    luminaires(scene, model, &mut out);
+    sensors(scene, model, &mut out);
+    let e = energy;
+    if e.escaped < -1e-9 * e.emitted.abs() {
+        out.push(format!(
+            "the escaped flux is negative ({:.4} lm, {:.3} % of the {:.4} lm emitted): no light enters from outside, \
+             so this is the kernel's discretization error (each row of G is balanced to closure, the exchange \
+             between rows is not exactly reciprocal), not a flux; readings are uncertain by about this share, \
+             {:.3} %; a smaller patch_size lowers it",
+            e.escaped,
+            -100.0 * e.escaped / e.emitted,
+            e.emitted,
+            -100.0 * e.escaped / e.emitted
+        ));
+    }
+    out
+}
+
+/// The first surface along `direction` from `origin`: `Some(Some(surface))` for the back
+/// of a one-sided surface, `Some(None)` for a front, `None` for nothing.
+fn back_hit(model: &Model, origin: DVec3, direction: DVec3, ignore: u32) -> Option<Option<usize>> {
+    let (face, facing, _) = model.faces.landing(&model.mesh, &model.visibility, origin, direction, ignore)?;
+    Some(match facing {
+        Some(_) => None,
+        None => Some(model.mesh.patches[model.faces.first(face)].surface as usize),
+    })
+}
+
+fn backs(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, out: &mut Vec<String>) {
+    let (mesh, k) = (&model.mesh, model.kernel.cells());
+    let cells = model.kernel.directions.cells();
+    let outgoing: Vec<f64> = mesh
+        .patches
+        .iter()
+        .enumerate()
+        .map(|(i, p)| p.area * (0..k).map(|c| x[i * k + c] * cells[c].projected).sum::<f64>())
+        .collect();
+    let total: f64 = outgoing.iter().sum();
+    let mut lost = vec![0.0; scene.surfaces.len()];
+    if total > 0.0 {
+        let mut rng = Rng::keyed(4);
+        let mut cdf = Vec::with_capacity(outgoing.len());
+        let mut running = 0.0;
+        for f in &outgoing {
+            running += f;
+            cdf.push(running);
+        }
+        for _ in 0..SURFACE_RAYS {
+            let i = cdf.partition_point(|&c| c < rng.uniform() * total).min(cdf.len() - 1);
+            let p = &mesh.patches[i];
+            let direction = p.frame().world(cosine_direction(rng.uniform(), rng.uniform()));
+            if let Some(Some(surface)) = back_hit(model, p.centroid, direction, p.face) {
+                lost[surface] += total / SURFACE_RAYS as f64;
+            }
+        }
+    }
+    for (source, flux) in model.sources.iter().zip(&energy.luminaire_emitted) {
+        if let Light::Point { position, .. } = source.light {
+            for (direction, weight) in photons(source, *flux) {
+                if let Some(Some(surface)) = back_hit(model, position, direction, NO_FACE) {
+                    lost[surface] += weight;
+                }
+            }
+        }
+    }
+    let sum: f64 = lost.iter().sum();
+    if sum <= BACKS * energy.emitted {
+        return;
+    }
+    let mut order: Vec<usize> = (0..lost.len()).filter(|&i| lost[i] > 0.0).collect();
+    order.sort_by(|&a, &b| lost[b].total_cmp(&lost[a]));
+    let named: Vec<String> =
+        order.iter().take(3).map(|&i| format!("\"{}\" {:.4} lm", scene.surfaces[i].name, lost[i])).collect();
+    out.push(format!(
+        "about {sum:.4} lm ({:.1} % of the flux emitted) meets the back of one-sided surfaces, where it is lost: \
+         {}; a surface facing the wrong way (`inside`, the order of its vertices) or one meant to be two_sided",
+        100.0 * sum / energy.emitted,
+        named.join(", ")
+    ));
+}
+
+/// Stratified directions of a point luminaire with the flux each carries.
+fn photons(source: &crate::luminaire::Source, flux: f64) -> Vec<(DVec3, f64)> {
+    let n = (LUMINAIRE_RAYS as f64).sqrt() as usize;
+    let mut rng = Rng::keyed(7);
+    let mut out = Vec::with_capacity(n * n);
+    for a in 0..n {
+        for b in 0..n {
+            let z = 1.0 - 2.0 * (a as f64 + rng.uniform()) / n as f64;
+            let phi = std::f64::consts::TAU * (b as f64 + rng.uniform()) / n as f64;
+            let r = (1.0 - z * z).max(0.0).sqrt();
+            let d = DVec3::new(r * phi.cos(), r * phi.sin(), z);
+            out.push((d, source.intensity(d)));
+        }
+    }
+    let sum: f64 = out.iter().map(|(_, w)| w).sum();
+    if sum > 0.0 {
+        out.iter_mut().for_each(|(_, w)| *w *= flux / sum);
+    }
+    out
+}
+
+fn luminaires(scene: &Scene, model: &Model, out: &mut Vec<String>) {
+    for (l, source) in scene.luminaires.iter().zip(&model.sources) {
+        let Light::Point { position, .. } = source.light else { continue };
+        let (mut front, mut back, mut total) = (0.0, 0.0, 0.0);
+        for (direction, w) in photons(source, 1.0) {
+            total += w;
+            match back_hit(model, position, direction, NO_FACE) {
+                Some(None) => front += w,
+                Some(Some(_)) => back += w,
+                None => {}
+            }
+        }
+        if total <= 0.0 {
+            continue;
+        }
+        if front == 0.0 {
+            out.push(format!(
+                "luminaire \"{}\": none of its light reaches the front of a surface ({:.0} % meets backs, the rest \
+                 nothing): it lies inside or behind a surface",
+                l.name,
+                100.0 * back / total
+            ));
+        } else if back > 0.5 * total {
+            out.push(format!(
+                "luminaire \"{}\": {:.0} % of its flux meets the back of surfaces (lost): it lies inside or behind a \
+                 surface, or aims away from the room",
+                l.name,
+                100.0 * back / total
+            ));
+        }
+    }
+}
+
+/// What a sensor at `p` facing `n` finds wrong, if anything.
+fn sensor(scene: &Scene, model: &Model, p: DVec3, n: DVec3) -> Option<String> {
+    let (mesh, vis) = (&model.mesh, &model.visibility);
+    let name = |i: usize| &scene.surfaces[i].name;
+    if model.faces.under(mesh, vis, p, n).is_none()
+        && let Some(i) = model.faces.under(mesh, vis, p, -n)
+    {
+        let surface = mesh.patches[i].surface as usize;
+        return Some(format!("its normal points into the surface it lies on (\"{}\")", name(surface)));
+    }
+    let frame = Frame::around(n);
+    let origin = p + n * 1e-6 * mesh.extent();
+    let mut rng = Rng::keyed(11);
+    let (mut backs, mut surface) = (0usize, 0);
+    for _ in 0..SENSOR_RAYS {
+        let d = frame.world(cosine_direction(rng.uniform(), rng.uniform()));
+        if let Some(Some(s)) = back_hit(model, origin, d, NO_FACE) {
+            backs += 1;
+            surface = s;
+        }
+    }
+    (backs * 2 > SENSOR_RAYS).then(|| {
+        format!(
+            "{:.0} % of what it sees is the back of surfaces (\"{}\"): it lies behind one",
+            100.0 * backs as f64 / SENSOR_RAYS as f64,
+            name(surface)
+        )
+    })
+}
+
+fn sensors(scene: &Scene, model: &Model, out: &mut Vec<String>) {
+    for p in &scene.probes {
+        if let Some(why) = sensor(scene, model, p.position, p.normal) {
+            out.push(format!("probe \"{}\": {why}; its readings are not of the room", p.name));
+        }
+    }
+    for g in &scene.grids {
+        let points = g.points();
+        let bad: Vec<String> = points.iter().filter_map(|&q| sensor(scene, model, q, g.normal)).collect();
+        if bad.len() * 2 > points.len() {
+            out.push(format!(
+                "grid \"{}\": at {} of its {} points {}; its illuminances are not of the room",
+                g.name,
+                bad.len(),
+                points.len(),
+                bad[0]
+            ));
+        }
+    }
+}

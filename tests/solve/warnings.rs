@@ -1,0 +1,83 @@
+//! Physics warnings (issue 18, item 4): the field is solved, but a scene that loses its
+//! light on the backs of surfaces, a luminaire inside a box, a probe facing into the floor
+//! or a negative escaped flux is reported, each naming what is wrong.
+
+use std::path::Path;
+use ugo::model::ModelOptions;
+use ugo::scene::Scene;
+use ugo::study::{Job, Solved, physics_warnings, solve_case};
+
+/// A closed unit room of six inward rectangles, a 1000 lm lamp in the middle, `extra` after.
+fn room(floor_flipped: bool, extra: &str) -> String {
+    let floor =
+        if floor_flipped { "edge_u = [1, 0, 0]\nedge_v = [0, 0, 1]" } else { "edge_u = [0, 0, 1]\nedge_v = [1, 0, 0]" };
+    let mut text = String::from(
+        "[discretization]\npatch_size = 0.25\n[[material]]\nname = \"grey\"\ntype = \"lambert\"\nreflectance = 0.5\n",
+    );
+    for (name, keys) in [
+        ("floor", format!("origin = [0, 0, 0]\n{floor}")),
+        ("ceiling", "origin = [0, 1, 0]\nedge_u = [1, 0, 0]\nedge_v = [0, 0, 1]".into()),
+        ("west", "origin = [0, 0, 0]\nedge_u = [0, 1, 0]\nedge_v = [0, 0, 1]".into()),
+        ("east", "origin = [1, 0, 0]\nedge_u = [0, 0, 1]\nedge_v = [0, 1, 0]".into()),
+        ("south", "origin = [0, 0, 0]\nedge_u = [1, 0, 0]\nedge_v = [0, 1, 0]".into()),
+        ("north", "origin = [0, 0, 1]\nedge_u = [0, 1, 0]\nedge_v = [1, 0, 0]".into()),
+    ] {
+        text += &format!("[[surface]]\nname = \"{name}\"\nshape = \"rectangle\"\nmaterial = \"grey\"\n{keys}\n");
+    }
+    text += "[[luminaire]]\nname = \"lamp\"\ntype = \"isotropic\"\nposition = [0.5, 0.5, 0.5]\nflux = 1000\n";
+    text + extra
+}
+
+fn solved(text: &str) -> (Scene, Solved) {
+    let scene = Scene::parse(Path::new("cases/test.toml"), text.to_string()).unwrap_or_else(|e| panic!("{e}"));
+    let s = solve_case(&scene, &ModelOptions::of(&scene), &Job::default(), &ugo::progress::Silent).unwrap();
+    (scene, s)
+}
+
+#[test]
+fn a_closed_room_gives_no_warning() {
+    let probe = "[[probe]]\nname = \"desk\"\nposition = [0.5, 0, 0.5]\nnormal = [0, 1, 0]\n";
+    let (_, s) = solved(&room(false, probe));
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+}
+
+#[test]
+fn light_lost_on_a_floor_facing_the_wrong_way_names_the_floor() {
+    let (_, s) = solved(&room(true, ""));
+    let w = s.warnings.iter().find(|w| w.contains("back of one-sided")).unwrap_or_else(|| panic!("{:?}", s.warnings));
+    assert!(w.contains("\"floor\""), "{w}");
+    // The floor's back receives about a sixth of the lamp's flux, the largest share.
+    assert!(w.find("\"floor\"") < w.find("\"ceiling\"").or(Some(usize::MAX)), "{w}");
+}
+
+#[test]
+fn a_luminaire_inside_a_box_is_reported() {
+    let box_ = "[[surface]]\nname = \"crate\"\nshape = \"box\"\nmaterial = \"grey\"\nmin = [0.4, 0.4, 0.4]\nmax = [0.6, 0.6, 0.6]\n";
+    let (_, s) = solved(&room(false, box_));
+    assert!(
+        s.warnings.iter().any(|w| w.contains("luminaire \"lamp\"") && w.contains("none of its light")),
+        "{:?}",
+        s.warnings
+    );
+}
+
+#[test]
+fn probes_facing_into_a_surface_or_behind_one_are_reported() {
+    let probes = "[[probe]]\nname = \"down\"\nposition = [0.5, 0, 0.5]\nnormal = [0, -1, 0]\n\
+                  [[probe]]\nname = \"cellar\"\nposition = [0.5, -0.5, 0.5]\nnormal = [0, 1, 0]\n\
+                  [[grid]]\nname = \"under\"\norigin = [0.1, -0.2, 0.1]\nedge_u = [0, 0, 0.8]\nedge_v = [0.8, 0, 0]\nresolution = [3, 3]\n";
+    let (_, s) = solved(&room(false, probes));
+    let has = |a: &str, b: &str| s.warnings.iter().any(|w| w.contains(a) && w.contains(b));
+    assert!(has("probe \"down\"", "points into the surface it lies on (\"floor\")"), "{:?}", s.warnings);
+    assert!(has("probe \"cellar\"", "lies behind one"), "{:?}", s.warnings);
+    assert!(has("grid \"under\"", "lies behind one"), "{:?}", s.warnings);
+}
+
+#[test]
+fn a_negative_escaped_flux_is_explained_and_bounded() {
+    let (scene, mut s) = solved(&room(false, ""));
+    s.energy.escaped = -6.8385;
+    let w = physics_warnings(&scene, &s.model, &s.x, &s.energy);
+    let w = w.iter().find(|w| w.contains("negative")).unwrap_or_else(|| panic!("{w:?}"));
+    assert!(w.contains("-6.8385 lm") && w.contains("discretization error") && w.contains("0.684 %"), "{w}");
+}
