@@ -14,7 +14,8 @@
 //! the materials' `K × K` blocks are added.
 //!
 //! For the hierarchical kernel only the roots (elements of `patch_size`) and the most leaves
-//! (the uniform mesh at `smallest`) are known before refinement; its links are checked
+//! (the uniform mesh at `smallest / 2`: a leaf splits while longer than `smallest`) are known
+//! before refinement; its links are checked
 //! against the limit after each pass.
 
 use super::assembly::facing;
@@ -38,7 +39,7 @@ const GIB: f64 = (1u64 << 30) as f64;
 pub struct Forecast {
     /// Patches of the uniform mesh at `patch_size` (the hierarchy's roots).
     pub patches: f64,
-    /// The most leaves of the hierarchy (its uniform mesh at `smallest`); `None` when explicit.
+    /// The most leaves of the hierarchy (its uniform mesh at `smallest / 2`); `None` when explicit.
     pub leaves: Option<f64>,
     pub cells: usize,
     pub unknowns: f64,
@@ -91,7 +92,9 @@ impl Forecast {
         }
     }
 
-    /// The hierarchical kernel: roots at `patch_size`, leaves no smaller than `smallest`.
+    /// The hierarchical kernel: roots at `patch_size`, leaves split while their longest edge
+    /// exceeds `smallest`, so no leaf is smaller than half of it: at most the uniform mesh
+    /// at `smallest / 2`.
     pub fn hierarchical(
         surfaces: &[Surface],
         materials: usize,
@@ -107,7 +110,7 @@ impl Forecast {
         let unknowns = patches * cells as f64;
         Forecast {
             patches,
-            leaves: Some(count(smallest)),
+            leaves: Some(count(smallest / 2.0)),
             cells,
             unknowns,
             facing_pairs: 0.0,

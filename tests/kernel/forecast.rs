@@ -95,7 +95,7 @@ fn the_hierarchy_forecasts_its_roots_and_its_most_leaves() {
     scene.discretization.assembly = Assembly::Hierarchical { tolerance: 0.1, smallest: 0.01 };
     let f = Model::forecast(&scene, &ModelOptions::of(&scene));
     assert_eq!(f.patches, 6.0 * 16.0);
-    assert_eq!(f.leaves, Some(6.0 * 100.0 * 100.0));
+    assert_eq!(f.leaves, Some(6.0 * 200.0 * 200.0), "the uniform mesh at smallest / 2");
     assert_eq!(f.nonzeros, 0.0);
     scene.discretization.patch_size = 1e-9;
     let Err(ModelError::OverLimit(e)) = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent) else {

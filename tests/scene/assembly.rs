@@ -25,9 +25,12 @@ fn the_hierarchical_kernel_takes_its_defaults_and_its_keys() {
 #[test]
 fn its_keys_are_refused_with_the_explicit_kernel_or_out_of_range() {
     assert_error(&rejected(&with("tolerance = 1e-2")), "[discretization]", "tolerance", &["hierarchical"]);
-    assert_error(&rejected(&with("method = \"hierarchical\"\nsmallest = 0.5")), "[discretization]", "smallest", &[
-        "exceeds patch_size",
-    ]);
+    assert_error(
+        &rejected(&with("method = \"hierarchical\"\nsmallest = 0.5")),
+        "[discretization]",
+        "smallest",
+        &["exceeds patch_size"],
+    );
     assert_error(&rejected(&with("method = \"hierarchical\"\ntolerance = -1")), "[discretization]", "tolerance", &[]);
     assert_error(&rejected(&with("method = \"radiosity\"")), "[discretization]", "method", &["hierarchical"]);
 }
