@@ -10,7 +10,8 @@
 //! version, the direction set, the units and `patch_size`.
 
 use super::IoError;
-use super::hdf5_file::{dataset, shape_error, write_directions, write_identity, write_mesh};
+use super::dataset::dataset;
+use super::hdf5_file::{shape_error, write_directions, write_identity, write_mesh};
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::scene::Scene;

@@ -17,6 +17,7 @@
 //! method, tolerance, iterations, timings, energy totals, the scene text and the version.
 //! The file is written under a temporary name and renamed when complete.
 
+use super::dataset::dataset;
 use crate::basis::{Factorization, MaterialFactor};
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
@@ -353,14 +354,6 @@ fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
         file.new_attr::<f64>().create(name)?.write_scalar(&value)?;
     }
     Ok(())
-}
-
-pub(super) fn dataset<T: hdf5::H5Type, D: ndarray::Dimension>(
-    g: &hdf5::Group,
-    name: &str,
-    data: &ndarray::Array<T, D>,
-) -> hdf5::Result<()> {
-    g.new_dataset_builder().with_data(data).create(name).map(|_| ())
 }
 
 pub(super) fn strings<'a>(g: &hdf5::Group, name: &str, items: impl Iterator<Item = &'a str>) -> hdf5::Result<()> {

@@ -4,14 +4,12 @@
 //! elements by the deeper level; `passes/` holds the refinement history, one entry per
 //! pass. Written only for a hierarchical model.
 
+use super::dataset::dataset;
 use crate::kernel::hierarchy::Pass;
 use crate::model::HierarchyRecord;
 use ndarray::Array1;
 
 pub(super) fn write_hierarchy(g: &hdf5::Group, h: &HierarchyRecord) -> hdf5::Result<()> {
-    fn dataset<T: hdf5::H5Type>(g: &hdf5::Group, name: &str, data: &Array1<T>) -> hdf5::Result<()> {
-        g.new_dataset_builder().with_data(data).create(name).map(|_| ())
-    }
     let c = &h.census;
     dataset(g, "leaf_level", &Array1::from(c.leaf_level.clone()))?;
     dataset(g, "leaf_root", &Array1::from(c.leaf_root.clone()))?;

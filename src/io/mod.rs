@@ -4,6 +4,7 @@
 
 mod atomic;
 mod basis_plot;
+mod dataset;
 mod error;
 mod estimate_file;
 mod exr_file;

@@ -11,14 +11,13 @@ use super::source::source_term;
 use super::system::{AssemblyStats, HierarchyRecord, Model, ModelError, ModelOptions, Refinement};
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch};
-use crate::kernel::hierarchy::{Hierarchy, Iterated, Operator, Options, iterate};
+use crate::kernel::hierarchy::{Hierarchy, Iterated, Operator, Options, iterate, sample_points};
 use crate::kernel::{Footprint, Kernel, Transport};
 use crate::luminaire::{DirectLight, PatchLight, Source, direct_light, incoming, patch_lights};
 use crate::material::Block;
 use crate::progress::Progress;
 use crate::scene::Scene;
 use crate::solve::{Method, SolveParams, System, solve};
-use crate::transfer::occlusion::polygon_points;
 use crate::visibility::{Faces, Visibility};
 use std::f64::consts::PI;
 use std::time::Instant;
@@ -67,7 +66,8 @@ pub fn build(
     let root_visibility = Visibility::build(&roots);
     let root_light = direct_light(&sources, &roots, &root_visibility, &directions);
     let root_l0 = source_term(&blocks, &roots, &root_light, k);
-    let mut light_seconds = t.elapsed().as_secs_f64();
+    let root_light_seconds = t.elapsed().as_secs_f64();
+    let mut light_seconds = 0.0;
     let t = Instant::now();
     let hierarchy_options =
         Options { tolerance: refinement.tolerance, smallest: refinement.smallest, ..Options::default() };
@@ -94,18 +94,18 @@ pub fn build(
     };
     let Iterated { operator, l0, .. } = iterate(&mut h, &mut source, &mut solver)?;
     progress.end();
+    let kernel_seconds = t.elapsed().as_secs_f64() - light_seconds;
     let direct = cache.on_leaves(&h, &sources, &directions);
     let mesh = h.leaf_mesh();
     let t_bvh = Instant::now();
     let visibility = Visibility::build(&mesh);
     let bvh_seconds = t_bvh.elapsed().as_secs_f64();
     let history = h.history().to_vec();
-    let passes: f64 = history.iter().map(|p| p.seconds + p.solve_seconds).sum();
     let stats = AssemblyStats {
         mesh_seconds,
         bvh_seconds,
-        kernel_seconds: t.elapsed().as_secs_f64() - light_seconds.min(passes),
-        light_seconds,
+        kernel_seconds,
+        light_seconds: root_light_seconds + light_seconds,
         pairs: operator.links(),
         rays: history.iter().map(|p| p.rays).sum::<usize>() + direct.rays,
         balance: None,
@@ -119,15 +119,13 @@ pub fn build(
 }
 
 /// True when the luminaires' light reflected by `patch` (albedo `albedo`) varies over it by
-/// more than `epsilon` (cd/m²): `ρ (E_max − E_min)/π` over its four stratified points, its
-/// centroid and its corners pulled 1 % inwards, one shadow ray per point and source.
+/// more than `epsilon` (cd/m²): `ρ (E_max − E_min)/π` over the oracle's sample points of the
+/// element (`hierarchy::sample_points`), one shadow ray per point and source.
 fn varies(sources: &[Source], visibility: &Visibility, patch: &Patch, albedo: f64, epsilon: f64) -> bool {
     if sources.is_empty() || albedo <= 0.0 {
         return false;
     }
-    let corners = patch.polygon.vertices().iter().map(|v| v.lerp(patch.centroid, 0.01));
-    let points = polygon_points(&patch.polygon).into_iter().chain(corners).chain([patch.centroid]);
-    let (lo, hi) = points.fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
+    let (lo, hi) = sample_points(patch).fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
         let e: f64 = sources
             .iter()
             .filter_map(|s| incoming(s, visibility, x, patch.face))

@@ -31,5 +31,6 @@ pub use kernel::{Hierarchy, Options};
 pub use link::{ALL_CELLS, Link, Piece};
 pub use node::{Kind, NONE, Node};
 pub use operator::Operator;
+pub use oracle::sample_points;
 pub use sight::Sight;
 pub use tree::Tree;

@@ -42,13 +42,17 @@ pub fn variation(p: &Patch, q: &Patch) -> Variation {
 
 /// Smallest and largest `scale · F_{dA(x)→to}` over the sample points `x` of `from`.
 fn extremes(from: &Patch, to: &Patch, scale: f64) -> (f64, f64) {
-    let centroid = from.centroid;
-    let corners = from.polygon.vertices().iter().map(|v| v.lerp(centroid, CORNER_INSET));
-    let points = polygon_points(&from.polygon).into_iter().chain(corners).chain([centroid]);
-    points.fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
+    sample_points(from).fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
         let f = scale * point_to_polygon(x, from.normal, &to.polygon);
         (lo.min(f), hi.max(f))
     })
+}
+
+/// The points where an element's variation is sampled: its four stratified points, its
+/// corners pulled [`CORNER_INSET`] towards the centroid, and the centroid.
+pub fn sample_points(patch: &Patch) -> impl Iterator<Item = glam::DVec3> + '_ {
+    let corners = patch.polygon.vertices().iter().map(|v| v.lerp(patch.centroid, CORNER_INSET));
+    polygon_points(&patch.polygon).into_iter().chain(corners).chain([patch.centroid])
 }
 
 /// How far the corner samples are pulled towards the centroid (off shared edges, where the
