@@ -68,7 +68,7 @@ pub(super) fn write_kernel(g: &hdf5::Group, model: &Model, fingerprint: &Fingerp
         text_attr(&f, &format!("{}_summary", s.part.name()), &s.summary)?;
     }
     g.new_attr::<u32>().create("format")?.write_scalar(&KERNEL_FORMAT)?;
-    text_attr(g, "directions", &kernel.directions.name())?;
+    text_attr(g, "directions", kernel.directions.name())?;
     text_attr(g, "precision", matrix.precision().name())
 }
 

@@ -4,14 +4,15 @@
 //! PETSc binary files (`petsc.rs`, PETSc's `MatLoad`/`VecLoad`). `K` is formed from the
 //! stored `G` and blocks exactly as ugo's own explicit product.
 
+mod error;
 mod mtx;
 mod petsc;
 
-use super::{IoError, StoredKernel};
-use crate::kernel::TooLarge;
+pub use error::ExportError;
+
+use super::StoredKernel;
 use sprs::CsMat;
 use std::path::{Path, PathBuf};
-use thiserror::Error;
 
 /// The file formats of an export.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -30,18 +31,6 @@ impl Format {
             Format::Petsc => "petsc",
         }
     }
-}
-
-/// Why an export was not written.
-#[derive(Debug, Error)]
-pub enum ExportError {
-    #[error(transparent)]
-    Io(#[from] IoError),
-    #[error(transparent)]
-    TooLarge(#[from] TooLarge),
-    /// PETSc's binary files count in int32.
-    #[error("PETSc's binary format counts in 32-bit integers: {what} is {count}, over 2147483647")]
-    TooManyForPetsc { what: &'static str, count: usize },
 }
 
 /// Writes `K`, `I − K` and `L0` of `stored` into `folder` as `K.<ext>`, `I-K.<ext>` and

@@ -4,7 +4,7 @@
 //! every value (f64); a vector is the class id 1211214, its length (int32) and its values
 //! (f64).
 
-use super::ExportError;
+use super::error::ExportError;
 use crate::io::atomic::atomic_stream;
 use sprs::CsMat;
 use std::path::Path;
