@@ -1,6 +1,8 @@
 # ugo — the two commands of the README: `make demo` and `make test`.
 # Both install what the build needs on a fresh Debian machine: the HDF5 C library
-# (found through pkg-config) and, for the demo's listing, h5dump.
+# (found through pkg-config), for the demo's listing h5dump, and for the test that reads
+# the kernel file without ugo (tests/io/kernel_check.py) Debian's h5py and scipy for
+# /usr/bin/python3.
 
 CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -27,6 +29,8 @@ deps:
 	command -v pkg-config >/dev/null || missing="$$missing pkg-config"; \
 	command -v h5dump >/dev/null || missing="$$missing hdf5-tools"; \
 	command -v python3 >/dev/null || missing="$$missing python3"; \
+	/usr/bin/python3 -c 'import h5py' 2>/dev/null || missing="$$missing python3-h5py"; \
+	/usr/bin/python3 -c 'import scipy' 2>/dev/null || missing="$$missing python3-scipy"; \
 	if [ -n "$$missing" ]; then \
 	  echo "ugo: installing$$missing with apt-get"; \
 	  $(SUDO) apt-get update -qq && \

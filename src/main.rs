@@ -1,5 +1,5 @@
 //! The `ugo` command line (`design.md` §6): `solve`, `norms`, `compare`, `render`, `trace`,
-//! `agree`, `info`, `bench`.
+//! `agree`, `info`, `bench`, `export`.
 
 mod cli;
 
@@ -43,6 +43,8 @@ enum Command {
         norms: bool,
         #[command(flatten)]
         basis: cli::basis::BasisOptions,
+        #[command(flatten)]
+        kernel: cli::kernel::KernelOptions,
     },
     /// Norms of K, its spectral radius, cond(I − K) and the predicted Neumann iterations.
     Norms {
@@ -54,6 +56,8 @@ enum Command {
         discretize: Discretize,
         #[command(flatten)]
         stopping: Stopping,
+        #[command(flatten)]
+        kernel: cli::kernel::KernelOptions,
     },
     /// Solve with several methods side by side: table, convergence plot, histories in HDF5.
     Compare {
@@ -84,6 +88,8 @@ enum Command {
         /// Seed of that estimate.
         #[arg(long, allow_negative_numbers = true, default_value_t = 1)]
         seed: u64,
+        #[command(flatten)]
+        kernel: cli::kernel::KernelOptions,
     },
     /// Monte Carlo references: backward path tracing of cameras (mean and standard-error
     /// EXR images, cd/m²) and probes or, with --forward, light tracing into the (patch, cell)
@@ -174,6 +180,8 @@ enum Command {
     },
     /// Throughput of every stage against the machine's limits (table and JSON).
     Bench(cli::bench::BenchOptions),
+    /// K, I − K and L0 of a saved kernel (`solve --save-kernel`) as Matrix Market or PETSc binary files.
+    Export(cli::export::ExportOptions),
 }
 
 fn main() -> ExitCode {
@@ -196,17 +204,20 @@ fn main() -> ExitCode {
 
 fn run(command: Command) -> anyhow::Result<()> {
     match command {
-        Command::Solve { case, output, discretize, stopping, method, orders, norms, basis } => {
+        Command::Solve { case, output, discretize, stopping, method, orders, norms, basis, kernel } => {
             let methods = method.into_iter().collect();
-            let run = study::Job { methods, orders, norms, basis: basis.choice()?, ..Default::default() };
+            let run = study::Job { methods, orders, norms, basis: basis.choice()?, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, ..Job::new(run, stopping, "") })
         }
-        Command::Norms { case, output, discretize, stopping } => {
-            let run = study::Job { methods: vec![Method::Neumann], norms: true, ..Default::default() };
+        Command::Norms { case, output, discretize, stopping, kernel } => {
+            let run = study::Job { methods: vec![Method::Neumann], norms: true, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, ..Job::new(run, stopping, "-norms") })
         }
-        Command::Compare { case, methods, output, plot, discretize, stopping, basis, bases, photons, seed } => {
+        Command::Compare { case, methods, output, plot, discretize, stopping, basis, bases, photons, seed, kernel } => {
             let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+            if !bases.is_empty() && kernel.given() {
+                anyhow::bail!("--kernel and --save-kernel do not apply to --bases (each basis assembles its own case)");
+            }
             if !bases.is_empty() {
                 let plot = plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-bases.png")));
                 let params = SolveParams {
@@ -218,7 +229,7 @@ fn run(command: Command) -> anyhow::Result<()> {
                 return cli::basis::study(&case, &discretize, &bases, method, params, &plot);
             }
             let plot = Some(plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-compare.png"))));
-            let run = study::Job { methods, basis: basis.choice()?, photons, seed, ..Default::default() };
+            let run = study::Job { methods, basis: basis.choice()?, photons, seed, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, plot, ..Job::new(run, stopping, "-compare") })
         }
         Command::Render { solution, cameras, exposure, output, false_colour, orders, shading, gather_rays, view } => {
@@ -237,5 +248,6 @@ fn run(command: Command) -> anyhow::Result<()> {
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench(options) => cli::bench::run(&options),
+        Command::Export(options) => cli::export::run(&options),
     }
 }

@@ -3,7 +3,9 @@
 pub mod agree;
 pub mod basis;
 pub mod bench;
+pub mod export;
 pub mod info;
+pub mod kernel;
 pub mod options;
 pub mod render;
 pub mod solve;

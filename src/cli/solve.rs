@@ -98,9 +98,11 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         norms: s.norms.as_ref(),
         basis: basis.as_ref(),
         warnings: &s.warnings,
+        kernel: s.kernel.save.as_ref(),
     };
     write_solution(&output, &solution).with_context(|| format!("writing {}", output.display()))?;
     summary(&solution, &output);
+    super::kernel::print_record(&s.kernel);
     write_grids(&s.grids, &output)?;
     if !s.probes.is_empty() {
         let csv = PathBuf::from(format!("{}-probes.csv", output.with_extension("").display()));

@@ -55,6 +55,18 @@ pub fn atomic_png(path: &Path, draw: impl FnOnce(&Path) -> Result<(), String>) -
     })
 }
 
+/// [`atomic`] for a file written as a stream: `body` writes through a buffer, flushed and
+/// checked before the rename.
+pub fn atomic_stream(
+    path: &Path,
+    body: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
+) -> Result<(), IoError> {
+    atomic(path, |tmp| {
+        let mut w = std::io::BufWriter::new(std::fs::File::create(tmp).map_err(|e| e.to_string())?);
+        body(&mut w).and_then(|()| std::io::Write::flush(&mut w)).map_err(|e| e.to_string())
+    })
+}
+
 /// `<name>.<pid>.<nonce>.tmp` beside `path`.
 pub fn temporary(path: &Path) -> PathBuf {
     static CALLS: AtomicU64 = AtomicU64::new(0);

@@ -1,5 +1,8 @@
-//! The one way a dataset is written into an HDF5 group (`design.md` §8), shared by the
-//! solution, the forecast estimate and the hierarchy's group.
+//! The one way a dataset and a text attribute are written into an HDF5 group
+//! (`design.md` §8), shared by the solution, the forecast estimate, the hierarchy's group
+//! and the kernel's.
+
+use hdf5::types::VarLenUnicode;
 
 /// Writes `data` as the dataset `name` of `g`.
 pub(super) fn dataset<T: hdf5::H5Type, D: ndarray::Dimension>(
@@ -8,4 +11,13 @@ pub(super) fn dataset<T: hdf5::H5Type, D: ndarray::Dimension>(
     data: &ndarray::Array<T, D>,
 ) -> hdf5::Result<()> {
     g.new_dataset_builder().with_data(data).create(name).map(|_| ())
+}
+
+/// Writes the text attribute `name` of `location`.
+pub(super) fn text_attr(location: &hdf5::Location, name: &str, value: &str) -> hdf5::Result<()> {
+    location.new_attr::<VarLenUnicode>().shape(()).create(name)?.write_scalar(&unicode(value)?)
+}
+
+pub(super) fn unicode(s: &str) -> hdf5::Result<VarLenUnicode> {
+    s.parse::<VarLenUnicode>().map_err(|e| hdf5::Error::from(format!("cannot store {s:?}: {e}")))
 }

@@ -15,6 +15,9 @@ pub enum IoError {
     /// A file that opened but does not hold what ugo writes.
     #[error("{} is not a ugo solution file: {why}", path.display())]
     NotASolution { path: PathBuf, why: String },
+    /// A file without a usable `/kernel` group (`ugo solve --save-kernel` writes one).
+    #[error("{} holds no usable kernel: {why}", path.display())]
+    NotAKernel { path: PathBuf, why: String },
 }
 
 impl IoError {

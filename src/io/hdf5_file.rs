@@ -14,16 +14,17 @@
 //! `/luminaires/{name,kind,position,direction,flux,distribution_flux,file_flux,on_surfaces}`
 //! (one row per `[[luminaire]]`; NaN where a value does not apply), the probes' `direct`
 //! part in `/probes/direct`, and attributes on the root for
-//! method, tolerance, iterations, timings, energy totals, the scene text and the version.
+//! method, tolerance, iterations, timings, energy totals, the scene text and the version;
+//! with `--save-kernel`, `/kernel` (`kernel_file.rs`).
 //! The file is written under a temporary name and renamed when complete.
 
-use super::dataset::dataset;
+use super::dataset::{dataset, text_attr, unicode};
 use crate::basis::{Factorization, MaterialFactor};
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::luminaire::Light;
 use crate::luminaire::LuminaireKind;
-use crate::model::Model;
+use crate::model::{Fingerprint, Model};
 use crate::photometry::Distribution;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
@@ -61,6 +62,8 @@ pub struct Solution<'a> {
     pub basis: Option<&'a BasisRecord<'a>>,
     /// The physics warnings of the solve (`/warnings`, one string each, empty when none).
     pub warnings: &'a [String],
+    /// Save the explicit kernel with this fingerprint in `/kernel` (`kernel_file.rs`).
+    pub kernel: Option<&'a Fingerprint>,
 }
 
 /// A solve in a factored angular basis: the factors and the coefficients solved for.
@@ -136,6 +139,9 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     write_luminaires(&file.create_group("luminaires")?, s)?;
     if let Some(h) = &s.model.hierarchy {
         super::hierarchy_group::write_hierarchy(&file.create_group("hierarchy")?, h)?;
+    }
+    if let Some(fingerprint) = s.kernel {
+        super::kernel_file::write_kernel(&file.create_group("kernel")?, s.model, fingerprint)?;
     }
     write_attributes(&file, s)?;
     // Closed here, not dropped: the last metadata reaches the file now and its error counts.
@@ -359,14 +365,6 @@ fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
 pub(super) fn strings<'a>(g: &hdf5::Group, name: &str, items: impl Iterator<Item = &'a str>) -> hdf5::Result<()> {
     let values: hdf5::Result<Vec<VarLenUnicode>> = items.map(unicode).collect();
     dataset(g, name, &Array1::from(values?))
-}
-
-pub(super) fn text_attr(location: &hdf5::Location, name: &str, value: &str) -> hdf5::Result<()> {
-    location.new_attr::<VarLenUnicode>().shape(()).create(name)?.write_scalar(&unicode(value)?)
-}
-
-fn unicode(s: &str) -> hdf5::Result<VarLenUnicode> {
-    s.parse::<VarLenUnicode>().map_err(|e| hdf5::Error::from(format!("cannot store {s:?}: {e}")))
 }
 
 pub(super) fn shape_error(e: ndarray::ShapeError) -> hdf5::Error {

@@ -35,15 +35,21 @@ pub struct StoredSolution {
 /// vertices or luminances, and declared sizes larger than the file could hold (a dataset
 /// of 10⁹ elements in a small file is refused before anything is allocated).
 pub fn read_solution(path: &Path) -> std::result::Result<StoredSolution, IoError> {
+    let (file, bytes) = open(path)?;
+    read_from(&File { h5: &file, bytes }).map_err(|Why(why)| IoError::NotASolution { path: path.to_path_buf(), why })
+}
+
+/// Opens `path` as HDF5 (refusing a named pipe before opening it), with its size on disk.
+pub(super) fn open(path: &Path) -> std::result::Result<(hdf5::File, u64), IoError> {
     let open = |why: String| IoError::Open { path: path.to_path_buf(), why };
     crate::scene::regular_file(path).map_err(|e| open(e.to_string()))?;
     let bytes = std::fs::metadata(path).map_err(|e| open(e.to_string()))?.len();
     let file = hdf5::File::open(path).map_err(|e| open(e.to_string()))?;
-    read_from(&File { h5: &file, bytes }).map_err(|Why(why)| IoError::NotASolution { path: path.to_path_buf(), why })
+    Ok((file, bytes))
 }
 
 /// What is wrong with a file's layout.
-struct Why(String);
+pub(super) struct Why(pub(super) String);
 
 impl From<hdf5::Error> for Why {
     fn from(e: hdf5::Error) -> Why {
@@ -57,7 +63,7 @@ impl From<SceneError> for Why {
     }
 }
 
-type Result<T> = std::result::Result<T, Why>;
+pub(super) type Result<T> = std::result::Result<T, Why>;
 
 macro_rules! why {
     ($($reason:tt)*) => {
@@ -72,15 +78,15 @@ macro_rules! bail {
 }
 
 /// An open solution file and its size on disk, bytes.
-struct File<'a> {
-    h5: &'a hdf5::File,
-    bytes: u64,
+pub(super) struct File<'a> {
+    pub(super) h5: &'a hdf5::File,
+    pub(super) bytes: u64,
 }
 
 impl File<'_> {
     /// The dataset `name`, if its declared size fits in the file (ugo stores datasets
     /// uncompressed, so a larger one is not ugo's and would allocate without bound).
-    fn dataset(&self, name: &str, element: usize) -> Result<hdf5::Dataset> {
+    pub(super) fn dataset(&self, name: &str, element: usize) -> Result<hdf5::Dataset> {
         let d = self.h5.dataset(name)?;
         let declared = (d.size() as u128) * element as u128;
         if declared > self.bytes as u128 {
@@ -93,11 +99,11 @@ impl File<'_> {
         Ok(d)
     }
 
-    fn f64s(&self, name: &str) -> Result<ndarray::ArrayD<f64>> {
+    pub(super) fn f64s(&self, name: &str) -> Result<ndarray::ArrayD<f64>> {
         Ok(self.dataset(name, 8)?.read_dyn::<f64>()?)
     }
 
-    fn raw<T: hdf5::H5Type>(&self, name: &str) -> Result<Vec<T>> {
+    pub(super) fn raw<T: hdf5::H5Type>(&self, name: &str) -> Result<Vec<T>> {
         Ok(self.dataset(name, std::mem::size_of::<T>())?.read_raw::<T>()?)
     }
 }
@@ -262,7 +268,7 @@ fn reversed(a: &Patch, b: &Patch) -> bool {
     a.len() == b.len() && (0..b.len()).any(|r| a.iter().zip(b.iter().cycle().skip(r)).all(|(x, y)| x == y))
 }
 
-fn text(file: &hdf5::File, name: &str) -> Result<String> {
+pub(super) fn text(file: &hdf5::Location, name: &str) -> Result<String> {
     let value: VarLenUnicode =
         file.attr(name).and_then(|a| a.read_scalar()).map_err(|e| why!("attribute `{name}`: {e}"))?;
     Ok(value.as_str().to_string())

@@ -7,12 +7,18 @@
 //!
 //! The kernel's memory is estimated before assembly (after each refinement pass for the
 //! hierarchy) and a kernel over the limit is refused with the estimate and the ways out.
+//! A saved explicit `G` is reused instead of assembled (`reuse.rs`) when the case's
+//! fingerprint (`fingerprint.rs`) matches the one stored with it.
 
 mod explicit;
+mod fingerprint;
 mod hierarchical;
+mod reuse;
 mod source;
 mod system;
 
+pub use fingerprint::{Change, Fingerprint, KERNEL_FORMAT, Part, Stamp};
+pub use reuse::{NotThisMesh, StoredParts};
 pub use system::{AssemblyStats, HierarchyRecord, Model, ModelError, ModelOptions, Refinement};
 
 use crate::geometry::Mesh;

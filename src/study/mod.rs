@@ -4,11 +4,13 @@
 //! parses its arguments, calls these and prints what they return.
 
 mod bases;
+mod kernel;
 mod solve;
 mod view;
 mod warnings;
 
 pub use bases::{BasisRow, BasisStudy, compare_bases};
+pub use kernel::{KernelError, KernelRecord, Loaded, model_with_kernel};
 pub use solve::{Job, MonteCarlo, Solved, StudyError, solve_case};
 pub use view::lit_scene;
 pub use warnings::physics_warnings;

@@ -4,6 +4,7 @@
 //! illuminance, energy balance, probes, grids, reflection orders, norms and, on request,
 //! each run's agreement with a forward Monte Carlo estimate of the same discretization.
 
+use super::kernel::{KernelError, KernelRecord, model_with_kernel};
 use crate::basis::{Basis, BasisError, Factorization, Reduced};
 use crate::io::Run;
 use crate::kernel::{Explicit, Factored, TooLarge};
@@ -19,6 +20,7 @@ use crate::solve::norms::Norms;
 use crate::solve::orders::{OrderRecord, reflection_orders};
 use crate::solve::{Method, SolveError, SolveParams, System, relative_residual, solve};
 use crate::trace::{Agreement, TraceOptions, World, agreement, trace_photons};
+use std::path::PathBuf;
 use thiserror::Error;
 
 /// What a command asks of the solve.
@@ -36,6 +38,10 @@ pub struct Job {
     pub photons: Option<u64>,
     /// Seed of that reference.
     pub seed: u64,
+    /// Reuse the explicit `G` saved in this file (`--kernel`, `super::kernel`).
+    pub kernel: Option<PathBuf>,
+    /// Keep the kernel's fingerprint so that the output saves it (`--save-kernel`).
+    pub save_kernel: bool,
 }
 
 impl Default for Job {
@@ -49,6 +55,8 @@ impl Default for Job {
             basis: None,
             photons: None,
             seed: 1,
+            kernel: None,
+            save_kernel: false,
         }
     }
 }
@@ -60,6 +68,8 @@ pub enum StudyError {
     TooLarge(#[from] TooLarge),
     #[error(transparent)]
     Model(#[from] ModelError),
+    #[error(transparent)]
+    Kernel(#[from] KernelError),
     #[error(transparent)]
     Basis(#[from] BasisError),
     #[error(transparent)]
@@ -93,6 +103,8 @@ pub struct Solved {
     pub monte_carlo: Option<MonteCarlo>,
     /// What the solved field says is probably not meant (`super::physics_warnings`).
     pub warnings: Vec<String>,
+    /// The kernel file read, and the fingerprint to save (`super::kernel`).
+    pub kernel: KernelRecord,
 }
 
 /// The forward Monte Carlo estimate of the same discretization, and each run's agreement.
@@ -111,7 +123,7 @@ pub fn solve_case(
     progress: &dyn Progress,
 ) -> Result<Solved, StudyError> {
     let methods = if job.methods.is_empty() { vec![scene.solver.method] } else { job.methods.clone() };
-    let model = Model::build(scene, options, progress)?;
+    let (model, kernel) = model_with_kernel(scene, options, job.kernel.as_deref(), job.save_kernel, progress)?;
     let factors =
         job.basis.map(|b| Factorization::new(b, &model.kernel.blocks, &model.kernel.directions)).transpose()?;
     let reduced = factors.as_ref().map(|f| Reduced::new(&model.kernel, f));
@@ -168,6 +180,7 @@ pub fn solve_case(
         norms,
         monte_carlo,
         warnings: Vec::new(),
+        kernel,
     };
     solved.warnings = super::physics_warnings(scene, &solved.model, &solved.x, &solved.energy);
     Ok(solved)

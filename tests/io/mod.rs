@@ -1,6 +1,9 @@
 //! Output files under faults: a write that fails (a full disk, a file-size limit) leaves
 //! the previous file byte for byte and exits non-zero; a process killed mid-write leaves a
 //! temporary file that the next run removes; concurrent writers of one path all succeed
-//! and leave one whole file.
+//! and leave one whole file. The kernel file (`kernel_file.rs`, `kernel_check.py`) and its
+//! exports (`export.rs`).
 
+mod export;
 mod faults;
+mod kernel_file;

@@ -1,0 +1,48 @@
+//! `--save-kernel` and `--kernel FILE.h5` of `solve`, `norms` and `compare` (issue 15,
+//! docs/kernel-file.md): the options, and the summary line of a reused kernel.
+
+use std::path::PathBuf;
+use ugo::study::{self, KernelRecord};
+
+/// Saving and reusing the assembled kernel.
+#[derive(clap::Args, Clone, Debug)]
+pub struct KernelOptions {
+    /// Store the explicit kernel (G in CSR, the blocks B, the direct light D, L0 and the
+    /// case's fingerprint) in the output's /kernel group.
+    #[arg(long)]
+    pub save_kernel: bool,
+    /// Reuse the kernel saved in this file instead of assembling it, when it was assembled
+    /// for this case (refused naming the part that changed; new reflectances or luminaires
+    /// reuse G).
+    #[arg(long, value_name = "FILE.h5")]
+    pub kernel: Option<PathBuf>,
+}
+
+impl KernelOptions {
+    /// A study job with these options and the defaults otherwise.
+    pub fn job(self) -> study::Job {
+        study::Job { kernel: self.kernel, save_kernel: self.save_kernel, ..Default::default() }
+    }
+
+    pub fn given(&self) -> bool {
+        self.save_kernel || self.kernel.is_some()
+    }
+}
+
+/// Where the kernel came from, for the summary.
+pub fn print_record(record: &KernelRecord) {
+    if let Some(loaded) = &record.loaded {
+        println!(
+            "  kernel             {:>12.3} s   (G read from {}, not assembled)",
+            loaded.seconds,
+            loaded.path.display()
+        );
+        for change in &loaded.rebuilt {
+            let rebuilt = change.part.rebuilt().unwrap_or_default();
+            println!("    {change} changed: G reused, {rebuilt}");
+        }
+    }
+    if record.save.is_some() {
+        println!("  kernel saved in    /kernel of the output (docs/kernel-file.md)");
+    }
+}

@@ -1,0 +1,100 @@
+//! The kernel of a solve, assembled or reused (issue 15, `docs/kernel-file.md`): with
+//! `--kernel FILE.h5` the explicit `G` of an earlier `--save-kernel` is read instead of
+//! assembled when the case's fingerprint matches the stored one; a change of a part that
+//! `G` depends on (geometry, discretization, visibility, version, the materials of a
+//! hierarchical kernel) is refused naming it; a change of the reflectances or the
+//! luminaires only rebuilds `B`, `D` and `L0` around the stored `G` (`design.md` §3).
+//! The hierarchical kernel is neither saved nor reused (its links live on a tree of
+//! elements refined along the solved field; the reason is in the docs).
+
+use crate::io::{IoError, StoredKernel, read_kernel};
+use crate::kernel::Transport;
+use crate::model::{Change, Fingerprint, Model, ModelError, ModelOptions, NotThisMesh, Part, StoredParts};
+use crate::progress::Progress;
+use crate::scene::{Assembly, Scene};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+use thiserror::Error;
+
+/// Why a kernel could not be saved or reused.
+#[derive(Debug, Error)]
+pub enum KernelError {
+    #[error(transparent)]
+    Io(#[from] IoError),
+    #[error(
+        "{} was assembled for another case: {} changed; G depends on it, so the kernel is not reused \
+         (assemble it again with `ugo solve CASE --save-kernel`)",
+        path.display(),
+        changes.iter().map(Change::to_string).collect::<Vec<_>>().join(", ")
+    )]
+    Mismatch { path: PathBuf, changes: Vec<Change> },
+    #[error(
+        "the hierarchical kernel (method = \"hierarchical\") is neither saved nor reused: its links join \
+         elements of a tree refined along the solved field and the luminaires' light, which a kernel file \
+         does not hold; use the explicit kernel (--assembly explicit) to save or reuse G"
+    )]
+    Hierarchical,
+    #[error(transparent)]
+    Mesh(#[from] NotThisMesh),
+    #[error(transparent)]
+    Model(#[from] ModelError),
+}
+
+/// Where the kernel of a solve came from, and what to save.
+#[derive(Debug, Clone, Default)]
+pub struct KernelRecord {
+    /// The case's fingerprint, stored in `/kernel` when the kernel is saved.
+    pub save: Option<Fingerprint>,
+    /// The kernel file `G` was read from, when it was.
+    pub loaded: Option<Loaded>,
+}
+
+/// A kernel read from a file instead of assembled.
+#[derive(Debug, Clone)]
+pub struct Loaded {
+    pub path: PathBuf,
+    /// The parts that changed but only rebuild `B`, `D` or `L0` (`G` reused).
+    pub rebuilt: Vec<Change>,
+    /// Seconds spent reading the file.
+    pub seconds: f64,
+}
+
+/// The model of `scene`: assembled, or around the `G` of `kernel` when given; with the
+/// fingerprint to store when `save`. Refuses the hierarchical kernel in either case.
+pub fn model_with_kernel(
+    scene: &Scene,
+    options: &ModelOptions,
+    kernel: Option<&Path>,
+    save: bool,
+    progress: &dyn Progress,
+) -> Result<(Model, KernelRecord), KernelError> {
+    if (save || kernel.is_some()) && matches!(scene.discretization.assembly, Assembly::Hierarchical { .. }) {
+        return Err(KernelError::Hierarchical);
+    }
+    let fingerprint = (save || kernel.is_some()).then(|| Fingerprint::of(scene, options));
+    let Some(path) = kernel else {
+        let model = Model::build(scene, options, progress)?;
+        return Ok((model, KernelRecord { save: fingerprint, loaded: None }));
+    };
+    let ours = fingerprint.clone().unwrap_or_else(|| Fingerprint::of(scene, options));
+    let t = Instant::now();
+    let stored = read_kernel(path)?;
+    let seconds = t.elapsed().as_secs_f64();
+    let changes = ours.changes_from(&stored.fingerprint);
+    let (rebuilt, refused): (Vec<Change>, Vec<Change>) = changes.into_iter().partition(|c| c.part.rebuilt().is_some());
+    if !refused.is_empty() {
+        return Err(KernelError::Mismatch { path: path.to_path_buf(), changes: refused });
+    }
+    let changed = |part: Part| rebuilt.iter().any(|c| c.part == part);
+    let StoredKernel { kernel, direct, .. } = stored;
+    let Transport::Explicit(g) = kernel.g else { return Err(KernelError::Hierarchical) };
+    let parts = StoredParts {
+        g,
+        blocks: (!changed(Part::Reflectances)).then_some(kernel.blocks),
+        direct: (!changed(Part::Luminaires)).then_some(direct),
+        read_seconds: seconds,
+    };
+    let model = Model::with_kernel(scene, options, parts)?;
+    let loaded = Loaded { path: path.to_path_buf(), rebuilt, seconds };
+    Ok((model, KernelRecord { save: save.then_some(ours), loaded: Some(loaded) }))
+}

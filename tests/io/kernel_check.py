@@ -1,0 +1,111 @@
+"""Rebuilds ugo's kernel K = B·G from a solution file's /kernel group with h5py and scipy
+alone, and checks it against ugo (docs/kernel-file.md):
+
+* L0 = L_e + B·D from the stored blocks, direct light and emission;
+* the stored solution x against scipy's spsolve of (I − K) x = L0, and x − L0 = K x;
+* with an export folder (`ugo export FILE.h5 --format mtx` and `--format petsc`): K, I − K
+  and L0 read with scipy.io.mmread and from the PETSc binary files equal the rebuilt ones,
+  and ugo's K y equals the rebuilt K y for a random y.
+
+Every comparison is relative to the largest entry, to 1e-12. Run by tests/io/kernel_file.rs
+with Debian's /usr/bin/python3 (python3-h5py, python3-scipy: `make deps`).
+
+    /usr/bin/python3 tests/io/kernel_check.py SOLUTION.h5 [EXPORT_FOLDER]
+"""
+
+import os
+import sys
+
+import h5py
+import numpy as np
+import scipy.io
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+TOLERANCE = 1e-12
+NO_TWIN = 0xFFFFFFFF
+
+
+def kernel_of(f):
+    """K = B·G, L0 and the rebuilt L0 from /kernel."""
+    k = f["kernel"]
+    g = sp.csr_matrix((k["G/data"][:], k["G/indices"][:], k["G/indptr"][:]), shape=tuple(k["G"].attrs["shape"]))
+    reflect, transmit = k["B/reflection"][:], k["B/transmission"][:]
+    material, twin = k["patch_material"][:], k["twin"][:]
+    n, cells = len(material), reflect.shape[1]
+    rows, cols, vals = [], [], []
+    out, inc = np.meshgrid(np.arange(cells), np.arange(cells), indexing="ij")
+    for i in range(n):
+        # y_i = ρ̄_m(i) z_i + τ̄_m(i) z_twin(i)
+        for source, block in ((i, reflect[material[i]]), (twin[i], transmit[material[i]])):
+            if source == NO_TWIN or not block.any():
+                continue
+            rows.append((i * cells + out).ravel())
+            cols.append((int(source) * cells + inc).ravel())
+            vals.append(block.ravel())
+    b = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=g.shape)
+    l0 = np.repeat(k["emission"][:], cells) + b @ k["direct/arriving"][:]
+    return (b @ g).tocsr(), k["L0"][:], l0
+
+
+def petsc_mat(path):
+    """A PETSc binary Mat (big-endian, class id 1211216, int32 indices, f64 values)."""
+    with open(path, "rb") as fh:
+        classid, m, n, nz = np.fromfile(fh, ">i4", 4)
+        assert classid == 1211216, f"{path}: class id {classid}"
+        lengths = np.fromfile(fh, ">i4", m)
+        cols = np.fromfile(fh, ">i4", nz)
+        vals = np.fromfile(fh, ">f8", nz)
+    indptr = np.concatenate(([0], np.cumsum(lengths)))
+    return sp.csr_matrix((vals, cols, indptr), shape=(m, n))
+
+
+def petsc_vec(path):
+    """A PETSc binary Vec (big-endian, class id 1211214)."""
+    with open(path, "rb") as fh:
+        classid, n = np.fromfile(fh, ">i4", 2)
+        assert classid == 1211214, f"{path}: class id {classid}"
+        return np.fromfile(fh, ">f8", n)
+
+
+def relative(a, b):
+    """max |a − b| / max |b| for dense or sparse a, b."""
+    d = a - b
+    d = abs(d).max() if sp.issparse(d) else np.abs(d).max()
+    scale = abs(b).max() if sp.issparse(b) else np.abs(b).max()
+    return d / scale
+
+
+def main():
+    path = sys.argv[1]
+    checks = []
+    with h5py.File(path, "r") as f:
+        K, L0, rebuilt_l0 = kernel_of(f)
+        x = f["field/luminance"][:].ravel()
+    n = K.shape[0]
+    A = (sp.identity(n, format="csr") - K).tocsc()
+    checks.append(("L0 = L_e + B·D", relative(rebuilt_l0, L0)))
+    checks.append(("spsolve((I - K), L0) against the stored solution", relative(spla.spsolve(A, L0), x)))
+    checks.append(("K x against x - L0", relative(K @ x, x - L0)))
+    if len(sys.argv) > 2:
+        folder = sys.argv[2]
+        y = np.random.default_rng(1).random(n)
+        K_mtx = sp.csr_matrix(scipy.io.mmread(os.path.join(folder, "K.mtx")))
+        checks.append(("K.mtx against B·G", relative(K_mtx, K)))
+        checks.append(("ugo's K y (K.mtx) against B·G y", relative(K_mtx @ y, K @ y)))
+        checks.append(("I-K.mtx against I - B·G", relative(sp.csr_matrix(scipy.io.mmread(os.path.join(folder, "I-K.mtx"))), A)))
+        checks.append(("L0.mtx against /kernel/L0", relative(scipy.io.mmread(os.path.join(folder, "L0.mtx")).ravel(), L0)))
+        checks.append(("K.petsc against B·G", relative(petsc_mat(os.path.join(folder, "K.petsc")), K)))
+        checks.append(("I-K.petsc against I - B·G", relative(petsc_mat(os.path.join(folder, "I-K.petsc")), A)))
+        checks.append(("L0.petsc against /kernel/L0", relative(petsc_vec(os.path.join(folder, "L0.petsc")), L0)))
+    failed = [(what, e) for what, e in checks if not e <= TOLERANCE]
+    for what, e in checks:
+        print(f"kernel_check: {what}: {e:.3e}")
+    if failed:
+        print(f"kernel_check: FAILED beyond {TOLERANCE}: {failed}")
+        sys.exit(1)
+    print(f"kernel_check: ok, {n} unknowns, {K.nnz} non-zeros of K")
+
+
+if __name__ == "__main__":
+    main()
