@@ -15,7 +15,7 @@
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Frame, Mesh, Patch};
-use crate::transfer::occlusion::cut_along_shadows;
+use crate::transfer::occlusion::{always, cut_along_shadows};
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -134,7 +134,7 @@ impl Onto<'_> {
         }
         let (visibility, face) = (self.visibility, self.patch.face);
         let sees = |x: DVec3| visibility.visible(s, x, [NO_FACE, face]);
-        let rays = cut_along_shadows(piece, depth, &sees, &mut |part, seen| {
+        let rays = cut_along_shadows(piece, depth, &sees, &always, &mut |part, seen| {
             let w = (part.centroid() - s).normalize();
             self.add(-w, source.intensity(w) * part.solid_angle(s) * seen);
         });
@@ -145,7 +145,7 @@ impl Onto<'_> {
         let (visibility, face) = (self.visibility, self.patch.face);
         let escapes = |x: DVec3| visibility.closest_hit(x, -direction, face).is_none();
         let mut flux = 0.0;
-        let rays = cut_along_shadows(piece, 0, &escapes, &mut |part, seen| flux += normal_share * part.area() * seen);
+        let rays = cut_along_shadows(piece, 0, &escapes, &always, &mut |part, seen| flux += normal_share * part.area() * seen);
         self.rays += rays;
         self.add(-direction, flux);
     }

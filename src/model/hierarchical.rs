@@ -1,5 +1,5 @@
 //! The hierarchical model (`design.md` §3b): roots meshed at `patch_size`, the luminaires'
-//! direct light on them as the first source term, then passes of refinement iterated with
+//! direct light on them (at a few points of each) as the first source term, then passes of refinement iterated with
 //! a solve (`kernel::hierarchy::iterate`). Before every solve the leaves are split where
 //! the luminaires' light varies over them by more than the error allowed (their shadow
 //! boundaries and the fall-off under them), and `L0 = L_e + B·D` is integrated on the
@@ -13,7 +13,8 @@ use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch};
 use crate::kernel::hierarchy::{Hierarchy, Iterated, Operator, Options, iterate, sample_points};
 use crate::kernel::{Footprint, Kernel, Transport};
-use crate::luminaire::{DirectLight, PatchLight, Source, direct_light, incoming, patch_lights};
+use crate::luminaire::{DirectLight, PatchLight, Source, arriving_at, incoming, patch_lights};
+use rayon::prelude::*;
 use crate::material::Block;
 use crate::progress::Progress;
 use crate::scene::Scene;
@@ -64,7 +65,7 @@ pub fn build(
     let mesh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let root_visibility = Visibility::build(&roots);
-    let root_light = direct_light(&sources, &roots, &root_visibility, &directions);
+    let root_light = seed_light(&sources, &roots, &root_visibility, &directions);
     let root_l0 = source_term(&blocks, &roots, &root_light, k);
     let root_light_seconds = t.elapsed().as_secs_f64();
     let mut light_seconds = 0.0;
@@ -107,7 +108,7 @@ pub fn build(
         kernel_seconds,
         light_seconds: root_light_seconds + light_seconds,
         pairs: operator.links(),
-        rays: history.iter().map(|p| p.rays).sum::<usize>() + direct.rays,
+        rays: history.iter().map(|p| p.rays).sum::<usize>() + root_light.rays + direct.rays,
         balance: None,
     };
     let record = HierarchyRecord { refinement, roots: roots.len(), history, census: h.census() };
@@ -116,6 +117,30 @@ pub fn build(
     let kernel = Kernel { g: Transport::Hierarchical(Box::new(operator)), directions, blocks, patch_material, twin };
     let faces = Faces::of(&mesh);
     Ok(Model { mesh, visibility, faces, kernel, l0, sources, direct, stats, hierarchy: Some(record) })
+}
+
+/// The luminaires' light on the roots, only to seed the oracle's first guess (each root's
+/// own light is integrated exactly once it is a leaf): `D_d` averaged over the oracle's
+/// sample points of each root, one shadow ray per point and source.
+fn seed_light(sources: &[Source], roots: &Mesh, visibility: &Visibility, directions: &DirectionSet) -> DirectLight {
+    let k = directions.len();
+    let arriving: Vec<f64> = roots
+        .patches
+        .par_iter()
+        .flat_map_iter(|patch| {
+            let frame = patch.frame();
+            let mut mean = vec![0.0; k];
+            let mut points = 0.0;
+            for x in sample_points(patch) {
+                let d = arriving_at(sources, visibility, directions, x, &frame, patch.face);
+                mean.iter_mut().zip(d).for_each(|(m, d)| *m += d);
+                points += 1.0;
+            }
+            mean.into_iter().map(move |m| m / points)
+        })
+        .collect();
+    let points: usize = roots.patches.iter().map(|p| sample_points(p).count()).sum();
+    DirectLight { arriving, rays: points * sources.len(), ..DirectLight::none(sources) }
 }
 
 /// True when the luminaires' light reflected by `patch` (albedo `albedo`) varies over it by

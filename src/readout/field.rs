@@ -32,4 +32,9 @@ impl Field {
     pub fn at(&self, patch: usize, cell: usize) -> f64 {
         self.luminance[[patch, cell, 0]]
     }
+
+    /// `max_k |L(i, k)|`: a bound on what patch `i` sends in any direction.
+    pub fn brightest(&self, patch: usize) -> f64 {
+        (0..self.cells()).map(|k| self.at(patch, k).abs()).fold(0.0, f64::max)
+    }
 }

@@ -6,7 +6,8 @@
 //! factor, split by cells as in the kernel, and a visibility fraction from rays to
 //! stratified points of `P_j`; a patch whose points and corners disagree lies on a shadow
 //! edge and is cut into quarters (`transfer::occlusion::cut_along_shadows`), each piece weighed by its
-//! own rays). The luminaires' light arrives exactly at the point (`crate::luminaire::arriving_at`, one
+//! own rays, while the light the piece would send unoccluded exceeds [`SHADOW_CUT`] of all
+//! the point would receive unoccluded). The luminaires' light arrives exactly at the point (`crate::luminaire::arriving_at`, one
 //! shadow ray each) as `D_d(p)`; the illuminance is `E = π Σ_d (I_d + D_d)`, of which
 //! `π Σ_d D_d` is direct from the luminaires. A probe on a surface (within `1e-4` of the
 //! scene's size, facing the same way) reads that surface's outgoing luminance along its
@@ -15,7 +16,7 @@
 //! point aimed along the normal would: the outgoing luminance, gathered the same way, of
 //! the first surface point the normal meets, towards the probe (0 when it meets nothing).
 
-use crate::geometry::{Frame, NO_TWIN, Patch};
+use crate::geometry::{ConvexPolygon, Frame, NO_TWIN, Patch};
 use crate::luminaire::arriving_at;
 use crate::model::Model;
 use crate::readout::field::Field;
@@ -114,25 +115,39 @@ fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, 
     l
 }
 
+/// A piece of a patch crossed by a shadow edge is cut further only while the light it
+/// would send to the point unoccluded exceeds this fraction of all the light the point
+/// would receive unoccluded; below it, its visibility is the fraction of its four points
+/// that see (`docs/hierarchy.md`, "Readouts", measures what this changes).
+pub const SHADOW_CUT: f64 = 1e-4;
+
 /// `I_d(p)`: the light arriving at `p` per cell of `frame`, ignoring face `ignore`.
 pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32) -> Vec<f64> {
     let directions = &model.kernel.directions;
     let cells = directions.len();
     let binning = Binning::new(directions);
-    model
-        .mesh
-        .patches
+    let patches = &model.mesh.patches;
+    let unoccluded: Vec<f64> = patches
         .par_iter()
         .enumerate()
+        .map(|(j, s)| match s.face == ignore {
+            true => 0.0,
+            false => point_to_polygon(p, frame.normal, &s.polygon).max(0.0) * field.brightest(j),
+        })
+        .collect();
+    let least = SHADOW_CUT * unoccluded.iter().sum::<f64>();
+    patches
+        .par_iter()
+        .enumerate()
+        .filter(|&(j, _)| unoccluded[j] > 0.0)
         .fold(
             || (vec![0.0; cells], Vec::new()),
             |(mut sum, mut bins), (j, s)| {
-                if s.face == ignore || point_to_polygon(p, frame.normal, &s.polygon) <= 0.0 {
-                    return (sum, bins);
-                }
                 bins.clear();
                 let sees = |y: DVec3| model.visibility.visible(p, y, [ignore, s.face]);
-                cut_along_shadows(&s.polygon, 0, &sees, &mut |piece, seen| {
+                let per_area = unoccluded[j] / s.area;
+                let worth = |piece: &ConvexPolygon| per_area * piece.area() > least;
+                cut_along_shadows(&s.polygon, 0, &sees, &worth, &mut |piece, seen| {
                     let first = bins.len();
                     binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);
                     bins[first..].iter_mut().for_each(|(_, _, f)| *f *= seen);

@@ -88,22 +88,37 @@ pub fn piece_visibility(polygon: &ConvexPolygon, sees: impl Fn(DVec3) -> bool) -
 pub const SHADOW_DEPTH: u32 = 6;
 
 /// Cuts `piece` (already cut `depth` times) into quarters while its test points and corners
-/// disagree about `sees` (a shadow edge crosses it), down to [`SHADOW_DEPTH`] levels, and
-/// hands every final piece that some of its points see to `visit` with the fraction of its
-/// points that see. Returns the rays traced.
+/// disagree about `sees` (a shadow edge crosses it), down to [`SHADOW_DEPTH`] levels and
+/// only while `worth` says the piece matters enough, and hands every final piece that some
+/// of its points see to `visit` with the fraction of its points that see. A piece that will
+/// not be cut (the deepest level, or not `worth` it) is tested with its points alone.
+/// Returns the rays traced.
 pub fn cut_along_shadows(
     piece: &ConvexPolygon,
     depth: u32,
     sees: &dyn Fn(DVec3) -> bool,
+    worth: &dyn Fn(&ConvexPolygon) -> bool,
     visit: &mut dyn FnMut(&ConvexPolygon, f64),
 ) -> usize {
+    if depth >= SHADOW_DEPTH || !worth(piece) {
+        let seen = polygon_points(piece).iter().filter(|&&x| sees(x)).count();
+        if seen > 0 {
+            visit(piece, seen as f64 / POINTS as f64);
+        }
+        return POINTS;
+    }
     let test = piece_visibility(piece, sees);
-    if !test.uniform && depth < SHADOW_DEPTH {
+    if !test.uniform {
         return test.rays
-            + piece.split().iter().map(|part| cut_along_shadows(part, depth + 1, sees, visit)).sum::<usize>();
+            + piece.split().iter().map(|part| cut_along_shadows(part, depth + 1, sees, worth, visit)).sum::<usize>();
     }
     if test.seen > 0 {
         visit(piece, test.seen as f64 / POINTS as f64);
     }
     test.rays
+}
+
+/// A `worth` for [`cut_along_shadows`] that cuts every piece crossed by a shadow edge.
+pub fn always(_: &ConvexPolygon) -> bool {
+    true
 }

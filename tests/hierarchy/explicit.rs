@@ -1,20 +1,26 @@
 //! With tolerance 0 and smallest size `h`, the hierarchy links every pair at the leaves and
-//! agrees with the explicit (balanced) kernel assembled on the same leaf mesh.
+//! agrees with the explicit (balanced) kernel assembled on the same leaf mesh: `K x` for
+//! any `x`, and the solved field.
 
 use super::{box_with_block, hierarchy, options, relative_difference};
 use crate::support::furnace;
 use ugo::directions::DirectionSet;
 use ugo::kernel::{Factored, Kernel, Precision, Transport, TransportMatrix, assemble};
+use ugo::material::MaterialModel;
 use ugo::scene::Scene;
-use ugo::transfer::form_factor::Quadrature;
+use ugo::solve::{LinOp, Method, SolveParams, System, solve};
 use ugo::visibility::Visibility;
 
-fn compare(scene: Scene, directions: DirectionSet, limit: f64) {
-    let h = hierarchy(&scene, 1.0, directions.clone(), options(0.0, 0.25));
+/// The largest relative differences of `K x` and of the solution with every leaf's own
+/// emission as the source.
+fn compare(scene: Scene, directions: DirectionSet) -> (f64, f64) {
+    let settings = options(0.0, 0.25);
+    let h = hierarchy(&scene, 1.0, directions.clone(), settings.clone());
     let op = h.operator();
     let leaves = h.leaf_mesh();
     let visibility = Visibility::build(&leaves);
-    let t = assemble(&leaves, &visibility, &directions, &Quadrature::default(), &|_| {});
+    // the same outer quadrature: with K > 1 its points decide the receiver cells
+    let t = assemble(&leaves, &visibility, &directions, &settings.quadrature, &|_| {});
     let kernel = Kernel {
         g: Transport::Explicit(TransportMatrix::new(t.g, Precision::Double)),
         directions: directions.clone(),
@@ -28,15 +34,24 @@ fn compare(scene: Scene, directions: DirectionSet, limit: f64) {
     let (mut a, mut b) = (vec![0.0; x.len()], vec![0.0; x.len()]);
     op.apply(&x, &mut a);
     explicit.apply(&x, &mut b);
-    let difference = relative_difference(&a, &b);
+    let kx = relative_difference(&a, &b);
+    let l0 = h.emission();
+    let solution = relative_difference(&solved(&op, &l0), &solved(&explicit, &l0));
     eprintln!(
-        "hierarchy vs explicit, K = {}: {} leaves, {} links ({} explicit pairs), max |Δ(Kx)|/max|Kx| = {difference:.2e}",
+        "hierarchy vs explicit, K = {}: {} leaves, {} links ({} explicit pairs), max |Δ(Kx)|/max|Kx| = {kx:.2e}, \
+         solutions {solution:.2e}",
         directions.len(),
         leaves.len(),
         op.links(),
         t.pairs
     );
-    assert!(difference < limit, "difference {difference}");
+    (kx, solution)
+}
+
+fn solved(operator: &dyn LinOp, l0: &[f64]) -> Vec<f64> {
+    let params = SolveParams { tolerance: 1e-12, max_iterations: 1000, ..SolveParams::default() };
+    let system = System { operator, explicit: None, areas: &[], l0 };
+    solve(Method::Gmres { restart: 30 }, &system, &params, &mut |_, _| {}).expect("converges").0
 }
 
 fn blocks(scene: &Scene, directions: &DirectionSet) -> Vec<ugo::material::Block> {
@@ -46,8 +61,29 @@ fn blocks(scene: &Scene, directions: &DirectionSet) -> Vec<ugo::material::Block>
 #[test]
 fn tolerance_zero_agrees_with_the_explicit_kernel_on_the_leaves() {
     // no occlusion: both close exactly and their factors agree
-    compare(furnace(1.0, 0.5, 1.0, 1.0), DirectionSet::single(), 1e-5);
+    let (kx, solution) = compare(furnace(1.0, 0.5, 1.0, 1.0), DirectionSet::single());
+    assert!(kx < 1e-5 && solution < 1e-5, "K x {kx}, solution {solution}");
     // a block casting shadows: the two close to different visibility estimates where the
     // 4 × 4 segments see it partly (explicit: adaptive row sums, hierarchy: point factors)
-    compare(box_with_block(0.5), DirectionSet::single(), 1e-2);
+    let (kx, solution) = compare(box_with_block(0.5), DirectionSet::single());
+    assert!(kx < 1e-2 && solution < 1e-2, "K x {kx}, solution {solution}");
+}
+
+#[test]
+fn tolerance_zero_agrees_with_the_explicit_kernel_for_glossy_materials_at_64_cells() {
+    // the glossy Cornell box's materials: a Phong room and a GGX block casting shadows,
+    // 64 cells. Both split each pair's factor by cells from either end; the explicit kernel
+    // is then balanced cell by cell (a closed patch's cell d carries exactly A μ_d/π), the
+    // hierarchy is not: single cells of K x differ by 2.7 %, the solutions by 1.4 % (both
+    // with and without the block; measured)
+    let phong = MaterialModel::Phong { diffuse: 0.3, specular: 0.4, exponent: 50.0 };
+    let mut scene = box_with_block(0.5);
+    scene.materials[0].model = phong;
+    scene.materials[1].model = MaterialModel::Ggx { diffuse: 0.2, specular: 0.5, roughness: 0.2 };
+    let mut open = scene.clone();
+    open.surfaces.truncate(1);
+    for scene in [open, scene] {
+        let (kx, solution) = compare(scene, DirectionSet::hemisphere(64));
+        assert!(kx < 4e-2 && solution < 2e-2, "K x {kx}, solution {solution}");
+    }
 }

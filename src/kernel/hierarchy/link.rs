@@ -1,8 +1,9 @@
 //! Links (`design.md` §3b, "Links"): a receiver node `p` gathers `F_pq x̄_q` from a source
 //! node `q`. Between two elements `F_pq = (1/A_p) ∫_p F_{dA→q} dA` by the exact contour
 //! integral and adaptive quadrature (`form_factor::pair_integral`), times the visible
-//! fraction; for `K > 1` split by cells `(d, m)` like `G[(i,d),(j,m)]`
-//! (`binned_pair_integral`). A link of a cluster uses the cluster's projected area across
+//! fraction; for `K > 1` split by cells `(d, m)` like `G[(i,d),(j,m)]`: the mean of the
+//! integral binned from either end (`binned_pair_integral`), as the explicit kernel's
+//! `T^{d,m} = v (S_pq^{d,m} + S_qp^{m,d})/2`, so that `A_p F_pq^{d,m} = A_q F_qp^{m,d}`. A link of a cluster uses the cluster's projected area across
 //! the link (Sillion 1995 with the directional area of Christensen et al. 1997: per-axis
 //! sums of the elements' facing areas, exact for axis-aligned rooms where the isotropic
 //! mean cosine 1/4 is off by up to 4×), and the light a cluster receives arrives from all
@@ -49,10 +50,12 @@ pub fn element_factor(
     let Some(binning) = binning else {
         return (visible * pair_integral(p, q, quadrature).adaptive / p.area, Vec::new());
     };
-    let mut bins = Vec::new();
+    let (mut bins, mut back) = (Vec::new(), Vec::new());
     let whole = binned_pair_integral(p, q, quadrature, binning, &mut bins);
-    let scale = visible / p.area;
-    bins.iter_mut().for_each(|b| b.2 *= scale);
+    binned_pair_integral(q, p, quadrature, binning, &mut back);
+    let half = 0.5 * visible / p.area;
+    bins.iter_mut().for_each(|b| b.2 *= half);
+    bins.extend(back.iter().map(|&(m, d, f)| (d, m, half * f)));
     (visible * whole.adaptive / p.area, merged(bins))
 }
 
