@@ -72,7 +72,13 @@ def relative(a, b):
 
 
 def fold(history, restart):
-    """ugo's GMRES(m) record on KSP's axis (as tools/petsc/solvers.py's, without PETSc)."""
+    """ugo's GMRES(m) residual record (src/solve/gmres.rs) as one value per iteration, KSP's.
+
+    ugo records the true residual starting every cycle, then the Arnoldi estimate after
+    each of up to m iterations, and after the last cycle the true residual once more. KSP
+    records, at iteration j, the true residual where a cycle starts (j = 0 and each
+    restart) and the estimate elsewhere, the last iteration included.
+    """
     values = [history[0]]
     i = 1
     while i < len(history):
@@ -80,6 +86,7 @@ def fold(history, restart):
         values.extend(history[i : i + taken])
         i += taken
         if i < len(history) - 1:
+            # A cycle ended at a restart: its last estimate gives way to the true residual.
             values[-1] = history[i]
         i += 1
     return np.array(values)

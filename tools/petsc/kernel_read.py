@@ -97,7 +97,7 @@ def from_solution(path, comm=PETSc.COMM_WORLD):
     """`K`, `L0`, `G` and `D` from the /kernel group of `path`, distributed by patches."""
     with h5py.File(path, "r") as f:
         if "kernel" not in f:
-            raise SystemExit(f"{path}: no /kernel group; write one with `ugo solve CASE --save-kernel`")
+            raise SystemExit(f"ugo_petsc: {path}: no /kernel group; write one with `ugo solve CASE --save-kernel`")
         k = f["kernel"]
         reflect, transmit = k["B/reflection"][:], k["B/transmission"][:]
         transmits = k["B/transmits"][:]
@@ -149,7 +149,7 @@ def from_export(folder, cells, comm=PETSc.COMM_WORLD):
     def load(kind, name):
         path = os.path.join(folder, name)
         if not os.path.exists(path):
-            raise SystemExit(f"{path}: not found; write it with `ugo export FILE.h5 --format petsc -o {folder}`")
+            raise SystemExit(f"ugo_petsc: {path}: not found; write it with `ugo export FILE.h5 --format petsc -o {folder}`")
         viewer = PETSc.Viewer().createBinary(path, "r", comm=comm)
         obj = kind().create(comm=comm)
         obj.load(viewer)

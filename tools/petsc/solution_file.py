@@ -47,7 +47,7 @@ def write(source, target, run, x, cells, illuminance=None, runs=(), spectrum=Non
         with h5py.File(temporary, "r+") as f:
             n = f["field/luminance"].shape[0]
             if x.size != n * cells or f["field/luminance"].shape[1] != cells:
-                raise SystemExit(f"{source}: /field/luminance has shape {f['field/luminance'].shape}, the kernel {x.size} unknowns of {cells} cells")
+                raise SystemExit(f"ugo_petsc: {source}: /field/luminance has shape {f['field/luminance'].shape}, the kernel {x.size} unknowns of {cells} cells")
             for name in REMOVED:
                 if name in f:
                     del f[name]

@@ -9,16 +9,14 @@ parallel LU (MUMPS, else SuperLU_dist), set up to be comparable with ugo's own s
 * the iteration stops at `‖r‖₂ ≤ tol·‖L0‖₂` (KSP's absolute tolerance `tol·‖L0‖₂`, no
   relative one: KSP's relative test divides by `‖r_0‖`, ugo's by `‖L0‖`).
 
-The residual history is returned relative to `‖L0‖₂`, ugo's `/solver/residual_history`.
+The residual history is returned relative to `‖L0‖₂`, as ugo's `/solver/residual_history`.
 KSP logs one value per iteration; ugo's GMRES logs both the last estimate of a cycle and
-the true residual that starts the next, so `gmres_by_iteration` folds ugo's record onto
-KSP's axis.
+the true residual that starts the next (check.py's `fold` puts ugo's record on KSP's axis).
 """
 
 import time
 from dataclasses import dataclass, field
 
-import numpy as np
 from petsc4py import PETSc
 
 # ugo's method names → KSP types.
@@ -46,9 +44,9 @@ def parse(method):
     """`gmres[:M]`, `bicgstab` or `direct` → (kind, restart)."""
     kind, _, restart = method.partition(":")
     if kind not in ("gmres", "bicgstab", "direct") or (restart and kind != "gmres"):
-        raise SystemExit(f"unknown method \"{method}\": gmres[:M], bicgstab or direct")
+        raise SystemExit(f"ugo_petsc: unknown method \"{method}\": gmres[:M], bicgstab or direct")
     if restart and not restart.isdigit():
-        raise SystemExit(f"gmres restart \"{restart}\" is not a count")
+        raise SystemExit(f"ugo_petsc: gmres restart \"{restart}\" is not a count")
     return kind, int(restart) if restart else 30
 
 
@@ -104,24 +102,3 @@ def solve(method, A, L0, tolerance, max_iterations, direct_package):
         solver=solver,
     )
 
-
-def gmres_by_iteration(history, restart):
-    """ugo's GMRES(m) residual record (src/solve/gmres.rs) as one value per iteration.
-
-    ugo records the true residual starting every cycle, then the Arnoldi estimate after
-    each of up to m iterations; after the last cycle, the true residual once more. On
-    KSP's axis, iteration j is the true residual where a cycle starts (j a multiple of m,
-    and 0) and the estimate elsewhere, including the last iteration.
-    """
-    values = [history[0]]
-    i = 1
-    while i < len(history):
-        remaining = len(history) - i
-        taken = min(restart, remaining - 1)
-        values.extend(history[i : i + taken])
-        i += taken
-        if i < len(history) - 1:
-            # A cycle ended at a restart: its last estimate gives way to the true residual.
-            values[-1] = history[i]
-        i += 1
-    return np.array(values)

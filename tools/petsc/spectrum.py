@@ -55,7 +55,7 @@ def eigenvalues(K, count, tolerance=1e-12):
     seconds = time.perf_counter() - start
     found = min(eps.getConverged(), count)
     if found == 0:
-        raise SystemExit("SLEPc found no eigenvalue of K (raise -spectrum_eps_max_it?)")
+        raise SystemExit("ugo_petsc: SLEPc found no eigenvalue of K (raise -spectrum_eps_max_it?)")
     values, errors, vectors = [], [], []
     vr, vi = K.createVecRight(), K.createVecRight()
     for j in range(found):

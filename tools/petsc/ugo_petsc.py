@@ -118,7 +118,11 @@ def file_settings(args):
     """The tolerance and most iterations: the command line's, else the solution file's."""
     import h5py
 
-    with h5py.File(args.solution, "r") as f:
+    try:
+        f = h5py.File(args.solution, "r")
+    except OSError as e:
+        raise SystemExit(f"ugo_petsc: {args.solution}: {e}")
+    with f:
         tolerance = args.tolerance or float(f.attrs.get("tolerance", 1e-8))
         most = args.max_iterations or int(f.attrs.get("max_iterations", 1000))
     return tolerance, most
