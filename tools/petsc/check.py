@@ -12,8 +12,9 @@ and GGX blocks), with `mpiexec -n 2`:
   eigenvector `v` satisfies `K v = ρ v` for the `K` rebuilt by scipy (tests/io/
   kernel_check.py) to 1e-9 and is non-negative (the Perron vector); the extreme singular
   values of `I − K` equal numpy's dense SVD to 1e-8;
-* `ugo render` reads the written file, and `ugo agree` against a forward trace gives the
-  same per-surface table for PETSc's file as for ugo's.
+* `ugo render` reads the written file and the one of the dominant eigenvector (`--mode
+  1`), and `ugo agree` against a forward trace gives the same per-surface table for
+  PETSc's file as for ugo's.
 
 On the opal diffuser (a two-sided transmitting panel: the twins' rows of `G`), read from
 `/kernel` and from `ugo export --format petsc`: the direct and GMRES solutions agree with
@@ -98,7 +99,7 @@ def cornell(ugo, work):
     run(ugo, "solve", *CORNELL, "--method", "gmres:5", "--tolerance", "1e-12", "--save-kernel", "-o", mine)
     run(ugo, "norms", *CORNELL, "--kernel", mine, "-o", os.path.join(work, "norms.h5"))
     said = petsc(mine, "-o", theirs, "--methods", "gmres:5,bicgstab,direct", "--tolerance", "1e-12",
-                 "--eigenvalues", "3", "--singular", "--report", report)
+                 "--eigenvalues", "3", "--mode", "1", "--singular", "--report", report)
     print(said, end="")
     figures = json.load(open(report))
     runs = figures["runs"]
@@ -135,6 +136,8 @@ def spectrum(mine, theirs, figures):
     rho = figures["spectral_radius"]
     check("K v = rho v for the dominant eigenvector", np.abs(K @ v - rho * v).max() / (rho * np.abs(v).max()), 1e-9)
     check("the dominant eigenvector's most negative entry", max(0.0, -v.min()), 1e-9)
+    mode = field(theirs.removesuffix(".h5") + "-mode-1.h5")
+    check("the mode file's field against /petsc/spectrum/vectors", np.abs(mode - v).max(), 0.0)
     sigma = np.linalg.svd(np.eye(K.shape[0]) - K.toarray(), compute_uv=False)
     s = figures["singular"]
     check("sigma_max(I - K) against numpy's SVD", abs(s["largest"] - sigma[0]) / sigma[0], 1e-8)
@@ -142,9 +145,10 @@ def spectrum(mine, theirs, figures):
 
 
 def agreement(ugo, work, mine, theirs):
-    run(ugo, "render", theirs, "-o", os.path.join(work, "render"))
-    if not os.path.exists(os.path.join(work, "render", "glossy-cornell-camera.png")):
-        failures.append("ugo render wrote no picture of PETSc's file")
+    for path, folder in ((theirs, "render"), (theirs.removesuffix(".h5") + "-mode-1.h5", "render-mode")):
+        run(ugo, "render", path, "-o", os.path.join(work, folder))
+        if not os.path.exists(os.path.join(work, folder, "glossy-cornell-camera.png")):
+            failures.append(f"ugo render wrote no picture of {path}")
     forward = os.path.join(work, "forward.h5")
     run(ugo, "trace", *CORNELL, "--forward", "--photons", "100000", "-o", forward)
     tables = [run(ugo, "agree", path, forward).splitlines()[1:] for path in (mine, theirs)]

@@ -19,6 +19,8 @@ The input solution file is copied and, in the copy:
   removed: they would describe ugo's field, not this one. `/orders` (partial sums of
   `Kⁿ L0`, a property of the kernel, not of the solver) and `/kernel` are kept.
 
+`write_mode` writes an eigenvector of `K` as the field instead, for `ugo render`.
+
 The file is written under a temporary name and renamed when complete, as ugo does
 (src/io/atomic.rs). Only rank 0 writes.
 """
@@ -69,6 +71,29 @@ def write(source, target, run, x, cells, illuminance=None, runs=(), spectrum=Non
                     del f.attrs[key]
                 f.attrs[key] = value
             _record(f, runs, spectrum, vectors, singular, n, cells)
+        os.replace(temporary, target)
+    finally:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+
+
+def write_mode(source, target, vector, value, index, cells):
+    """Copies the solution file `source` to `target` with eigenvector `index` of `K`
+    (eigenvalue `value`, scaled to max |v| = 1) as `/field/luminance`, for `ugo render`.
+    The illuminance, a property of a solution, is removed."""
+    temporary = f"{target}.tmp{os.getpid()}"
+    shutil.copyfile(source, temporary)
+    try:
+        with h5py.File(temporary, "r+") as f:
+            n = f["field/luminance"].shape[0]
+            f["field/luminance"][...] = vector.reshape(n, cells, 1)
+            for name in ("field/illuminance", "orders"):
+                if name in f:
+                    del f[name]
+            for key, text in (("method", f"SLEPc eigenvector {index} of K"), ("eigenvalue", f"{value.real:.15g} {value.imag:+.3g}i")):
+                if key in f.attrs:
+                    del f.attrs[key]
+                f.attrs[key] = text
         os.replace(temporary, target)
     finally:
         if os.path.exists(temporary):

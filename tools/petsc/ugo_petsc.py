@@ -12,7 +12,8 @@ group of the solution file, or with `--export DIR` the PETSc binary files of `ug
   the dominant eigenvector by SLEPc's Krylov–Schur;
 * with `--singular`, the extreme singular values of `I − K` and `cond₂(I − K)`;
 * writes the first method's solution as a solution file in ugo's layout (`-o`), which
-  `ugo render` and `ugo agree` read, and with `--report` the figures as JSON.
+  `ugo render` and `ugo agree` read, with `--mode J` eigenvector J as the field of a
+  second one, and with `--report` the figures as JSON.
 
     mpiexec -n 2 /usr/bin/python3 tools/petsc/ugo_petsc.py cornell.h5 -o cornell-petsc.h5 \\
         --methods gmres:30,bicgstab,direct --eigenvalues 4 --singular
@@ -43,6 +44,8 @@ def arguments(argv):
     p.add_argument("--direct", choices=("mumps", "superlu_dist"), help="the LU package (default: MUMPS if PETSc has it)")
     p.add_argument("--matrix-free", action="store_true", help="apply I - K as a shell operator over K (Krylov and SVD)")
     p.add_argument("--eigenvalues", type=int, default=0, metavar="N", help="the N eigenvalues of K of largest magnitude (SLEPc)")
+    p.add_argument("--mode", type=int, metavar="J", help="also write eigenvector J (1 = the dominant) as the field of a solution file, for ugo render")
+    p.add_argument("--mode-output", metavar="FILE", help="that file (default: OUTPUT without .h5, then -mode-J.h5)")
     p.add_argument("--singular", action="store_true", help="the largest and smallest singular values of I - K")
     p.add_argument("--report", help="write the figures as JSON to this file")
     return p.parse_known_args(argv)
@@ -65,6 +68,8 @@ def main():
     methods = [m for m in args.methods.split(",") if m]
     for m in methods:
         solvers.parse(m)
+    if args.mode is not None and not 1 <= args.mode <= args.eigenvalues:
+        raise SystemExit(f"ugo_petsc: --mode {args.mode} needs --eigenvalues N with N ≥ {args.mode}")
     tolerance, max_iterations = file_settings(args)
     start = time.perf_counter()
     kernel = kernel_read.from_export(args.export, cells(args.solution), comm) if args.export else kernel_read.from_solution(args.solution, comm)
@@ -109,6 +114,10 @@ def main():
             illuminance = illuminance_per_patch(illuminance, kernel.cells)
         solution_file.write(args.solution, output, first, x, kernel.cells, illuminance, runs, eig, vectors, sing, backend)
         say(f"  wrote {output} ({first.method})")
+        if args.mode is not None:
+            mode_output = args.mode_output or f"{output.removesuffix('.h5')}-mode-{args.mode}.h5"
+            solution_file.write_mode(output, mode_output, vectors[args.mode - 1], eig.values[args.mode - 1], args.mode, kernel.cells)
+            say(f"  wrote {mode_output} (eigenvector {args.mode} as the field)")
         if args.report:
             report(args, n, comm.getSize(), read_seconds, runs, eig, sing, package)
     comm.barrier()
