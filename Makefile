@@ -2,7 +2,8 @@
 # Both install what the build needs on a fresh Debian machine: the HDF5 C library
 # (found through pkg-config), for the demo's listing h5dump, and for the test that reads
 # the kernel file without ugo (tests/io/kernel_check.py) Debian's h5py and scipy for
-# /usr/bin/python3.
+# /usr/bin/python3. `make test-petsc` installs the optional PETSc/SLEPc backend
+# (tools/petsc, docs/petsc.md) from Debian's packages and checks it against ugo.
 
 CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -19,7 +20,7 @@ OFFICE_OUT ?= out/office.h5
 ROOMS := cases/generate/rooms.py
 HALL_OBJ := cases/hall-obj/seats.obj
 
-.PHONY: all deps build demo test cases clean
+.PHONY: all deps build demo test petsc test-petsc cases clean
 
 all: build
 
@@ -52,6 +53,25 @@ demo: build
 
 test: deps $(HALL_OBJ)
 	$(CARGO) test --release
+
+# The PETSc/SLEPc backend (docs/petsc.md): Debian's petsc4py and slepc4py (PETSc and
+# SLEPc 3.18, MUMPS and SuperLU_dist) and OpenMPI, for /usr/bin/python3.
+PETSC_PACKAGES := python3-petsc4py python3-slepc4py openmpi-bin
+
+petsc: deps
+	@missing=""; \
+	for p in $(PETSC_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "ugo: installing$$missing with apt-get"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing >/dev/null; \
+	fi
+
+# PETSc's and SLEPc's solutions, GMRES history and ρ(K) against ugo's, on 2 MPI ranks.
+test-petsc: petsc build
+	/usr/bin/python3 tools/petsc/check.py target/release/ugo out/petsc-check
 
 # Checks that the committed cases are what the script writes, then writes every file
 # (the OBJ included).

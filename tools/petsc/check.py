@@ -1,0 +1,186 @@
+"""The PETSc/SLEPc backend against ugo (`make test-petsc`; docs/petsc.md).
+
+On the glossy Cornell box at 0.1 m patches and 8 direction cells (2,752 unknowns; Phong
+and GGX blocks), with `mpiexec -n 2`:
+
+* PETSc's GMRES(5), BiCGSTAB and MUMPS LU solutions agree with ugo's GMRES(5) solution to
+  1e-8 (relative to its largest luminance), and so does the illuminance formed from `G`;
+* PETSc's GMRES(5) residual history equals ugo's, iteration by iteration, to 1e-14
+  (relative residuals, i.e. in units of ‖L0‖₂: round-off), with the same iteration count;
+  the shell operator `I − K` over `K` gives the same history;
+* SLEPc's ρ(K) agrees with `ugo norms` (power iteration) to 1e-6; the dominant
+  eigenvector `v` satisfies `K v = ρ v` for the `K` rebuilt by scipy (tests/io/
+  kernel_check.py) to 1e-9 and is non-negative (the Perron vector); the extreme singular
+  values of `I − K` equal numpy's dense SVD to 1e-8;
+* `ugo render` reads the written file and the one of the dominant eigenvector (`--mode
+  1`), and `ugo agree` against a forward trace gives the same per-surface table for
+  PETSc's file as for ugo's.
+
+On the opal diffuser (a two-sided transmitting panel: the twins' rows of `G`), read from
+`/kernel` and from `ugo export --format petsc`: the direct and GMRES solutions agree with
+ugo's direct one to 1e-8.
+
+    /usr/bin/python3 tools/petsc/check.py [UGO] [WORK_FOLDER]
+"""
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "tests", "io"))
+from kernel_check import kernel_of  # noqa: E402
+
+SOLUTION = 1e-8
+HISTORY = 1e-14
+RHO = 1e-6
+CORNELL = ["cases/glossy-cornell.toml", "--patch-size", "0.1", "--directions", "8"]
+OPAL = ["cases/opal-diffuser.toml", "--patch-size", "0.1"]
+failures = []
+
+
+def run(*command):
+    done = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit(f"check_petsc: {' '.join(command)} failed:\n{done.stdout}\n{done.stderr}")
+    return done.stdout
+
+
+def petsc(*args):
+    return run(os.path.join(HERE, "run"), "-n", "2", *args)
+
+
+def check(what, error, limit):
+    ok = error <= limit
+    print(f"check_petsc: {what}: {error:.3e} (limit {limit:.0e}){'' if ok else '  FAILED'}")
+    if not ok:
+        failures.append(what)
+
+
+def field(path, name="field/luminance"):
+    with h5py.File(path, "r") as f:
+        return f[name][:].ravel()
+
+
+def relative(a, b):
+    return np.abs(a - b).max() / np.abs(b).max()
+
+
+def fold(history, restart):
+    """ugo's GMRES(m) residual record (src/solve/gmres.rs) as one value per iteration, KSP's.
+
+    ugo records the true residual starting every cycle, then the Arnoldi estimate after
+    each of up to m iterations, and after the last cycle the true residual once more. KSP
+    records, at iteration j, the true residual where a cycle starts (j = 0 and each
+    restart) and the estimate elsewhere, the last iteration included.
+    """
+    values = [history[0]]
+    i = 1
+    while i < len(history):
+        taken = min(restart, len(history) - i - 1)
+        values.extend(history[i : i + taken])
+        i += taken
+        if i < len(history) - 1:
+            # A cycle ended at a restart: its last estimate gives way to the true residual.
+            values[-1] = history[i]
+        i += 1
+    return np.array(values)
+
+
+def cornell(ugo, work):
+    mine, theirs = os.path.join(work, "ugo.h5"), os.path.join(work, "petsc.h5")
+    report = os.path.join(work, "petsc.json")
+    run(ugo, "solve", *CORNELL, "--method", "gmres:5", "--tolerance", "1e-12", "--save-kernel", "-o", mine)
+    run(ugo, "norms", *CORNELL, "--kernel", mine, "-o", os.path.join(work, "norms.h5"))
+    said = petsc(mine, "-o", theirs, "--methods", "gmres:5,bicgstab,direct", "--tolerance", "1e-12",
+                 "--eigenvalues", "3", "--mode", "1", "--singular", "--report", report)
+    print(said, end="")
+    figures = json.load(open(report))
+    runs = figures["runs"]
+    x = field(mine)
+    check("PETSc GMRES(5) solution against ugo's", relative(field(theirs), x), SOLUTION)
+    check("illuminance from G against ugo's", relative(field(theirs, "field/illuminance"), field(mine, "field/illuminance")), SOLUTION)
+    check("BiCGSTAB's residual", runs["bicgstab"]["residual"], 1e-11)
+    check("LU's residual", runs["direct"]["residual"], 1e-13)
+    if "mumps" not in runs["direct"]["solver"] and "superlu_dist" not in runs["direct"]["solver"]:
+        failures.append(f"the direct solver is {runs['direct']['solver']}, not a parallel LU")
+    with h5py.File(mine, "r") as f:
+        ugo_history = fold(f["solver/residual_history"][:], 5)
+    with h5py.File(os.path.join(work, "norms.h5"), "r") as f:
+        rho = f["norms"].attrs["spectral_radius"]
+    history = np.array(runs["gmres:5"]["history"])
+    if len(history) != len(ugo_history):
+        failures.append(f"GMRES(5): PETSc {len(history) - 1} iterations, ugo {len(ugo_history) - 1}")
+    else:
+        check(f"GMRES(5) residual history ({len(history) - 1} iterations) against ugo's", np.abs(history - ugo_history).max(), HISTORY)
+    shell_report = os.path.join(work, "shell.json")
+    petsc(mine, "-o", os.path.join(work, "shell.h5"), "--matrix-free", "--methods", "gmres:5", "--tolerance", "1e-12", "--report", shell_report)
+    shell = np.array(json.load(open(shell_report))["runs"]["gmres:5"]["history"])
+    check("GMRES(5) history, shell I - K against assembled", np.abs(shell - history).max() if len(shell) == len(history) else np.inf, HISTORY)
+    check("SLEPc rho(K) against ugo norms", abs(figures["spectral_radius"] - rho) / rho, RHO)
+    spectrum(mine, theirs, figures)
+    agreement(ugo, work, mine, theirs)
+
+
+def spectrum(mine, theirs, figures):
+    with h5py.File(mine, "r") as f:
+        K, _, _ = kernel_of(f)
+    with h5py.File(theirs, "r") as f:
+        v = f["petsc/spectrum/vectors"][..., 0].ravel()
+    rho = figures["spectral_radius"]
+    check("K v = rho v for the dominant eigenvector", np.abs(K @ v - rho * v).max() / (rho * np.abs(v).max()), 1e-9)
+    check("the dominant eigenvector's most negative entry", max(0.0, -v.min()), 1e-9)
+    mode = field(theirs.removesuffix(".h5") + "-mode-1.h5")
+    check("the mode file's field against /petsc/spectrum/vectors", np.abs(mode - v).max(), 0.0)
+    sigma = np.linalg.svd(np.eye(K.shape[0]) - K.toarray(), compute_uv=False)
+    s = figures["singular"]
+    check("sigma_max(I - K) against numpy's SVD", abs(s["largest"] - sigma[0]) / sigma[0], 1e-8)
+    check("sigma_min(I - K) against numpy's SVD", abs(s["smallest"] - sigma[-1]) / sigma[-1], 1e-8)
+
+
+def agreement(ugo, work, mine, theirs):
+    for path, folder in ((theirs, "render"), (theirs.removesuffix(".h5") + "-mode-1.h5", "render-mode")):
+        run(ugo, "render", path, "-o", os.path.join(work, folder))
+        if not os.path.exists(os.path.join(work, folder, "glossy-cornell-camera.png")):
+            failures.append(f"ugo render wrote no picture of {path}")
+    forward = os.path.join(work, "forward.h5")
+    run(ugo, "trace", *CORNELL, "--forward", "--photons", "100000", "-o", forward)
+    tables = [run(ugo, "agree", path, forward).splitlines()[1:] for path in (mine, theirs)]
+    if tables[0] != tables[1] or not tables[0]:
+        failures.append("ugo agree's table differs between ugo's and PETSc's files")
+    else:
+        print(f"check_petsc: ugo agree: the same {len(tables[0])}-line table for ugo's and PETSc's files")
+
+
+def opal(ugo, work):
+    mine, export = os.path.join(work, "opal.h5"), os.path.join(work, "opal-export")
+    run(ugo, "solve", *OPAL, "--method", "direct", "--save-kernel", "-o", mine)
+    os.makedirs(export, exist_ok=True)
+    run(ugo, "export", mine, "--format", "petsc", "-o", export)
+    x = field(mine)
+    for source, extra in (("/kernel", []), ("the PETSc export", ["--export", export])):
+        for method in ("direct", "gmres:30"):
+            out = os.path.join(work, f"opal-{method.replace(':', '-')}-{len(extra)}.h5")
+            petsc(mine, "-o", out, "--methods", method, "--tolerance", "1e-12", *extra)
+            check(f"opal diffuser, {method} from {source}, against ugo's direct solution", relative(field(out), x), SOLUTION)
+
+
+def main():
+    ugo = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.join(ROOT, "target", "release", "ugo")
+    work = sys.argv[2] if len(sys.argv) > 2 else tempfile.mkdtemp(prefix="ugo-petsc-")
+    os.makedirs(work, exist_ok=True)
+    cornell(ugo, work)
+    opal(ugo, work)
+    if failures:
+        sys.exit(f"check_petsc: FAILED: {failures}")
+    print("check_petsc: ok")
+
+
+if __name__ == "__main__":
+    main()
