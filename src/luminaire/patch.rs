@@ -145,7 +145,8 @@ impl Onto<'_> {
         let (visibility, face) = (self.visibility, self.patch.face);
         let escapes = |x: DVec3| visibility.closest_hit(x, -direction, face).is_none();
         let mut flux = 0.0;
-        let rays = cut_along_shadows(piece, 0, &escapes, &always, &mut |part, seen| flux += normal_share * part.area() * seen);
+        let rays =
+            cut_along_shadows(piece, 0, &escapes, &always, &mut |part, seen| flux += normal_share * part.area() * seen);
         self.rays += rays;
         self.add(-direction, flux);
     }
