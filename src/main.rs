@@ -58,6 +58,11 @@ enum Command {
         stopping: Stopping,
         #[command(flatten)]
         kernel: cli::kernel::KernelOptions,
+        /// Also the N eigenvalues of K of largest magnitude and their eigenvectors (ugo's
+        /// Arnoldi, matrix-free), to /spectrum; runs GMRES beside successive approximation
+        /// and plots both against the rates the spectrum predicts (`<output>-spectrum.png`).
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1000))]
+        spectrum: Option<u32>,
     },
     /// Solve with several methods side by side: table, convergence plot, histories in HDF5.
     Compare {
@@ -209,8 +214,13 @@ fn run(command: Command) -> anyhow::Result<()> {
             let run = study::Job { methods, orders, norms, basis: basis.choice()?, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, ..Job::new(run, stopping, "") })
         }
-        Command::Norms { case, output, discretize, stopping, kernel } => {
-            let run = study::Job { methods: vec![Method::Neumann], norms: true, ..kernel.job() };
+        Command::Norms { case, output, discretize, stopping, kernel, spectrum } => {
+            let methods = match spectrum {
+                Some(_) => vec![Method::Neumann, Method::Gmres { restart: RESTART }],
+                None => vec![Method::Neumann],
+            };
+            let spectrum = spectrum.map(|n| n as usize);
+            let run = study::Job { methods, norms: true, spectrum, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, ..Job::new(run, stopping, "-norms") })
         }
         Command::Compare { case, methods, output, plot, discretize, stopping, basis, bases, photons, seed, kernel } => {

@@ -9,6 +9,7 @@ pub mod kernel;
 pub mod options;
 pub mod render;
 pub mod solve;
+pub mod spectrum;
 pub mod trace;
 
 use anyhow::{Result, bail};

@@ -1,16 +1,19 @@
 //! Pipelines that return values (`design.md` §6, the study floor): a stored solution made
 //! ready to look at, the solve of a case with every method asked for, the study of
-//! angular bases, and the agreement with Monte Carlo references. The command line only
-//! parses its arguments, calls these and prints what they return.
+//! angular bases, the convergence rates a spectrum predicts, and the agreement with Monte
+//! Carlo references. The command line only parses its arguments, calls these and prints
+//! what they return.
 
 mod bases;
 mod kernel;
 mod solve;
+mod spectrum;
 mod view;
 mod warnings;
 
 pub use bases::{BasisRow, BasisStudy, compare_bases};
 pub use kernel::{KernelError, KernelRecord, Loaded, model_with_kernel};
 pub use solve::{Job, MonteCarlo, Solved, StudyError, solve_case};
+pub use spectrum::{Rate, measured_rate, rates};
 pub use view::lit_scene;
 pub use warnings::physics_warnings;
