@@ -174,6 +174,10 @@ enum Command {
         /// Final-gather rays per pixel (with `--shading gather`).
         #[arg(long, allow_negative_numbers = true, default_value_t = 64)]
         gather_rays: usize,
+        /// Draw eigenvector J of K (1 = the dominant) from the file's /spectrum (`ugo norms
+        /// --spectrum N`) instead of the field: its real part, with a signed false colour.
+        #[arg(long, value_name = "J", conflicts_with = "orders")]
+        mode: Option<usize>,
         #[command(flatten)]
         view: cli::render::CameraOptions,
     },
@@ -242,8 +246,19 @@ fn run(command: Command) -> anyhow::Result<()> {
             let run = study::Job { methods, basis: basis.choice()?, photons, seed, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, plot, ..Job::new(run, stopping, "-compare") })
         }
-        Command::Render { solution, cameras, exposure, output, false_colour, orders, shading, gather_rays, view } => {
-            let look = cli::render::Look { view, exposure, false_colour, orders: &orders, shading, gather_rays };
+        Command::Render {
+            solution,
+            cameras,
+            exposure,
+            output,
+            false_colour,
+            orders,
+            shading,
+            gather_rays,
+            mode,
+            view,
+        } => {
+            let look = cli::render::Look { view, exposure, false_colour, orders: &orders, shading, gather_rays, mode };
             cli::render::run(&solution, &cameras, &output, &look)
         }
         Command::Trace { case, cameras, spp, probe_samples, forward, photons, seed, max_order, output, discretize } => {

@@ -18,6 +18,9 @@ pub enum IoError {
     /// A file without a usable `/kernel` group (`ugo solve --save-kernel` writes one).
     #[error("{} holds no usable kernel: {why}", path.display())]
     NotAKernel { path: PathBuf, why: String },
+    /// A file without the asked-for eigenvector in `/spectrum` (`ugo norms --spectrum N`).
+    #[error("{} holds no such mode: {why}", path.display())]
+    NoMode { path: PathBuf, why: String },
 }
 
 impl IoError {

@@ -50,10 +50,9 @@ pub struct Mode {
 pub fn read_mode(path: &Path, index: usize) -> Result<Mode, IoError> {
     let (h5, bytes) = open(path)?;
     let file = File { h5: &h5, bytes };
-    let why = |Why(why)| IoError::NotASolution { path: path.to_path_buf(), why };
+    let why = |Why(why)| IoError::NoMode { path: path.to_path_buf(), why };
     if h5.group("spectrum").is_err() {
-        let why = "it has no /spectrum (written by `ugo norms CASE --spectrum N`)".to_string();
-        return Err(IoError::NotASolution { path: path.to_path_buf(), why });
+        return Err(why(Why("it has no /spectrum (written by `ugo norms CASE --spectrum N`)".to_string())));
     }
     mode_of(&file, index).map_err(why)
 }
