@@ -38,21 +38,28 @@ pub fn report(spectrum: &Spectrum, runs: &[Run], output: &Path, name: &str) -> R
     println!("    rate per product with K   measured    predicted");
     for r in &rates {
         let basis = match r.method {
-            ugo::solve::Method::Neumann => "|λ₁|",
-            ugo::solve::Method::Gmres { .. } => "|λ₂|",
-            _ => "",
+            ugo::solve::Method::Neumann => "|λ₁|".to_string(),
+            ugo::solve::Method::Gmres { .. } => format!("|λ₂|; Chebyshev on [1 − λ₁, 1 − λ_min]: {:.5}", r.interval),
+            _ => String::new(),
         };
         println!("      {:<22} {:>9.5} {:>12.5} {basis}", r.method.name(), r.measured, r.predicted);
     }
-    let lines: Vec<RateLine> = rates
-        .iter()
-        .map(|r| RateLine {
-            label: format!("{}: {:.4} per product", r.method.name(), r.predicted),
-            start: (r.start.0 as f64, r.start.1),
-            end: r.end as f64,
-            rate: r.predicted,
-        })
-        .collect();
+    let line = |run: usize, r: &ugo::study::Rate, rate: f64, what: &str| RateLine {
+        run,
+        dotted: what == "Chebyshev",
+        label: format!("{} {what}: {rate:.4}", r.method.name()),
+        start: (r.start.0 as f64, r.start.1),
+        end: r.end as f64,
+        rate,
+    };
+    let mut lines: Vec<RateLine> = Vec::new();
+    for (run, r) in rates.iter().enumerate() {
+        let what = if matches!(r.method, ugo::solve::Method::Neumann) { "|λ₁|" } else { "|λ₂|" };
+        lines.push(line(run, r, r.predicted, what));
+        if r.interval.is_finite() {
+            lines.push(line(run, r, r.interval, "Chebyshev"));
+        }
+    }
     let plot = PathBuf::from(format!("{}-spectrum.png", output.with_extension("").display()));
     spectrum_plot(
         &plot,

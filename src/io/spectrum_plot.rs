@@ -1,7 +1,9 @@
 //! The spectrum plot (PNG, plotters) of `ugo norms --spectrum N`: the leading eigenvalues
 //! of `K` in the complex plane, and beside them every run's residual against products
 //! with `K`, with the rate the spectrum predicts for it drawn dashed from the start of its
-//! tail (`study::rates`).
+//! tail (`study::rates`), and how fast the ratio of successive residuals of successive
+//! approximation settles on `|λ₁|` against the gap: `|λ₂/λ₁|ⁿ` in general, `|λ₂/λ₁|²ⁿ`
+//! when the eigenvectors are orthogonal (the first-order cross term vanishes).
 
 use super::IoError;
 use crate::io::Run;
@@ -11,6 +13,10 @@ use std::path::Path;
 
 /// A predicted rate: `r(a) = r₀ · rate^(a − a₀)` from `start = (a₀, r₀)` to `a = end`.
 pub struct RateLine {
+    /// Index of the run it predicts (its colour).
+    pub run: usize,
+    /// Dotted rather than dashed (a second prediction for the same run).
+    pub dotted: bool,
     pub label: String,
     pub start: (f64, f64),
     pub end: f64,
@@ -29,13 +35,17 @@ pub fn spectrum_plot(
 ) -> Result<(), IoError> {
     super::atomic_png(path, |png| {
         super::plot::register_font();
-        let root = BitMapBackend::new(png, (1400, 640)).into_drawing_area();
+        let root = BitMapBackend::new(png, (1950, 640)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
         let (top, body) = root.split_vertically(50);
         top.titled(title, ("sans-serif", 24)).map_err(|e| e.to_string())?;
-        let (left, right) = body.split_horizontally(560);
+        let (left, rest) = body.split_horizontally(560);
+        let (middle, right) = rest.split_horizontally(800);
         eigenvalues(&left, spectrum).map_err(|e| e.to_string())?;
-        histories(&right, runs, lines).map_err(|e| e.to_string())?;
+        histories(&middle, runs, lines).map_err(|e| e.to_string())?;
+        if let Some(neumann) = runs.iter().find(|r| r.method == crate::solve::Method::Neumann) {
+            settling(&right, spectrum, neumann).map_err(|e| e.to_string())?;
+        }
         root.present().map_err(|e| e.to_string())
     })
 }
@@ -102,18 +112,80 @@ fn histories(area: &Area, runs: &[Run], lines: &[RateLine]) -> Result<(), Box<dy
             .label(run.method.name())
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(3)));
     }
-    for (index, line) in lines.iter().enumerate().filter(|(_, l)| l.rate.is_finite() && l.rate > 0.0) {
-        let color = Palette99::pick(index).to_rgba();
+    for line in lines.iter().filter(|l| l.rate.is_finite() && l.rate > 0.0) {
+        let color = Palette99::pick(line.run).to_rgba();
+        let (dash, gap) = if line.dotted { (2, 5) } else { (8, 6) };
         let (a0, r0) = line.start;
         let dashes: Vec<(f64, f64)> = (0..=60)
             .map(|t| a0 + (line.end - a0) * t as f64 / 60.0)
             .map(|a| (a, (r0 * line.rate.powf(a - a0)).max(y_min)))
             .collect();
         chart
-            .draw_series(DashedLineSeries::new(dashes, 8, 6, color.stroke_width(2)))?
+            .draw_series(DashedLineSeries::new(dashes, dash, gap, color.stroke_width(2)))?
             .label(line.label.clone())
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 10, y)], color.stroke_width(2)));
     }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 15))
+        .draw()?;
+    Ok(())
+}
+
+/// `| ‖r_{n+1}‖/‖r_n‖ − |λ₁| |` of successive approximation against `n`, with `|λ₂/λ₁|ⁿ`
+/// through its first point.
+fn settling(area: &Area, spectrum: &Spectrum, run: &Run) -> Result<(), Box<dyn std::error::Error>> {
+    let (Some(first), Some(second)) = (spectrum.pairs.first(), spectrum.pairs.get(1)) else { return Ok(()) };
+    let (rho, gap) = (first.magnitude(), second.magnitude() / first.magnitude());
+    let r = &run.info.residual_history;
+    let deviation: Vec<(f64, f64)> = (1..r.len())
+        .filter(|&n| r[n - 1] > 0.0 && r[n] > 1e-14)
+        .map(|n| (n as f64, (r[n] / r[n - 1] - rho).abs()))
+        .filter(|p| p.1 > 0.0)
+        .collect();
+    let Some(&(n0, d0)) = deviation.first() else { return Ok(()) };
+    let x_max = deviation.iter().map(|p| p.0).fold(1.0, f64::max) + 1.0;
+    let y_min = deviation.iter().map(|p| p.1).fold(d0, f64::min).max(1e-16) / 3.0;
+    let y_max = deviation.iter().map(|p| p.1).fold(d0, f64::max) * 3.0;
+    let mut chart = ChartBuilder::on(area)
+        .margin(20)
+        .x_label_area_size(50)
+        .y_label_area_size(80)
+        .caption("successive approximation: the ratio settles on |λ₁|", ("sans-serif", 18))
+        .build_cartesian_2d(0.0..x_max, (y_min..y_max).log_scale())?;
+    chart
+        .configure_mesh()
+        .x_desc("iteration n")
+        .y_desc("| ‖r_n‖/‖r_(n−1)‖ − |λ₁| |")
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .label_style(("sans-serif", 15))
+        .axis_desc_style(("sans-serif", 17))
+        .draw()?;
+    let color = Palette99::pick(0).to_rgba();
+    chart
+        .draw_series(LineSeries::new(deviation.clone(), color.stroke_width(3)))?
+        .label("measured")
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(3)));
+    let black = BLACK.to_rgba();
+    let predicted: Vec<(f64, f64)> = (0..=60)
+        .map(|t| n0 + (x_max - 1.0 - n0) * t as f64 / 60.0)
+        .map(|n| (n, (d0 * gap.powf(n - n0)).max(y_min)))
+        .collect();
+    chart
+        .draw_series(DashedLineSeries::new(predicted, 8, 6, black.stroke_width(2)))?
+        .label(format!("|λ₂/λ₁|ⁿ = {gap:.4}ⁿ"))
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 10, y)], black.stroke_width(2)));
+    let squared: Vec<(f64, f64)> = (0..=60)
+        .map(|t| n0 + (x_max - 1.0 - n0) * t as f64 / 60.0)
+        .map(|n| (n, (d0 * gap.powf(2.0 * (n - n0))).max(y_min)))
+        .collect();
+    chart
+        .draw_series(DashedLineSeries::new(squared, 2, 5, black.stroke_width(2)))?
+        .label("|λ₂/λ₁|²ⁿ (orthogonal eigenvectors)")
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 4, y)], black.stroke_width(2)));
     chart
         .configure_series_labels()
         .position(SeriesLabelPosition::UpperRight)

@@ -14,6 +14,6 @@ mod warnings;
 pub use bases::{BasisRow, BasisStudy, compare_bases};
 pub use kernel::{KernelError, KernelRecord, Loaded, model_with_kernel};
 pub use solve::{Job, MonteCarlo, Solved, StudyError, solve_case};
-pub use spectrum::{Rate, measured_rate, rates};
+pub use spectrum::{Rate, chebyshev_rate, measured_rate, rates};
 pub use view::lit_scene;
 pub use warnings::physics_warnings;

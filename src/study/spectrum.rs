@@ -2,7 +2,14 @@
 //! what the runs measured: successive approximation contracts the error by `|λ₁| = ρ(K)`
 //! per product with `K`; GMRES on `I − K`, once its first steps have removed the isolated
 //! Perron eigenvalue `1 − λ₁`, by about `|λ₂|`, so the gap `|λ₂/λ₁|` is its gain per
-//! product over successive approximation.
+//! product over successive approximation. When every computed eigenvalue is real (a
+//! diffuse kernel is similar to a symmetric one), GMRES does better still: its residual
+//! polynomial is bounded by the Chebyshev rate `(√κ − 1)/(√κ + 1)` of the interval
+//! `[1 − λ₁, 1 − λ_min]` holding the spectrum of `I − K`, `κ = (1 − λ_min)/(1 − λ₁)`, where
+//! `λ_min` is the most negative computed eigenvalue or `−|λ_N|`, whichever is lower (every
+//! eigenvalue not computed is smaller than `|λ_N|` in magnitude). In successive
+//! approximation the residual is `Kⁿ r₀`, so the ratio of successive residuals tends to
+//! `|λ₁|` with an error shrinking like `|λ₂/λ₁|ⁿ`: the gap sets how soon the rate settles.
 
 use crate::io::Run;
 use crate::solve::{Method, Spectrum};
@@ -20,6 +27,9 @@ pub struct Rate {
     /// `|λ₁|` for successive approximation, `|λ₂|` for GMRES, NaN for other methods or
     /// when the spectrum holds one eigenvalue only.
     pub predicted: f64,
+    /// The Chebyshev rate of the real spectrum's interval, for GMRES; NaN for other methods
+    /// or when a computed eigenvalue is complex.
+    pub interval: f64,
     /// Products with `K` and relative residual where the tail starts.
     pub start: (usize, f64),
     /// Products with `K` at the last record.
@@ -31,10 +41,10 @@ pub fn rates(spectrum: &Spectrum, runs: &[Run]) -> Vec<Rate> {
     let magnitude = |j: usize| spectrum.pairs.get(j).map_or(f64::NAN, |p| p.magnitude());
     runs.iter()
         .map(|run| {
-            let predicted = match run.method {
-                Method::Neumann => magnitude(0),
-                Method::Gmres { .. } => magnitude(1),
-                _ => f64::NAN,
+            let (predicted, interval) = match run.method {
+                Method::Neumann => (magnitude(0), f64::NAN),
+                Method::Gmres { .. } => (magnitude(1), chebyshev_rate(spectrum)),
+                _ => (f64::NAN, f64::NAN),
             };
             let (r, a) = (&run.info.residual_history, &run.info.application_history);
             let (start, end) = tail(run).unwrap_or((0, 0));
@@ -43,11 +53,25 @@ pub fn rates(spectrum: &Spectrum, runs: &[Run]) -> Vec<Rate> {
                 method: run.method,
                 measured: measured_rate(run),
                 predicted,
+                interval,
                 start: (at(start), r.get(start).copied().unwrap_or(f64::NAN)),
                 end: at(end),
             }
         })
         .collect()
+}
+
+/// `(√κ − 1)/(√κ + 1)` for the interval `[1 − λ₁, 1 − λ_min]`; NaN when a computed
+/// eigenvalue is complex or `λ₁ ≥ 1`.
+pub fn chebyshev_rate(spectrum: &Spectrum) -> f64 {
+    let pairs = &spectrum.pairs;
+    let (Some(first), Some(last)) = (pairs.first(), pairs.last()) else { return f64::NAN };
+    if pairs.iter().any(|p| p.im != 0.0) || first.re >= 1.0 {
+        return f64::NAN;
+    }
+    let lowest = pairs.iter().map(|p| p.re).fold(-last.magnitude(), f64::min);
+    let kappa = (1.0 - lowest) / (1.0 - first.re);
+    (kappa.sqrt() - 1.0) / (kappa.sqrt() + 1.0)
 }
 
 /// `(r_end / r_start)^(1 / products)` over the tail of `run`'s history; NaN when the
