@@ -6,5 +6,6 @@ mod mirror;
 pub mod opal;
 mod plates;
 mod spectrum;
+mod spectrum_cli;
 mod sphere;
 mod warnings;
