@@ -4,7 +4,7 @@
 use super::{hierarchy, options};
 use crate::support::furnace;
 use ugo::directions::DirectionSet;
-use ugo::solve::{ArnoldiParams, LinOp, arnoldi};
+use ugo::solve::{ArnoldiParams, arnoldi};
 
 #[test]
 fn arnoldi_runs_on_the_hierarchical_operator() {
