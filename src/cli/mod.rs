@@ -4,6 +4,7 @@ pub mod agree;
 pub mod basis;
 pub mod bench;
 pub mod info;
+pub mod light_scenes;
 pub mod options;
 pub mod render;
 pub mod solve;

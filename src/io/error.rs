@@ -15,6 +15,9 @@ pub enum IoError {
     /// A file that opened but does not hold what ugo writes.
     #[error("{} is not a ugo solution file: {why}", path.display())]
     NotASolution { path: PathBuf, why: String },
+    /// A light scene the solution does not hold (`known`: the ones it holds, listed).
+    #[error("{} has no light scene \"{name}\"; its light scenes: {known}", path.display())]
+    NoLightScene { path: PathBuf, name: String, known: String },
 }
 
 impl IoError {

@@ -13,7 +13,8 @@
 //! `/grids/<name>/{points,illuminance}` (with the statistics as attributes),
 //! `/luminaires/{name,kind,position,direction,flux,distribution_flux,file_flux,on_surfaces}`
 //! (one row per `[[luminaire]]`; NaN where a value does not apply), the probes' `direct`
-//! part in `/probes/direct`, and attributes on the root for
+//! part in `/probes/direct`, `/light_groups` and `/light_scenes/<name>/…` (the case's
+//! light scenes, `light_scene_group.rs`), and attributes on the root for
 //! method, tolerance, iterations, timings, energy totals, the scene text and the version.
 //! The file is written under a temporary name and renamed when complete.
 
@@ -61,6 +62,8 @@ pub struct Solution<'a> {
     pub basis: Option<&'a BasisRecord<'a>>,
     /// The physics warnings of the solve (`/warnings`, one string each, empty when none).
     pub warnings: &'a [String],
+    /// The fields of the case's light scenes and of their groups, when it has any.
+    pub light_scenes: Option<&'a super::LightScenes>,
 }
 
 /// A solve in a factored angular basis: the factors and the coefficients solved for.
@@ -134,6 +137,9 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
         write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
     }
     write_luminaires(&file.create_group("luminaires")?, s)?;
+    if let Some(light) = s.light_scenes {
+        super::light_scene_group::write_light_scenes(&file, s.scene, s.model, light)?;
+    }
     if let Some(h) = &s.model.hierarchy {
         super::hierarchy_group::write_hierarchy(&file.create_group("hierarchy")?, h)?;
     }
@@ -238,7 +244,7 @@ fn write_basis(g: &hdf5::Group, b: &BasisRecord) -> hdf5::Result<()> {
     Ok(())
 }
 
-fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
+pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
     let n = probes.len();
     strings(g, "name", probes.iter().map(|p| p.name.as_str()))?;
     dataset(g, "position", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].position[c]))?;
@@ -249,7 +255,7 @@ fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
 }
 
 /// Points and illuminance as `nv × nu` arrays (row `b` runs along `edge_u`).
-fn write_grid(g: &hdf5::Group, grid: &GridReading) -> hdf5::Result<()> {
+pub(super) fn write_grid(g: &hdf5::Group, grid: &GridReading) -> hdf5::Result<()> {
     let [nu, nv] = grid.grid.resolution;
     dataset(g, "points", &Array3::from_shape_fn((nv, nu, 3), |(b, a, c)| grid.points[b * nu + a][c]))?;
     dataset(g, "illuminance", &Array2::from_shape_fn((nv, nu), |(b, a)| grid.illuminance[b * nu + a]))?;

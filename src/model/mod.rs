@@ -9,10 +9,12 @@
 //! hierarchy) and a kernel over the limit is refused with the estimate and the ways out.
 
 mod explicit;
+mod group;
 mod hierarchical;
 mod source;
 mod system;
 
+pub use source::SourceTerm;
 pub use system::{AssemblyStats, HierarchyRecord, Model, ModelError, ModelOptions, Refinement};
 
 use crate::geometry::Mesh;
