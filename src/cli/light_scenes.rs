@@ -8,6 +8,7 @@ use super::Bars;
 use anyhow::Result;
 use std::path::{Path, PathBuf};
 use ugo::io::{LightScenes, write_probes_csv};
+use ugo::readout::grid::GridReading;
 use ugo::scene::Scene;
 use ugo::solve::SolveParams;
 use ugo::study::{GroupSolves, Solved, solve_light_scenes};
@@ -21,8 +22,13 @@ pub fn solve(scene: &Scene, s: &mut Solved, params: &SolveParams) -> Result<Opti
     Ok(Some(solve_light_scenes(scene, &mut s.model, &s.x, &how, &Bars::default())?))
 }
 
-/// Prints the groups' solves and every light scene, and writes its CSV files and maps.
-pub fn report(light: &LightScenes, output: &Path) -> Result<()> {
+/// Prints the groups' solves and every light scene, and writes its CSV files and, with
+/// `write_grids` (the solve's: grids and the stem of their files), its grids' files.
+pub fn report(
+    light: &LightScenes,
+    output: &Path,
+    write_grids: &dyn Fn(&[GridReading], &str) -> Result<()>,
+) -> Result<()> {
     println!("  light groups             applications   start residual   residual      time s");
     for g in &light.groups {
         let s = &g.solve;
@@ -51,7 +57,7 @@ pub fn report(light: &LightScenes, output: &Path) -> Result<()> {
             write_probes_csv(&csv, &scene.probes)?;
             println!("      {}", csv.display());
         }
-        super::solve::write_grids(&scene.grids, &base)?;
+        write_grids(&scene.grids, &base)?;
     }
     Ok(())
 }

@@ -110,7 +110,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         println!("  probes             {}", csv.display());
     }
     if let Some(light) = &light {
-        super::light_scenes::report(light, &output)?;
+        super::light_scenes::report(light, &output, &write_grids)?;
     }
     if let Some(orders) = &s.orders {
         print_orders(orders, &s.x);
@@ -208,7 +208,7 @@ fn summary(s: &Solution, output: &Path) {
 }
 
 /// Each grid's CSV and false-colour map, `<stem>-<grid>.{csv,png}`.
-pub(super) fn write_grids(grids: &[GridReading], stem: &str) -> Result<()> {
+fn write_grids(grids: &[GridReading], stem: &str) -> Result<()> {
     if grids.is_empty() {
         return Ok(());
     }

@@ -18,7 +18,8 @@
 //! method, tolerance, iterations, timings, energy totals, the scene text and the version.
 //! The file is written under a temporary name and renamed when complete.
 
-use super::dataset::dataset;
+use super::dataset::{dataset, strings, unicode};
+use super::readout_group::{write_grid, write_probes};
 use crate::basis::{Factorization, MaterialFactor};
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
@@ -244,30 +245,6 @@ fn write_basis(g: &hdf5::Group, b: &BasisRecord) -> hdf5::Result<()> {
     Ok(())
 }
 
-pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
-    let n = probes.len();
-    strings(g, "name", probes.iter().map(|p| p.name.as_str()))?;
-    dataset(g, "position", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].position[c]))?;
-    dataset(g, "normal", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].normal[c]))?;
-    dataset(g, "luminance", &Array1::from_iter(probes.iter().map(|p| p.luminance)))?;
-    dataset(g, "illuminance", &Array1::from_iter(probes.iter().map(|p| p.illuminance)))?;
-    dataset(g, "direct", &Array1::from_iter(probes.iter().map(|p| p.direct)))
-}
-
-/// Points and illuminance as `nv × nu` arrays (row `b` runs along `edge_u`).
-pub(super) fn write_grid(g: &hdf5::Group, grid: &GridReading) -> hdf5::Result<()> {
-    let [nu, nv] = grid.grid.resolution;
-    dataset(g, "points", &Array3::from_shape_fn((nv, nu, 3), |(b, a, c)| grid.points[b * nu + a][c]))?;
-    dataset(g, "illuminance", &Array2::from_shape_fn((nv, nu), |(b, a)| grid.illuminance[b * nu + a]))?;
-    let st = grid.stats();
-    let n = grid.grid.normal;
-    g.new_attr::<f64>().shape(3).create("normal")?.write_raw(&[n.x, n.y, n.z])?;
-    for (name, value) in [("E_avg", st.average), ("E_min", st.min), ("E_max", st.max), ("U0", st.u0)] {
-        g.new_attr::<f64>().create(name)?.write_scalar(&value)?;
-    }
-    Ok(())
-}
-
 /// Copies of the files the case names (OBJ, photometric): `/case_files/paths` and the bytes
 /// of file `i` in `/case_files/<i>` (u8), so that the solution is read back without them.
 fn write_case_files(g: &hdf5::Group, scene: &Scene) -> hdf5::Result<()> {
@@ -362,17 +339,8 @@ fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
     Ok(())
 }
 
-pub(super) fn strings<'a>(g: &hdf5::Group, name: &str, items: impl Iterator<Item = &'a str>) -> hdf5::Result<()> {
-    let values: hdf5::Result<Vec<VarLenUnicode>> = items.map(unicode).collect();
-    dataset(g, name, &Array1::from(values?))
-}
-
 pub(super) fn text_attr(location: &hdf5::Location, name: &str, value: &str) -> hdf5::Result<()> {
     location.new_attr::<VarLenUnicode>().shape(()).create(name)?.write_scalar(&unicode(value)?)
-}
-
-fn unicode(s: &str) -> hdf5::Result<VarLenUnicode> {
-    s.parse::<VarLenUnicode>().map_err(|e| hdf5::Error::from(format!("cannot store {s:?}: {e}")))
 }
 
 pub(super) fn shape_error(e: ndarray::ShapeError) -> hdf5::Error {

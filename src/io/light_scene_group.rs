@@ -13,9 +13,9 @@
 //! `flux_escaped`, `flux_imbalance` (lm).
 
 use super::IoError;
-use super::dataset::dataset;
-use super::hdf5_file::{strings, write_grid, write_probes};
+use super::dataset::{dataset, strings};
 use super::read::StoredSolution;
+use super::readout_group::{write_grid, write_probes};
 use crate::model::Model;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;

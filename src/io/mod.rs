@@ -16,6 +16,7 @@ mod plot;
 mod png_file;
 mod read;
 mod readings;
+mod readout_group;
 mod triptych;
 
 pub use basis_plot::basis_plot;

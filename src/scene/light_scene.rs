@@ -13,7 +13,6 @@
 
 use super::check::Context;
 use super::error::SceneError;
-use super::schema::RawSurface;
 use crate::geometry::{Emission, Surface};
 use crate::luminaire::{Luminaire, LuminaireKind};
 use serde::Deserialize;
@@ -84,10 +83,11 @@ pub struct LightScene {
     pub factors: Vec<f64>,
 }
 
-/// What the lighting tables of a case refer to.
+/// What the lighting tables of a case refer to: the sources, validated, and the `group`
+/// each names (one per surface and per luminaire).
 pub(super) struct Sources<'a> {
-    pub raw_surfaces: &'a [RawSurface],
-    pub raw_luminaire_groups: Vec<Option<Spanned<String>>>,
+    pub surface_groups: Vec<Option<Spanned<String>>>,
+    pub luminaire_groups: Vec<Option<Spanned<String>>>,
     pub surfaces: &'a mut [Surface],
     pub luminaires: &'a mut [Luminaire],
 }
@@ -155,10 +155,10 @@ fn groups(path: &Path, source: &str, sources: &Sources) -> Result<Vec<LightGroup
         }
     };
     let mut surface_groups = Vec::new();
-    for (index, (raw, surface)) in sources.raw_surfaces.iter().zip(sources.surfaces.iter()).enumerate() {
-        let at = Context::item(path, "surface", &raw.name, index);
-        let name = group_name(&at, source, raw.group.as_ref())?;
-        match (surface.emission, raw.group.as_ref()) {
+    for (index, (group, surface)) in sources.surface_groups.iter().zip(sources.surfaces.iter()).enumerate() {
+        let at = Context::item(path, "surface", &surface.name, index);
+        let name = group_name(&at, source, group.as_ref())?;
+        match (surface.emission, group.as_ref()) {
             (Some(_), _) => surface_groups.push((find(name), index)),
             (None, Some(group)) => {
                 let message =
@@ -169,7 +169,7 @@ fn groups(path: &Path, source: &str, sources: &Sources) -> Result<Vec<LightGroup
         }
     }
     let mut luminaire_groups = Vec::new();
-    for (index, (group, luminaire)) in sources.raw_luminaire_groups.iter().zip(sources.luminaires.iter()).enumerate() {
+    for (index, (group, luminaire)) in sources.luminaire_groups.iter().zip(sources.luminaires.iter()).enumerate() {
         let at = Context::item(path, "luminaire", &luminaire.name, index);
         luminaire_groups.push((find(group_name(&at, source, group.as_ref())?), index));
     }

@@ -39,8 +39,8 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         return Err(SceneError::new(path, "", "emission", message));
     }
     let sources = Sources {
-        raw_surfaces: &raw.surface,
-        raw_luminaire_groups: raw.luminaire.into_iter().map(|l| l.group).collect(),
+        surface_groups: raw.surface.into_iter().map(|s| s.group).collect(),
+        luminaire_groups: raw.luminaire.into_iter().map(|l| l.group).collect(),
         surfaces: &mut surfaces,
         luminaires: &mut luminaires,
     };
