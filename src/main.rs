@@ -169,6 +169,9 @@ enum Command {
         /// Final-gather rays per pixel (with `--shading gather`).
         #[arg(long, allow_negative_numbers = true, default_value_t = 64)]
         gather_rays: usize,
+        /// Draw this light scene of the case (`[[light_scene]]`) instead of its own light.
+        #[arg(long, value_name = "NAME")]
+        light_scene: Option<String>,
         #[command(flatten)]
         view: cli::render::CameraOptions,
     },
@@ -232,8 +235,21 @@ fn run(command: Command) -> anyhow::Result<()> {
             let run = study::Job { methods, basis: basis.choice()?, photons, seed, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, plot, ..Job::new(run, stopping, "-compare") })
         }
-        Command::Render { solution, cameras, exposure, output, false_colour, orders, shading, gather_rays, view } => {
-            let look = cli::render::Look { view, exposure, false_colour, orders: &orders, shading, gather_rays };
+        Command::Render {
+            solution,
+            cameras,
+            exposure,
+            output,
+            false_colour,
+            orders,
+            shading,
+            gather_rays,
+            light_scene,
+            view,
+        } => {
+            let light_scene = light_scene.as_deref();
+            let look =
+                cli::render::Look { view, exposure, false_colour, orders: &orders, shading, gather_rays, light_scene };
             cli::render::run(&solution, &cameras, &output, &look)
         }
         Command::Trace { case, cameras, spp, probe_samples, forward, photons, seed, max_order, output, discretize } => {

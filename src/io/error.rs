@@ -18,6 +18,9 @@ pub enum IoError {
     /// A file without a usable `/kernel` group (`ugo solve --save-kernel` writes one).
     #[error("{} holds no usable kernel: {why}", path.display())]
     NotAKernel { path: PathBuf, why: String },
+    /// A light scene the solution does not hold (`known`: the ones it holds, listed).
+    #[error("{} has no light scene \"{name}\"; its light scenes: {known}", path.display())]
+    NoLightScene { path: PathBuf, name: String, known: String },
 }
 
 impl IoError {

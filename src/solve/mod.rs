@@ -15,6 +15,7 @@ pub mod norms;
 pub mod orders;
 mod outcome;
 mod southwell;
+mod successive;
 
 pub use bicgstab::bicgstab;
 pub use direct::{direct, direct_sparse};
@@ -26,3 +27,4 @@ pub use method::{Method, RESTART, System, solve};
 pub use neumann::successive_approximation;
 pub use outcome::{SolveError, SolveInfo, SolveParams};
 pub use southwell::southwell;
+pub use successive::{Projection, Successive};

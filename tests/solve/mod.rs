@@ -6,4 +6,5 @@ mod mirror;
 pub mod opal;
 mod plates;
 mod sphere;
+mod successive;
 mod warnings;
