@@ -176,8 +176,11 @@ enum Command {
         gather_rays: usize,
         /// Draw eigenvector J of K (1 = the dominant) from the file's /spectrum (`ugo norms
         /// --spectrum N`) instead of the field: its real part, with a signed false colour.
-        #[arg(long, value_name = "J", conflicts_with = "orders")]
+        #[arg(long, value_name = "J", conflicts_with_all = ["orders", "light_scene"])]
         mode: Option<usize>,
+        /// Draw this light scene of the case (`[[light_scene]]`) instead of its own light.
+        #[arg(long, value_name = "NAME")]
+        light_scene: Option<String>,
         #[command(flatten)]
         view: cli::render::CameraOptions,
     },
@@ -256,9 +259,20 @@ fn run(command: Command) -> anyhow::Result<()> {
             shading,
             gather_rays,
             mode,
+            light_scene,
             view,
         } => {
-            let look = cli::render::Look { view, exposure, false_colour, orders: &orders, shading, gather_rays, mode };
+            let light_scene = light_scene.as_deref();
+            let look = cli::render::Look {
+                view,
+                exposure,
+                false_colour,
+                orders: &orders,
+                shading,
+                gather_rays,
+                mode,
+                light_scene,
+            };
             cli::render::run(&solution, &cameras, &output, &look)
         }
         Command::Trace { case, cameras, spp, probe_samples, forward, photons, seed, max_order, output, discretize } => {

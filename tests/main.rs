@@ -17,6 +17,7 @@ mod render;
 mod robustness;
 mod scene;
 pub mod solve;
+mod study;
 mod support;
 mod trace;
 mod visibility;

@@ -6,6 +6,7 @@ pub mod bench;
 pub mod export;
 pub mod info;
 pub mod kernel;
+pub mod light_scenes;
 pub mod options;
 pub mod render;
 pub mod solve;

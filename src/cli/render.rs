@@ -1,6 +1,7 @@
-//! `ugo render OUT.h5`: camera images of a stored solution, linear EXR and sRGB PNG, and
-//! optionally a false-colour map with a legend in cd/m² and the reflection-order pictures;
-//! with `--mode J`, eigenvector J of `K` from the file's `/spectrum` in a signed false colour.
+//! `ugo render OUT.h5`: camera images of a stored solution (or of one of its light scenes,
+//! named after it), linear EXR and sRGB PNG, and optionally a false-colour map with a
+//! legend in cd/m² and the reflection-order pictures; with `--mode J`, eigenvector J of `K`
+//! from the file's `/spectrum` in a signed false colour.
 
 use super::file_name;
 use super::options::{ScaleArg, ShadingArg};
@@ -77,6 +78,8 @@ pub struct Look<'a> {
     pub gather_rays: usize,
     /// Draw this eigenvector of `K` (from 1) instead of the field (`--mode J`).
     pub mode: Option<usize>,
+    /// The light scene drawn (`[[light_scene]]`), instead of the case's own light.
+    pub light_scene: Option<&'a str>,
 }
 
 pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()> {
@@ -111,7 +114,11 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
     };
     let case = format!("{}{case_suffix}", stored.scene.path.file_stem().unwrap_or_default().to_string_lossy());
     let orders = chosen_orders(&stored.orders, look.orders)?;
-    let mut lit = ugo::study::lit_scene(stored);
+    let (mut lit, case) = match look.light_scene {
+        None => (ugo::study::lit_scene(stored), case),
+        Some(_) if !orders.is_empty() => bail!("--orders draws the case's own light, not a light scene's"),
+        Some(name) => (ugo::study::lit_light_scene(file, stored, name)?, format!("{case}-{}", file_name(name))),
+    };
     lit.set_shading(shading);
     std::fs::create_dir_all(dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
     for camera in &cameras {

@@ -64,7 +64,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         check_writable(plot)?;
     }
     let study = study::Job { params, ..job.run };
-    let s = solve_case(&scene, &options, &study, &Bars::default())?;
+    let mut s = solve_case(&scene, &options, &study, &Bars::default())?;
     for (method, e) in &s.failures {
         eprintln!("ugo: {} failed: {e}", method.name());
     }
@@ -78,6 +78,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
             s.warnings.join("; ")
         );
     }
+    let light = super::light_scenes::solve(&scene, &mut s, &params)?;
     let basis = s.basis.as_ref().map(|(factors, full_residual)| BasisRecord {
         factors,
         coefficients: &s.coefficients,
@@ -100,15 +101,19 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         basis: basis.as_ref(),
         warnings: &s.warnings,
         kernel: s.kernel.save.as_ref(),
+        light_scenes: light.as_ref(),
     };
     write_solution(&output, &solution).with_context(|| format!("writing {}", output.display()))?;
     summary(&solution, &output);
     super::kernel::print_record(&s.kernel);
-    write_grids(&s.grids, &output)?;
+    write_grids(&s.grids, &output.with_extension("").display().to_string())?;
     if !s.probes.is_empty() {
         let csv = PathBuf::from(format!("{}-probes.csv", output.with_extension("").display()));
         write_probes_csv(&csv, &s.probes)?;
         println!("  probes             {}", csv.display());
+    }
+    if let Some(light) = &light {
+        super::light_scenes::report(light, &output, &write_grids)?;
     }
     if let Some(orders) = &s.orders {
         print_orders(orders, &s.x);
@@ -208,17 +213,16 @@ fn summary(s: &Solution, output: &Path) {
     println!("  written            {}", output.display());
 }
 
-/// Each grid's CSV and false-colour map beside the HDF5 file, `<stem>-<grid>.{csv,png}`.
-fn write_grids(grids: &[GridReading], output: &Path) -> Result<()> {
+/// Each grid's CSV and false-colour map, `<stem>-<grid>.{csv,png}`.
+fn write_grids(grids: &[GridReading], stem: &str) -> Result<()> {
     if grids.is_empty() {
         return Ok(());
     }
     println!("  grids                      E_avg lx     E_min lx     E_max lx      U0");
-    let stem = output.with_extension("");
     for g in grids {
         let st = g.stats();
         println!("    {:<22} {:>12.4} {:>12.4} {:>12.4} {:>7.4}", g.grid.name, st.average, st.min, st.max, st.u0);
-        let base = format!("{}-{}", stem.display(), file_name(&g.grid.name));
+        let base = format!("{stem}-{}", file_name(&g.grid.name));
         let (csv, png) = (PathBuf::from(format!("{base}.csv")), PathBuf::from(format!("{base}.png")));
         write_grid_csv(&csv, g)?;
         write_grid_map(&png, g)?;

@@ -1,6 +1,6 @@
 //! The one way a dataset and a text attribute are written into an HDF5 group
-//! (`design.md` §8), shared by the solution, the forecast estimate, the hierarchy's group
-//! and the kernel's.
+//! (`design.md` §8), shared by the solution, the forecast estimate, the hierarchy's group,
+//! the kernel's and the light scenes': numbers, and strings as variable-length UTF-8.
 
 use hdf5::types::VarLenUnicode;
 
@@ -16,6 +16,12 @@ pub(super) fn dataset<T: hdf5::H5Type, D: ndarray::Dimension>(
 /// Writes the text attribute `name` of `location`.
 pub(super) fn text_attr(location: &hdf5::Location, name: &str, value: &str) -> hdf5::Result<()> {
     location.new_attr::<VarLenUnicode>().shape(()).create(name)?.write_scalar(&unicode(value)?)
+}
+
+/// Writes `items` as the dataset `name` of `g`, one variable-length UTF-8 string each.
+pub(super) fn strings<'a>(g: &hdf5::Group, name: &str, items: impl Iterator<Item = &'a str>) -> hdf5::Result<()> {
+    let values: hdf5::Result<Vec<VarLenUnicode>> = items.map(unicode).collect();
+    dataset(g, name, &ndarray::Array1::from(values?))
 }
 
 pub(super) fn unicode(s: &str) -> hdf5::Result<VarLenUnicode> {

@@ -14,12 +14,14 @@
 //! `/grids/<name>/{points,illuminance}` (with the statistics as attributes),
 //! `/luminaires/{name,kind,position,direction,flux,distribution_flux,file_flux,on_surfaces}`
 //! (one row per `[[luminaire]]`; NaN where a value does not apply), the probes' `direct`
-//! part in `/probes/direct`, and attributes on the root for
+//! part in `/probes/direct`, `/light_groups` and `/light_scenes/<name>/…` (the case's
+//! light scenes, `light_scene_group.rs`), and attributes on the root for
 //! method, tolerance, iterations, timings, energy totals, the scene text and the version;
 //! with `--save-kernel`, `/kernel` (`kernel_file.rs`).
 //! The file is written under a temporary name and renamed when complete.
 
-use super::dataset::{dataset, text_attr, unicode};
+use super::dataset::{dataset, strings, text_attr};
+use super::readout_group::{write_grid, write_probes};
 use crate::basis::{Factorization, MaterialFactor};
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
@@ -37,7 +39,6 @@ use crate::solve::norms::Norms;
 use crate::solve::orders::OrderRecord;
 use crate::solve::{Method, SolveInfo, SolveParams, Spectrum};
 use glam::DVec3;
-use hdf5::types::VarLenUnicode;
 use ndarray::{Array1, Array2, Array3};
 use std::path::Path;
 
@@ -67,6 +68,8 @@ pub struct Solution<'a> {
     pub warnings: &'a [String],
     /// Save the explicit kernel with this fingerprint in `/kernel` (`kernel_file.rs`).
     pub kernel: Option<&'a Fingerprint>,
+    /// The fields of the case's light scenes and of their groups, when it has any.
+    pub light_scenes: Option<&'a super::LightScenes>,
 }
 
 /// A solve in a factored angular basis: the factors and the coefficients solved for.
@@ -143,6 +146,9 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
         write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
     }
     write_luminaires(&file.create_group("luminaires")?, s)?;
+    if let Some(light) = s.light_scenes {
+        super::light_scene_group::write_light_scenes(&file, s.scene, s.model, light)?;
+    }
     if let Some(h) = &s.model.hierarchy {
         super::hierarchy_group::write_hierarchy(&file.create_group("hierarchy")?, h)?;
     }
@@ -250,30 +256,6 @@ fn write_basis(g: &hdf5::Group, b: &BasisRecord) -> hdf5::Result<()> {
     Ok(())
 }
 
-fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
-    let n = probes.len();
-    strings(g, "name", probes.iter().map(|p| p.name.as_str()))?;
-    dataset(g, "position", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].position[c]))?;
-    dataset(g, "normal", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].normal[c]))?;
-    dataset(g, "luminance", &Array1::from_iter(probes.iter().map(|p| p.luminance)))?;
-    dataset(g, "illuminance", &Array1::from_iter(probes.iter().map(|p| p.illuminance)))?;
-    dataset(g, "direct", &Array1::from_iter(probes.iter().map(|p| p.direct)))
-}
-
-/// Points and illuminance as `nv × nu` arrays (row `b` runs along `edge_u`).
-fn write_grid(g: &hdf5::Group, grid: &GridReading) -> hdf5::Result<()> {
-    let [nu, nv] = grid.grid.resolution;
-    dataset(g, "points", &Array3::from_shape_fn((nv, nu, 3), |(b, a, c)| grid.points[b * nu + a][c]))?;
-    dataset(g, "illuminance", &Array2::from_shape_fn((nv, nu), |(b, a)| grid.illuminance[b * nu + a]))?;
-    let st = grid.stats();
-    let n = grid.grid.normal;
-    g.new_attr::<f64>().shape(3).create("normal")?.write_raw(&[n.x, n.y, n.z])?;
-    for (name, value) in [("E_avg", st.average), ("E_min", st.min), ("E_max", st.max), ("U0", st.u0)] {
-        g.new_attr::<f64>().create(name)?.write_scalar(&value)?;
-    }
-    Ok(())
-}
-
 /// Copies of the files the case names (OBJ, photometric): `/case_files/paths` and the bytes
 /// of file `i` in `/case_files/<i>` (u8), so that the solution is read back without them.
 fn write_case_files(g: &hdf5::Group, scene: &Scene) -> hdf5::Result<()> {
@@ -366,11 +348,6 @@ fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
         file.new_attr::<f64>().create(name)?.write_scalar(&value)?;
     }
     Ok(())
-}
-
-pub(super) fn strings<'a>(g: &hdf5::Group, name: &str, items: impl Iterator<Item = &'a str>) -> hdf5::Result<()> {
-    let values: hdf5::Result<Vec<VarLenUnicode>> = items.map(unicode).collect();
-    dataset(g, name, &Array1::from(values?))
 }
 
 pub(super) fn shape_error(e: ndarray::ShapeError) -> hdf5::Error {

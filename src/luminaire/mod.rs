@@ -72,6 +72,23 @@ impl Source {
         Source { name: luminaire.name.clone(), light }
     }
 
+    /// The same source with every intensity (or the parallel light's illuminance) times
+    /// `factor`: dimmed.
+    pub fn scaled(&self, factor: f64) -> Source {
+        let light = match &self.light {
+            Light::Point { position, frame, distribution, scale } => Light::Point {
+                position: *position,
+                frame: *frame,
+                distribution: distribution.clone(),
+                scale: scale * factor,
+            },
+            Light::Parallel { direction, illuminance } => {
+                Light::Parallel { direction: *direction, illuminance: illuminance * factor }
+            }
+        };
+        Source { name: self.name.clone(), light }
+    }
+
     /// The flux leaving a point source, lm; none for parallel light (an unbounded beam).
     pub fn flux(&self) -> Option<f64> {
         match &self.light {

@@ -15,7 +15,7 @@
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Frame, Mesh, Patch};
-use crate::transfer::occlusion::{always, cut_along_shadows};
+use crate::transfer::occlusion::cut_along_shadows;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -37,14 +37,15 @@ pub struct DirectLight {
     pub rays: usize,
 }
 
-/// The direct light of `sources` on every patch of `mesh`, binned by `directions`.
+/// The direct light of `sources` on every patch of `mesh`, binned by `directions`, every
+/// shadow edge cut [`SHADOW_DEPTH`](crate::transfer::occlusion::SHADOW_DEPTH) levels deep.
 pub fn direct_light(
     sources: &[Source],
     mesh: &Mesh,
     visibility: &Visibility,
     directions: &DirectionSet,
 ) -> DirectLight {
-    let per_patch = patch_lights(sources, &mesh.patches, visibility, directions);
+    let per_patch = patch_lights(sources, &mesh.patches, visibility, directions, &[]);
     let mut light =
         DirectLight { arriving: Vec::with_capacity(mesh.len() * directions.len()), ..DirectLight::none(sources) };
     per_patch.iter().for_each(|p| light.add(p));
@@ -74,20 +75,26 @@ impl DirectLight {
 }
 
 /// The direct light of `sources` on each of `patches` (whose faces are those of
-/// `visibility`), in parallel.
+/// `visibility`), in parallel. A piece of patch `i` crossed by a shadow edge is cut further
+/// only while the flux it would receive unshadowed from one source exceeds `least[i]`, lm
+/// (every piece when `least` is empty); below that its lit fraction is that of its four
+/// points.
 pub fn patch_lights(
     sources: &[Source],
     patches: &[Patch],
     visibility: &Visibility,
     directions: &DirectionSet,
+    least: &[f64],
 ) -> Vec<PatchLight> {
     let k = directions.len();
     patches
         .par_iter()
-        .map(|patch| {
+        .enumerate()
+        .map(|(i, patch)| {
             let mut out = vec![0.0; k];
+            let least = least.get(i).copied().unwrap_or(0.0);
             let mut onto =
-                Onto { patch, frame: patch.frame(), visibility, directions, out: &mut out, flux: 0.0, rays: 0 };
+                Onto { patch, frame: patch.frame(), visibility, directions, least, out: &mut out, flux: 0.0, rays: 0 };
             let intercepted = sources
                 .iter()
                 .map(|source| {
@@ -121,6 +128,8 @@ struct Onto<'a> {
     frame: Frame,
     visibility: &'a Visibility,
     directions: &'a DirectionSet,
+    /// Flux below which a shadowed piece is not cut further, lm.
+    least: f64,
     out: &'a mut [f64],
     flux: f64,
     rays: usize,
@@ -134,7 +143,12 @@ impl Onto<'_> {
         }
         let (visibility, face) = (self.visibility, self.patch.face);
         let sees = |x: DVec3| visibility.visible(s, x, [NO_FACE, face]);
-        let rays = cut_along_shadows(piece, depth, &sees, &always, &mut |part, seen| {
+        let least = self.least;
+        let worth = |part: &ConvexPolygon| {
+            let w = (part.centroid() - s).normalize();
+            source.intensity(w) * part.solid_angle(s) > least
+        };
+        let rays = cut_along_shadows(piece, depth, &sees, &worth, &mut |part, seen| {
             let w = (part.centroid() - s).normalize();
             self.add(-w, source.intensity(w) * part.solid_angle(s) * seen);
         });
@@ -145,8 +159,10 @@ impl Onto<'_> {
         let (visibility, face) = (self.visibility, self.patch.face);
         let escapes = |x: DVec3| visibility.closest_hit(x, -direction, face).is_none();
         let mut flux = 0.0;
+        let least = self.least;
+        let worth = |part: &ConvexPolygon| normal_share * part.area() > least;
         let rays =
-            cut_along_shadows(piece, 0, &escapes, &always, &mut |part, seen| flux += normal_share * part.area() * seen);
+            cut_along_shadows(piece, 0, &escapes, &worth, &mut |part, seen| flux += normal_share * part.area() * seen);
         self.rays += rays;
         self.add(-direction, flux);
     }

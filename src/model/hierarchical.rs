@@ -3,7 +3,9 @@
 //! a solve (`kernel::hierarchy::iterate`). Before every solve the leaves are split where
 //! the luminaires' light varies over them by more than the error allowed (their shadow
 //! boundaries and the fall-off under them), and `L0 = L_e + B·D` is integrated on the
-//! leaves exactly as on a uniform mesh (`luminaire::direct_light`). The refinement solves
+//! leaves as on a uniform mesh (`luminaire::patch_lights`), except that a shadow edge is
+//! cut into finer pieces only while a piece's light could change the leaf's reflected
+//! luminance by more than the oracle's `ε`. The refinement solves
 //! use GMRES(30) to [`REFINEMENT_RESIDUAL`]; the final solve is the caller's, with the
 //! case's method and stopping rule, on the final leaves.
 
@@ -41,12 +43,24 @@ impl LightCache {
         self.lights.resize(h.tree().len(), None);
         let new: Vec<u32> = leaves.iter().copied().filter(|&id| self.lights[id as usize].is_none()).collect();
         let patches: Vec<Patch> = new.iter().filter_map(|&id| h.tree().node(id).patch().copied()).collect();
-        for (id, light) in new.iter().zip(patch_lights(sources, &patches, h.visibility(), directions)) {
+        let least: Vec<f64> = new.iter().map(|&id| worth_cutting(h, id)).collect();
+        for (id, light) in new.iter().zip(patch_lights(sources, &patches, h.visibility(), directions, &least)) {
             self.lights[*id as usize] = Some(light);
         }
         let mut direct = DirectLight::none(sources);
         leaves.iter().filter_map(|&id| self.lights[id as usize].as_ref()).for_each(|l| direct.add(l));
         direct
+    }
+}
+
+/// The flux (lm) below which a shadowed piece of element `id` is not cut further: what
+/// would change its reflected luminance by the error the oracle allows a link,
+/// `ρ ΔΦ/(π A) = ε`.
+fn worth_cutting(h: &Hierarchy, id: u32) -> f64 {
+    let node = h.tree().node(id);
+    match node.albedo > 0.0 {
+        true => h.epsilon() * PI * node.area / node.albedo,
+        false => f64::INFINITY,
     }
 }
 

@@ -12,6 +12,7 @@
 
 mod explicit;
 mod fingerprint;
+mod group;
 mod hierarchical;
 mod reuse;
 mod source;
@@ -19,6 +20,7 @@ mod system;
 
 pub use fingerprint::{Change, Fingerprint, KERNEL_FORMAT, Part, Stamp};
 pub use reuse::{NotThisMesh, StoredParts};
+pub use source::SourceTerm;
 pub use system::{AssemblyStats, HierarchyRecord, Model, ModelError, ModelOptions, Refinement};
 
 use crate::geometry::Mesh;

@@ -2,6 +2,7 @@
 
 use super::files::CaseFile;
 use super::grid::Grid;
+use super::light_scene::Lighting;
 use crate::directions::Scheme;
 use crate::geometry::Surface;
 use crate::luminaire::Luminaire;
@@ -27,6 +28,8 @@ pub struct Scene {
     pub cameras: Vec<Camera>,
     pub grids: Vec<Grid>,
     pub luminaires: Vec<Luminaire>,
+    /// The sources' groups, the light scenes and the maintenance factor (already applied).
+    pub lighting: Lighting,
     /// Every file the case names (OBJ, photometric), as read.
     pub files: Vec<CaseFile>,
 }

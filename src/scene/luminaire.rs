@@ -33,6 +33,8 @@ pub struct RawLuminaire {
     #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub direction: Option<[f64; 3]>,
     pub illuminance: Option<f64>,
+    /// The group of sources it is dimmed with (`light_scene.rs`).
+    pub group: Option<serde_spanned::Spanned<String>>,
 }
 
 /// Every luminaire type and the keys it takes besides `name` and `type`.

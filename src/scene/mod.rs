@@ -10,6 +10,7 @@ mod description;
 mod error;
 mod files;
 mod grid;
+mod light_scene;
 mod luminaire;
 mod material;
 mod plausible;
@@ -22,6 +23,7 @@ pub use description::{Assembly, Camera, Discretization, Material, Probe, Scene, 
 pub use error::SceneError;
 pub use files::{CaseFile, CaseFiles, regular_file};
 pub use grid::Grid;
+pub use light_scene::{DEFAULT_GROUP, LightGroup, LightScene, Lighting};
 pub use schema::RawCamera;
 
 use std::path::Path;

@@ -27,6 +27,9 @@ pub struct RawScene {
     pub grid: Vec<super::grid::RawGrid>,
     #[serde(default)]
     pub luminaire: Vec<super::luminaire::RawLuminaire>,
+    pub lighting: Option<super::light_scene::RawLighting>,
+    #[serde(default)]
+    pub light_scene: Vec<super::light_scene::RawLightScene>,
 }
 
 /// `[scene]`.
@@ -90,6 +93,8 @@ pub struct RawSurface {
     pub two_sided: Option<bool>,
     pub inside: Option<bool>,
     pub emission: Option<RawEmission>,
+    /// The group of sources an emitting surface is dimmed with (`light_scene.rs`).
+    pub group: Option<serde_spanned::Spanned<String>>,
     #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub origin: Option<[f64; 3]>,
     #[serde(default, deserialize_with = "super::arrays::exact_opt")]

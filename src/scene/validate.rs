@@ -11,6 +11,7 @@ use super::description::{Assembly, Camera, Discretization, Probe, Scene, SolverS
 use super::error::SceneError;
 use super::files::CaseFiles;
 use super::grid::grids;
+use super::light_scene::{Sources, lighting};
 use super::luminaire::luminaires;
 use super::material::materials;
 use super::schema::{RawCamera, RawDirections, RawDiscretization, RawProbe, RawScene, RawSceneInfo, RawSolver};
@@ -28,15 +29,22 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         return Err(SceneError::new(path, "[[surface]]", "", "the scene has no [[surface]]"));
     }
     let materials = materials(path, &raw.material)?;
-    let surfaces = surfaces(path, &raw.surface, &materials, &files)?;
+    let mut surfaces = surfaces(path, &raw.surface, &materials, &files)?;
     let probes = probes(path, &raw.probe)?;
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid)?;
-    let luminaires = luminaires(path, &raw.luminaire, &files)?;
+    let mut luminaires = luminaires(path, &raw.luminaire, &files)?;
     if luminaires.is_empty() && !surfaces.iter().any(|s| s.emission.is_some_and(emits)) {
         let message = "nothing emits light: give a [[surface]] an `emission` greater than 0, or add a [[luminaire]]";
         return Err(SceneError::new(path, "", "emission", message));
     }
+    let sources = Sources {
+        surface_groups: raw.surface.into_iter().map(|s| s.group).collect(),
+        luminaire_groups: raw.luminaire.into_iter().map(|l| l.group).collect(),
+        surfaces: &mut surfaces,
+        luminaires: &mut luminaires,
+    };
+    let lighting = lighting(path, &source, raw.lighting, &raw.light_scene, sources)?;
     Ok(Scene {
         path: path.to_path_buf(),
         source,
@@ -50,6 +58,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         cameras,
         grids,
         luminaires,
+        lighting,
         files: files.into_read(),
     })
 }

@@ -16,6 +16,7 @@ pub mod norms;
 pub mod orders;
 mod outcome;
 mod southwell;
+mod successive;
 
 pub use arnoldi::{ArnoldiError, ArnoldiParams, Eigenpair, Spectrum, arnoldi};
 pub use bicgstab::bicgstab;
@@ -28,3 +29,4 @@ pub use method::{Method, RESTART, System, solve};
 pub use neumann::successive_approximation;
 pub use outcome::{SolveError, SolveInfo, SolveParams};
 pub use southwell::southwell;
+pub use successive::{Projection, Successive};

@@ -7,7 +7,13 @@ use crate::render::LitScene;
 
 /// The solution ready for rendering (flat shading).
 pub fn lit_scene(stored: StoredSolution) -> LitScene {
-    let blocks = stored.scene.materials.iter().map(|m| m.model.block(&stored.directions)).collect();
     let sources = stored.scene.luminaires.iter().map(Source::of).collect();
+    lit_scene_with(stored, sources)
+}
+
+/// [`lit_scene`] with the placed luminaires `sources` (one per luminaire of the stored
+/// scene, dimmed by a light scene) in place of the scene's own.
+pub fn lit_scene_with(stored: StoredSolution, sources: Vec<Source>) -> LitScene {
+    let blocks = stored.scene.materials.iter().map(|m| m.model.block(&stored.directions)).collect();
     LitScene::new(stored.mesh, stored.directions, stored.luminance, blocks).with_luminaires(sources)
 }

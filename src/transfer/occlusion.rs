@@ -117,8 +117,3 @@ pub fn cut_along_shadows(
     }
     test.rays
 }
-
-/// A `worth` for [`cut_along_shadows`] that cuts every piece crossed by a shadow edge.
-pub fn always(_: &ConvexPolygon) -> bool {
-    true
-}

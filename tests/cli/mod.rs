@@ -3,6 +3,7 @@
 
 mod arguments;
 mod hierarchical;
+mod light_scenes;
 
 use crate::support::{scratch, ugo};
 use std::path::{Path, PathBuf};

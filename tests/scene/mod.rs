@@ -3,6 +3,7 @@
 mod assembly;
 mod degenerate;
 mod lengths;
+mod light_scenes;
 mod luminaires;
 mod magnitudes;
 mod parse_errors;

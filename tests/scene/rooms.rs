@@ -102,6 +102,11 @@ fn the_office_is_furnished_closed_and_lit_from_inside() {
         scene.surfaces.iter().filter(|s| matches!(s.shape, Shape::Box { rotate_y_deg, .. } if rotate_y_deg != 0.0));
     assert!(turned.count() >= 20, "some furniture is turned");
     assert!(scene.grids.iter().any(|g| g.name == "work plane"));
+    let groups: Vec<(&str, usize)> =
+        scene.lighting.groups.iter().map(|g| (g.name.as_str(), g.luminaires.len())).collect();
+    assert_eq!(groups, [("meeting", 6), ("desks", 6)], "two groups of downlights for its light scenes");
+    let scenes: Vec<&str> = scene.lighting.scenes.iter().map(|s| s.name.as_str()).collect();
+    assert_eq!(scenes, ["meeting", "evening"]);
     closed_around_luminaires(&scene);
 }
 

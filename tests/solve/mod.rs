@@ -8,4 +8,5 @@ mod plates;
 mod spectrum;
 mod spectrum_cli;
 mod sphere;
+mod successive;
 mod warnings;

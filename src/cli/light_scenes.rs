@@ -1,0 +1,63 @@
+//! The light scenes of a solved case (`[[light_scene]]`): its groups solved after the
+//! case's own field (`study::solve_light_scenes`, with the reference run's method and the
+//! stopping rule of the solve), a line per group and a table per light scene, and each
+//! light scene's files beside the output: `<stem>-<scene>-probes.csv` and
+//! `<stem>-<scene>-<grid>.{csv,png}`.
+
+use super::Bars;
+use anyhow::Result;
+use std::path::{Path, PathBuf};
+use ugo::io::{LightScenes, write_probes_csv};
+use ugo::readout::grid::GridReading;
+use ugo::scene::Scene;
+use ugo::solve::SolveParams;
+use ugo::study::{GroupSolves, Solved, solve_light_scenes};
+
+/// The case's light scenes on the model of `s`, when it has any.
+pub fn solve(scene: &Scene, s: &mut Solved, params: &SolveParams) -> Result<Option<LightScenes>> {
+    if scene.lighting.scenes.is_empty() {
+        return Ok(None);
+    }
+    let how = GroupSolves { method: s.runs[s.reference].method, params: *params, warm: true };
+    Ok(Some(solve_light_scenes(scene, &mut s.model, &s.x, &how, &Bars::default())?))
+}
+
+/// Prints the groups' solves and every light scene, and writes its CSV files and, with
+/// `write_grids` (the solve's: grids and the stem of their files), its grids' files.
+pub fn report(
+    light: &LightScenes,
+    output: &Path,
+    write_grids: &dyn Fn(&[GridReading], &str) -> Result<()>,
+) -> Result<()> {
+    println!("  light groups             applications   start residual   residual      time s");
+    for g in &light.groups {
+        let s = &g.solve;
+        println!(
+            "    {:<22} {:>12} {:>16.2e} {:>10.2e} {:>11.3}",
+            g.name, s.applications, s.start, s.residual, s.info.seconds
+        );
+    }
+    let stem = output.with_extension("").display().to_string();
+    for scene in &light.scenes {
+        let factors: Vec<String> =
+            light.groups.iter().zip(&scene.factors).map(|(g, f)| format!("{} {f}", g.name)).collect();
+        let e = &scene.energy;
+        println!("  light scene \"{}\"   ({})", scene.name, factors.join(", "));
+        println!(
+            "    flux emitted {:.4} lm, absorbed {:.4} lm, escaped {:.4} lm, imbalance {:.3e} lm",
+            e.emitted, e.absorbed, e.escaped, e.imbalance
+        );
+        let base = format!("{stem}-{}", scene.name);
+        if !scene.probes.is_empty() {
+            println!("    probes                 luminance cd/m²   illuminance lx   of it direct lx");
+            for p in &scene.probes {
+                println!("      {:<20} {:>15.4} {:>16.4} {:>17.4}", p.name, p.luminance, p.illuminance, p.direct);
+            }
+            let csv = PathBuf::from(format!("{base}-probes.csv"));
+            write_probes_csv(&csv, &scene.probes)?;
+            println!("      {}", csv.display());
+        }
+        write_grids(&scene.grids, &base)?;
+    }
+    Ok(())
+}

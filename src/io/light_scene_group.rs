@@ -1,0 +1,163 @@
+//! The light scenes of a solve in its HDF5 file (`design.md` §8), and one of them read
+//! back for `ugo render --light-scene NAME`.
+//!
+//! `/light_groups/{name (G), luminance (G×N×K×1), emission (G×N), scene_names (S),
+//! factors (S×G), applications, iterations, start_residual, residual, seconds (G)}`: each
+//! group's field alone (cd/m²; any light scene is `Σ_g factors[s, g] · luminance[g]`), the
+//! patches' own emission of its surfaces, and what its solve cost (kernel applications,
+//! the relative residual of the projected start and of the solution, s); attribute
+//! `maintenance_factor`. `/light_scenes/<name>/field/{luminance,emission,source,
+//! illuminance,direct_illuminance}`, `/light_scenes/<name>/probes/…` and
+//! `/light_scenes/<name>/grids/<grid>/…` as `/field`, `/probes` and `/grids` of the file,
+//! for the light scene; its attributes: `factors` (G) and `flux_emitted`, `flux_absorbed`,
+//! `flux_escaped`, `flux_imbalance` (lm).
+
+use super::IoError;
+use super::dataset::{dataset, strings};
+use super::read::StoredSolution;
+use super::readout_group::{write_grid, write_probes};
+use crate::model::Model;
+use crate::readout::energy::EnergyBalance;
+use crate::readout::field::Field;
+use crate::readout::grid::GridReading;
+use crate::readout::probe::ProbeReading;
+use crate::scene::Scene;
+use crate::solve::Successive;
+use hdf5::types::VarLenUnicode;
+use ndarray::{Array1, Array2, Array4};
+use std::path::Path;
+
+/// The light scenes of a case: one field per group, and every light scene's readouts.
+pub struct LightScenes {
+    pub groups: Vec<GroupField>,
+    pub scenes: Vec<LightSceneField>,
+}
+
+/// One group's field alone, and its solve.
+pub struct GroupField {
+    pub name: String,
+    /// The emission of its surfaces per patch, cd/m².
+    pub emission: Vec<f64>,
+    /// Its field and the record of its solve.
+    pub solve: Successive,
+}
+
+/// One light scene: the weighted sum of the groups' fields and its readouts.
+pub struct LightSceneField {
+    pub name: String,
+    /// One per group.
+    pub factors: Vec<f64>,
+    pub field: Field,
+    /// The patches' own emission, cd/m².
+    pub emission: Vec<f64>,
+    /// The source term `L0`, flat, cd/m².
+    pub source: Vec<f64>,
+    /// The patches' illuminance and its part direct from the luminaires, lx.
+    pub illuminance: Vec<f64>,
+    pub direct_illuminance: Vec<f64>,
+    pub energy: EnergyBalance,
+    pub probes: Vec<ProbeReading>,
+    pub grids: Vec<GridReading>,
+}
+
+/// `/light_groups` and `/light_scenes` of `file`, on the patches and cells of `model`.
+pub(super) fn write_light_scenes(
+    file: &hdf5::File,
+    scene: &Scene,
+    model: &Model,
+    light: &LightScenes,
+) -> hdf5::Result<()> {
+    let g = file.create_group("light_groups")?;
+    write_groups(&g, model, light)?;
+    g.new_attr::<f64>().create("maintenance_factor")?.write_scalar(&scene.lighting.maintenance_factor)?;
+    let scenes = file.create_group("light_scenes")?;
+    let k = model.kernel.cells();
+    for s in &light.scenes {
+        let group = scenes.create_group(&s.name)?;
+        write_scene(&group, s, model.mesh.len(), k)?;
+    }
+    Ok(())
+}
+
+fn write_groups(g: &hdf5::Group, model: &Model, light: &LightScenes) -> hdf5::Result<()> {
+    let (n, k, count) = (model.mesh.len(), model.kernel.cells(), light.groups.len());
+    strings(g, "name", light.groups.iter().map(|x| x.name.as_str()))?;
+    let fields = Array4::from_shape_fn((count, n, k, 1), |(a, i, c, _)| light.groups[a].solve.x[i * k + c]);
+    dataset(g, "luminance", &fields)?;
+    dataset(g, "emission", &Array2::from_shape_fn((count, n), |(a, i)| light.groups[a].emission[i]))?;
+    strings(g, "scene_names", light.scenes.iter().map(|s| s.name.as_str()))?;
+    dataset(g, "factors", &Array2::from_shape_fn((light.scenes.len(), count), |(s, a)| light.scenes[s].factors[a]))?;
+    let column = |f: fn(&Successive) -> f64| Array1::from_iter(light.groups.iter().map(|x| f(&x.solve)));
+    dataset(g, "applications", &column(|s| s.applications as f64))?;
+    dataset(g, "iterations", &column(|s| s.info.iterations as f64))?;
+    dataset(g, "start_residual", &column(|s| s.start))?;
+    dataset(g, "residual", &column(|s| s.residual))?;
+    dataset(g, "seconds", &column(|s| s.info.seconds))
+}
+
+fn write_scene(g: &hdf5::Group, s: &LightSceneField, n: usize, k: usize) -> hdf5::Result<()> {
+    let field = g.create_group("field")?;
+    dataset(&field, "luminance", &s.field.luminance)?;
+    let own = ndarray::Array3::from_shape_fn((n, k, 1), |(i, _, _)| s.emission[i]);
+    dataset(&field, "emission", &own)?;
+    dataset(&field, "source", &ndarray::Array3::from_shape_fn((n, k, 1), |(i, c, _)| s.source[i * k + c]))?;
+    dataset(&field, "illuminance", &Array1::from(s.illuminance.clone()))?;
+    dataset(&field, "direct_illuminance", &Array1::from(s.direct_illuminance.clone()))?;
+    write_probes(&g.create_group("probes")?, &s.probes)?;
+    let grids = g.create_group("grids")?;
+    for grid in &s.grids {
+        write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
+    }
+    g.new_attr::<f64>().shape(s.factors.len()).create("factors")?.write_raw(&s.factors)?;
+    let e = &s.energy;
+    for (name, value) in [
+        ("flux_emitted", e.emitted),
+        ("flux_absorbed", e.absorbed),
+        ("flux_escaped", e.escaped),
+        ("flux_imbalance", e.imbalance),
+    ] {
+        g.new_attr::<f64>().create(name)?.write_scalar(&value)?;
+    }
+    Ok(())
+}
+
+/// Puts the light scene `name` of the solution file `path` in place of `stored`'s field:
+/// its luminance and emission (the reflection orders, which are the case's own light's,
+/// are dropped).
+pub fn read_light_scene(path: &Path, stored: &mut StoredSolution, name: &str) -> Result<(), IoError> {
+    let why = |why: String| IoError::NotASolution { path: path.to_path_buf(), why };
+    let file = hdf5::File::open(path).map_err(|e| IoError::Open { path: path.to_path_buf(), why: e.to_string() })?;
+    let known = || -> String {
+        let names = file.dataset("light_groups/scene_names").and_then(|d| d.read_raw::<VarLenUnicode>());
+        match names {
+            Ok(names) if !names.is_empty() => {
+                names.iter().map(|n| format!("\"{}\"", n.as_str())).collect::<Vec<_>>().join(", ")
+            }
+            _ => "none (give the case [[light_scene]] tables and solve it again)".to_string(),
+        }
+    };
+    if name.contains('/') || file.group(&format!("light_scenes/{name}")).is_err() {
+        return Err(IoError::NoLightScene { path: path.to_path_buf(), name: name.to_string(), known: known() });
+    }
+    let size = stored.luminance.len();
+    let bytes = std::fs::metadata(path).map_err(|e| why(e.to_string()))?.len();
+    let read = |what: &str, expected: usize| -> Result<Vec<f64>, IoError> {
+        let at = format!("light_scenes/{name}/field/{what}");
+        let d = file.dataset(&at).map_err(|e| why(format!("/{at}: {e}")))?;
+        if d.size() != expected || (d.size() as u128) * 8 > bytes as u128 {
+            return Err(why(format!("/{at} holds {} values, expected {expected}", d.size())));
+        }
+        let values = d.read_raw::<f64>().map_err(|e| why(format!("/{at}: {e}")))?;
+        match values.iter().position(|v| !v.is_finite()) {
+            Some(i) => Err(why(format!("/{at}[{i}] = {}, not a finite luminance", values[i]))),
+            None => Ok(values),
+        }
+    };
+    let luminance = read("luminance", size)?;
+    let emission = read("emission", size)?;
+    let k = stored.directions.len();
+    stored.mesh.emission = emission.chunks(k).map(|cells| cells[0]).collect();
+    stored.luminance = luminance;
+    stored.orders.clear();
+    Ok(())
+}

@@ -1,0 +1,31 @@
+//! `/probes` and `/grids/<name>` (`design.md` §8): the readings of the probes and of one
+//! grid written as a group, for the solve and for each of its light scenes.
+
+use super::dataset::{dataset, strings};
+use crate::readout::grid::GridReading;
+use crate::readout::probe::ProbeReading;
+use ndarray::{Array1, Array2, Array3};
+
+pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
+    let n = probes.len();
+    strings(g, "name", probes.iter().map(|p| p.name.as_str()))?;
+    dataset(g, "position", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].position[c]))?;
+    dataset(g, "normal", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].normal[c]))?;
+    dataset(g, "luminance", &Array1::from_iter(probes.iter().map(|p| p.luminance)))?;
+    dataset(g, "illuminance", &Array1::from_iter(probes.iter().map(|p| p.illuminance)))?;
+    dataset(g, "direct", &Array1::from_iter(probes.iter().map(|p| p.direct)))
+}
+
+/// Points and illuminance as `nv × nu` arrays (row `b` runs along `edge_u`).
+pub(super) fn write_grid(g: &hdf5::Group, grid: &GridReading) -> hdf5::Result<()> {
+    let [nu, nv] = grid.grid.resolution;
+    dataset(g, "points", &Array3::from_shape_fn((nv, nu, 3), |(b, a, c)| grid.points[b * nu + a][c]))?;
+    dataset(g, "illuminance", &Array2::from_shape_fn((nv, nu), |(b, a)| grid.illuminance[b * nu + a]))?;
+    let st = grid.stats();
+    let n = grid.grid.normal;
+    g.new_attr::<f64>().shape(3).create("normal")?.write_raw(&[n.x, n.y, n.z])?;
+    for (name, value) in [("E_avg", st.average), ("E_min", st.min), ("E_max", st.max), ("U0", st.u0)] {
+        g.new_attr::<f64>().create(name)?.write_scalar(&value)?;
+    }
+    Ok(())
+}

@@ -1,0 +1,140 @@
+//! Light scenes by superposition (`design.md` §1: `L = (I − K)⁻¹ L0` is linear in the
+//! sources). Each group of sources (`[[luminaire]]` and `[[surface]]` `group` keys) is solved
+//! alone against the case's one kernel, every solve started from the solutions already
+//! known (`solve::Projection`, the case's own field first); every `[[light_scene]]` is then
+//! `x_s = Σ_g f_{s,g} x_g`, read out (patch illuminance, energy, probes, grids) by the model
+//! relit with its dimmed sources, exactly as a solve of the case with those sources would
+//! be. For the hierarchical kernel the hierarchy is the one refined under the case's own
+//! light (every group on at factor 1); each group is solved on it as it stands.
+
+use super::solve::StudyError;
+use crate::io::{GroupField, IoError, LightSceneField, LightScenes, StoredSolution};
+use crate::kernel::{Explicit, Factored};
+use crate::luminaire::Source;
+use crate::model::{Model, SourceTerm};
+use crate::progress::Progress;
+use crate::readout::energy::EnergyBalance;
+use crate::readout::field::Field;
+use crate::readout::grid::read_grids;
+use crate::readout::illuminance::{arriving, patch_illuminance};
+use crate::readout::probe::read_probes;
+use crate::render::LitScene;
+use crate::scene::{LightScene, Scene};
+use crate::solve::{Method, Projection, SolveParams, System};
+use std::path::Path;
+
+/// How the groups are solved.
+#[derive(Debug, Clone, Copy)]
+pub struct GroupSolves {
+    pub method: Method,
+    pub params: SolveParams,
+    /// Start each solve from the known solutions (else cold, to measure what that saves).
+    pub warm: bool,
+}
+
+/// Solves every group of `scene` on `model` and reads out every light scene; `x` is the
+/// solution of the case's own light (all groups on), the first known solution. `model` is
+/// relit by each light scene in turn and given back as it came.
+pub fn solve_light_scenes(
+    scene: &Scene,
+    model: &mut Model,
+    x: &[f64],
+    how: &GroupSolves,
+    progress: &dyn Progress,
+) -> Result<LightScenes, StudyError> {
+    let lighting = &scene.lighting;
+    let terms: Vec<SourceTerm> =
+        lighting.groups.iter().map(|g| model.source_term_of(&g.luminaires, &g.surfaces)).collect();
+    let fields = solve_groups(scene, model, x, &terms, how, progress)?;
+    let base = model.sources.clone();
+    let mut own = None;
+    let mut scenes = Vec::with_capacity(lighting.scenes.len());
+    for light_scene in &lighting.scenes {
+        let parts: Vec<(f64, &SourceTerm)> = light_scene.factors.iter().copied().zip(&terms).collect();
+        let relit = model.relight(dimmed(scene, &base, light_scene), SourceTerm::superpose(&parts));
+        own.get_or_insert(relit);
+        scenes.push(read_out(scene, model, light_scene, &fields));
+    }
+    if let Some((sources, term)) = own {
+        model.relight(sources, term);
+    }
+    Ok(LightScenes { groups: fields, scenes })
+}
+
+/// Each group's field, solved in the order of the groups.
+fn solve_groups(
+    scene: &Scene,
+    model: &Model,
+    x: &[f64],
+    terms: &[SourceTerm],
+    how: &GroupSolves,
+    progress: &dyn Progress,
+) -> Result<Vec<GroupField>, StudyError> {
+    let explicit = match how.method.needs_explicit() {
+        true => Some(Explicit(model.kernel.explicit(how.params.memory_limit)?)),
+        false => None,
+    };
+    let factored = Factored::new(&model.kernel);
+    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+    let mut projection = Projection::new(how.warm);
+    if how.warm {
+        projection.learn(&factored, x.to_vec());
+    }
+    let mut fields = Vec::with_capacity(terms.len());
+    for (group, term) in scene.lighting.groups.iter().zip(terms) {
+        let system = System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &term.l0);
+        let label = format!("group {}", group.name);
+        progress.begin(&label, how.params.max_iterations as u64);
+        let solved = projection.solve(how.method, &system, &how.params, &mut |n, r| {
+            progress.at(n as u64, &format!("{label}: {} {r:.1e}", how.method.name()))
+        });
+        progress.end();
+        fields.push(GroupField { name: group.name.clone(), emission: term.emission.clone(), solve: solved? });
+    }
+    Ok(fields)
+}
+
+/// The luminaires of `scene` placed (`base`, one per luminaire) and dimmed by the factor
+/// of their group in `light_scene`.
+pub fn dimmed(scene: &Scene, base: &[Source], light_scene: &LightScene) -> Vec<Source> {
+    let mut factor = vec![0.0; base.len()];
+    for (group, &f) in scene.lighting.groups.iter().zip(&light_scene.factors) {
+        group.luminaires.iter().for_each(|&i| factor.get_mut(i).into_iter().for_each(|x| *x = f));
+    }
+    base.iter().zip(factor).map(|(s, f)| s.scaled(f)).collect()
+}
+
+/// The light scene's field `Σ_g f_g x_g` and its readouts on `model`, relit by it.
+fn read_out(scene: &Scene, model: &Model, light_scene: &LightScene, groups: &[GroupField]) -> LightSceneField {
+    let mut x = vec![0.0; model.l0.len()];
+    for (&f, group) in light_scene.factors.iter().zip(groups) {
+        x.iter_mut().zip(&group.solve.x).for_each(|(x, g)| *x += f * g);
+    }
+    let k = model.kernel.cells();
+    let field = Field::from_unknowns(&x, k);
+    LightSceneField {
+        name: light_scene.name.clone(),
+        factors: light_scene.factors.clone(),
+        emission: model.mesh.emission.clone(),
+        source: model.l0.clone(),
+        illuminance: patch_illuminance(&arriving(model, &x), k),
+        direct_illuminance: patch_illuminance(&model.direct.arriving, k),
+        energy: EnergyBalance::of(model, &x, scene.surfaces.len()),
+        probes: read_probes(&scene.probes, model, &field),
+        grids: read_grids(&scene.grids, model, &field),
+        field,
+    }
+}
+
+/// The stored solution `stored` of the file `path` with the field of its light scene
+/// `name`, ready for rendering with its luminaires dimmed as the light scene says.
+pub fn lit_light_scene(path: &Path, mut stored: StoredSolution, name: &str) -> Result<LitScene, IoError> {
+    crate::io::read_light_scene(path, &mut stored, name)?;
+    let base: Vec<Source> = stored.scene.luminaires.iter().map(Source::of).collect();
+    let Some(light_scene) = stored.scene.lighting.scenes.iter().find(|s| s.name == name) else {
+        let why = format!("its stored scene has no [[light_scene]] \"{name}\", though the file holds its field");
+        return Err(crate::io::IoError::NotASolution { path: path.to_path_buf(), why });
+    };
+    let sources = dimmed(&stored.scene, &base, light_scene);
+    Ok(super::view::lit_scene_with(stored, sources))
+}

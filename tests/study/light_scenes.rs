@@ -1,0 +1,264 @@
+//! Light scenes by superposition (`study::solve_light_scenes`): a light scene equals a
+//! separate full solve of the case with its luminaires and emitting surfaces dimmed, to
+//! 1e-10 on the field, the patch illuminance, the probes and the grids; with the
+//! hierarchical kernel, on the hierarchy refined under the case's own light, it equals the
+//! solve on that fixed hierarchy of the source term of the dimmed sources integrated at
+//! once.
+
+use std::path::Path;
+use ugo::io::LightSceneField;
+use ugo::kernel::Factored;
+use ugo::luminaire::direct_light;
+use ugo::model::{Model, ModelOptions};
+use ugo::readout::field::Field;
+use ugo::readout::grid::read_grids;
+use ugo::readout::illuminance::{arriving, patch_illuminance};
+use ugo::readout::probe::read_probes;
+use ugo::scene::Scene;
+use ugo::solve::{Method, SolveParams, System, solve};
+use ugo::study::{GroupSolves, Job, Solved, dimmed, solve_case, solve_light_scenes};
+
+/// A grey room with a ceiling panel (group "panel"), a bulb (group "left") and a
+/// Lambertian downlight (no group: "default"), a probe and a grid; maintenance factor 0.8.
+/// `{A}`, `{B}` and `{PANEL}` are the bulb's and the downlight's multiplier and the panel's
+/// flux, `{METHOD}` the discretization's method keys.
+const ROOM: &str = r#"
+[discretization]
+patch_size = 0.5
+{METHOD}
+
+[solver]
+method = "gmres"
+tolerance = 1e-13
+
+[lighting]
+maintenance_factor = 0.8
+
+[[material]]
+name = "grey"
+type = "lambert"
+reflectance = 0.6
+
+[[surface]]
+name = "room"
+shape = "box"
+material = "grey"
+inside = true
+min = [0, 0, 0]
+max = [3, 2.5, 4]
+
+[[surface]]
+name = "block"
+shape = "box"
+material = "grey"
+min = [1.2, 0, 1.5]
+max = [1.8, 0.9, 2.2]
+
+[[surface]]
+name = "panel"
+shape = "rectangle"
+material = "grey"
+origin = [0.5, 2.49, 0.5]
+edge_u = [0, 0, 0.5]
+edge_v = [0.5, 0, 0]
+emission = { flux = {PANEL} }
+group = "panel"
+
+[[luminaire]]
+name = "bulb"
+type = "isotropic"
+flux = 1000
+position = [1, 2, 1]
+multiplier = {A}
+group = "left"
+
+[[luminaire]]
+name = "downlight"
+type = "lambertian"
+intensity = 300
+position = [2, 2.4, 3]
+multiplier = {B}
+
+[[probe]]
+name = "floor"
+position = [0.7, 0, 2.6]
+normal = [0, 1, 0]
+
+[[probe]]
+name = "wall"
+position = [0, 1.2, 2]
+normal = [1, 0, 0]
+
+[[grid]]
+name = "work plane"
+origin = [0.1, 0.8, 0.1]
+edge_u = [2.8, 0, 0]
+edge_v = [0, 0, 3.8]
+resolution = [5, 7]
+
+[[light_scene]]
+name = "dimmed"
+groups = { left = 0.3, default = 0.6, panel = 0.5 }
+
+[[light_scene]]
+name = "bulb-only"
+groups = { left = true, panel = false }
+"#;
+
+const HIERARCHICAL: &str = "method = \"hierarchical\"\ntolerance = 0.05\nsmallest = 0.25";
+
+/// The room with the bulb, the downlight and the panel at these outputs.
+fn room(method: &str, a: f64, b: f64, panel: f64) -> Scene {
+    let text = ROOM
+        .replace("{METHOD}", method)
+        .replace("{A}", &a.to_string())
+        .replace("{B}", &b.to_string())
+        .replace("{PANEL}", &panel.to_string());
+    Scene::parse(Path::new("room.toml"), text).expect("the room is valid")
+}
+
+fn job() -> Job {
+    let params = SolveParams { tolerance: 1e-13, ..SolveParams::default() };
+    Job { methods: vec![Method::Gmres { restart: 30 }], params, ..Job::default() }
+}
+
+fn solved(scene: &Scene) -> Solved {
+    solve_case(scene, &ModelOptions::of(scene), &job(), &ugo::progress::Silent).expect("the room solves")
+}
+
+/// `max |a − b| / max |b|`.
+fn relative(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    a.iter().zip(b).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / scale
+}
+
+/// What a light scene and its reference are compared on: field, patch illuminance,
+/// probes (luminance, illuminance, direct) and grid points.
+struct Readouts {
+    field: Vec<f64>,
+    illuminance: Vec<f64>,
+    probes: Vec<f64>,
+    grid: Vec<f64>,
+}
+
+impl Readouts {
+    fn of(s: &LightSceneField) -> Readouts {
+        Readouts {
+            field: s.field.luminance.iter().copied().collect(),
+            illuminance: s.illuminance.clone(),
+            probes: s.probes.iter().flat_map(|p| [p.luminance, p.illuminance, p.direct]).collect(),
+            grid: s.grids[0].illuminance.clone(),
+        }
+    }
+
+    fn assert_equal(&self, reference: &Readouts, what: &str) {
+        let checks = [
+            ("field", relative(&self.field, &reference.field)),
+            ("illuminance", relative(&self.illuminance, &reference.illuminance)),
+            ("grid", relative(&self.grid, &reference.grid)),
+        ];
+        for (name, error) in checks {
+            assert!(error < 1e-10, "{what}: {name} differs by {error:e}");
+        }
+        for (a, b) in self.probes.iter().zip(&reference.probes) {
+            assert!((a - b).abs() <= 1e-10 * b.abs().max(1e-300), "{what}: probe reading {a} against {b}");
+        }
+        assert!(reference.probes.iter().all(|&p| p > 0.0), "{what}: the probes see light");
+    }
+}
+
+#[test]
+fn a_light_scene_equals_a_full_solve_with_its_sources_dimmed() {
+    let scene = room("", 1.0, 1.0, 500.0);
+    let mut s = solved(&scene);
+    let how = GroupSolves { method: Method::Gmres { restart: 30 }, params: job().params, warm: true };
+    let light = solve_light_scenes(&scene, &mut s.model, &s.x, &how, &ugo::progress::Silent).unwrap();
+    let names: Vec<&str> = light.groups.iter().map(|g| g.name.as_str()).collect();
+    assert_eq!(names, ["panel", "left", "default"]);
+    assert!(light.groups[2].solve.start < 1e-8, "the last group is the case's field less the others");
+    // The model is given back lit by the case's own sources.
+    assert_eq!(s.model.l0, solved(&scene).model.l0);
+
+    let dimmed = solved(&room("", 0.3, 0.6, 250.0));
+    let reference = Readouts {
+        field: dimmed.x.clone(),
+        illuminance: dimmed.illuminance.clone(),
+        probes: dimmed.probes.iter().flat_map(|p| [p.luminance, p.illuminance, p.direct]).collect(),
+        grid: dimmed.grids[0].illuminance.clone(),
+    };
+    Readouts::of(&light.scenes[0]).assert_equal(&reference, "dimmed");
+    let e = (&light.scenes[0].energy, &dimmed.energy);
+    assert!((e.0.emitted - e.1.emitted).abs() < 1e-10 * e.1.emitted && (e.0.absorbed - e.1.absorbed).abs() < 1e-9);
+
+    // Off is a source left out: the downlight removed (with the light scenes that name its
+    // group), the panel dark.
+    let text = ROOM.replace("{METHOD}", "").replace("{A}", "1").replace("{PANEL}", "0");
+    let (cut, probes, scenes) = (
+        text.find("[[luminaire]]\nname = \"downlight\"").unwrap(),
+        text.find("[[probe]]").unwrap(),
+        text.find("[[light_scene]]").unwrap(),
+    );
+    let only = Scene::parse(Path::new("room.toml"), format!("{}{}", &text[..cut], &text[probes..scenes])).unwrap();
+    let alone = solved(&only);
+    let reference = Readouts {
+        field: alone.x.clone(),
+        illuminance: alone.illuminance.clone(),
+        probes: alone.probes.iter().flat_map(|p| [p.luminance, p.illuminance, p.direct]).collect(),
+        grid: alone.grids[0].illuminance.clone(),
+    };
+    Readouts::of(&light.scenes[1]).assert_equal(&reference, "bulb-only");
+}
+
+#[test]
+fn on_a_fixed_hierarchy_a_light_scene_equals_the_solve_of_its_dimmed_sources() {
+    let scene = room(HIERARCHICAL, 1.0, 1.0, 500.0);
+    let mut s = solved(&scene);
+    assert!(s.model.hierarchy.is_some());
+    let how = GroupSolves { method: Method::Bicgstab, params: job().params, warm: true };
+    let light = solve_light_scenes(&scene, &mut s.model, &s.x, &how, &ugo::progress::Silent).unwrap();
+    for (light_scene, factors) in scene.lighting.scenes.iter().zip([[0.5, 0.3, 0.6], [0.0, 1.0, 0.0]]) {
+        let model = &mut s.model;
+        let sources = dimmed(&scene, &model.sources, light_scene);
+        let direct = direct_light(&sources, &model.mesh, &model.visibility, &model.kernel.directions);
+        let emission = model.mesh.patches.iter().zip(&model.mesh.emission);
+        let emission: Vec<f64> = emission.map(|(p, &e)| if p.surface == 2 { factors[0] * e } else { e }).collect();
+        let own =
+            (std::mem::replace(&mut model.sources, sources), std::mem::replace(&mut model.mesh.emission, emission));
+        let own_direct = std::mem::replace(&mut model.direct, direct);
+        let l0 = model.source_term();
+        let factored = Factored::new(&model.kernel);
+        let system = System { operator: &factored, explicit: None, areas: &[], l0: &l0 };
+        let (x, _) = solve(Method::Gmres { restart: 30 }, &system, &job().params, &mut |_, _| {}).unwrap();
+        let k = model.kernel.cells();
+        let field = Field::from_unknowns(&x, k);
+        let reference = Readouts {
+            illuminance: patch_illuminance(&arriving(model, &x), k),
+            probes: read_probes(&scene.probes, model, &field)
+                .iter()
+                .flat_map(|p| [p.luminance, p.illuminance, p.direct])
+                .collect(),
+            grid: read_grids(&scene.grids, model, &field)[0].illuminance.clone(),
+            field: x,
+        };
+        let index = scene.lighting.scenes.iter().position(|l| l.name == light_scene.name).unwrap();
+        Readouts::of(&light.scenes[index]).assert_equal(&reference, &light_scene.name);
+        (model.sources, model.mesh.emission) = own;
+        model.direct = own_direct;
+    }
+}
+
+/// The model a light scene is solved on is the case's: its groups change no patch.
+#[test]
+fn the_groups_of_a_hierarchical_case_are_solved_on_its_one_hierarchy() {
+    let scene = room(HIERARCHICAL, 1.0, 1.0, 500.0);
+    let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).unwrap();
+    let g = &scene.lighting.groups;
+    let terms: Vec<_> = g.iter().map(|g| model.source_term_of(&g.luminaires, &g.surfaces)).collect();
+    assert!(terms.iter().all(|t| t.l0.len() == model.l0.len() && t.emission.len() == model.mesh.len()));
+    let sum: Vec<f64> = (0..model.l0.len()).map(|i| terms.iter().map(|t| t.l0[i]).sum()).collect();
+    // The leaves' light integrated again with the leaves' ray caster, against the light the
+    // refinement cached with the roots': the same light here (measured 1e-17), the shadow
+    // rays landing on the same faces.
+    assert!(relative(&sum, &model.l0) < 1e-9, "{}", relative(&sum, &model.l0));
+}

@@ -1,0 +1,3 @@
+//! Tests of the study pipelines (`ugo::study`).
+
+mod light_scenes;
