@@ -7,6 +7,7 @@ pub mod info;
 pub mod options;
 pub mod render;
 pub mod solve;
+pub mod stop;
 pub mod trace;
 
 use anyhow::{Result, bail};

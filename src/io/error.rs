@@ -1,5 +1,6 @@
 //! Why a file could not be written or read back: the path and what went wrong there.
 
+use crate::interrupt::Interrupted;
 use std::fmt::Display;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
@@ -15,6 +16,9 @@ pub enum IoError {
     /// A file that opened but does not hold what ugo writes.
     #[error("{} is not a ugo solution file: {why}", path.display())]
     NotASolution { path: PathBuf, why: String },
+    /// A signal asked the process to stop before the file was complete.
+    #[error("{} not written ({stop}); a previous file of that name is left as it was", path.display())]
+    Interrupted { path: PathBuf, stop: Interrupted },
 }
 
 impl IoError {

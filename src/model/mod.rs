@@ -10,9 +10,11 @@
 
 mod explicit;
 mod hierarchical;
+mod range;
 mod source;
 mod system;
 
+pub use range::{OutOfRange, check_transport, locate, place};
 pub use system::{AssemblyStats, HierarchyRecord, Model, ModelError, ModelOptions, Refinement};
 
 use crate::geometry::Mesh;
@@ -44,7 +46,7 @@ impl Model {
     pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> Result<Model, ModelError> {
         Model::forecast(scene, options).check(options.memory_limit)?;
         match scene.discretization.assembly {
-            Assembly::Explicit => Ok(explicit::build(scene, options, progress)?),
+            Assembly::Explicit => explicit::build(scene, options, progress),
             Assembly::Hierarchical { tolerance, smallest } => {
                 hierarchical::build(scene, options, Refinement { tolerance, smallest }, progress)
             }

@@ -14,6 +14,7 @@ mod neumann;
 pub mod norms;
 pub mod orders;
 mod outcome;
+mod range;
 mod southwell;
 
 pub use bicgstab::bicgstab;
@@ -25,4 +26,5 @@ pub use linop::LinOp;
 pub use method::{Method, RESTART, System, solve};
 pub use neumann::successive_approximation;
 pub use outcome::{SolveError, SolveInfo, SolveParams};
+pub use range::OutOfRange;
 pub use southwell::southwell;

@@ -14,7 +14,7 @@ fn compare(scene: Scene, directions: DirectionSet, limit: f64) {
     let op = h.operator();
     let leaves = h.leaf_mesh();
     let visibility = Visibility::build(&leaves);
-    let t = assemble(&leaves, &visibility, &directions, &Quadrature::default(), &|_| {});
+    let t = assemble(&leaves, &visibility, &directions, &Quadrature::default(), &|_| {}).unwrap();
     let kernel = Kernel {
         g: Transport::Explicit(TransportMatrix::new(t.g, Precision::Double)),
         directions: directions.clone(),

@@ -5,5 +5,6 @@ mod methods;
 mod mirror;
 pub mod opal;
 mod plates;
+mod range;
 mod sphere;
 mod warnings;
