@@ -4,6 +4,7 @@
 
 mod atomic;
 mod basis_plot;
+mod bytes_file;
 mod dataset;
 mod error;
 mod estimate_file;
@@ -18,6 +19,7 @@ mod readings;
 mod triptych;
 
 pub use basis_plot::basis_plot;
+pub use bytes_file::write_bytes;
 pub use error::IoError;
 pub use estimate_file::{EstimateFile, write_estimate};
 pub use exr_file::{read_exr, write_exr, write_exr_as};
