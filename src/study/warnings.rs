@@ -63,16 +63,20 @@ fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalan
     let flux = |c: usize| areas[c / k] * cells[c % k].projected * x[c].max(0.0);
     let over: f64 = (0..shares.len()).map(|c| flux(c) * (shares[c] - 1.0).max(0.0)).sum();
     let either: f64 = (0..shares.len()).map(|c| flux(c) * (shares[c] - 1.0).abs()).sum();
-    let (low, high) = shares.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &s| (l.min(s), h.max(s)));
-    let worst = (0..shares.len()).max_by(|&a, &b| (shares[a] - 1.0).abs().total_cmp(&(shares[b] - 1.0).abs()));
-    let worst = worst
-        .map_or(String::new(), |c| format!(" (farthest: {:.5} at {})", shares[c], place(scene, &model.mesh, c, k)));
+    let sending: Vec<usize> = (0..shares.len()).filter(|&c| flux(c) > 0.0).collect();
+    let (low, high) =
+        sending.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &c| (l.min(shares[c]), h.max(shares[c])));
+    let error = |c: usize| flux(c) * (shares[c] - 1.0).abs();
+    let worst = sending.iter().copied().max_by(|&a, &b| error(a).total_cmp(&error(b)));
+    let worst = worst.map_or(String::new(), |c| {
+        format!(" (the largest part: {:.5} at {})", shares[c], place(scene, &model.mesh, c, k))
+    });
     let share = |f: f64| 100.0 * f / e.emitted;
     format!(
         "the escaped flux is negative ({:.4} lm, {:.3} % of the {:.4} lm emitted): no light enters from outside, so \
-         this is the kernel's discretization error, not a flux. The kernel's columns, the share of the light each \
-         patch sends that the others receive (π Σ_i A_i G_ij / (A_j μ)), lie between {low:.5} and {high:.5} where a \
-         closed scene has 1{worst}; weighted by the solved outgoing flux, their excess over 1 is {over:.4} lm \
+         this is the kernel's discretization error, not a flux. The kernel's columns that send light, the share \
+         of the light each patch sends that the others receive (π Σ_i A_i G_ij / (A_j μ)), lie between {low:.5} \
+         and {high:.5} where a closed scene has 1{worst}; weighted by the solved outgoing flux, their excess over 1 is {over:.4} lm \
          (it bounds the negative escape) and their deviation either way {either:.4} lm, {:.3} % of the flux \
          emitted: the energy balance, and readings that depend on it, are uncertain by up to that share; a smaller \
          patch_size lowers it",
