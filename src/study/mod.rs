@@ -4,6 +4,7 @@
 //! parses its arguments, calls these and prints what they return.
 
 mod bases;
+mod openings;
 mod solve;
 mod view;
 mod warnings;

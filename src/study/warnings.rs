@@ -15,7 +15,8 @@
 //!   flux is exactly `Σ Φ_j (1 − s_j)` over the columns of `G` (`kernel::sent_shares`: the
 //!   share of what a patch sends that the others receive, 1 in a closed scene); the
 //!   columns' range and their deviation from 1 weighted by the solved outgoing flux are
-//!   stated: the bound of the balance's discretization error.
+//!   stated: the bound of the balance's discretization error;
+//! * light escaping through a small opening (`openings.rs`): a missing wall or a gap.
 //!
 //! The rays are stratified with fixed seeds: the same case gives the same warnings.
 
@@ -45,8 +46,14 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
     backs(scene, model, x, energy, &mut out);
     luminaires(scene, model, &mut out);
     sensors(scene, model, &mut out);
+    let shares = || {
+        let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+        sent_shares(&model.kernel, &areas)
+    };
     if energy.escaped < -1e-9 * energy.emitted.abs() {
-        out.push(negative_escape(scene, model, x, energy));
+        out.push(negative_escape(scene, model, x, energy, &shares()));
+    } else if energy.escaped > super::openings::ESCAPING * energy.emitted {
+        out.extend(super::openings::small_opening(scene, model, x, energy, &shares()));
     }
     out
 }
@@ -55,10 +62,9 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
 /// reciprocity error: the columns' sent shares `s` (`kernel::sent_shares`) against 1,
 /// weighted by the solved outgoing flux (the escaped flux is exactly `Σ Φ (1 − s)` plus
 /// the luminaires' light that lands nowhere).
-fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance) -> String {
+fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, shares: &[f64]) -> String {
     let (e, k) = (energy, model.kernel.cells());
     let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
-    let shares = sent_shares(&model.kernel, &areas);
     let cells = model.kernel.directions.cells();
     let flux = |c: usize| areas[c / k] * cells[c % k].projected * x[c].max(0.0);
     let over: f64 = (0..shares.len()).map(|c| flux(c) * (shares[c] - 1.0).max(0.0)).sum();

@@ -123,3 +123,25 @@ fn the_escaped_flux_is_the_outgoing_flux_weighted_by_the_columns_shortfall() {
         assert!(e.escaped.abs() > 1e-3 * e.emitted, "a case whose columns are not all 1: {}", e.escaped);
     }
 }
+
+/// The room with its north wall `height` high instead of 1 (a gap above it), or without it.
+fn gapped(height: Option<f64>) -> String {
+    let north = "[[surface]]\nname = \"north\"\nshape = \"rectangle\"\nmaterial = \"grey\"\norigin = [0, 0, 1]\nedge_u = [0, 1, 0]\nedge_v = [1, 0, 0]\n";
+    let text = room(false, "");
+    assert!(text.contains(north));
+    let wall = height.map_or(String::new(), |h| north.replace("edge_u = [0, 1, 0]", &format!("edge_u = [0, {h}, 0]")));
+    text.replace(north, &wall)
+}
+
+#[test]
+fn light_escaping_through_a_small_gap_is_reported_and_an_open_side_is_not() {
+    let (_, s) = solved(&gapped(Some(0.85)));
+    let w = s.warnings.iter().find(|w| w.contains("opening")).unwrap_or_else(|| panic!("{:?}", s.warnings));
+    // The gap is 0.15 m² of the 5.85 m² of surfaces.
+    let area: f64 = w.split("an opening of about ").nth(1).and_then(|r| r.split(' ').next()).unwrap().parse().unwrap();
+    assert!((area / 0.15 - 1.0).abs() < 0.1, "{w}");
+    assert!(w.contains("missing wall") && w.contains("\"ceiling\""), "{w}");
+    let (_, s) = solved(&gapped(None));
+    assert!(s.energy.escaped > 0.1 * s.energy.emitted, "{:?}", s.energy);
+    assert!(s.warnings.iter().all(|w| !w.contains("opening")), "{:?}", s.warnings);
+}
