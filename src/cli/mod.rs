@@ -10,6 +10,7 @@ pub mod light_scenes;
 pub mod options;
 pub mod render;
 pub mod solve;
+pub mod stop;
 pub mod trace;
 
 use anyhow::{Result, bail};

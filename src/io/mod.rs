@@ -4,6 +4,7 @@
 
 mod atomic;
 mod basis_plot;
+mod bytes_file;
 mod dataset;
 mod error;
 mod estimate_file;
@@ -22,6 +23,7 @@ mod readout_group;
 mod triptych;
 
 pub use basis_plot::basis_plot;
+pub use bytes_file::write_bytes;
 pub use error::IoError;
 pub use estimate_file::{EstimateFile, write_estimate};
 pub use export::{ExportError, Format, export};

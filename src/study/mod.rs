@@ -6,6 +6,7 @@
 mod bases;
 mod kernel;
 mod light_scenes;
+mod openings;
 mod solve;
 mod view;
 mod warnings;
