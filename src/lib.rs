@@ -4,7 +4,7 @@
 //! the floors below it, and no two files import each other (`tests/layering/` reads
 //! `src/` and enforces both). From the bottom up:
 //!
-//! 1. vocabulary: [`directions`], [`geometry`], [`visibility`], [`random`], [`progress`]
+//! 1. vocabulary: [`directions`], [`geometry`], [`visibility`], [`random`], [`progress`], [`interrupt`]
 //! 2. physics: [`material`], [`photometry`], [`transfer`], [`luminaire`]
 //! 3. kernel: [`kernel`]
 //! 4. solve: [`solve`], [`basis`]
@@ -20,6 +20,7 @@
 pub mod basis;
 pub mod directions;
 pub mod geometry;
+pub mod interrupt;
 pub mod io;
 pub mod kernel;
 pub mod luminaire;

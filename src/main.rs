@@ -205,7 +205,20 @@ fn main() -> ExitCode {
         }
         Err(e) => e.exit(),
     };
-    match run(cli.command) {
+    if let Err(e) = ugo::interrupt::install() {
+        eprintln!("ugo: warning: SIGINT and SIGTERM are not handled ({e}): they stop at once");
+    }
+    let result = run(cli.command);
+    if let Some(stop) = ugo::interrupt::requested(String::new) {
+        match result {
+            Ok(()) => {
+                eprintln!("ugo: stopped by {} after every output was written", ugo::interrupt::signal_name(stop.signal))
+            }
+            Err(e) => eprintln!("ugo: stopped: {e:#}"),
+        }
+        return ExitCode::from(stop.exit_status());
+    }
+    match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("ugo: error: {e:#}");

@@ -12,6 +12,7 @@ mod kernel;
 mod layering;
 mod luminaire;
 mod material;
+mod model;
 mod photometry;
 mod render;
 mod robustness;

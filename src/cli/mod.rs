@@ -11,6 +11,7 @@ pub mod options;
 pub mod render;
 pub mod solve;
 pub mod spectrum;
+pub mod stop;
 pub mod trace;
 
 use anyhow::{Result, bail};

@@ -64,7 +64,9 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         check_writable(plot)?;
     }
     let study = study::Job { params, ..job.run };
-    let mut s = solve_case(&scene, &options, &study, &Bars::default())?;
+    let outputs: Vec<&Path> = std::iter::once(output.as_path()).chain(job.plot.as_deref()).collect();
+    let mut s =
+        solve_case(&scene, &options, &study, &Bars::default()).map_err(|e| super::stop::not_written(e, &outputs))?;
     for (method, e) in &s.failures {
         eprintln!("ugo: {} failed: {e}", method.name());
     }

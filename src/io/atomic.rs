@@ -12,21 +12,39 @@
 //!   read) before the rename.
 //! * A failure removes the temporary file. Temporary files of processes that are no
 //!   longer running (killed, out of power) are removed by the next write of the same path.
+//! * A stop asked for by a signal (`crate::interrupt`) is checked before the write and
+//!   again before the rename: the temporary file is removed and the target left as it
+//!   was. While it is written the temporary is held for a second signal's immediate stop,
+//!   which removes it too.
 
 use super::IoError;
+use crate::interrupt::Temporary;
 use std::ffi::OsString;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 /// Runs `write` on a fresh temporary name beside `path`, verifies the file and renames it
-/// to `path`; removes the temporary file when any step fails.
+/// to `path`; removes the temporary file when any step fails or a stop is asked for.
 pub fn atomic(path: &Path, write: impl FnOnce(&Path) -> Result<(), String>) -> Result<(), IoError> {
     remove_stale(path);
+    let stopped = |during: &str| {
+        crate::interrupt::requested(|| during.to_string())
+            .map(|stop| IoError::Interrupted { path: path.to_path_buf(), stop })
+    };
+    if let Some(e) = stopped("the work before it") {
+        return Err(e);
+    }
     let tmp = temporary(path);
-    let done = write(&tmp)
-        .and_then(|()| verify(&tmp))
+    let held = Temporary::hold(&tmp);
+    let done = write(&tmp).and_then(|()| verify(&tmp));
+    if let Some(e) = stopped("its writing") {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(e);
+    }
+    let done = done
         .and_then(|()| std::fs::rename(&tmp, path).map_err(|e| format!("cannot rename {} to it: {e}", tmp.display())));
+    drop(held);
     match done {
         Ok(()) => {
             // The rename itself reaches the disk with the folder's entry.
@@ -47,6 +65,7 @@ pub fn atomic(path: &Path, write: impl FnOnce(&Path) -> Result<(), String>) -> R
 pub fn atomic_png(path: &Path, draw: impl FnOnce(&Path) -> Result<(), String>) -> Result<(), IoError> {
     atomic(path, |tmp| {
         let png = tmp.with_extension("tmp.png");
+        let _held = Temporary::hold(&png);
         let done = draw(&png).and_then(|()| std::fs::rename(&png, tmp).map_err(|e| e.to_string()));
         if done.is_err() {
             let _ = std::fs::remove_file(&png);

@@ -1,5 +1,6 @@
 //! Why a file could not be written or read back: the path and what went wrong there.
 
+use crate::interrupt::Interrupted;
 use std::fmt::Display;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
@@ -24,6 +25,9 @@ pub enum IoError {
     /// A light scene the solution does not hold (`known`: the ones it holds, listed).
     #[error("{} has no light scene \"{name}\"; its light scenes: {known}", path.display())]
     NoLightScene { path: PathBuf, name: String, known: String },
+    /// A signal asked the process to stop before the file was complete.
+    #[error("{} not written ({stop}); a previous file of that name is left as it was", path.display())]
+    Interrupted { path: PathBuf, stop: Interrupted },
 }
 
 impl IoError {

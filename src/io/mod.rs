@@ -5,6 +5,7 @@
 
 mod atomic;
 mod basis_plot;
+mod bytes_file;
 mod dataset;
 mod error;
 mod estimate_file;
@@ -25,6 +26,7 @@ mod spectrum_plot;
 mod triptych;
 
 pub use basis_plot::basis_plot;
+pub use bytes_file::write_bytes;
 pub use error::IoError;
 pub use estimate_file::{EstimateFile, write_estimate};
 pub use export::{ExportError, Format, export};

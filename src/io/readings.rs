@@ -4,11 +4,10 @@
 //! luminance and illuminance.
 
 use super::IoError;
-use super::{Scale, atomic, write_false_colour};
+use super::{Scale, write_false_colour};
 use crate::readout::grid::GridReading;
 use crate::readout::probe::ProbeReading;
 use crate::render::Image;
-use std::io::Write;
 use std::path::Path;
 
 /// The map's longer side, pixels (each grid cell is drawn as a square block).
@@ -49,10 +48,7 @@ pub fn write_probes_csv(path: &Path, probes: &[ProbeReading]) -> Result<(), IoEr
 }
 
 fn write_text(path: &Path, text: &str) -> Result<(), IoError> {
-    atomic(path, |tmp| {
-        let mut file = std::fs::File::create(tmp).map_err(|e| e.to_string())?;
-        file.write_all(text.as_bytes()).map_err(|e| e.to_string())
-    })
+    super::write_bytes(path, text.as_bytes())
 }
 
 /// The false-colour map of the grid's illuminance on a linear scale from 0, in lx.

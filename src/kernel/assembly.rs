@@ -12,6 +12,7 @@
 use super::balance::{BalanceReport, balance};
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch};
+use crate::interrupt::Interrupted;
 use crate::transfer::form_factor::{Binning, PairIntegral, Quadrature, binned_pair_integral, pair_integral};
 use crate::transfer::occlusion::{POINTS, sample_points, visible_fraction};
 use crate::visibility::{NO_BLOCKER, Visibility};
@@ -52,13 +53,15 @@ struct RowWork {
 }
 
 /// Assembles `G` for `directions`. `progress` is called with the number of pairs just finished.
+/// A stop asked for by a signal (`crate::interrupt`) skips the rows not yet begun and ends
+/// with [`Interrupted`].
 pub fn assemble(
     mesh: &Mesh,
     visibility: &Visibility,
     directions: &DirectionSet,
     quadrature: &Quadrature,
     progress: &(dyn Fn(u64) + Sync),
-) -> Assembled {
+) -> Result<Assembled, Interrupted> {
     let n = mesh.len();
     let k = directions.len();
     let points: Vec<[glam::DVec3; POINTS]> = mesh.patches.par_iter().map(sample_points).collect();
@@ -66,12 +69,18 @@ pub fn assemble(
     let work: Vec<RowWork> = (0..n)
         .into_par_iter()
         .map(|i| {
+            if crate::interrupt::requested(String::new).is_some() {
+                return RowWork::default();
+            }
             let row = row_work(mesh, visibility, quadrature, binning.as_ref(), &points, i);
             progress((n - i - 1) as u64);
             row
         })
         .collect();
-
+    crate::interrupt::check(|| {
+        let pairs: usize = work.iter().map(|w| w.visited).sum();
+        format!("the assembly of G ({pairs} facing pairs of its {n} patches integrated)")
+    })?;
     let exchange = sparse_rows(mesh, k, &work);
     let (mut d, mut report) = balance(&exchange, &cell_targets(mesh, directions, &work, &exchange, true));
     report.by_cell = true;
@@ -85,12 +94,12 @@ pub fn assemble(
             *v *= d[r] * d[c] / areas[r / k];
         }
     }
-    Assembled {
+    Ok(Assembled {
         g,
         balance: report,
         pairs: work.iter().map(|w| w.visited).sum(),
         rays: work.iter().map(|w| w.rays).sum(),
-    }
+    })
 }
 
 /// Row-sum mismatch up to which balancing counts as converged.

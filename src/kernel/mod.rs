@@ -11,6 +11,7 @@ pub mod hierarchy;
 mod matrix;
 pub mod memory;
 mod operator;
+mod reciprocity;
 mod transport;
 
 pub use assembly::{Assembled, assemble, facing};
@@ -20,4 +21,5 @@ pub use forecast::{Forecast, OverLimit};
 pub use matrix::{Precision, TransportMatrix, spmv};
 pub use memory::{Estimate, Footprint, TooLarge};
 pub use operator::{Explicit, Factored, Kernel};
+pub use reciprocity::sent_shares;
 pub use transport::Transport;

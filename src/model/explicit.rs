@@ -1,18 +1,20 @@
 //! The explicit model (`design.md` §3): the uniform mesh, every facing pair of patches
 //! integrated and balanced into `G`, the luminaires' direct light on every patch.
 
+use super::range::{check_blocks, check_source, check_transport};
 use super::source::source_term;
-use super::system::{AssemblyStats, Model, ModelOptions};
+use super::system::{AssemblyStats, Model, ModelError, ModelOptions};
 use crate::geometry::Mesh;
-use crate::kernel::{Assembled, Estimate, Footprint, Kernel, TooLarge, Transport, TransportMatrix, assemble};
+use crate::kernel::{Assembled, Estimate, Footprint, Kernel, Transport, TransportMatrix, assemble};
 use crate::luminaire::{Source, direct_light};
 use crate::progress::Progress;
 use crate::scene::Scene;
 use crate::visibility::{Faces, Visibility};
 use std::time::Instant;
 
-/// Meshes, checks the kernel's estimate against the memory limit, assembles.
-pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> Result<Model, TooLarge> {
+/// Meshes, checks the kernel's estimate against the memory limit, assembles; checks the
+/// kernel and the source term for values out of range (`super::range`).
+pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> Result<Model, ModelError> {
     let t = Instant::now();
     let mesh = Mesh::build(&scene.surfaces, options.patch_size);
     let directions = options.directions.clone();
@@ -33,12 +35,14 @@ pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> 
     let n = mesh.len() as u64;
     progress.begin("assembly", n * n.saturating_sub(1) / 2);
     let Assembled { g, balance, pairs, rays } =
-        assemble(&mesh, &visibility, &directions, &options.quadrature, &|done| progress.advance(done));
+        assemble(&mesh, &visibility, &directions, &options.quadrature, &|done| progress.advance(done))?;
     progress.end();
-    let blocks = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
+    let blocks: Vec<_> = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
+    check_blocks(scene, &blocks, directions.len())?;
     let patch_material = mesh.patches.iter().map(|p| p.material).collect();
     let twin = mesh.patches.iter().map(|p| p.twin).collect();
     let g = Transport::Explicit(TransportMatrix::new(g, options.precision));
+    check_transport(scene, &mesh, &g, directions.len())?;
     let kernel = Kernel { g, directions, blocks, patch_material, twin };
     let kernel_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
@@ -54,6 +58,7 @@ pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> 
         balance: Some(balance),
     };
     let l0 = source_term(&kernel.blocks, &mesh, &direct, kernel.cells());
+    check_source(scene, &mesh, &direct, &l0, kernel.cells())?;
     let faces = Faces::of(&mesh);
     Ok(Model { mesh, visibility, faces, kernel, l0, sources, direct, stats, hierarchy: None })
 }

@@ -9,6 +9,7 @@
 //! use GMRES(30) to [`REFINEMENT_RESIDUAL`]; the final solve is the caller's, with the
 //! case's method and stopping rule, on the final leaves.
 
+use super::range::{check_blocks, check_source, check_transport};
 use super::source::source_term;
 use super::system::{AssemblyStats, HierarchyRecord, Model, ModelError, ModelOptions, Refinement};
 use crate::directions::DirectionSet;
@@ -75,12 +76,14 @@ pub fn build(
     let directions = options.directions.clone();
     let k = directions.len();
     let blocks: Vec<Block> = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
+    check_blocks(scene, &blocks, k)?;
     let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
     let mesh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let root_visibility = Visibility::build(&roots);
     let root_light = seed_light(&sources, &roots, &root_visibility, &directions);
     let root_l0 = source_term(&blocks, &roots, &root_light, k);
+    check_source(scene, &roots, &root_light, &root_l0, k)?;
     let root_light_seconds = t.elapsed().as_secs_f64();
     let mut light_seconds = 0.0;
     let t = Instant::now();
@@ -90,10 +93,13 @@ pub fn build(
     let mut h = Hierarchy::new(&roots, directions.clone(), blocks.clone(), hierarchy_options, &root_l0);
     let mut cache = LightCache { lights: Vec::new() };
     let mut source = |h: &mut Hierarchy| -> Result<Vec<f64>, ModelError> {
+        crate::interrupt::check(|| format!("the hierarchical kernel's refinement pass {}", h.history().len() + 1))?;
         let start = Instant::now();
         h.split_leaves(&|visibility, patch, albedo, epsilon| varies(&sources, visibility, patch, albedo, epsilon));
         let direct = cache.on_leaves(h, &sources, &directions);
-        let l0 = source_term(&blocks, &h.leaf_mesh(), &direct, k);
+        let leaves = h.leaf_mesh();
+        let l0 = source_term(&blocks, &leaves, &direct, k);
+        check_source(scene, &leaves, &direct, &l0, k)?;
         light_seconds += start.elapsed().as_secs_f64();
         Ok(l0)
     };
@@ -128,7 +134,9 @@ pub fn build(
     let record = HierarchyRecord { refinement, roots: roots.len(), history, census: h.census() };
     let patch_material = mesh.patches.iter().map(|p| p.material).collect();
     let twin = mesh.patches.iter().map(|p| p.twin).collect();
-    let kernel = Kernel { g: Transport::Hierarchical(Box::new(operator)), directions, blocks, patch_material, twin };
+    let g = Transport::Hierarchical(Box::new(operator));
+    check_transport(scene, &mesh, &g, k)?;
+    let kernel = Kernel { g, directions, blocks, patch_material, twin };
     let faces = Faces::of(&mesh);
     Ok(Model { mesh, visibility, faces, kernel, l0, sources, direct, stats, hierarchy: Some(record) })
 }

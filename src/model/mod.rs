@@ -14,11 +14,13 @@ mod explicit;
 mod fingerprint;
 mod group;
 mod hierarchical;
+mod range;
 mod reuse;
 mod source;
 mod system;
 
 pub use fingerprint::{Change, Fingerprint, KERNEL_FORMAT, Part, Stamp};
+pub use range::{OutOfRange, check_transport, locate, place};
 pub use reuse::{NotThisMesh, StoredParts};
 pub use source::SourceTerm;
 pub use system::{AssemblyStats, HierarchyRecord, Model, ModelError, ModelOptions, Refinement};
@@ -52,7 +54,7 @@ impl Model {
     pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> Result<Model, ModelError> {
         Model::forecast(scene, options).check(options.memory_limit)?;
         match scene.discretization.assembly {
-            Assembly::Explicit => Ok(explicit::build(scene, options, progress)?),
+            Assembly::Explicit => explicit::build(scene, options, progress),
             Assembly::Hierarchical { tolerance, smallest } => {
                 hierarchical::build(scene, options, Refinement { tolerance, smallest }, progress)
             }

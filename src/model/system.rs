@@ -2,8 +2,10 @@
 //! (mesh, ray caster, kernel, source term, luminaires), how it is discretized, what its
 //! assembly cost, and why none was built.
 
+use super::range::OutOfRange;
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
+use crate::interrupt::Interrupted;
 use crate::kernel::hierarchy::{Census, Pass};
 use crate::kernel::{BalanceReport, Kernel, OverLimit, Precision, TooLarge};
 use crate::luminaire::{DirectLight, Source};
@@ -48,6 +50,12 @@ pub enum ModelError {
     OverLimit(#[from] OverLimit),
     #[error(transparent)]
     TooLarge(#[from] TooLarge),
+    /// A value of the source term or the kernel that no solve can carry.
+    #[error(transparent)]
+    OutOfRange(#[from] OutOfRange),
+    /// A signal asked the process to stop.
+    #[error(transparent)]
+    Interrupted(#[from] Interrupted),
     /// A solve between the hierarchy's refinement passes failed.
     #[error("refining the hierarchical kernel: {0}")]
     Refinement(#[from] SolveError),

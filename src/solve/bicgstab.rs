@@ -14,7 +14,7 @@ pub fn bicgstab(
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = l0.len();
-    let mut history = History::start(l0)?;
+    let mut history = History::start("BiCGSTAB", l0)?;
     let scale = history.scale;
     let a = |v: &[f64], out: &mut [f64]| {
         kernel.apply(v, out);
@@ -27,13 +27,13 @@ pub fn bicgstab(
         *ri = l + *ri - xi;
     }
     let mut applications = 1;
-    progress(0, history.record(residual / scale, applications));
+    progress(0, history.record(residual / scale, applications, &r)?);
     let r_hat = r.clone();
     let (mut p, mut v, mut s, mut t) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let (mut rho, mut alpha, mut omega) = (1.0, 1.0, 1.0);
     for iteration in 1..=params.max_iterations {
         if residual / scale <= params.tolerance {
-            return Ok((x, history.finish("BiCGSTAB", iteration - 1)));
+            return Ok((x, history.finish(iteration - 1)));
         }
         let rho_next = dot(&r_hat, &r);
         if rho_next == 0.0 || omega == 0.0 {
@@ -58,7 +58,7 @@ pub fn bicgstab(
             *ri = si - omega * ti;
         }
         residual = dot(&r, &r).sqrt();
-        progress(iteration, history.record(residual / scale, applications));
+        progress(iteration, history.record(residual / scale, applications, &r)?);
     }
     Err(SolveError::NoConvergence {
         iterations: params.max_iterations,

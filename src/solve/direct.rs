@@ -8,6 +8,7 @@
 use super::history::History;
 use super::history::residual_norm;
 use super::outcome::{SolveError, SolveInfo, SolveParams};
+use super::range::OutOfRange;
 use crate::kernel::Explicit;
 use faer::linalg::solvers::Solve;
 use faer::sparse::{SparseColMat, Triplet};
@@ -51,7 +52,8 @@ fn lu(
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = k.dim();
-    let mut history = History::start(l0)?;
+    let method = if sparse { "direct (sparse LU)" } else { "direct (dense LU)" };
+    let mut history = History::start(method, l0)?;
     let need = 8.0 * (n as f64) * (n as f64) * 2.0;
     if need > limit as f64 {
         let gib = (1u64 << 30) as f64;
@@ -62,15 +64,21 @@ fn lu(
             limit as f64 / gib
         )));
     }
+    let mut row_sums = vec![0.0; n];
+    k.apply(&vec![1.0; n], &mut row_sums);
+    if row_sums.iter().any(|v| !v.is_finite()) {
+        let range = OutOfRange::of(method, None, "a row sum of K", f64::NAN, &row_sums);
+        return Err(SolveError::OutOfRange(Box::new(range)));
+    }
     let rhs = Col::<f64>::from_fn(n, |i| l0[i]);
-    let (x, method): (Col<f64>, &'static str) = if !sparse {
+    let x: Col<f64> = if !sparse {
         let mut a = Mat::<f64>::identity(n, n);
         for (i, row) in k.0.outer_iterator().enumerate() {
             for (j, &v) in row.iter() {
                 a[(i, j)] -= v;
             }
         }
-        (a.partial_piv_lu().solve(&rhs), "direct (dense LU)")
+        a.partial_piv_lu().solve(&rhs)
     } else {
         let mut triplets: Vec<Triplet<usize, usize, f64>> = (0..n).map(|i| Triplet::new(i, i, 1.0)).collect();
         for (i, row) in k.0.outer_iterator().enumerate() {
@@ -83,12 +91,16 @@ fn lu(
             iterations: 0,
             why: "the factorization failed (singular I − K?)",
         })?;
-        (lu.solve(&rhs), "direct (sparse LU)")
+        lu.solve(&rhs)
     };
     let x: Vec<f64> = (0..n).map(|i| x[i]).collect();
+    if x.iter().any(|v| !v.is_finite()) {
+        // L0 and K are finite (checked above): a zero pivot.
+        return Err(SolveError::Singular { method, growth: f64::INFINITY });
+    }
     let mut scratch = vec![0.0; n];
     let residual = residual_norm(k, l0, &x, &mut scratch) / history.scale;
-    history.record(residual, 1);
+    history.record(residual, 1, &x)?;
     progress(1, residual);
-    Ok((x, history.finish(method, 0)))
+    Ok((x, history.finish(0)))
 }

@@ -15,7 +15,7 @@ pub fn gauss_seidel(
     params: &SolveParams,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
-    let mut history = History::start(l0)?;
+    let mut history = History::start("Gauss-Seidel", l0)?;
     let scale = history.scale;
     let m = &k.0;
     let (indptr, indices, data) = (m.indptr(), m.indices(), m.data());
@@ -23,11 +23,11 @@ pub fn gauss_seidel(
     let mut x = l0.to_vec();
     let mut scratch = vec![0.0; l0.len()];
     let mut applications = 1;
-    let mut residual = history.record(residual_norm(k, l0, &x, &mut scratch) / scale, applications);
+    let mut residual = history.record(residual_norm(k, l0, &x, &mut scratch) / scale, applications, &scratch)?;
     progress(0, residual);
     for sweep in 1..=params.max_iterations {
         if residual <= params.tolerance {
-            return Ok((x, history.finish("Gauss-Seidel", sweep - 1)));
+            return Ok((x, history.finish(sweep - 1)));
         }
         for i in 0..x.len() {
             let (mut sum, mut diagonal) = (l0[i], 0.0);
@@ -37,7 +37,7 @@ pub fn gauss_seidel(
             x[i] = sum / (1.0 - diagonal);
         }
         applications += 2;
-        residual = history.record(residual_norm(k, l0, &x, &mut scratch) / scale, applications);
+        residual = history.record(residual_norm(k, l0, &x, &mut scratch) / scale, applications, &scratch)?;
         progress(sweep, residual);
     }
     Err(SolveError::NoConvergence {

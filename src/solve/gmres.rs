@@ -17,7 +17,7 @@ pub fn gmres(
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = l0.len();
     let m = params.restart.max(1);
-    let mut history = History::start(l0)?;
+    let mut history = History::start("GMRES", l0)?;
     let scale = history.scale;
     let mut x = l0.to_vec();
     let mut w = vec![0.0; n];
@@ -30,10 +30,10 @@ pub fn gmres(
         // r = L0 − (I − K) x = L0 + K x − x
         let beta = residual_norm(kernel, l0, &x, &mut w);
         applications += 1;
-        let cycle_start = history.record(beta / scale, applications);
+        let cycle_start = history.record(beta / scale, applications, &w)?;
         progress(iterations, cycle_start);
         if cycle_start <= params.tolerance {
-            return Ok((x, history.finish("GMRES", iterations)));
+            return Ok((x, history.finish(iterations)));
         }
         for ((b, wi), (l, xi)) in basis[0].iter_mut().zip(&w).zip(l0.iter().zip(&x)) {
             *b = (l + wi - xi) / beta;
@@ -70,7 +70,7 @@ pub fn gmres(
             g[j + 1] = -sn[j] * g[j];
             g[j] *= cs[j];
             used = j + 1;
-            let estimate = history.record(g[j + 1].abs() / scale, applications);
+            let estimate = history.record(g[j + 1].abs() / scale, applications, &w)?;
             progress(iterations, estimate);
             if estimate <= params.tolerance || norm_w <= 1e-300 || iterations >= params.max_iterations {
                 break;

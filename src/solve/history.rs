@@ -1,10 +1,14 @@
 //! The record every solver keeps: relative residual, kernel applications and time per
-//! iterate, so that methods compare on the same axes.
+//! iterate, so that methods compare on the same axes. Recording an iterate is also where
+//! every method stops on a value out of range (a residual that is not finite) and on a
+//! signal (`crate::interrupt`).
 
 use super::outcome::{SolveError, SolveInfo, norm};
+use super::range::OutOfRange;
 use std::time::Instant;
 
 pub struct History {
+    method: &'static str,
     start: Instant,
     /// `‖L0‖₂`: residuals are relative to it.
     pub scale: f64,
@@ -14,21 +18,40 @@ pub struct History {
 }
 
 impl History {
-    /// Starts the record of a solve of `x = L0 + K x`; a zero source has nothing to solve.
-    pub fn start(l0: &[f64]) -> Result<History, SolveError> {
+    /// Starts the record of `method`'s solve of `x = L0 + K x`; a zero source has nothing
+    /// to solve, and one whose norm is not finite cannot be solved.
+    pub fn start(method: &'static str, l0: &[f64]) -> Result<History, SolveError> {
         let scale = norm(l0);
         if scale == 0.0 {
             return Err(SolveError::NoSource);
         }
-        Ok(History { start: Instant::now(), scale, residuals: Vec::new(), applications: Vec::new(), times: Vec::new() })
+        if !scale.is_finite() {
+            return Err(SolveError::OutOfRange(Box::new(OutOfRange::of(
+                method,
+                None,
+                "the source term's norm ‖L0‖₂",
+                scale,
+                l0,
+            ))));
+        }
+        let (residuals, applications, times) = (Vec::new(), Vec::new(), Vec::new());
+        Ok(History { method, start: Instant::now(), scale, residuals, applications, times })
     }
 
-    /// Records the relative residual of the current iterate; returns it.
-    pub fn record(&mut self, relative_residual: f64, applications: usize) -> f64 {
+    /// Records the relative residual of the current iterate; returns it. A residual that is
+    /// not finite is an error located in `vector` (the iterate, or the vector `K` just
+    /// made), and so is a stop asked for by a signal.
+    pub fn record(&mut self, relative_residual: f64, applications: usize, vector: &[f64]) -> Result<f64, SolveError> {
+        let iteration = self.residuals.len();
+        if !relative_residual.is_finite() {
+            let range = OutOfRange::of(self.method, Some(iteration), "the residual", relative_residual, vector);
+            return Err(SolveError::OutOfRange(Box::new(range)));
+        }
+        crate::interrupt::check(|| format!("{}, iteration {iteration}", self.method))?;
         self.residuals.push(relative_residual);
         self.applications.push(applications);
         self.times.push(self.start.elapsed().as_secs_f64());
-        relative_residual
+        Ok(relative_residual)
     }
 
     pub fn last(&self) -> f64 {
@@ -44,9 +67,9 @@ impl History {
         (h[h.len() - 1] / h[h.len() - 1 - window]).powf(1.0 / window as f64)
     }
 
-    pub fn finish(self, method: &'static str, iterations: usize) -> SolveInfo {
+    pub fn finish(self, iterations: usize) -> SolveInfo {
         SolveInfo {
-            method,
+            method: self.method,
             iterations,
             applications: self.applications.last().copied().unwrap_or(0),
             residual_history: self.residuals,

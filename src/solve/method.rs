@@ -2,6 +2,7 @@
 
 use super::LinOp;
 use super::outcome::{SolveError, SolveInfo, SolveParams, norm};
+use super::range::OutOfRange;
 use super::{bicgstab, direct, direct_sparse, gauss_seidel, gmres, southwell, successive_approximation};
 use crate::kernel::{Explicit, Factored, Kernel};
 
@@ -131,7 +132,12 @@ pub fn solve(
         Method::Direct => direct(explicit()?, l0, params, progress)?,
         Method::DirectSparse => direct_sparse(explicit()?, l0, params, progress)?,
     };
-    let growth = norm(&x) / norm(l0);
+    let size = norm(&x);
+    if !size.is_finite() {
+        let range = OutOfRange::of(info.method, Some(info.iterations), "the solution's norm ‖x‖₂", size, &x);
+        return Err(SolveError::OutOfRange(Box::new(range)));
+    }
+    let growth = size / norm(l0);
     if growth.is_nan() || growth > MAX_GROWTH {
         return Err(SolveError::Singular { method: info.method, growth });
     }

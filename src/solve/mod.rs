@@ -15,6 +15,7 @@ mod neumann;
 pub mod norms;
 pub mod orders;
 mod outcome;
+mod range;
 mod southwell;
 mod successive;
 
@@ -28,5 +29,6 @@ pub use linop::LinOp;
 pub use method::{Method, RESTART, System, solve};
 pub use neumann::successive_approximation;
 pub use outcome::{SolveError, SolveInfo, SolveParams};
+pub use range::OutOfRange;
 pub use southwell::southwell;
 pub use successive::{Projection, Successive};

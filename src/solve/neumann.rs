@@ -19,7 +19,7 @@ pub fn successive_approximation(
     params: &SolveParams,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
-    let mut history = History::start(l0)?;
+    let mut history = History::start("successive approximation", l0)?;
     let scale = history.scale;
     let mut x = l0.to_vec();
     let mut next = vec![0.0; l0.len()];
@@ -30,10 +30,10 @@ pub fn successive_approximation(
             *y += l;
             sq += (*y - xi) * (*y - xi);
         }
-        let residual = history.record(sq.sqrt() / scale, n + 1);
+        let residual = history.record(sq.sqrt() / scale, n + 1, &next)?;
         progress(n, residual);
         if residual <= params.tolerance {
-            return Ok((x, history.finish("successive approximation", n)));
+            return Ok((x, history.finish(n)));
         }
         let ratio = history.mean_ratio(WINDOW);
         if n >= 2 * WINDOW && ratio > 1.0 - 1e-6 {

@@ -1,6 +1,8 @@
 //! The one shape of every solver (`design.md` §4): the stopping rule in, what the solve
 //! did or why it failed out, and the vector helpers the methods share.
 
+use super::range::OutOfRange;
+use crate::interrupt::Interrupted;
 use thiserror::Error;
 
 /// What every method takes: the stopping rule of the iterative ones, GMRES's restart
@@ -86,6 +88,12 @@ pub enum SolveError {
     Singular { method: &'static str, growth: f64 },
     #[error("{method} needs {needs}")]
     Unsupported { method: &'static str, needs: &'static str },
+    /// An overflow or NaN in the iterate, or a source term whose norm overflows.
+    #[error("{0}")]
+    OutOfRange(Box<OutOfRange>),
+    /// A signal asked the process to stop.
+    #[error(transparent)]
+    Interrupted(#[from] Interrupted),
 }
 
 pub(crate) fn norm(x: &[f64]) -> f64 {

@@ -21,7 +21,7 @@ pub fn southwell(
     if areas.len() != n {
         return Err(SolveError::Unsupported { method: "Southwell", needs: "one direction cell (K = 1)" });
     }
-    let mut history = History::start(l0)?;
+    let mut history = History::start("Southwell", l0)?;
     let scale = history.scale;
     let columns = k.0.to_csc();
     let mut x = l0.to_vec();
@@ -30,10 +30,10 @@ pub fn southwell(
     let mut applications = 0;
     for sweep in 0..=params.max_iterations {
         applications += 1;
-        let residual = history.record(residual_norm(k, l0, &x, &mut scratch) / scale, applications);
+        let residual = history.record(residual_norm(k, l0, &x, &mut scratch) / scale, applications, &scratch)?;
         progress(sweep, residual);
         if residual <= params.tolerance {
-            return Ok((x, history.finish("Southwell", sweep)));
+            return Ok((x, history.finish(sweep)));
         }
         for _ in 0..n {
             let j = (0..n).max_by(|&a, &b| (areas[a] * unshot[a]).total_cmp(&(areas[b] * unshot[b]))).unwrap_or(0);

@@ -7,6 +7,7 @@
 mod bases;
 mod kernel;
 mod light_scenes;
+mod openings;
 mod solve;
 mod spectrum;
 mod view;

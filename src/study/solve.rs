@@ -149,7 +149,8 @@ pub fn solve_case(
         (Some(r), Some(s)) => System { operator: r, explicit: explicit.as_ref(), areas: &[], l0: s },
         _ => System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &model.l0),
     };
-    let (mut runs, failures) = run_methods(&methods, &system, &job.params, progress)?;
+    let locate = |e| crate::model::locate(e, scene, &model.mesh, system.l0.len());
+    let (mut runs, failures) = run_methods(&methods, &system, &job.params, &locate, progress)?;
     let reference = reference_run(&runs);
     let coefficients = runs[reference].1.clone();
     let field_of = |y: &[f64]| reduced.as_ref().map_or_else(|| y.to_vec(), |r| r.field(&model.l0, y));
@@ -198,12 +199,14 @@ pub fn solve_case(
 }
 
 /// Every method on `system`: the runs that succeeded with their unknowns, and the failures
-/// (an error when every method failed; the one method's own error when only one ran).
+/// (an error when every method failed; the one method's own error when only one ran; a
+/// stop asked for by a signal at once). `locate` names the place of a value out of range.
 #[allow(clippy::type_complexity)]
 fn run_methods(
     methods: &[Method],
     system: &System,
     params: &SolveParams,
+    locate: &dyn Fn(SolveError) -> SolveError,
     progress: &dyn Progress,
 ) -> Result<(Vec<(Run, Vec<f64>)>, Vec<(Method, SolveError)>), StudyError> {
     let (mut runs, mut failures) = (Vec::new(), Vec::new());
@@ -212,9 +215,9 @@ fn run_methods(
         let result =
             solve(method, system, params, &mut |n, r| progress.at(n as u64, &format!("{} {r:.1e}", method.name())));
         progress.end();
-        match result {
+        match result.map_err(locate) {
             Ok((x, info)) => runs.push((Run { method, info, difference: 0.0 }, x)),
-            Err(e) if methods.len() == 1 => return Err(e.into()),
+            Err(e) if methods.len() == 1 || matches!(e, SolveError::Interrupted(_)) => return Err(e.into()),
             Err(e) => failures.push((method, e)),
         }
     }

@@ -11,16 +11,20 @@
 //!   box, above a ceiling);
 //! * a probe or grid whose normal points into the surface it lies on, or which sees mostly
 //!   the backs of surfaces (it lies behind one);
-//! * negative escaped flux: not light but the kernel's discretization error (each row of
-//!   `G` is balanced to closure, reciprocity between rows is not exact); its size is the
-//!   bound stated, relative to the emitted flux.
+//! * negative escaped flux: not light but the kernel's discretization error. The escaped
+//!   flux is exactly `Σ Φ_j (1 − s_j)` over the columns of `G` (`kernel::sent_shares`: the
+//!   share of what a patch sends that the others receive, 1 in a closed scene); the
+//!   columns' range and their deviation from 1 weighted by the solved outgoing flux are
+//!   stated: the bound of the balance's discretization error;
+//! * light escaping through a small opening (`openings.rs`): a missing wall or a gap.
 //!
 //! The rays are stratified with fixed seeds: the same case gives the same warnings.
 
 use crate::geometry::Frame;
+use crate::kernel::sent_shares;
 use crate::luminaire::Light;
 use crate::material::cosine_direction;
-use crate::model::Model;
+use crate::model::{Model, place};
 use crate::random::Rng;
 use crate::readout::energy::EnergyBalance;
 use crate::scene::Scene;
@@ -42,20 +46,51 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
     backs(scene, model, x, energy, &mut out);
     luminaires(scene, model, &mut out);
     sensors(scene, model, &mut out);
-    let e = energy;
-    if e.escaped < -1e-9 * e.emitted.abs() {
-        out.push(format!(
-            "the escaped flux is negative ({:.4} lm, {:.3} % of the {:.4} lm emitted): no light enters from outside, \
-             so this is the kernel's discretization error (each row of G is balanced to closure, the exchange \
-             between rows is not exactly reciprocal), not a flux; readings are uncertain by about this share, \
-             {:.3} %; a smaller patch_size lowers it",
-            e.escaped,
-            -100.0 * e.escaped / e.emitted,
-            e.emitted,
-            -100.0 * e.escaped / e.emitted
-        ));
+    let shares = || {
+        let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+        sent_shares(&model.kernel, &areas)
+    };
+    if energy.escaped < -1e-9 * energy.emitted.abs() {
+        out.push(negative_escape(scene, model, x, energy, &shares()));
+    } else if energy.escaped > super::openings::ESCAPING * energy.emitted {
+        out.extend(super::openings::small_opening(scene, model, x, energy, &shares()));
     }
     out
+}
+
+/// The negative escaped flux of a closed scene explained, and bounded by the kernel's
+/// reciprocity error: the columns' sent shares `s` (`kernel::sent_shares`) against 1,
+/// weighted by the solved outgoing flux (the escaped flux is exactly `Σ Φ (1 − s)` plus
+/// the luminaires' light that lands nowhere).
+fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, shares: &[f64]) -> String {
+    let (e, k) = (energy, model.kernel.cells());
+    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+    let cells = model.kernel.directions.cells();
+    let flux = |c: usize| areas[c / k] * cells[c % k].projected * x[c].max(0.0);
+    let over: f64 = (0..shares.len()).map(|c| flux(c) * (shares[c] - 1.0).max(0.0)).sum();
+    let either: f64 = (0..shares.len()).map(|c| flux(c) * (shares[c] - 1.0).abs()).sum();
+    let sending: Vec<usize> = (0..shares.len()).filter(|&c| flux(c) > 0.0).collect();
+    let (low, high) =
+        sending.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &c| (l.min(shares[c]), h.max(shares[c])));
+    let error = |c: usize| flux(c) * (shares[c] - 1.0).abs();
+    let worst = sending.iter().copied().max_by(|&a, &b| error(a).total_cmp(&error(b)));
+    let worst = worst.map_or(String::new(), |c| {
+        format!(" (the largest part: {:.5} at {})", shares[c], place(scene, &model.mesh, c, k))
+    });
+    let share = |f: f64| 100.0 * f / e.emitted;
+    format!(
+        "the escaped flux is negative ({:.4} lm, {:.3} % of the {:.4} lm emitted): no light enters from outside, so \
+         this is the kernel's discretization error, not a flux. The kernel's columns that send light, the share \
+         of the light each patch sends that the others receive (π Σ_i A_i G_ij / (A_j μ)), lie between {low:.5} \
+         and {high:.5} where a closed scene has 1{worst}; weighted by the solved outgoing flux, their excess over 1 is {over:.4} lm \
+         (it bounds the negative escape) and their deviation either way {either:.4} lm, {:.3} % of the flux \
+         emitted: the energy balance, and readings that depend on it, are uncertain by up to that share; a smaller \
+         patch_size lowers it",
+        e.escaped,
+        -share(e.escaped),
+        e.emitted,
+        share(either)
+    )
 }
 
 /// The first surface along `direction` from `origin`: `Some(Some(surface))` for the back

@@ -47,7 +47,7 @@ fn cluster_links_agree_with_the_explicit_kernel() {
     let op = h.operator();
     let leaves = h.leaf_mesh();
     let directions = DirectionSet::single();
-    let t = assemble(&leaves, &Visibility::build(&leaves), &directions, &Quadrature::default(), &|_| {});
+    let t = assemble(&leaves, &Visibility::build(&leaves), &directions, &Quadrature::default(), &|_| {}).unwrap();
     let kernel = Kernel {
         g: Transport::Explicit(TransportMatrix::new(t.g, Precision::Double)),
         directions,

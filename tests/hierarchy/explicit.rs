@@ -20,7 +20,7 @@ fn compare(scene: Scene, directions: DirectionSet) -> (f64, f64) {
     let leaves = h.leaf_mesh();
     let visibility = Visibility::build(&leaves);
     // the same outer quadrature: with K > 1 its points decide the receiver cells
-    let t = assemble(&leaves, &visibility, &directions, &settings.quadrature, &|_| {});
+    let t = assemble(&leaves, &visibility, &directions, &settings.quadrature, &|_| {}).unwrap();
     let kernel = Kernel {
         g: Transport::Explicit(TransportMatrix::new(t.g, Precision::Double)),
         directions: directions.clone(),

@@ -5,6 +5,7 @@ mod methods;
 mod mirror;
 pub mod opal;
 mod plates;
+mod range;
 mod spectrum;
 mod spectrum_cli;
 mod sphere;

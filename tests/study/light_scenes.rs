@@ -257,8 +257,9 @@ fn the_groups_of_a_hierarchical_case_are_solved_on_its_one_hierarchy() {
     let terms: Vec<_> = g.iter().map(|g| model.source_term_of(&g.luminaires, &g.surfaces)).collect();
     assert!(terms.iter().all(|t| t.l0.len() == model.l0.len() && t.emission.len() == model.mesh.len()));
     let sum: Vec<f64> = (0..model.l0.len()).map(|i| terms.iter().map(|t| t.l0[i]).sum()).collect();
-    // The leaves' light integrated again with the leaves' ray caster, against the light the
-    // refinement cached with the roots': the same light here (measured 1e-17), the shadow
-    // rays landing on the same faces.
-    assert!(relative(&sum, &model.l0) < 1e-9, "{}", relative(&sum, &model.l0));
+    // The leaves' light integrated again with the leaves' ray caster and every shadow edge
+    // cut six levels deep, against the light the refinement cached with the roots' ray
+    // caster, its shadow edges cut only while a piece could change a leaf by the oracle's
+    // ε (`docs/hierarchy.md`, "Luminaires' light"): measured 6.8e-4 apart.
+    assert!(relative(&sum, &model.l0) < 2e-3, "{}", relative(&sum, &model.l0));
 }

@@ -6,7 +6,6 @@
 use super::layouts::Segment;
 use anyhow::{Context, Result};
 use sprs::CsMat;
-use std::io::Write;
 use std::path::Path;
 use ugo::geometry::Mesh;
 use ugo::visibility::Visibility;
@@ -57,7 +56,5 @@ pub fn export(
 }
 
 fn write(dir: &Path, name: &str, data: &[u8]) -> Result<()> {
-    let path = dir.join(name);
-    let mut file = std::fs::File::create(&path).with_context(|| format!("cannot create {}", path.display()))?;
-    file.write_all(data).with_context(|| format!("writing {}", path.display()))
+    Ok(ugo::io::write_bytes(&dir.join(name), data)?)
 }

@@ -61,6 +61,11 @@ pub fn run(o: &BenchOptions) -> Result<()> {
         layouts::dense_lu(n);
     }
     let (scene, options) = load(&o.case, &o.discretize)?;
+    // Refused before meshing, from the surfaces, like `solve` (`kernel::forecast`).
+    Model::forecast(&scene, &options).check(options.memory_limit)?;
+    if let Some(json) = &o.json {
+        super::check_writable(json)?;
+    }
     if let Assembly::Hierarchical { tolerance, smallest } = scene.discretization.assembly {
         return run_hierarchical(o, &scene, &options, (tolerance, smallest));
     }
@@ -187,8 +192,7 @@ fn occlusion(
 /// Writes `report` to `--json`, if given.
 fn write_json(o: &BenchOptions, report: &serde_json::Value) -> Result<()> {
     if let Some(path) = &o.json {
-        std::fs::write(path, serde_json::to_string_pretty(report)?)
-            .with_context(|| format!("writing {}", path.display()))?;
+        ugo::io::write_bytes(path, serde_json::to_string_pretty(report)?.as_bytes())?;
         println!("  json                  {}", path.display());
     }
     Ok(())

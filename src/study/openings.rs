@@ -1,0 +1,61 @@
+//! A scene nearly closed (issue 18, item 4): light escaping through an opening that is
+//! small against the surfaces around it is more likely a missing wall or a gap between
+//! surfaces than a window, and is warned about.
+//!
+//! The opening's area comes from reciprocity. An opening of area `A_o`, seen from inside,
+//! sees nothing but the scene's surfaces, so `Σ_j A_j F_(j→o) = A_o Σ_j F_(o→j) = A_o`; the
+//! kernel's columns give `F_(j→o)` as `1 − s_j` (`kernel::sent_shares`, per cell weighted
+//! by `μ_m/π`), summed over the columns that send light (a face pressed against another
+//! sends none), and the flux escaping from the surfaces as `Σ Φ_j (1 − s_j)` (the
+//! luminaires' light that lands nowhere is not counted: a lamp above a plane). Warned when
+//! the area is below [`SMALL`] of the surfaces' area while more than [`ESCAPING`] of the
+//! emitted flux escapes through it. A scene open by design has a large opening (the
+//! Cornell box's open front: about a sixth of its surfaces).
+
+use crate::model::Model;
+use crate::readout::energy::EnergyBalance;
+use crate::scene::Scene;
+use std::f64::consts::PI;
+
+/// Largest opening, as a share of the surfaces' area, taken for a gap.
+pub const SMALL: f64 = 0.03;
+/// Share of the emitted flux escaping above which a small opening is reported.
+pub const ESCAPING: f64 = 0.02;
+
+/// The warning for light escaping through a small opening, if any; `shares` are the
+/// kernel's columns' sent shares, `x` the solved field.
+pub fn small_opening(
+    scene: &Scene,
+    model: &Model,
+    x: &[f64],
+    energy: &EnergyBalance,
+    shares: &[f64],
+) -> Option<String> {
+    let (k, cells) = (model.kernel.cells(), model.kernel.directions.cells());
+    let mut leak = vec![0.0; scene.surfaces.len()];
+    let mut escaping = 0.0;
+    for (c, s) in shares.iter().enumerate() {
+        let p = &model.mesh.patches[c / k];
+        if x[c] > 0.0 {
+            let share = p.area * cells[c % k].projected / PI * (1.0 - s).max(0.0);
+            leak[p.surface as usize] += share;
+            escaping += PI * share * x[c];
+        }
+    }
+    let opening: f64 = leak.iter().sum();
+    let surfaces: f64 = model.mesh.patches.iter().map(|p| p.area).sum();
+    if escaping <= ESCAPING * energy.emitted || opening >= SMALL * surfaces {
+        return None;
+    }
+    let mut order: Vec<usize> = (0..leak.len()).filter(|&i| leak[i] > 0.0).collect();
+    order.sort_by(|&a, &b| leak[b].total_cmp(&leak[a]));
+    let named: Vec<String> = order.iter().take(3).map(|&i| format!("\"{}\"", scene.surfaces[i].name)).collect();
+    Some(format!(
+        "{escaping:.4} lm ({:.1} % of the flux emitted) leaves the surfaces through an opening of about \
+         {opening:.4} m², {:.2} % of the {surfaces:.4} m² of surfaces: a nearly closed scene, so a missing wall or a \
+         gap between surfaces? The surfaces that see most of it: {}",
+        100.0 * escaping / energy.emitted,
+        100.0 * opening / surfaces,
+        named.join(", ")
+    ))
+}

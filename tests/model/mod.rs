@@ -1,0 +1,3 @@
+//! Tests of the model (`ugo::model`): its values checked for range where they first appear.
+
+mod range;
