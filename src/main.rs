@@ -58,6 +58,11 @@ enum Command {
         stopping: Stopping,
         #[command(flatten)]
         kernel: cli::kernel::KernelOptions,
+        /// Also the N eigenvalues of K of largest magnitude and their eigenvectors (ugo's
+        /// Arnoldi, matrix-free), to /spectrum; runs GMRES beside successive approximation
+        /// and plots both against the rates the spectrum predicts (`<output>-spectrum.png`).
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1000))]
+        spectrum: Option<u32>,
     },
     /// Solve with several methods side by side: table, convergence plot, histories in HDF5.
     Compare {
@@ -169,6 +174,10 @@ enum Command {
         /// Final-gather rays per pixel (with `--shading gather`).
         #[arg(long, allow_negative_numbers = true, default_value_t = 64)]
         gather_rays: usize,
+        /// Draw eigenvector J of K (1 = the dominant) from the file's /spectrum (`ugo norms
+        /// --spectrum N`) instead of the field: its real part, with a signed false colour.
+        #[arg(long, value_name = "J", conflicts_with_all = ["orders", "light_scene"])]
+        mode: Option<usize>,
         /// Draw this light scene of the case (`[[light_scene]]`) instead of its own light.
         #[arg(long, value_name = "NAME")]
         light_scene: Option<String>,
@@ -225,8 +234,13 @@ fn run(command: Command) -> anyhow::Result<()> {
             let run = study::Job { methods, orders, norms, basis: basis.choice()?, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, ..Job::new(run, stopping, "") })
         }
-        Command::Norms { case, output, discretize, stopping, kernel } => {
-            let run = study::Job { methods: vec![Method::Neumann], norms: true, ..kernel.job() };
+        Command::Norms { case, output, discretize, stopping, kernel, spectrum } => {
+            let methods = match spectrum {
+                Some(_) => vec![Method::Neumann, Method::Gmres { restart: RESTART }],
+                None => vec![Method::Neumann],
+            };
+            let spectrum = spectrum.map(|n| n as usize);
+            let run = study::Job { methods, norms: true, spectrum, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, ..Job::new(run, stopping, "-norms") })
         }
         Command::Compare { case, methods, output, plot, discretize, stopping, basis, bases, photons, seed, kernel } => {
@@ -257,12 +271,21 @@ fn run(command: Command) -> anyhow::Result<()> {
             orders,
             shading,
             gather_rays,
+            mode,
             light_scene,
             view,
         } => {
             let light_scene = light_scene.as_deref();
-            let look =
-                cli::render::Look { view, exposure, false_colour, orders: &orders, shading, gather_rays, light_scene };
+            let look = cli::render::Look {
+                view,
+                exposure,
+                false_colour,
+                orders: &orders,
+                shading,
+                gather_rays,
+                mode,
+                light_scene,
+            };
             cli::render::run(&solution, &cameras, &output, &look)
         }
         Command::Trace { case, cameras, spp, probe_samples, forward, photons, seed, max_order, output, discretize } => {

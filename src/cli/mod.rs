@@ -10,6 +10,7 @@ pub mod light_scenes;
 pub mod options;
 pub mod render;
 pub mod solve;
+pub mod spectrum;
 pub mod stop;
 pub mod trace;
 

@@ -123,6 +123,8 @@ pub enum ShadingArg {
 pub enum ScaleArg {
     Log,
     Linear,
+    /// Blue negative, white 0, red positive, symmetric about 0 (eigenvectors, `--mode`).
+    Signed,
 }
 
 impl From<ScaleArg> for Scale {
@@ -130,6 +132,7 @@ impl From<ScaleArg> for Scale {
         match s {
             ScaleArg::Log => Scale::Log,
             ScaleArg::Linear => Scale::Linear,
+            ScaleArg::Signed => Scale::Signed,
         }
     }
 }

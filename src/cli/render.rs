@@ -1,13 +1,16 @@
 //! `ugo render OUT.h5`: camera images of a stored solution (or of one of its light scenes,
 //! named after it), linear EXR and sRGB PNG, and optionally a false-colour map with a
-//! legend in cd/m² and the reflection-order pictures.
+//! legend in cd/m² and the reflection-order pictures; with `--mode J`, eigenvector J of `K`
+//! from the file's `/spectrum` in a signed false colour.
 
 use super::file_name;
 use super::options::{ScaleArg, ShadingArg};
 use anyhow::{Result, bail};
 use std::path::Path;
 use std::time::Instant;
-use ugo::io::{Scale, auto_exposure, read_solution, write_exr, write_false_colour, write_png, write_triptych};
+use ugo::io::{
+    Scale, auto_exposure, read_mode, read_solution, write_exr, write_false_colour, write_png, write_triptych,
+};
 use ugo::render::{Shading, render};
 use ugo::scene::{Camera, RawCamera};
 
@@ -73,6 +76,8 @@ pub struct Look<'a> {
     pub shading: ShadingArg,
     /// Final-gather rays per pixel.
     pub gather_rays: usize,
+    /// Draw this eigenvector of `K` (from 1) instead of the field (`--mode J`).
+    pub mode: Option<usize>,
     /// The light scene drawn (`[[light_scene]]`), instead of the case's own light.
     pub light_scene: Option<&'a str>,
 }
@@ -80,19 +85,34 @@ pub struct Look<'a> {
 pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()> {
     let exposure = look.exposure;
     let shading = shading_of(look.shading, look.gather_rays)?;
-    let scale: Option<Scale> = look.false_colour.map(Scale::from);
+    let mut scale: Option<Scale> = look.false_colour.map(Scale::from);
     if let Some(l) = exposure
         && !(l.is_finite() && l > 0.0)
     {
         bail!("--exposure must be a positive luminance in cd/m², got {l}");
     }
-    let stored = read_solution(file)?;
+    let mut stored = read_solution(file)?;
+    let mut unit = "cd/m²".to_string();
+    let mut case_suffix = String::new();
+    if let Some(j) = look.mode {
+        if matches!(shading, Shading::Gather { .. }) {
+            bail!(
+                "--mode draws an eigenvector of K, which has no luminaires' light to gather: use --shading flat or smooth"
+            );
+        }
+        let mode = read_mode(file, j)?;
+        println!("ugo render: mode {j} of K, λ = {:.8} {:+.8}i (real part, max |x| = 1)", mode.re, mode.im);
+        stored.luminance = mode.vector;
+        scale = Some(scale.unwrap_or(Scale::Signed));
+        unit = format!("mode {j}");
+        case_suffix = format!("-mode-{j}");
+    }
     let cameras: Vec<Camera> = match look.view.camera()? {
         Some(camera) if names.is_empty() => vec![camera],
         Some(_) => bail!("give either --camera NAME or a camera by --position and --look-at, not both"),
         None => chosen(&stored.scene.cameras, names, &stored.scene.path)?.into_iter().cloned().collect(),
     };
-    let case = stored.scene.path.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+    let case = format!("{}{case_suffix}", stored.scene.path.file_stem().unwrap_or_default().to_string_lossy());
     let orders = chosen_orders(&stored.orders, look.orders)?;
     let (mut lit, case) = match look.light_scene {
         None => (ugo::study::lit_scene(stored), case),
@@ -123,7 +143,7 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
         println!("  {}\n  {}", exr.display(), png.display());
         if let Some(scale) = scale {
             let map = dir.join(format!("{case}-{}-false.png", file_name(&camera.name)));
-            write_false_colour(&map, &image, scale, "cd/m²")?;
+            write_false_colour(&map, &image, scale, &unit)?;
             println!("  {}", map.display());
         }
         if !orders.is_empty() {

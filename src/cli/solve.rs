@@ -99,6 +99,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         orders: s.orders.as_ref(),
         runs: &s.runs,
         norms: s.norms.as_ref(),
+        spectrum: s.spectrum.as_ref(),
         basis: basis.as_ref(),
         warnings: &s.warnings,
         kernel: s.kernel.save.as_ref(),
@@ -121,6 +122,9 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     }
     if let Some(norms) = &s.norms {
         print_norms(norms, &params, &s.runs);
+    }
+    if let Some(spectrum) = &s.spectrum {
+        super::spectrum::report(spectrum, &s.runs, &output, &scene.name)?;
     }
     if s.runs.len() > 1 || s.monte_carlo.is_some() {
         print_comparison(&s.runs, s.monte_carlo.as_ref());

@@ -19,6 +19,9 @@ pub enum IoError {
     /// A file without a usable `/kernel` group (`ugo solve --save-kernel` writes one).
     #[error("{} holds no usable kernel: {why}", path.display())]
     NotAKernel { path: PathBuf, why: String },
+    /// A file without the asked-for eigenvector in `/spectrum` (`ugo norms --spectrum N`).
+    #[error("{} holds no such mode: {why}", path.display())]
+    NoMode { path: PathBuf, why: String },
     /// A light scene the solution does not hold (`known`: the ones it holds, listed).
     #[error("{} has no light scene \"{name}\"; its light scenes: {known}", path.display())]
     NoLightScene { path: PathBuf, name: String, known: String },

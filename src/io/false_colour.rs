@@ -3,7 +3,9 @@
 //! values off.
 //!
 //! Colours run dark blue → blue → cyan → green → yellow → red over the scale; pixels
-//! below its bottom are drawn in the bottom colour, above its top in the top colour.
+//! below its bottom are drawn in the bottom colour, above its top in the top colour. A
+//! signed quantity (an eigenvector of `K`, `ugo render --mode J`) has a diverging scale
+//! centred on 0 instead: blue negative, white 0, red positive, symmetric about 0.
 
 use super::IoError;
 use super::atomic_png;
@@ -17,6 +19,8 @@ pub enum Scale {
     Linear,
     /// Four decades below the top (or down to the smallest positive pixel).
     Log,
+    /// From `−m` (blue) through 0 (white) to `m` (red), `m` the largest `|value|`.
+    Signed,
 }
 
 /// Width of the legend beside the image, pixels.
@@ -31,11 +35,32 @@ const STOPS: [(f64, (u8, u8, u8)); 6] = [
     (1.0, (220, 30, 30)),
 ];
 
+/// The diverging scale of [`Scale::Signed`]: 0.5 is zero.
+const DIVERGING: [(f64, (u8, u8, u8)); 5] = [
+    (0.0, (5, 48, 160)),
+    (0.25, (100, 150, 230)),
+    (0.5, (250, 250, 250)),
+    (0.75, (235, 120, 90)),
+    (1.0, (160, 10, 20)),
+];
+
 /// The colour of a position `t ∈ [0, 1]` on the scale.
 pub fn colour(t: f64) -> RGBColor {
+    interpolate(&STOPS, t)
+}
+
+/// The colour of a position `t ∈ [0, 1]` on `scale`'s colour map.
+fn paint(scale: Scale, t: f64) -> RGBColor {
+    match scale {
+        Scale::Signed => interpolate(&DIVERGING, t),
+        Scale::Linear | Scale::Log => colour(t),
+    }
+}
+
+fn interpolate(stops: &[(f64, (u8, u8, u8))], t: f64) -> RGBColor {
     let t = t.clamp(0.0, 1.0);
-    let i = STOPS.iter().position(|s| s.0 >= t).unwrap_or(STOPS.len() - 1).max(1);
-    let ((t0, a), (t1, b)) = (STOPS[i - 1], STOPS[i]);
+    let i = stops.iter().position(|s| s.0 >= t).unwrap_or(stops.len() - 1).max(1);
+    let ((t0, a), (t1, b)) = (stops[i - 1], stops[i]);
     let f = (t - t0) / (t1 - t0);
     let mix = |x: u8, y: u8| (x as f64 + f * (y as f64 - x as f64)).round() as u8;
     RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
@@ -43,9 +68,13 @@ pub fn colour(t: f64) -> RGBColor {
 
 /// The scale's bottom and top for `image`, cd/m².
 pub fn bounds(image: &Image, scale: Scale) -> (f64, f64) {
-    let (_, hi) = image.range();
+    let (lo, hi) = image.range();
     let top = if hi > 0.0 { hi } else { 1.0 };
     match scale {
+        Scale::Signed => {
+            let m = lo.abs().max(hi.abs());
+            if m.is_finite() && m > 0.0 { (-m, m) } else { (-1.0, 1.0) }
+        }
         Scale::Linear => (0.0, top),
         Scale::Log => {
             let smallest = image.luminance.iter().copied().filter(|&l| l > 0.0).fold(f64::INFINITY, f64::min);
@@ -57,7 +86,7 @@ pub fn bounds(image: &Image, scale: Scale) -> (f64, f64) {
 /// Position of luminance `l` on the scale `[lo, hi]`.
 pub fn position(l: f64, lo: f64, hi: f64, scale: Scale) -> f64 {
     match scale {
-        Scale::Linear => (l - lo) / (hi - lo),
+        Scale::Linear | Scale::Signed => (l - lo) / (hi - lo),
         Scale::Log => (l.max(lo).ln() - lo.ln()) / (hi.ln() - lo.ln()),
     }
 }
@@ -82,20 +111,21 @@ fn draw(
     for y in 0..image.height {
         for x in 0..image.width {
             let l = image.luminance[y * image.width + x];
-            root.draw_pixel((x as i32, y as i32), &colour(position(l, lo, hi, scale)))?;
+            root.draw_pixel((x as i32, y as i32), &paint(scale, position(l, lo, hi, scale)))?;
         }
     }
     let (bar_x, bar_top, bar_bottom) = (w as i32 + 20, 30, h as i32 - 30);
     for y in bar_top..=bar_bottom {
         let t = (bar_bottom - y) as f64 / (bar_bottom - bar_top) as f64;
-        root.draw(&Rectangle::new([(bar_x, y), (bar_x + 30, y + 1)], colour(t).filled()))?;
+        root.draw(&Rectangle::new([(bar_x, y), (bar_x + 30, y + 1)], paint(scale, t).filled()))?;
     }
     let style = ("sans-serif", 14).into_font().color(&BLACK);
     root.draw(&Text::new(unit.to_string(), (bar_x, 8), style.clone()))?;
-    for k in 0..=5 {
-        let t = k as f64 / 5.0;
+    let ticks = if scale == Scale::Signed { 4 } else { 5 };
+    for k in 0..=ticks {
+        let t = k as f64 / ticks as f64;
         let value = match scale {
-            Scale::Linear => lo + t * (hi - lo),
+            Scale::Linear | Scale::Signed => lo + t * (hi - lo),
             Scale::Log => (lo.ln() + t * (hi.ln() - lo.ln())).exp(),
         };
         let y = bar_bottom - (t * (bar_bottom - bar_top) as f64) as i32;

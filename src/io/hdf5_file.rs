@@ -7,6 +7,7 @@
 //! luminaires' direct light, which `direct_illuminance` holds alone), `/solver/{residual_history,applications,seconds}`,
 //! `/compare/<method>/…` (the same histories per method, `ugo compare`),
 //! `/orders/{orders,term_norms,partial_sums}` (the reflection-order record), `/norms` (attributes),
+//! `/spectrum/…` (the leading eigenpairs of `K`, `spectrum_file.rs`),
 //! `/energy/{surface_emitted,surface_absorbed}`,
 //! `/probes/{name,position,normal,luminance,illuminance}`, `/basis/{coefficients,psi,front,back}`
 //! (a solve in a factored angular basis),
@@ -36,7 +37,7 @@ use crate::readout::probe::ProbeReading;
 use crate::scene::Scene;
 use crate::solve::norms::Norms;
 use crate::solve::orders::OrderRecord;
-use crate::solve::{Method, SolveInfo, SolveParams};
+use crate::solve::{Method, SolveInfo, SolveParams, Spectrum};
 use glam::DVec3;
 use ndarray::{Array1, Array2, Array3};
 use std::path::Path;
@@ -59,6 +60,8 @@ pub struct Solution<'a> {
     pub runs: &'a [Run],
     /// Norms of the kernel, when computed.
     pub norms: Option<&'a Norms>,
+    /// The leading eigenpairs of `K`, when computed (`/spectrum`, `spectrum_file.rs`).
+    pub spectrum: Option<&'a Spectrum>,
     /// The angular basis of a reduced solve, when one was used.
     pub basis: Option<&'a BasisRecord<'a>>,
     /// The physics warnings of the solve (`/warnings`, one string each, empty when none).
@@ -128,6 +131,9 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     }
     if let Some(norms) = s.norms {
         write_norms(&file.create_group("norms")?, norms, s.params.tolerance)?;
+    }
+    if let Some(spectrum) = s.spectrum {
+        super::spectrum_file::write_spectrum(&file.create_group("spectrum")?, spectrum, s.model.kernel.cells())?;
     }
 
     let energy = file.create_group("energy")?;

@@ -1,6 +1,7 @@
 //! Files: the HDF5 dump of a solve (`design.md` §8) written and read back,
 //! the HDF5 file of a forward Monte Carlo estimate, convergence plots, and rendered images
-//! (linear EXR, read back for comparisons; tone-mapped PNG; false colour).
+//! (linear EXR, read back for comparisons; tone-mapped PNG; false colour), and the spectrum
+//! of `K` with its plot.
 
 mod atomic;
 mod basis_plot;
@@ -20,6 +21,8 @@ mod png_file;
 mod read;
 mod readings;
 mod readout_group;
+mod spectrum_file;
+mod spectrum_plot;
 mod triptych;
 
 pub use basis_plot::basis_plot;
@@ -36,6 +39,8 @@ pub use plot::{convergence_plot, register_font};
 pub use png_file::{auto_exposure, srgb, write_png};
 pub use read::{StoredSolution, read_solution};
 pub use readings::{write_grid_csv, write_grid_map, write_probes_csv};
+pub use spectrum_file::{Mode, read_mode};
+pub use spectrum_plot::{RateLine, spectrum_plot};
 pub use triptych::{CAPTION_HEIGHT, write_triptych};
 
 use atomic::{atomic, atomic_png};

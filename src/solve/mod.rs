@@ -3,6 +3,7 @@
 //! Every method reports the same relative residual `‖L0 + Kx − x‖₂ / ‖L0‖₂` for every
 //! iterate, the number of kernel applications and the wall time, so methods compare fairly.
 
+mod arnoldi;
 mod bicgstab;
 mod direct;
 mod gauss_seidel;
@@ -18,6 +19,7 @@ mod range;
 mod southwell;
 mod successive;
 
+pub use arnoldi::{ArnoldiError, ArnoldiParams, Eigenpair, Spectrum, arnoldi};
 pub use bicgstab::bicgstab;
 pub use direct::{direct, direct_sparse};
 pub use gauss_seidel::gauss_seidel;

@@ -1,13 +1,15 @@
 //! Pipelines that return values (`design.md` §6, the study floor): a stored solution made
 //! ready to look at, the solve of a case with every method asked for, its light scenes by
-//! superposition, the study of angular bases, and the agreement with Monte Carlo references. The command line only
-//! parses its arguments, calls these and prints what they return.
+//! superposition, the study of angular bases, the convergence rates a spectrum predicts,
+//! and the agreement with Monte Carlo references. The command line only parses its
+//! arguments, calls these and prints what they return.
 
 mod bases;
 mod kernel;
 mod light_scenes;
 mod openings;
 mod solve;
+mod spectrum;
 mod view;
 mod warnings;
 
@@ -15,5 +17,6 @@ pub use bases::{BasisRow, BasisStudy, compare_bases};
 pub use kernel::{KernelError, KernelRecord, Loaded, model_with_kernel};
 pub use light_scenes::{GroupSolves, dimmed, lit_light_scene, solve_light_scenes};
 pub use solve::{Job, MonteCarlo, Solved, StudyError, solve_case};
+pub use spectrum::{Rate, chebyshev_rate, measured_rate, rates};
 pub use view::lit_scene;
 pub use warnings::physics_warnings;

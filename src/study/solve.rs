@@ -1,8 +1,8 @@
 //! The solve of a case (`design.md` §4, §6), as `ugo solve`, `norms` and `compare` run it:
 //! the model, every method asked for on `x = L0 + K x` (in the full cell basis or a
 //! factored angular one), the reference run, and every readout of its field: patch
-//! illuminance, energy balance, probes, grids, reflection orders, norms and, on request,
-//! each run's agreement with a forward Monte Carlo estimate of the same discretization.
+//! illuminance, energy balance, probes, grids, reflection orders, norms, the leading
+//! eigenpairs of `K` (`solve/arnoldi.rs`) and, on request, each run's agreement with a forward Monte Carlo estimate of the same discretization.
 
 use super::kernel::{KernelError, KernelRecord, model_with_kernel};
 use crate::basis::{Basis, BasisError, Factorization, Reduced};
@@ -18,7 +18,9 @@ use crate::readout::probe::{ProbeReading, read_probes};
 use crate::scene::Scene;
 use crate::solve::norms::Norms;
 use crate::solve::orders::{OrderRecord, reflection_orders};
-use crate::solve::{Method, SolveError, SolveParams, System, relative_residual, solve};
+use crate::solve::{
+    ArnoldiError, ArnoldiParams, Method, SolveError, SolveParams, Spectrum, System, arnoldi, relative_residual, solve,
+};
 use crate::trace::{Agreement, TraceOptions, World, agreement, trace_photons};
 use std::path::PathBuf;
 use thiserror::Error;
@@ -32,6 +34,8 @@ pub struct Job {
     /// Reflection orders whose partial sums are recorded (`None`: 1, 8, 64 with `neumann`).
     pub orders: Option<Vec<usize>>,
     pub norms: bool,
+    /// The eigenvalues of largest magnitude of `K` to compute, with their eigenvectors.
+    pub spectrum: Option<usize>,
     /// Solve for the coefficients of this angular basis instead of the cell values.
     pub basis: Option<Basis>,
     /// Photons of a forward Monte Carlo reference to compare every run with.
@@ -52,6 +56,7 @@ impl Default for Job {
             params: SolveParams::default(),
             orders: None,
             norms: false,
+            spectrum: None,
             basis: None,
             photons: None,
             seed: 1,
@@ -74,6 +79,8 @@ pub enum StudyError {
     Basis(#[from] BasisError),
     #[error(transparent)]
     Solve(#[from] SolveError),
+    #[error(transparent)]
+    Spectrum(#[from] ArnoldiError),
     #[error("every method failed: {}", .0.iter().map(|(m, e)| format!("{}: {e}", m.name())).collect::<Vec<_>>().join("; "))]
     EveryMethodFailed(Vec<(Method, SolveError)>),
 }
@@ -100,6 +107,8 @@ pub struct Solved {
     pub grids: Vec<GridReading>,
     pub orders: Option<OrderRecord>,
     pub norms: Option<Norms>,
+    /// The leading eigenpairs of the full `K` (`--spectrum N`).
+    pub spectrum: Option<Spectrum>,
     pub monte_carlo: Option<MonteCarlo>,
     /// What the solved field says is probably not meant (`super::physics_warnings`).
     pub warnings: Vec<String>,
@@ -157,6 +166,7 @@ pub fn solve_case(
     let basis = factors.map(|f| (f, relative_residual(&factored, &model.l0, &x)));
     let orders = order_record(job, &methods, &model);
     let norms = explicit.as_ref().filter(|_| job.norms).map(Norms::of);
+    let spectrum = job.spectrum.map(|count| arnoldi(&factored, &ArnoldiParams::largest(count))).transpose()?;
     let runs = runs.into_iter().map(|(r, _)| r).collect();
     let k = model.kernel.cells();
     let field = Field::from_unknowns(&x, k);
@@ -179,6 +189,7 @@ pub fn solve_case(
         grids,
         orders,
         norms,
+        spectrum,
         monte_carlo,
         warnings: Vec::new(),
         kernel,

@@ -8,6 +8,7 @@ mod explicit;
 mod growth;
 mod model;
 mod plates;
+mod spectrum;
 
 use glam::DVec3;
 use ugo::directions::DirectionSet;

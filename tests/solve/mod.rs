@@ -6,6 +6,8 @@ mod mirror;
 pub mod opal;
 mod plates;
 mod range;
+mod spectrum;
+mod spectrum_cli;
 mod sphere;
 mod successive;
 mod warnings;
