@@ -161,7 +161,8 @@ impl Onto<'_> {
         let mut flux = 0.0;
         let least = self.least;
         let worth = |part: &ConvexPolygon| normal_share * part.area() > least;
-        let rays = cut_along_shadows(piece, 0, &escapes, &worth, &mut |part, seen| flux += normal_share * part.area() * seen);
+        let rays =
+            cut_along_shadows(piece, 0, &escapes, &worth, &mut |part, seen| flux += normal_share * part.area() * seen);
         self.rays += rays;
         self.add(-direction, flux);
     }

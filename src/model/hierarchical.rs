@@ -17,12 +17,12 @@ use crate::geometry::{Mesh, Patch};
 use crate::kernel::hierarchy::{Hierarchy, Iterated, Operator, Options, iterate, sample_points};
 use crate::kernel::{Footprint, Kernel, Transport};
 use crate::luminaire::{DirectLight, PatchLight, Source, arriving_at, incoming, patch_lights};
-use rayon::prelude::*;
 use crate::material::Block;
 use crate::progress::Progress;
 use crate::scene::Scene;
 use crate::solve::{Method, SolveParams, System, solve};
 use crate::visibility::{Faces, Visibility};
+use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::time::Instant;
 
