@@ -82,6 +82,35 @@ fn eigenvalues(area: &Area, spectrum: &Spectrum) -> Result<(), Box<dyn std::erro
     Ok(())
 }
 
+type LogChart<'a, 'b> =
+    ChartContext<'b, BitMapBackend<'a>, Cartesian2d<plotters::coord::types::RangedCoordf64, LogCoord<f64>>>;
+
+/// A panel with a linear x axis from 0 to `x_max` and a logarithmic y axis over `y`, its
+/// caption and x description in `captions`, its mesh drawn.
+fn log_chart<'a, 'b>(
+    area: &'b Area<'a>,
+    [caption, x_desc]: [&str; 2],
+    y_desc: &str,
+    x_max: f64,
+    (y_min, y_max): (f64, f64),
+) -> Result<LogChart<'a, 'b>, Box<dyn std::error::Error>> {
+    let mut chart = ChartBuilder::on(area)
+        .margin(20)
+        .x_label_area_size(50)
+        .y_label_area_size(80)
+        .caption(caption, ("sans-serif", 18))
+        .build_cartesian_2d(0.0..x_max, (y_min..y_max).log_scale())?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .label_style(("sans-serif", 15))
+        .axis_desc_style(("sans-serif", 17))
+        .draw()?;
+    Ok(chart)
+}
+
 fn histories(area: &Area, runs: &[Run], lines: &[RateLine]) -> Result<(), Box<dyn std::error::Error>> {
     let points = |r: &Run| -> Vec<(f64, f64)> {
         let i = &r.info;
@@ -91,20 +120,8 @@ fn histories(area: &Area, runs: &[Run], lines: &[RateLine]) -> Result<(), Box<dy
     let x_max = all.iter().map(|p| p.0).fold(1.0, f64::max) * 1.05;
     let y_min = all.iter().map(|p| p.1).fold(1.0, f64::min) / 3.0;
     let y_max = all.iter().map(|p| p.1).fold(y_min * 10.0, f64::max) * 3.0;
-    let mut chart = ChartBuilder::on(area)
-        .margin(20)
-        .x_label_area_size(50)
-        .y_label_area_size(80)
-        .caption("measured residuals (solid) and the rates the spectrum predicts (dashed)", ("sans-serif", 18))
-        .build_cartesian_2d(0.0..x_max, (y_min..y_max).log_scale())?;
-    chart
-        .configure_mesh()
-        .x_desc("products with K")
-        .y_desc("relative residual ‖L0 + Kx − x‖ / ‖L0‖")
-        .y_label_formatter(&|v| format!("{v:.0e}"))
-        .label_style(("sans-serif", 15))
-        .axis_desc_style(("sans-serif", 17))
-        .draw()?;
+    let captions = ["measured residuals (solid) and the rates the spectrum predicts (dashed)", "products with K"];
+    let mut chart = log_chart(area, captions, "relative residual ‖L0 + Kx − x‖ / ‖L0‖", x_max, (y_min, y_max))?;
     for (index, run) in runs.iter().enumerate() {
         let color = Palette99::pick(index).to_rgba();
         chart
@@ -150,20 +167,8 @@ fn settling(area: &Area, spectrum: &Spectrum, run: &Run) -> Result<(), Box<dyn s
     let x_max = deviation.iter().map(|p| p.0).fold(1.0, f64::max) + 1.0;
     let y_min = deviation.iter().map(|p| p.1).fold(d0, f64::min).max(1e-16) / 3.0;
     let y_max = deviation.iter().map(|p| p.1).fold(d0, f64::max) * 3.0;
-    let mut chart = ChartBuilder::on(area)
-        .margin(20)
-        .x_label_area_size(50)
-        .y_label_area_size(80)
-        .caption("successive approximation: the ratio settles on |λ₁|", ("sans-serif", 18))
-        .build_cartesian_2d(0.0..x_max, (y_min..y_max).log_scale())?;
-    chart
-        .configure_mesh()
-        .x_desc("iteration n")
-        .y_desc("| ‖r_n‖/‖r_(n−1)‖ − |λ₁| |")
-        .y_label_formatter(&|v| format!("{v:.0e}"))
-        .label_style(("sans-serif", 15))
-        .axis_desc_style(("sans-serif", 17))
-        .draw()?;
+    let captions = ["successive approximation: the ratio settles on |λ₁|", "iteration n"];
+    let mut chart = log_chart(area, captions, "| ‖r_n‖/‖r_(n−1)‖ − |λ₁| |", x_max, (y_min, y_max))?;
     let color = Palette99::pick(0).to_rgba();
     chart
         .draw_series(LineSeries::new(deviation.clone(), color.stroke_width(3)))?
