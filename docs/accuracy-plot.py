@@ -1,9 +1,7 @@
 #!/usr/bin/env python3
 """Plots docs/img/accuracy-vs-time.csv (written by docs/accuracy-study.sh) as an SVG:
 the largest probe error (%) against the wall time of `ugo solve` (s), log-log, one
-series per kernel (explicit = uniform patches, hierarchical). Where the ceiling probe's
-lookup missed the ceiling (column ceiling_found = no; see the study script) the point is
-hollow and its error is the other two probes'. Standard library only.
+series per kernel (explicit = uniform patches, hierarchical). Standard library only.
 
     python3 docs/accuracy-plot.py docs/img/accuracy-vs-time.csv docs/img/accuracy-vs-time.svg
 """
@@ -50,7 +48,7 @@ def axes(x, y, xt, yt):
 def main(source, target):
     rows = list(csv.DictReader(open(source)))
     xs = [float(r["wall_s"]) for r in rows]
-    ys = [float(r["max_abs_err_found_pct"]) for r in rows]
+    ys = [float(r["max_abs_err_pct"]) for r in rows]
     (x0, x1), (y0, y1) = (min(xs) / 1.3, max(xs) * 1.3), (min(ys) / 1.3, max(ys) * 1.3)
     xt = [t for d in decades(x0, x1) for t in (d, 2 * d, 5 * d) if x0 <= t <= x1]
     yt = [t for d in decades(y0, y1) for t in (d, 2 * d, 5 * d) if y0 <= t <= y1]
@@ -62,15 +60,13 @@ def main(source, target):
     out += axes(x, y, xt, yt)
     for i, (method, colour) in enumerate(COLOURS.items()):
         series = sorted((r for r in rows if r["method"] == method), key=lambda r: float(r["wall_s"]))
-        points = " ".join(f'{x(float(r["wall_s"])):.1f},{y(float(r["max_abs_err_found_pct"])):.1f}' for r in series)
+        points = " ".join(f'{x(float(r["wall_s"])):.1f},{y(float(r["max_abs_err_pct"])):.1f}' for r in series)
         out.append(f'<polyline points="{points}" fill="none" stroke="{colour}" stroke-width="1.5"/>')
         for r in series:
-            px, py = x(float(r["wall_s"])), y(float(r["max_abs_err_found_pct"]))
-            fill = colour if r["ceiling_found"] == "yes" else "#fff"
-            out.append(f'<circle cx="{px:.1f}" cy="{py:.1f}" r="3.5" fill="{fill}" stroke="{colour}"/>')
+            px, py = x(float(r["wall_s"])), y(float(r["max_abs_err_pct"]))
+            out.append(f'<circle cx="{px:.1f}" cy="{py:.1f}" r="3.5" fill="{colour}" stroke="{colour}"/>')
             out.append(f'<text x="{px + 6:.1f}" y="{py - 5:.1f}" fill="{colour}" font-size="9">{label(r)}</text>')
         out.append(f'<text x="{LEFT + 10}" y="{H - BOTTOM - 30 + 16 * i}" fill="{colour}">{method}</text>')
-    out.append(f'<text x="{LEFT + 10}" y="{H - BOTTOM - 30 + 32}" font-size="9">hollow: the ceiling probe read the floor (left out)</text>')
     out.append("</svg>")
     open(target, "w").write("\n".join(out) + "\n")
 

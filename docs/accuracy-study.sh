@@ -45,18 +45,12 @@ run() {
     /^wall / { secs = $2; kb = $4 }
     END {
       ef = 100 * (f / rf - 1); eb = 100 * (b / rb - 1); ec = 100 * (c / rc - 1)
-      e = abs(ef); if (abs(eb) > e) e = abs(eb)
-      # The ceiling probe lies on the ceiling plane; where the lookup misses the ceiling it
-      # reads as a free-space meter aimed down, i.e. the floor below it: exactly the floor
-      # probe'"'"'s reading. Such rows say "no" and leave the ceiling out of the last column.
-      on = abs(c / f - 1) > 1e-6 ? "yes" : "no"
-      found = e; if (on == "yes" && abs(ec) > found) found = abs(ec)
-      if (abs(ec) > e) e = abs(ec)
-      printf "%s,%s,%s,%s,%d,%s,%.1f,%s,%s,%s,%.3f,%.3f,%.3f,%.3f,%s,%.3f,%s\n", m, h, t, s, n, secs, kb / 1024, f, b, c, ef, eb, ec, e, on, found, load
+      e = abs(ef); if (abs(eb) > e) e = abs(eb); if (abs(ec) > e) e = abs(ec)
+      printf "%s,%s,%s,%s,%d,%s,%.1f,%s,%s,%s,%.3f,%.3f,%.3f,%.3f,%s\n", m, h, t, s, n, secs, kb / 1024, f, b, c, ef, eb, ec, e, load
     }' "$log" | tee -a "$csv"
 }
 
-echo "method,patch_size_m,link_tolerance,smallest_m,leaves,wall_s,peak_MiB,floor_cd_m2,back_cd_m2,ceiling_cd_m2,floor_err_pct,back_err_pct,ceiling_err_pct,max_abs_err_pct,ceiling_found,max_abs_err_found_pct,load1" > "$csv"
+echo "method,patch_size_m,link_tolerance,smallest_m,leaves,wall_s,peak_MiB,floor_cd_m2,back_cd_m2,ceiling_cd_m2,floor_err_pct,back_err_pct,ceiling_err_pct,max_abs_err_pct,load1" > "$csv"
 sizes="0.1 0.07 0.05 0.035"
 [[ "${FINE:-0}" == 1 ]] && sizes="$sizes 0.025"
 for h in $sizes; do

@@ -15,7 +15,7 @@ use crate::geometry::Frame;
 use crate::material::cosine_direction;
 use crate::random::Rng;
 use crate::scene::Probe;
-use crate::visibility::NO_FACE;
+use crate::visibility::{NO_FACE, standoff};
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_1_PI, PI};
 
@@ -37,7 +37,7 @@ pub fn trace_probes(world: &World, probes: &[Probe], samples: usize, options: &T
 
 fn read(world: &World, probe: &Probe, index: u64, samples: usize, options: &TraceOptions) -> ProbeEstimate {
     let (p, n) = (probe.position, probe.normal);
-    let delta = 1e-4 * world.mesh.extent();
+    let delta = standoff(&world.mesh);
     // The patch under the probe, when it lies on a surface facing the same way.
     let under = world.under(p, n);
     let ignore = under.map_or(NO_FACE, |i| world.mesh.patches[i].face);

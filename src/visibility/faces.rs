@@ -2,7 +2,7 @@
 //! which of them a ray meets or a point lies on. The one place that turns a hit face into
 //! a patch, for renders, probes and the Monte Carlo estimators.
 
-use super::{NO_FACE, Visibility};
+use super::{NEAREST_BOX, NO_FACE, Visibility};
 use crate::geometry::{Mesh, NO_TWIN};
 use glam::DVec3;
 
@@ -50,14 +50,19 @@ impl Faces {
     }
 
     /// The patch that the point `p` lies on, facing the unit `n` (normal within 60°): a
-    /// ray from `p + δn` towards `−n` (`δ = 1e-4 ×` the scene's extent) hits its face
-    /// within `2δ`.
+    /// ray from `p + δn` towards `−n` hits its face within `2δ`, `δ` the [`standoff`].
     pub fn under(&self, mesh: &Mesh, visibility: &Visibility, p: DVec3, n: DVec3) -> Option<usize> {
-        let delta = 1e-4 * mesh.extent();
+        let delta = standoff(mesh);
         let hit = visibility.closest_hit(p + n * delta, -n, NO_FACE)?;
         if hit.distance > 2.0 * delta {
             return None;
         }
         self.facing(mesh, hit.face, n).filter(|&i| mesh.patches[i].normal.dot(n) > 0.5)
     }
+}
+
+/// How far above a surface a ray starts that must find it: `1e-4` of the scene's extent,
+/// and at least twice [`NEAREST_BOX`], within which the traversal drops the face's box.
+pub fn standoff(mesh: &Mesh) -> f64 {
+    (1e-4 * mesh.extent()).max(2.0 * NEAREST_BOX)
 }

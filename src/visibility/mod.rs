@@ -15,10 +15,13 @@
 //! moves a ray by at most 1e-7 of its length. The scene may also be turned by a fixed
 //! generic rotation before the build, every query turned with it. Which layout is
 //! fastest and correct was measured with `ugo bench --layouts` (`docs/performance.md`).
+//! Its traversal also drops every box that ends within [`NEAREST_BOX`] (an absolute
+//! length, in the scene's metres) of the ray's origin, whatever the ray's own `tmin`: a
+//! query meant to find a surface just below its origin starts at least twice that far.
 
 mod faces;
 
-pub use faces::Faces;
+pub use faces::{Faces, standoff};
 
 use crate::geometry::Mesh;
 use glam::{DMat3, DVec3, Vec3A};
@@ -83,6 +86,11 @@ pub const NO_FACE: u32 = u32::MAX;
 /// The triangle that blocked a caller's last occlusion query, if any.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Blocker(Option<usize>);
+
+/// obvhs's compressed wide traversal ignores boxes whose far side lies closer than this to
+/// the ray's origin, m (its `cwbvh::node::EPSILON`): a flat box (a face of an axis-aligned
+/// room) nearer than this is never hit.
+pub const NEAREST_BOX: f64 = 1e-4;
 
 /// No blocker known yet.
 pub const NO_BLOCKER: Blocker = Blocker(None);

@@ -80,3 +80,21 @@ fn the_wide_and_binary_hierarchies_answer_every_query_alike() {
     assert!(aligned > 100, "only {aligned} axis-aligned segments of {tested}");
     assert_eq!(different, 0, "{different} of {tested} segments answered differently");
 }
+
+#[test]
+fn every_probe_of_the_cornell_box_finds_the_surface_it_lies_on() {
+    // Regression: the floor probe missed the floor at every mesh and read, as a meter in
+    // free space, the ceiling above it: the lookup's ray started 5.6e-5 m above the floor,
+    // inside the 1e-4 m within which obvhs's wide traversal drops boxes (NEAREST_BOX).
+    let scene = Scene::load(Path::new("cases/cornell-box.toml")).unwrap();
+    let expected = ["floor", "back wall", "ceiling front"];
+    for size in [0.1, 0.08, 0.05, 0.035, 0.03] {
+        let mesh = Mesh::build(&scene.surfaces, size);
+        let (v, faces) = (Visibility::build(&mesh), ugo::visibility::Faces::of(&mesh));
+        for (probe, name) in scene.probes.iter().zip(expected) {
+            let found = faces.under(&mesh, &v, probe.position, probe.normal);
+            let surface = found.map(|i| scene.surfaces[mesh.patches[i].surface as usize].name.as_str());
+            assert_eq!(surface, Some(name), "probe \"{}\" at {size} m", probe.name);
+        }
+    }
+}
