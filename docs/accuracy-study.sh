@@ -18,9 +18,9 @@ csv=docs/img/accuracy-vs-time.csv
 mkdir -p "$out" docs/img
 
 case=cases/cornell-box.toml
-ref_floor=46.7156     # ± 0.0846, floor, centre
-ref_back=71.0055      # ± 0.0707, back wall, centre
-ref_ceiling=11.9420   # ± 0.0352, ceiling, front
+ref_floor=11.9236     # ± 0.0352, floor, centre
+ref_back=151.9439     # ± 0.0709, back wall, centre
+ref_ceiling=46.7667   # ± 0.0848, ceiling, front
 
 if [[ "${REFERENCE:-0}" == 1 ]]; then
   # The case without its cameras: only the probes are traced.
