@@ -6,9 +6,15 @@
 //! corners with Wachspress coordinates (barycentric on triangles, bilinear on
 //! parallelograms). Surfaces are not blended into each other, so corners between walls
 //! stay sharp. This is a picture of the field, not a better solution: the gather is.
+//!
+//! Leaves of the hierarchical kernel meet at T-junctions: a corner of two small leaves
+//! lies at the midpoint of a larger neighbour's edge, which interpolates only between its
+//! own two corners. Such a corner is *anchored*: it takes the mean of that edge's ends
+//! (recursively, for corners at quarter points and for ends that are anchored in turn), so
+//! both sides of the edge interpolate the same values and the picture has no seam.
 
 use super::solved::Solved;
-use crate::geometry::Mesh;
+use crate::geometry::{Mesh, NO_TWIN, Patch};
 use glam::DVec3;
 use std::collections::HashMap;
 
@@ -18,22 +24,33 @@ pub struct Corners {
     corner: Vec<[u32; 4]>,
     /// Patches sharing each vertex id.
     around: Vec<Vec<u32>>,
+    /// The ends of the larger edge whose midpoint a vertex is (a T-junction), if any.
+    anchor: Vec<Option<[u32; 2]>>,
 }
+
+/// A vertex: its surface, side (of a two-sided element) and quantized position.
+type VertexKey = (u32, bool, [i64; 3]);
+
+/// How many halvings of an edge are searched for T-junctions (a leaf 2¹⁶ times smaller
+/// than its neighbour would be the limit).
+const DEEPEST_SPLIT: usize = 16;
 
 impl Corners {
     pub fn of(mesh: &Mesh) -> Corners {
         let quantum = 1e-7 * mesh.extent().max(f64::MIN_POSITIVE);
-        let mut ids: HashMap<(u32, bool, [i64; 3]), u32> = HashMap::new();
+        let key = |p: &Patch, i: usize, v: DVec3| -> VertexKey {
+            // Back-to-back twins share vertices but not sides: the side is part of the key.
+            let side = p.twin != NO_TWIN && p.twin < i as u32;
+            (p.surface, side, (v / quantum).round().as_i64vec3().to_array())
+        };
+        let mut ids: HashMap<VertexKey, u32> = HashMap::new();
         let mut around: Vec<Vec<u32>> = Vec::new();
         let mut corner = Vec::with_capacity(mesh.len());
         for (i, p) in mesh.patches.iter().enumerate() {
             let mut slots = [u32::MAX; 4];
-            // Back-to-back twins share vertices but not sides: the side is part of the key.
-            let side = p.twin != crate::geometry::NO_TWIN && p.twin < i as u32;
             for (slot, v) in slots.iter_mut().zip(p.polygon.vertices()) {
-                let key = (p.surface, side, (*v / quantum).round().as_i64vec3().to_array());
                 let next = around.len() as u32;
-                let id = *ids.entry(key).or_insert(next);
+                let id = *ids.entry(key(p, i, *v)).or_insert(next);
                 if id == next {
                     around.push(Vec::new());
                 }
@@ -42,7 +59,16 @@ impl Corners {
             }
             corner.push(slots);
         }
-        Corners { corner, around }
+        let mut anchor = vec![None; around.len()];
+        for (i, p) in mesh.patches.iter().enumerate() {
+            let v = p.polygon.vertices();
+            for e in 0..v.len() {
+                let (a, b) = (e, (e + 1) % v.len());
+                let ends = ([corner[i][a], corner[i][b]], [v[a], v[b]]);
+                anchor_midpoints(&|x| ids.get(&key(p, i, x)).copied(), ends, DEEPEST_SPLIT, &mut anchor);
+            }
+        }
+        Corners { corner, around, anchor }
     }
 
     /// The interpolated luminance of `patch` at `q` towards the unit direction `towards`.
@@ -52,19 +78,45 @@ impl Corners {
         let weights = wachspress(v, p.normal, q);
         let mut sum = 0.0;
         for (c, w) in weights.iter().take(v.len()).enumerate() {
-            if *w == 0.0 {
-                continue;
+            if *w != 0.0 {
+                sum += w * self.value(lit, self.corner[patch][c], towards, DEEPEST_SPLIT);
             }
-            let (mut value, mut area) = (0.0, 0.0);
-            for &j in &self.around[self.corner[patch][c] as usize] {
-                let a = lit.mesh.patches[j as usize].area;
-                value += a * lit.flat(j as usize, towards);
-                area += a;
-            }
-            sum += w * value / area;
         }
         sum
     }
+
+    /// The value at vertex `id`: the mean of an anchored vertex's edge ends, else the
+    /// area-weighted mean of the patches around it.
+    fn value(&self, lit: &Solved, id: u32, towards: DVec3, depth: usize) -> f64 {
+        if let (Some([a, b]), 1..) = (self.anchor[id as usize], depth) {
+            return 0.5 * (self.value(lit, a, towards, depth - 1) + self.value(lit, b, towards, depth - 1));
+        }
+        let (mut value, mut area) = (0.0, 0.0);
+        for &j in &self.around[id as usize] {
+            let a = lit.mesh.patches[j as usize].area;
+            value += a * lit.flat(j as usize, towards);
+            area += a;
+        }
+        value / area
+    }
+}
+
+/// Anchors the vertex at the midpoint of the edge `ends` (ids and positions), if there is
+/// one, to the edge's ends, and searches both halves in turn; `id_at` finds the vertex
+/// at a position on the same surface and side.
+fn anchor_midpoints(
+    id_at: &dyn Fn(DVec3) -> Option<u32>,
+    ([a, b], [pa, pb]): ([u32; 2], [DVec3; 2]),
+    depth: usize,
+    anchor: &mut [Option<[u32; 2]>],
+) {
+    let middle = 0.5 * (pa + pb);
+    let Some(m) = id_at(middle).filter(|_| depth > 0) else { return };
+    if anchor[m as usize].is_none() {
+        anchor[m as usize] = Some([a, b]);
+    }
+    anchor_midpoints(id_at, ([a, m], [pa, middle]), depth - 1, anchor);
+    anchor_midpoints(id_at, ([m, b], [middle, pb]), depth - 1, anchor);
 }
 
 /// Wachspress coordinates of `q` in the convex polygon `v` (3 or 4 vertices) of normal

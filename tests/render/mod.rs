@@ -1,5 +1,6 @@
 //! `ugo render`: pixels of known scenes, the EXR file read back, the command end to end.
 
 mod cli;
+mod junctions;
 mod pictures;
 mod pixels;
