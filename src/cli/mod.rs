@@ -16,7 +16,7 @@ pub mod trace;
 
 use anyhow::{Result, bail};
 use options::{AssemblyArg, Discretize};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use ugo::luminaire::{Light, Source};
 use ugo::model::ModelOptions;
 use ugo::photometry::Distribution;
@@ -190,4 +190,17 @@ pub fn bytes(b: f64) -> String {
 /// A table name (camera, grid) made safe for a file name.
 pub fn file_name(name: &str) -> String {
     name.chars().map(|c| if c.is_alphanumeric() || c == '-' || c == '_' { c } else { '_' }).collect()
+}
+
+/// `base` with `suffix` appended to its file name.
+pub fn sibling(base: &Path, suffix: &str) -> PathBuf {
+    let mut name = base.as_os_str().to_owned();
+    name.push(suffix);
+    PathBuf::from(name)
+}
+
+/// A file written beside `output`: its name without the extension, then `suffix`
+/// (`DIR/x.h5`, `-probes.csv` → `DIR/x-probes.csv`).
+pub fn beside(output: &Path, suffix: &str) -> PathBuf {
+    sibling(&output.with_extension(""), suffix)
 }

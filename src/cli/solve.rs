@@ -110,7 +110,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     super::kernel::print_record(&s.kernel);
     write_grids(&s.grids, &output.with_extension("").display().to_string())?;
     if !s.probes.is_empty() {
-        let csv = PathBuf::from(format!("{}-probes.csv", output.with_extension("").display()));
+        let csv = super::beside(&output, "-probes.csv");
         write_probes_csv(&csv, &s.probes)?;
         println!("  probes             {}", csv.display());
     }

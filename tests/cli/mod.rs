@@ -4,6 +4,7 @@
 mod arguments;
 mod hierarchical;
 mod light_scenes;
+mod outputs;
 
 use crate::support::{scratch, ugo};
 use std::path::{Path, PathBuf};
