@@ -73,7 +73,7 @@ enum Command {
         /// Output HDF5 file (default: `<case>-compare.h5`).
         #[arg(short, long)]
         output: Option<PathBuf>,
-        /// Convergence plot (default: `<case>-compare.png`).
+        /// Convergence plot (default: beside the output, `<output>.png`).
         #[arg(long)]
         plot: Option<PathBuf>,
         #[command(flatten)]
@@ -249,7 +249,9 @@ fn run(command: Command) -> anyhow::Result<()> {
                 anyhow::bail!("--kernel and --save-kernel do not apply to --bases (each basis assembles its own case)");
             }
             if !bases.is_empty() {
-                let plot = plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-bases.png")));
+                let plot = plot.unwrap_or_else(|| {
+                    output.map_or(PathBuf::from(format!("{stem}-bases.png")), |o| o.with_extension("png"))
+                });
                 let params = SolveParams {
                     tolerance: stopping.tolerance.unwrap_or(1e-10),
                     max_iterations: stopping.max_iterations.unwrap_or(10_000),
@@ -258,7 +260,8 @@ fn run(command: Command) -> anyhow::Result<()> {
                 let method = methods.first().copied().unwrap_or(Method::Gmres { restart: RESTART });
                 return cli::basis::study(&case, &discretize, &bases, method, params, &plot);
             }
-            let plot = Some(plot.unwrap_or_else(|| PathBuf::from(format!("{stem}-compare.png"))));
+            let output = output.unwrap_or_else(|| PathBuf::from(format!("{stem}-compare.h5")));
+            let (plot, output) = (Some(plot.unwrap_or_else(|| output.with_extension("png"))), Some(output));
             let run = study::Job { methods, basis: basis.choice()?, photons, seed, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, plot, ..Job::new(run, stopping, "-compare") })
         }

@@ -7,7 +7,7 @@
 
 use super::options::ShadingArg;
 use super::render::{describe, shading_of};
-use super::trace::sibling;
+use super::sibling;
 use anyhow::{Result, bail};
 use std::path::Path;
 use ugo::io::{StoredSolution, read_exr, read_solution};

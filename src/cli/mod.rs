@@ -16,10 +16,11 @@ pub mod trace;
 
 use anyhow::{Result, bail};
 use options::{AssemblyArg, Discretize};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use ugo::luminaire::{Light, Source};
 use ugo::model::ModelOptions;
 use ugo::photometry::Distribution;
+use ugo::progress::{line, time_left};
 use ugo::scene::{Assembly, Scene};
 
 /// Loads a case and applies the command-line overrides: the discretization to the scene
@@ -129,35 +130,77 @@ pub fn describe(source: &Source) -> String {
     }
 }
 
-/// A progress bar on stderr (hidden when stderr is not a terminal).
+/// A progress bar on stderr (hidden when stderr is not a terminal), its time left at the
+/// stage's average rate (`ugo::progress::time_left`).
 pub fn bar(total: u64, what: &str) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(total);
-    let style =
-        indicatif::ProgressStyle::with_template("{msg:>10} [{bar:40}] {percent:>3}% {elapsed_precise} eta {eta}")
-            .map(|s| s.progress_chars("=> "))
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar());
+    let left = |s: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
+        if let Some(t) = time_left(s.elapsed().as_secs_f64(), s.pos(), s.len().unwrap_or(0)) {
+            let _ = write!(w, "eta {}", clock(t));
+        }
+    };
+    let template = match total {
+        0 => "{msg:>10} {spinner} {pos} {elapsed_precise}",
+        _ => "{msg:>10} [{bar:40}] {percent:>3}% {elapsed_precise} {left}",
+    };
+    let style = indicatif::ProgressStyle::with_template(template)
+        .map(|s| s.progress_chars("=> ").with_key("left", left))
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar());
     bar.set_style(style);
     bar.set_message(what.to_string());
     bar
 }
 
-/// Progress bars on stderr, one stage at a time (hidden when stderr is not a terminal).
-#[derive(Default)]
+/// Seconds as `h:mm:ss`.
+fn clock(seconds: f64) -> String {
+    let s = seconds.round() as u64;
+    format!("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
+}
+
+/// Seconds between two progress lines when stderr is not a terminal (`UGO_PROGRESS_SECONDS`
+/// overrides it; 0 prints one per step).
+const LINE_SECONDS: f64 = 5.0;
+
+/// Progress on stderr, one stage at a time: a bar on a terminal, else a line
+/// (`ugo: progress: …`) every [`LINE_SECONDS`].
 pub struct Bars {
-    current: std::sync::Mutex<Option<indicatif::ProgressBar>>,
+    current: std::sync::Mutex<Option<Stage>>,
+    /// Seconds between lines; `None` on a terminal (the bar is drawn instead).
+    every: Option<f64>,
+}
+
+struct Stage {
+    bar: indicatif::ProgressBar,
+    printed: std::time::Instant,
+}
+
+impl Default for Bars {
+    fn default() -> Bars {
+        use std::io::IsTerminal;
+        let every = std::env::var("UGO_PROGRESS_SECONDS").ok().and_then(|s| s.parse::<f64>().ok());
+        let every = (!std::io::stderr().is_terminal()).then(|| every.unwrap_or(LINE_SECONDS));
+        Bars { current: std::sync::Mutex::new(None), every }
+    }
 }
 
 impl Bars {
     fn with(&self, f: impl FnOnce(&indicatif::ProgressBar)) {
-        if let Some(b) = self.current.lock().unwrap_or_else(|e| e.into_inner()).as_ref() {
-            f(b);
+        if let Some(stage) = self.current.lock().unwrap_or_else(|e| e.into_inner()).as_mut() {
+            f(&stage.bar);
+            let Some(every) = self.every else { return };
+            if stage.printed.elapsed().as_secs_f64() >= every {
+                stage.printed = std::time::Instant::now();
+                let b = &stage.bar;
+                eprintln!("{}", line(&b.message(), b.position(), b.length().unwrap_or(0), b.elapsed().as_secs_f64()));
+            }
         }
     }
 }
 
 impl ugo::progress::Progress for Bars {
     fn begin(&self, what: &str, total: u64) {
-        *self.current.lock().unwrap_or_else(|e| e.into_inner()) = Some(bar(total, what));
+        let stage = Stage { bar: bar(total, what), printed: std::time::Instant::now() };
+        *self.current.lock().unwrap_or_else(|e| e.into_inner()) = Some(stage);
     }
 
     fn advance(&self, done: u64) {
@@ -172,8 +215,8 @@ impl ugo::progress::Progress for Bars {
     }
 
     fn end(&self) {
-        if let Some(b) = self.current.lock().unwrap_or_else(|e| e.into_inner()).take() {
-            b.finish_and_clear();
+        if let Some(stage) = self.current.lock().unwrap_or_else(|e| e.into_inner()).take() {
+            stage.bar.finish_and_clear();
         }
     }
 }
@@ -190,4 +233,17 @@ pub fn bytes(b: f64) -> String {
 /// A table name (camera, grid) made safe for a file name.
 pub fn file_name(name: &str) -> String {
     name.chars().map(|c| if c.is_alphanumeric() || c == '-' || c == '_' { c } else { '_' }).collect()
+}
+
+/// `base` with `suffix` appended to its file name.
+pub fn sibling(base: &Path, suffix: &str) -> PathBuf {
+    let mut name = base.as_os_str().to_owned();
+    name.push(suffix);
+    PathBuf::from(name)
+}
+
+/// A file written beside `output`: its name without the extension, then `suffix`
+/// (`DIR/x.h5`, `-probes.csv` → `DIR/x-probes.csv`).
+pub fn beside(output: &Path, suffix: &str) -> PathBuf {
+    sibling(&output.with_extension(""), suffix)
 }

@@ -3,8 +3,8 @@
 //! legend in cd/m² and the reflection-order pictures; with `--mode J`, eigenvector J of `K`
 //! from the file's `/spectrum` in a signed false colour.
 
-use super::file_name;
 use super::options::{ScaleArg, ShadingArg};
+use super::{file_name, sibling};
 use anyhow::{Result, bail};
 use std::path::Path;
 use std::time::Instant;
@@ -29,11 +29,13 @@ pub struct CameraOptions {
     /// Vertical field of view, degrees (default 40).
     #[arg(long, allow_negative_numbers = true, requires = "position")]
     fov_deg: Option<f64>,
-    /// Image size `width,height`, pixels (default 512,512).
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, requires = "position")]
+    /// Image size `width,height`, pixels, of every camera rendered (default: the camera's
+    /// own; 512,512 for --position).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     resolution: Option<Vec<i64>>,
-    /// Primary rays per pixel (default 4).
-    #[arg(long, allow_negative_numbers = true, requires = "position")]
+    /// Primary rays per pixel of every camera rendered (default: the camera's own; 4 for
+    /// --position).
+    #[arg(long, allow_negative_numbers = true)]
     samples: Option<i64>,
 }
 
@@ -45,21 +47,43 @@ impl CameraOptions {
             [x, y, z] => Ok([x, y, z]),
             _ => Err(anyhow::anyhow!("{flag} takes three numbers x,y,z, got {} values", v.len())),
         };
-        let resolution = match self.resolution.as_deref() {
-            None => None,
-            Some(&[w, h]) => Some([w, h]),
-            Some(other) => bail!("--resolution takes two numbers width,height, got {} values", other.len()),
-        };
         let keys = RawCamera {
             name: "cli".into(),
             position: xyz("--position", position)?,
             look_at: xyz("--look-at", look_at)?,
             up: self.up.as_ref().map(|v| xyz("--up", v)).transpose()?,
             fov_deg: self.fov_deg,
-            resolution,
+            resolution: self.resolution()?,
             samples: self.samples,
         };
         Ok(Some(Camera::from_keys(&keys, "the command line")?))
+    }
+
+    fn resolution(&self) -> Result<Option<[i64; 2]>> {
+        match self.resolution.as_deref() {
+            None => Ok(None),
+            Some(&[w, h]) => Ok(Some([w, h])),
+            Some(other) => bail!("--resolution takes two numbers width,height, got {} values", other.len()),
+        }
+    }
+
+    /// A stored camera with `--resolution` and `--samples` applied, checked as the case's
+    /// keys are.
+    fn applied_to(&self, camera: &Camera) -> Result<Camera> {
+        if self.resolution.is_none() && self.samples.is_none() {
+            return Ok(camera.clone());
+        }
+        let [w, h] = camera.resolution.map(|n| n as i64);
+        let keys = RawCamera {
+            name: camera.name.clone(),
+            position: camera.position.to_array(),
+            look_at: camera.look_at.to_array(),
+            up: Some(camera.up.to_array()),
+            fov_deg: Some(camera.fov_deg),
+            resolution: Some(self.resolution()?.unwrap_or([w, h])),
+            samples: Some(self.samples.unwrap_or(camera.samples as i64)),
+        };
+        Ok(Camera::from_keys(&keys, "the command line")?)
     }
 }
 
@@ -110,7 +134,10 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
     let cameras: Vec<Camera> = match look.view.camera()? {
         Some(camera) if names.is_empty() => vec![camera],
         Some(_) => bail!("give either --camera NAME or a camera by --position and --look-at, not both"),
-        None => chosen(&stored.scene.cameras, names, &stored.scene.path)?.into_iter().cloned().collect(),
+        None => chosen(&stored.scene.cameras, names, &stored.scene.path)?
+            .into_iter()
+            .map(|c| look.view.applied_to(c))
+            .collect::<Result<_>>()?,
     };
     let case = format!("{}{case_suffix}", stored.scene.path.file_stem().unwrap_or_default().to_string_lossy());
     let orders = chosen_orders(&stored.orders, look.orders)?;
@@ -125,8 +152,8 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
         let start = Instant::now();
         let image = render(&lit, camera);
         let seconds = start.elapsed().as_secs_f64();
-        let stem = dir.join(format!("{case}-{}", file_name(&camera.name)));
-        let (exr, png) = (stem.with_extension("exr"), stem.with_extension("png"));
+        let stem = dir.join(format!("{case}-{}-{}", file_name(&camera.name), tag(shading)));
+        let (exr, png) = (sibling(&stem, ".exr"), sibling(&stem, ".png"));
         write_exr(&exr, &image)?;
         let white = exposure.unwrap_or_else(|| auto_exposure(&image));
         write_png(&png, &image, white)?;
@@ -142,7 +169,7 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
         println!("  luminance {lo:.4e} .. {hi:.4e} cd/m², white at {white:.4e} cd/m²");
         println!("  {}\n  {}", exr.display(), png.display());
         if let Some(scale) = scale {
-            let map = dir.join(format!("{case}-{}-false.png", file_name(&camera.name)));
+            let map = sibling(&stem, "-false.png");
             write_false_colour(&map, &image, scale, &unit)?;
             println!("  {}", map.display());
         }
@@ -160,7 +187,7 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
             }
             lit.solved.luminance = solved;
             lit.set_shading(shading);
-            let path = dir.join(format!("{case}-{}-orders.png", file_name(&camera.name)));
+            let path = sibling(&stem, "-orders.png");
             write_triptych(&path, &panels, white)?;
             println!("  {}", path.display());
         }
@@ -184,6 +211,15 @@ pub fn describe(shading: Shading) -> String {
         Shading::Flat => "flat".into(),
         Shading::Smooth => "smooth".into(),
         Shading::Gather { rays } => format!("final-gather ({rays} rays/pixel)"),
+    }
+}
+
+/// The shading as a part of a file name: `flat`, `smooth`, `gather-64`.
+fn tag(shading: Shading) -> String {
+    match shading {
+        Shading::Flat => "flat".into(),
+        Shading::Smooth => "smooth".into(),
+        Shading::Gather { rays } => format!("gather-{rays}"),
     }
 }
 

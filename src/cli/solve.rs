@@ -5,10 +5,12 @@
 use super::options::{Discretize, Stopping};
 use super::{Bars, bytes, check_writable, describe, file_name, load};
 use anyhow::{Context, Result, bail};
+use glam::DVec3;
 use std::path::{Path, PathBuf};
 use ugo::io::{
     BasisRecord, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
 };
+use ugo::luminaire::{Light, Source};
 use ugo::model::HierarchyRecord;
 use ugo::readout::grid::GridReading;
 use ugo::solve::norms::Norms;
@@ -108,14 +110,15 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     write_solution(&output, &solution).with_context(|| format!("writing {}", output.display()))?;
     summary(&solution, &output);
     super::kernel::print_record(&s.kernel);
-    write_grids(&s.grids, &output.with_extension("").display().to_string())?;
+    let lamps = positions(&s.model.sources);
+    write_grids(&s.grids, &output.with_extension("").display().to_string(), &lamps)?;
     if !s.probes.is_empty() {
-        let csv = PathBuf::from(format!("{}-probes.csv", output.with_extension("").display()));
+        let csv = super::beside(&output, "-probes.csv");
         write_probes_csv(&csv, &s.probes)?;
         println!("  probes             {}", csv.display());
     }
     if let Some(light) = &light {
-        super::light_scenes::report(light, &output, &write_grids)?;
+        super::light_scenes::report(light, &output, &|grids, stem| write_grids(grids, stem, &lamps))?;
     }
     if let Some(orders) = &s.orders {
         print_orders(orders, &s.x);
@@ -215,8 +218,19 @@ fn summary(s: &Solution, output: &Path) {
     println!("  written            {}", output.display());
 }
 
-/// Each grid's CSV and false-colour map, `<stem>-<grid>.{csv,png}`.
-fn write_grids(grids: &[GridReading], stem: &str) -> Result<()> {
+/// Where the luminaires are, for the grids' plans (a parallel light is nowhere).
+fn positions(sources: &[Source]) -> Vec<DVec3> {
+    sources
+        .iter()
+        .filter_map(|s| match &s.light {
+            Light::Point { position, .. } => Some(*position),
+            Light::Parallel { .. } => None,
+        })
+        .collect()
+}
+
+/// Each grid's CSV and plan (`ugo::io::write_grid_map`), `<stem>-<grid>.{csv,png}`.
+fn write_grids(grids: &[GridReading], stem: &str, lamps: &[DVec3]) -> Result<()> {
     if grids.is_empty() {
         return Ok(());
     }
@@ -227,7 +241,7 @@ fn write_grids(grids: &[GridReading], stem: &str) -> Result<()> {
         let base = format!("{stem}-{}", file_name(&g.grid.name));
         let (csv, png) = (PathBuf::from(format!("{base}.csv")), PathBuf::from(format!("{base}.png")));
         write_grid_csv(&csv, g)?;
-        write_grid_map(&png, g)?;
+        write_grid_map(&png, g, lamps)?;
         println!("      {}\n      {}", csv.display(), png.display());
     }
     Ok(())

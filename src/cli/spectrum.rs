@@ -3,7 +3,7 @@
 //! spectrum plot beside the HDF5 file.
 
 use anyhow::Result;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use ugo::io::{RateLine, Run, spectrum_plot};
 use ugo::solve::Spectrum;
 use ugo::study::rates;
@@ -60,7 +60,7 @@ pub fn report(spectrum: &Spectrum, runs: &[Run], output: &Path, name: &str) -> R
             lines.push(line(run, r, r.interval, "Chebyshev"));
         }
     }
-    let plot = PathBuf::from(format!("{}-spectrum.png", output.with_extension("").display()));
+    let plot = super::beside(output, "-spectrum.png");
     spectrum_plot(
         &plot,
         &format!("{name}: the spectrum of K and the convergence it predicts"),

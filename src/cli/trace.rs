@@ -6,7 +6,7 @@
 use super::file_name;
 use super::options::Discretize;
 use super::render::chosen;
-use super::{bar, check_writable, load};
+use super::{bar, check_writable, load, sibling};
 use anyhow::{Result, bail};
 use std::path::{Path, PathBuf};
 use ugo::geometry::Mesh;
@@ -184,13 +184,6 @@ fn probes(scene: &Scene, world: &World, job: &TraceJob) -> Result<()> {
         );
     }
     Ok(())
-}
-
-/// `base` with `suffix` appended to its file name.
-pub fn sibling(base: &Path, suffix: &str) -> PathBuf {
-    let mut name = base.as_os_str().to_owned();
-    name.push(suffix);
-    PathBuf::from(name)
 }
 
 fn throughput(samples: u64, rays: u64, seconds: f64, what: &str) {

@@ -9,6 +9,7 @@
 
 use super::IoError;
 use super::atomic_png;
+use super::ticks::{log_ticks, tick_label, ticks};
 use crate::render::Image;
 use plotters::prelude::*;
 use std::path::Path;
@@ -114,37 +115,34 @@ fn draw(
             root.draw_pixel((x as i32, y as i32), &paint(scale, position(l, lo, hi, scale)))?;
         }
     }
-    let (bar_x, bar_top, bar_bottom) = (w as i32 + 20, 30, h as i32 - 30);
-    for y in bar_top..=bar_bottom {
-        let t = (bar_bottom - y) as f64 / (bar_bottom - bar_top) as f64;
-        root.draw(&Rectangle::new([(bar_x, y), (bar_x + 30, y + 1)], paint(scale, t).filled()))?;
-    }
-    let style = ("sans-serif", 14).into_font().color(&BLACK);
-    root.draw(&Text::new(unit.to_string(), (bar_x, 8), style.clone()))?;
-    let ticks = if scale == Scale::Signed { 4 } else { 5 };
-    for k in 0..=ticks {
-        let t = k as f64 / ticks as f64;
-        let value = match scale {
-            Scale::Linear | Scale::Signed => lo + t * (hi - lo),
-            Scale::Log => (lo.ln() + t * (hi.ln() - lo.ln())).exp(),
-        };
-        let y = bar_bottom - (t * (bar_bottom - bar_top) as f64) as i32;
-        root.draw(&PathElement::new(vec![(bar_x + 30, y), (bar_x + 36, y)], BLACK))?;
-        root.draw(&Text::new(label(value), (bar_x + 40, y - 7), style.clone()))?;
-    }
+    legend(&root, (w as i32 + 20, 30, h as i32 - 30), scale, (lo, hi), unit)?;
     root.present()?;
     Ok(())
 }
 
-/// A legend value with four significant digits, plainly written where that is short.
-fn label(value: f64) -> String {
-    let magnitude = value.abs();
-    if value == 0.0 {
-        "0".to_string()
-    } else if (0.01..1e5).contains(&magnitude) {
-        let decimals = (3 - magnitude.log10().floor() as i32).max(0) as usize;
-        format!("{value:.decimals$}")
-    } else {
-        format!("{value:.3e}")
+/// The colour bar of `scale` over `[lo, hi]` at `(x, top, bottom)` pixels, its unit above
+/// it and round values (`super::ticks`) beside it; shared with the grids' plans.
+pub(super) fn legend(
+    root: &DrawingArea<BitMapBackend, plotters::coord::Shift>,
+    (x, top, bottom): (i32, i32, i32),
+    scale: Scale,
+    (lo, hi): (f64, f64),
+    unit: &str,
+) -> Result<(), Box<dyn std::error::Error>> {
+    for y in top..=bottom {
+        let t = (bottom - y) as f64 / (bottom - top).max(1) as f64;
+        root.draw(&Rectangle::new([(x, y), (x + 30, y + 1)], paint(scale, t).filled()))?;
     }
+    let style = ("sans-serif", 14).into_font().color(&BLACK);
+    root.draw(&Text::new(unit.to_string(), (x, top - 22), style.clone()))?;
+    let values = match scale {
+        Scale::Linear | Scale::Signed => ticks(lo, hi, 6),
+        Scale::Log => log_ticks(lo, hi, 9),
+    };
+    for value in values {
+        let y = bottom - (position(value, lo, hi, scale) * (bottom - top) as f64).round() as i32;
+        root.draw(&PathElement::new(vec![(x + 30, y), (x + 36, y)], BLACK))?;
+        root.draw(&Text::new(tick_label(value), (x + 40, y - 7), style.clone()))?;
+    }
+    Ok(())
 }

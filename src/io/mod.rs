@@ -1,7 +1,7 @@
 //! Files: the HDF5 dump of a solve (`design.md` §8) written and read back,
 //! the HDF5 file of a forward Monte Carlo estimate, convergence plots, and rendered images
-//! (linear EXR, read back for comparisons; tone-mapped PNG; false colour), and the spectrum
-//! of `K` with its plot.
+//! (linear EXR, read back for comparisons; tone-mapped PNG; false colour), the grids'
+//! plans, and the spectrum of `K` with its plot.
 
 mod atomic;
 mod basis_plot;
@@ -12,10 +12,13 @@ mod estimate_file;
 mod export;
 mod exr_file;
 mod false_colour;
+mod grid_map;
 mod hdf5_file;
 mod hierarchy_group;
+mod isolines;
 mod kernel_file;
 mod light_scene_group;
+mod plan;
 mod plot;
 mod png_file;
 mod read;
@@ -23,6 +26,7 @@ mod readings;
 mod readout_group;
 mod spectrum_file;
 mod spectrum_plot;
+mod ticks;
 mod triptych;
 
 pub use basis_plot::basis_plot;
@@ -32,15 +36,19 @@ pub use estimate_file::{EstimateFile, write_estimate};
 pub use export::{ExportError, Format, export};
 pub use exr_file::{read_exr, write_exr, write_exr_as};
 pub use false_colour::{LEGEND_WIDTH, Scale, colour, position, write_false_colour};
+pub use grid_map::{GridPlan, write_grid_map};
 pub use hdf5_file::{BasisRecord, Run, Solution, write_solution};
+pub use isolines::isolines;
 pub use kernel_file::{StoredKernel, read_kernel};
 pub use light_scene_group::{GroupField, LightSceneField, LightScenes, read_light_scene};
+pub use plan::{Axis, Frame, Layout};
 pub use plot::{convergence_plot, register_font};
 pub use png_file::{auto_exposure, srgb, write_png};
 pub use read::{StoredSolution, read_solution};
-pub use readings::{write_grid_csv, write_grid_map, write_probes_csv};
+pub use readings::{write_grid_csv, write_probes_csv};
 pub use spectrum_file::{Mode, read_mode};
 pub use spectrum_plot::{RateLine, spectrum_plot};
+pub use ticks::{log_ticks, round_125, round_top, step, tick_label, ticks};
 pub use triptych::{CAPTION_HEIGHT, write_triptych};
 
 use atomic::{atomic, atomic_png};

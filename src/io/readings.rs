@@ -1,17 +1,11 @@
 //! The lighting-engineering tables of a solve: for an illuminance grid (`[[grid]]`) a CSV
-//! of every calculation point with its illuminance in lx and a false-colour map with a
-//! legend in lx (`edge_u` to the right, `edge_v` up); for the probes a CSV of their
-//! luminance and illuminance.
+//! of every calculation point with its illuminance in lx (its plan is `super::grid_map`);
+//! for the probes a CSV of their luminance and illuminance.
 
 use super::IoError;
-use super::{Scale, write_false_colour};
 use crate::readout::grid::GridReading;
 use crate::readout::probe::ProbeReading;
-use crate::render::Image;
 use std::path::Path;
-
-/// The map's longer side, pixels (each grid cell is drawn as a square block).
-const MAP_SIZE: usize = 480;
 
 /// `u,v,x,y,z,E_lx` per point (`u`, `v` the cell indices), statistics in `#` comments.
 pub fn write_grid_csv(path: &Path, grid: &GridReading) -> Result<(), IoError> {
@@ -49,18 +43,4 @@ pub fn write_probes_csv(path: &Path, probes: &[ProbeReading]) -> Result<(), IoEr
 
 fn write_text(path: &Path, text: &str) -> Result<(), IoError> {
     super::write_bytes(path, text.as_bytes())
-}
-
-/// The false-colour map of the grid's illuminance on a linear scale from 0, in lx.
-pub fn write_grid_map(path: &Path, grid: &GridReading) -> Result<(), IoError> {
-    let [nu, nv] = grid.grid.resolution;
-    let block = (MAP_SIZE / nu.max(nv)).max(1);
-    let (width, height) = (nu * block, nv * block);
-    let luminance = (0..width * height)
-        .map(|i| {
-            let (x, y) = (i % width, i / width);
-            grid.illuminance[(nv - 1 - y / block) * nu + x / block]
-        })
-        .collect();
-    write_false_colour(path, &Image { width, height, luminance }, Scale::Linear, "lx")
 }

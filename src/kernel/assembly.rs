@@ -66,17 +66,23 @@ pub fn assemble(
     let k = directions.len();
     let points: Vec<[glam::DVec3; POINTS]> = mesh.patches.par_iter().map(sample_points).collect();
     let binning = (k > 1).then(|| Binning::new(directions));
-    let work: Vec<RowWork> = (0..n)
+    let stride = row_stride(n);
+    let shuffled: Vec<RowWork> = (0..n)
         .into_par_iter()
-        .map(|i| {
+        .map(|k| {
             if crate::interrupt::requested(String::new).is_some() {
                 return RowWork::default();
             }
+            let i = k * stride % n;
             let row = row_work(mesh, visibility, quadrature, binning.as_ref(), &points, i);
             progress((n - i - 1) as u64);
             row
         })
         .collect();
+    let mut work: Vec<RowWork> = (0..n).map(|_| RowWork::default()).collect();
+    for (k, row) in shuffled.into_iter().enumerate() {
+        work[k * stride % n] = row;
+    }
     crate::interrupt::check(|| {
         let pairs: usize = work.iter().map(|w| w.visited).sum();
         format!("the assembly of G ({pairs} facing pairs of its {n} patches integrated)")
@@ -100,6 +106,25 @@ pub fn assemble(
         pairs: work.iter().map(|w| w.visited).sum(),
         rays: work.iter().map(|w| w.rays).sum(),
     })
+}
+
+/// The order the rows are integrated in, `k ↦ k·stride mod n`: a stride near `0.618 n`
+/// coprime to `n`, so that the rows finished at any moment are spread over the whole mesh.
+/// Rows differ in cost (facing pairs, partly hidden pairs and their rays cluster by
+/// surface); spread, the pairs done measure the work done, and the progress's time left
+/// (`crate::progress::time_left`) holds (issue 17, item 6).
+pub fn row_stride(n: usize) -> usize {
+    let gcd = |mut a: usize, mut b: usize| {
+        while b != 0 {
+            (a, b) = (b, a % b);
+        }
+        a
+    };
+    let mut stride = ((n as f64 * 0.618_033_988_75).round() as usize).max(1);
+    while gcd(stride, n) > 1 {
+        stride += 1;
+    }
+    stride
 }
 
 /// Row-sum mismatch up to which balancing counts as converged.

@@ -14,7 +14,7 @@ mod operator;
 mod reciprocity;
 mod transport;
 
-pub use assembly::{Assembled, assemble, facing};
+pub use assembly::{Assembled, assemble, facing, row_stride};
 pub use balance::BalanceReport;
 pub use blocks::apply_blocks;
 pub use forecast::{Forecast, OverLimit};

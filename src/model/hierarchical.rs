@@ -89,7 +89,8 @@ pub fn build(
     let t = Instant::now();
     let hierarchy_options =
         Options { tolerance: refinement.tolerance, smallest: refinement.smallest, ..Options::default() };
-    progress.begin("refinement", hierarchy_options.passes as u64);
+    // The passes grow in cost as the links multiply: counted, with no time left forecast.
+    progress.begin("refinement", 0);
     let mut h = Hierarchy::new(&roots, directions.clone(), blocks.clone(), hierarchy_options, &root_l0);
     let mut cache = LightCache { lights: Vec::new() };
     let mut source = |h: &mut Hierarchy| -> Result<Vec<f64>, ModelError> {

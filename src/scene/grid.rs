@@ -22,6 +22,30 @@ pub struct RawGrid {
     pub resolution: [i64; 2],
     #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub normal: Option<[f64; 3]>,
+    #[serde(default)]
+    pub map: MapStyle,
+}
+
+/// `map = { scale = "log", values = true, isolines = true }` of a `[[grid]]`: how its plan
+/// (`OUT-<grid>.png`) is drawn. Every key is optional.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct MapStyle {
+    /// The colour scale: `"linear"` from 0 (default) or `"log"` (four decades).
+    pub scale: MapScale,
+    /// The value of every cell written on it, lx (where the cells are large enough).
+    pub values: bool,
+    /// Lines of equal illuminance at the legend's round values.
+    pub isolines: bool,
+}
+
+/// The colour scale of a grid's plan.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum MapScale {
+    #[default]
+    Linear,
+    Log,
 }
 
 /// `[[grid]]`: an illuminance calculation grid, the parallelogram
@@ -36,6 +60,8 @@ pub struct Grid {
     /// Unit normal of the receiving side, `±(edge_u × edge_v)`.
     pub normal: DVec3,
     pub resolution: [usize; 2],
+    /// How its plan is drawn.
+    pub map: MapStyle,
 }
 
 impl Grid {
@@ -80,5 +106,5 @@ fn grid(at: &Context, g: &RawGrid) -> Result<Grid, SceneError> {
     let (Some(nu), Some(nv)) = (points(nu), points(nv)) else {
         return Err(at.error("resolution", format!("must be two point counts from 1 to 1000, got [{nu}, {nv}]")));
     };
-    Ok(Grid { name: g.name.clone(), origin, edge_u, edge_v, normal, resolution: [nu, nv] })
+    Ok(Grid { name: g.name.clone(), origin, edge_u, edge_v, normal, resolution: [nu, nv], map: g.map })
 }

@@ -22,7 +22,7 @@ mod validate;
 pub use description::{Assembly, Camera, Discretization, Material, Probe, Scene, SolverSettings};
 pub use error::SceneError;
 pub use files::{CaseFile, CaseFiles, regular_file};
-pub use grid::Grid;
+pub use grid::{Grid, MapScale, MapStyle};
 pub use light_scene::{DEFAULT_GROUP, LightGroup, LightScene, Lighting};
 pub use schema::RawCamera;
 

@@ -111,7 +111,7 @@ fn light_scenes_are_written_read_back_and_rendered_by_name() {
 
     let o = ugo(&["render", out.to_str().unwrap(), "--light-scene", "night", "-o", dir.to_str().unwrap()]);
     assert!(o.status.success(), "{}", stderr(&o));
-    assert!(dir.join("box-night-eye.png").exists() && dir.join("box-night-eye.exr").exists());
+    assert!(dir.join("box-night-eye-flat.png").exists() && dir.join("box-night-eye-flat.exr").exists());
     let err = assert_clean_failure(&ugo(&["render", out.to_str().unwrap(), "--light-scene", "nigth"]));
     assert!(err.contains("no light scene \"nigth\"") && err.contains("\"night\", \"full\""), "{err}");
     let err = assert_clean_failure(&ugo(&["render", out.to_str().unwrap(), "--light-scene", "night", "--orders", "1"]));

@@ -4,6 +4,7 @@
 mod arguments;
 mod hierarchical;
 mod light_scenes;
+mod outputs;
 
 use crate::support::{scratch, ugo};
 use std::path::{Path, PathBuf};
@@ -17,8 +18,8 @@ fn assert_clean_failure(o: &Output) -> String {
     let err = stderr(o);
     assert!(!o.status.success(), "expected a failure");
     assert!(!err.contains("panicked"), "{err}");
-    // Warnings (`ugo: warning: …`) may come first; then the one error.
-    let first = err.lines().find(|l| !l.starts_with("ugo: warning:")).unwrap_or("");
+    // Warnings (`ugo: warning: …`) and progress lines may come first; then the one error.
+    let first = err.lines().find(|l| !l.starts_with("ugo: warning:") && !l.starts_with("ugo: progress:")).unwrap_or("");
     assert!(first.starts_with("ugo: error:"), "{err}");
     err
 }

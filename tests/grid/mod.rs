@@ -36,6 +36,7 @@ fn grid(y: f64) -> Grid {
         edge_v: DVec3::new(0.0, 0.0, 2.0),
         normal: DVec3::Y,
         resolution: [5, 4],
+        map: Default::default(),
     }
 }
 

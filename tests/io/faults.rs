@@ -10,6 +10,12 @@ fn temporaries(dir: &Path) -> Vec<PathBuf> {
     entries.map(|e| e.unwrap().path()).filter(|p| p.to_string_lossy().contains(".tmp")).collect()
 }
 
+/// Stderr without the progress lines a slow run prints every few seconds.
+fn messages(o: &Output) -> String {
+    let err = String::from_utf8_lossy(&o.stderr);
+    err.lines().filter(|l| !l.starts_with("ugo: progress:")).map(|l| format!("{l}\n")).collect()
+}
+
 /// `ugo args` under `ulimit -f blocks` (the shell's unit: 512 or 1024 bytes), with
 /// SIGXFSZ ignored when `ignore` (so writes fail with EFBIG, as on a full disk) or
 /// left to kill the process.
@@ -33,7 +39,7 @@ fn a_write_cut_short_by_a_size_limit_keeps_the_previous_file_and_fails() {
     // few KiB short whatever the shell's block size).
     for blocks in [64, (before.len() as u64 - 4096) / 1024] {
         let o = limited(blocks, true, &["solve", CASE, "-o", out.to_str().unwrap()]);
-        let err = String::from_utf8_lossy(&o.stderr);
+        let err = messages(&o);
         assert!(!o.status.success(), "ulimit -f {blocks}: exit 0");
         assert!(err.starts_with("ugo: error:") && err.contains("res.h5") && !err.contains("panicked"), "{err}");
         assert_eq!(std::fs::read(&out).unwrap(), before, "ulimit -f {blocks}: the previous file changed");
@@ -120,7 +126,7 @@ fn sigint_and_sigterm_stop_a_solve_cleanly_keeping_the_previous_file() {
         let sent = Command::new("kill").args([signal, &child.id().to_string()]).status().unwrap();
         assert!(sent.success());
         let o = child.wait_with_output().unwrap();
-        let err = String::from_utf8_lossy(&o.stderr);
+        let err = messages(&o);
         assert_eq!(o.status.code(), Some(status), "{name}: {err}");
         assert!(err.starts_with("ugo: stopped: interrupted by ") && err.contains(name), "{err}");
         assert!(err.contains("not written: ") && err.contains("res.h5") && !err.contains("panicked"), "{err}");

@@ -2,8 +2,12 @@
 //! the previous file byte for byte and exits non-zero; a process killed mid-write leaves a
 //! temporary file that the next run removes; concurrent writers of one path all succeed
 //! and leave one whole file. The kernel file (`kernel_file.rs`, `kernel_check.py`) and its
-//! exports (`export.rs`).
+//! exports (`export.rs`). The grids' plans, their round ticks and isolux lines
+//! (`grid_map.rs`, `ticks.rs`, `isolines.rs`).
 
 mod export;
 mod faults;
+mod grid_map;
+mod isolines;
 mod kernel_file;
+mod ticks;

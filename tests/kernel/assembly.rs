@@ -124,3 +124,27 @@ fn an_opaque_screen_removes_the_exchange_it_hides() {
         }
     }
 }
+
+/// Issue 17, item 6: the rows are integrated in an order that visits each once and spreads
+/// the first rows over the whole mesh, so the pairs done measure the work done.
+#[test]
+fn the_row_order_visits_every_row_once_and_spreads_the_first_ones() {
+    for n in [0, 1, 2, 3, 10, 97, 1000, 1024, 4096] {
+        let stride = ugo::kernel::row_stride(n);
+        let mut seen = vec![false; n];
+        for k in 0..n {
+            let i = k * stride % n;
+            assert!(!seen[i], "n = {n}: row {i} twice");
+            seen[i] = true;
+        }
+        if n < 100 {
+            continue;
+        }
+        // Row i has n − i − 1 pairs: each tenth of the order holds about a tenth of them.
+        let total = (n * (n - 1) / 2) as f64;
+        for tenth in 0..10 {
+            let pairs: usize = (tenth * n / 10..(tenth + 1) * n / 10).map(|k| n - k * stride % n - 1).sum();
+            assert!((pairs as f64 / total - 0.1).abs() < 0.01, "n = {n}, tenth {tenth}: {pairs} of {total}");
+        }
+    }
+}

@@ -46,8 +46,8 @@ fn render_draws_the_cornell_box_from_its_camera() {
     let images = dir.join("images");
     let o = ugo(&["render", h5.to_str().unwrap(), "-o", images.to_str().unwrap()]);
     assert!(o.status.success(), "{}", text(&o));
-    let (exr, png) = (images.join("cornell-box-camera.exr"), images.join("cornell-box-camera.png"));
-    assert!(text(&o).contains("cornell-box-camera.png"), "{}", text(&o));
+    let (exr, png) = (images.join("cornell-box-camera-flat.exr"), images.join("cornell-box-camera-flat.png"));
+    assert!(text(&o).contains("cornell-box-camera-flat.png"), "{}", text(&o));
     let (w, h, values) = read_exr(&exr);
     assert_eq!((w, h), (64, 64));
     // The light (10,000 cd/m² plus what it reflects) is the brightest thing in view.
@@ -58,7 +58,7 @@ fn render_draws_the_cornell_box_from_its_camera() {
     assert!(centre > 1.0 && centre < 5_000.0, "centre {centre}");
     let png_image = image::open(&png).unwrap();
     assert_eq!((png_image.width(), png_image.height()), (64, 64));
-    let note = std::fs::read_to_string(images.join("cornell-box-camera.png.txt")).unwrap();
+    let note = std::fs::read_to_string(images.join("cornell-box-camera-flat.png.txt")).unwrap();
     assert!(note.contains("exposure") && note.contains("cd/m2"), "{note}");
 
     let o = ugo(&["render", h5.to_str().unwrap(), "--camera", "nope", "-o", images.to_str().unwrap()]);
@@ -138,7 +138,7 @@ fn a_camera_given_on_the_command_line_renders_and_is_checked_like_a_table() {
     let view = ["--position", "0.5,0.5,0.5", "--look-at", "0.2,0.3,1", "--resolution", "16,8", "--samples", "2"];
     let o = ugo(&[&["render", h5, "-o", out.to_str().unwrap()], &view[..]].concat());
     assert!(o.status.success(), "{}", text(&o));
-    let (w, h, values) = read_exr(&out.join("furnace-box-cli.exr"));
+    let (w, h, values) = read_exr(&out.join("furnace-box-cli-flat.exr"));
     assert_eq!((w, h), (16, 8));
     assert!(values.iter().all(|&l| (l - 5.0).abs() < 1e-5), "{values:?}");
     let o = ugo(&["render", h5, "--position", "0.5,0.5,0.5", "--look-at", "0.5,0.5,1", "--fov-deg", "200"]);
@@ -148,6 +148,32 @@ fn a_camera_given_on_the_command_line_renders_and_is_checked_like_a_table() {
     assert!(!o.status.success() && text(&o).contains("not both"), "{}", text(&o));
     let o = ugo(&["render", h5, "--position", "0.5,0.5,0.5"]);
     assert!(!o.status.success() && text(&o).contains("--look-at"), "{}", text(&o));
+}
+
+/// Issue 17, item 4: a second render with another shading or size does not overwrite the
+/// first, and `--resolution` and `--samples` apply to the case's own cameras.
+#[test]
+fn renders_with_other_settings_do_not_collide() {
+    let dir = scratch("no-collision");
+    let h5 = dir.join("furnace.h5");
+    let o = ugo(&["solve", "cases/furnace-box.toml", "--patch-size", "0.5", "-o", h5.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o));
+    let (h5, out) = (h5.to_str().unwrap(), dir.to_str().unwrap());
+    let o = ugo(&["render", h5, "-o", out]);
+    assert!(o.status.success(), "{}", text(&o));
+    let o = ugo(&["render", h5, "--shading", "smooth", "--resolution", "8,6", "--samples", "1", "-o", out]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(text(&o).contains("8×6, 1 samples/pixel"), "{}", text(&o));
+    let o = ugo(&["render", h5, "--shading", "gather", "--gather-rays", "4", "--resolution", "4,4", "-o", out]);
+    assert!(o.status.success(), "{}", text(&o));
+    for (name, size) in [("flat", (32, 32)), ("smooth", (8, 6)), ("gather-4", (4, 4))] {
+        let (w, h, _) = read_exr(&dir.join(format!("furnace-box-inside-{name}.exr")));
+        assert_eq!((w, h), size, "{name}");
+        assert!(dir.join(format!("furnace-box-inside-{name}.png")).exists(), "{name}");
+    }
+    let o = ugo(&["render", h5, "--resolution", "0,6", "-o", out]);
+    assert!(!o.status.success() && text(&o).contains("the command line") && text(&o).contains("resolution"));
+    assert!(!text(&o).contains("panicked"), "{}", text(&o));
 }
 
 /// Issue 13.9: a file whose `/mesh/material_id` names a material the stored scene does not

@@ -40,7 +40,7 @@ fn the_order_pictures_show_the_furnace_partial_sums() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let o = crate::support::ugo(&["render", h5.to_str().unwrap(), "--orders", "1,8", "-o", dir.to_str().unwrap()]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let png = image::open(dir.join("furnace-box-inside-orders.png")).unwrap().to_rgb8();
+    let png = image::open(dir.join("furnace-box-inside-flat-orders.png")).unwrap().to_rgb8();
     let width = png.width() / 2;
     // L after n reflections is (1 − 0.8ⁿ⁺¹)/(1 − 0.8) everywhere; white is the solution, 5 cd/m².
     for (panel, n) in [(0, 1), (1, 8)] {

@@ -43,7 +43,7 @@ fn norms_writes_the_spectrum_and_render_draws_its_modes() {
     let images = dir.join("images");
     let o = ugo(&["render", h5.to_str().unwrap(), "--mode", "2", "-o", images.to_str().unwrap()]);
     assert!(o.status.success(), "{}", text(&o));
-    assert!(images.join("cornell-box-mode-2-camera-false.png").exists(), "{}", text(&o));
+    assert!(images.join("cornell-box-mode-2-camera-flat-false.png").exists(), "{}", text(&o));
 
     let o = ugo(&["render", h5.to_str().unwrap(), "--mode", "5", "-o", images.to_str().unwrap()]);
     assert!(!o.status.success() && text(&o).contains("modes 1 to 4"), "{}", text(&o));
