@@ -12,6 +12,7 @@ mod files;
 mod grid;
 mod light_scene;
 mod luminaire;
+mod luminaire_array;
 mod material;
 mod plausible;
 mod polygon;

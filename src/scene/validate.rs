@@ -33,14 +33,14 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let probes = probes(path, &raw.probe)?;
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid)?;
-    let mut luminaires = luminaires(path, &raw.luminaire, &files)?;
+    let (mut luminaires, tables) = luminaires(path, &source, &raw.luminaire, &files)?;
     if luminaires.is_empty() && !surfaces.iter().any(|s| s.emission.is_some_and(emits)) {
         let message = "nothing emits light: give a [[surface]] an `emission` greater than 0, or add a [[luminaire]]";
         return Err(SceneError::new(path, "", "emission", message));
     }
     let sources = Sources {
         surface_groups: raw.surface.into_iter().map(|s| s.group).collect(),
-        luminaire_groups: raw.luminaire.into_iter().map(|l| l.group).collect(),
+        luminaire_groups: tables.iter().map(|&t| raw.luminaire[t].group.clone()).collect(),
         surfaces: &mut surfaces,
         luminaires: &mut luminaires,
     };

@@ -4,6 +4,7 @@ mod assembly;
 mod degenerate;
 mod lengths;
 mod light_scenes;
+mod luminaire_arrays;
 mod luminaires;
 mod magnitudes;
 mod parse_errors;
