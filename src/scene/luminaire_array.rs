@@ -62,7 +62,7 @@ pub(super) fn members(
     let raw = array.get_ref();
     let fail =
         |key: &str, message: String| at.error(&format!("array.{key}"), format!("{}{message}", line(source, array)));
-    let count = |key: &str, n: i64| match n >= 1 && n <= MOST {
+    let count = |key: &str, n: i64| match (1..=MOST).contains(&n) {
         true => Ok(n as usize),
         false => Err(fail(key, format!("must be a count from 1 to {MOST}, got {n}"))),
     };

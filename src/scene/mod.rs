@@ -14,9 +14,11 @@ mod light_scene;
 mod luminaire;
 mod luminaire_array;
 mod material;
+mod obj;
 mod plausible;
 mod polygon;
 mod schema;
+mod shape_keys;
 mod surface;
 mod validate;
 

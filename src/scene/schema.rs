@@ -117,6 +117,11 @@ pub struct RawSurface {
     pub scale: Option<f64>,
     #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub translate: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub rotate_axis: Option<[f64; 3]>,
+    pub rotate_deg: Option<f64>,
+    /// A mesh's `usemtl` name → the `name` of a `[[material]]` (`obj.rs`).
+    pub materials: Option<serde_spanned::Spanned<std::collections::BTreeMap<String, String>>>,
 }
 
 /// `emission = { luminance = … }` or `emission = { flux = … }`.

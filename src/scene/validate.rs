@@ -29,7 +29,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         return Err(SceneError::new(path, "[[surface]]", "", "the scene has no [[surface]]"));
     }
     let materials = materials(path, &raw.material)?;
-    let mut surfaces = surfaces(path, &raw.surface, &materials, &files)?;
+    let (mut surfaces, surface_tables) = surfaces(path, &source, &raw.surface, &materials, &files)?;
     let probes = probes(path, &raw.probe)?;
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid)?;
@@ -39,7 +39,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         return Err(SceneError::new(path, "", "emission", message));
     }
     let sources = Sources {
-        surface_groups: raw.surface.into_iter().map(|s| s.group).collect(),
+        surface_groups: surface_tables.iter().map(|&t| raw.surface[t].group.clone()).collect(),
         luminaire_groups: tables.iter().map(|&t| raw.luminaire[t].group.clone()).collect(),
         surfaces: &mut surfaces,
         luminaires: &mut luminaires,

@@ -7,6 +7,7 @@ mod light_scenes;
 mod luminaire_arrays;
 mod luminaires;
 mod magnitudes;
+mod obj;
 mod parse_errors;
 mod ranges;
 mod rooms;
