@@ -14,6 +14,7 @@ mod luminaire;
 mod material;
 mod model;
 mod photometry;
+mod readout;
 mod render;
 mod robustness;
 mod scene;

@@ -17,16 +17,18 @@ mod material;
 mod obj;
 mod plausible;
 mod polygon;
+mod probe;
 mod schema;
 mod shape_keys;
 mod surface;
 mod validate;
 
-pub use description::{Assembly, Camera, Discretization, Material, Probe, Scene, SolverSettings};
+pub use description::{Assembly, Camera, Discretization, Material, Scene, SolverSettings};
 pub use error::SceneError;
 pub use files::{CaseFile, CaseFiles, regular_file};
 pub use grid::Grid;
 pub use light_scene::{DEFAULT_GROUP, LightGroup, LightScene, Lighting};
+pub use probe::{Probe, ProbeKind};
 pub use schema::RawCamera;
 
 use std::path::Path;

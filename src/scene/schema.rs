@@ -20,7 +20,7 @@ pub struct RawScene {
     #[serde(default)]
     pub surface: Vec<RawSurface>,
     #[serde(default)]
-    pub probe: Vec<RawProbe>,
+    pub probe: Vec<super::probe::RawProbe>,
     #[serde(default)]
     pub camera: Vec<RawCamera>,
     #[serde(default)]
@@ -130,17 +130,6 @@ pub struct RawSurface {
 pub struct RawEmission {
     pub luminance: Option<f64>,
     pub flux: Option<f64>,
-}
-
-/// `[[probe]]`.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawProbe {
-    pub name: String,
-    #[serde(deserialize_with = "super::arrays::exact")]
-    pub position: [f64; 3],
-    #[serde(deserialize_with = "super::arrays::exact")]
-    pub normal: [f64; 3],
 }
 
 /// `[[camera]]`.

@@ -1,20 +1,21 @@
 //! Checks the raw tables of a case file and builds the runtime [`Scene`].
 //!
 //! Owns every rule of `design.md` §7 that serde cannot express for the scene as a whole
-//! and its small tables (`[scene]`, `[discretization]`, `[solver]`, probes, cameras); the
+//! and its small tables (`[scene]`, `[discretization]`, `[solver]`, cameras); the
 //! large tables have their own files (`material.rs`, `surface.rs`, `grid.rs`,
-//! `luminaire.rs`). Each failure is a [`SceneError`] naming the table
+//! `luminaire.rs`, `probe.rs`). Each failure is a [`SceneError`] naming the table
 //! (`[[surface]] "floor" (#3)`) and the key.
 
 use super::check::{Context, REL_TOL, show, unique_names};
-use super::description::{Assembly, Camera, Discretization, Probe, Scene, SolverSettings};
+use super::description::{Assembly, Camera, Discretization, Scene, SolverSettings};
 use super::error::SceneError;
 use super::files::CaseFiles;
 use super::grid::grids;
 use super::light_scene::{Sources, lighting};
 use super::luminaire::luminaires;
 use super::material::materials;
-use super::schema::{RawCamera, RawDirections, RawDiscretization, RawProbe, RawScene, RawSceneInfo, RawSolver};
+use super::probe::probes;
+use super::schema::{RawCamera, RawDirections, RawDiscretization, RawScene, RawSceneInfo, RawSolver};
 use super::surface::{emits, surfaces};
 use crate::directions::Scheme;
 use crate::solve::Method;
@@ -140,17 +141,6 @@ fn solver(path: &Path, raw: Option<RawSolver>) -> Result<SolverSettings, SceneEr
             .ok_or_else(|| at.error("method", format!("unknown method \"{name}\"; known: {}", Method::names())))?,
     };
     Ok(SolverSettings { method, tolerance, max_iterations })
-}
-
-fn probes(path: &Path, raw: &[RawProbe]) -> Result<Vec<Probe>, SceneError> {
-    unique_names(path, "probe", raw.iter().map(|p| p.name.as_str()))?;
-    let probe = |(index, p): (usize, &RawProbe)| {
-        let at = Context::item(path, "probe", &p.name, index);
-        let position = at.place("position", p.position)?;
-        let normal = at.direction("normal", p.normal)?;
-        Ok(Probe { name: p.name.clone(), position, normal })
-    };
-    raw.iter().enumerate().map(probe).collect()
 }
 
 fn cameras(path: &Path, raw: &[RawCamera]) -> Result<Vec<Camera>, SceneError> {

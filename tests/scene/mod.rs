@@ -9,6 +9,7 @@ mod luminaires;
 mod magnitudes;
 mod obj;
 mod parse_errors;
+mod probes;
 mod ranges;
 mod rooms;
 mod valid;
