@@ -15,6 +15,7 @@ mod material;
 mod model;
 mod photometry;
 mod progress;
+mod readout;
 mod render;
 mod robustness;
 mod scene;

@@ -9,7 +9,7 @@
 //! `/orders/{orders,term_norms,partial_sums}` (the reflection-order record), `/norms` (attributes),
 //! `/spectrum/…` (the leading eigenpairs of `K`, `spectrum_file.rs`),
 //! `/energy/{surface_emitted,surface_absorbed}`,
-//! `/probes/{name,position,normal,luminance,illuminance}`, `/basis/{coefficients,psi,front,back}`
+//! `/probes/{name,kind,position,normal,luminance,illuminance}`, `/basis/{coefficients,psi,front,back}`
 //! (a solve in a factored angular basis),
 //! `/grids/<name>/{points,illuminance}` (with the statistics as attributes),
 //! `/luminaires/{name,kind,position,direction,flux,distribution_flux,file_flux,on_surfaces}`

@@ -1,6 +1,6 @@
 //! The lighting-engineering tables of a solve: for an illuminance grid (`[[grid]]`) a CSV
 //! of every calculation point with its illuminance in lx (its plan is `super::grid_map`);
-//! for the probes a CSV of their luminance and illuminance.
+//! for the probes a CSV of their luminance and illuminance (and kind).
 
 use super::IoError;
 use crate::readout::grid::GridReading;
@@ -27,15 +27,25 @@ pub fn write_grid_csv(path: &Path, grid: &GridReading) -> Result<(), IoError> {
     write_text(path, &text)
 }
 
-/// `name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx` per probe (the last: the luminaires' part).
+/// `name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx,kind` per probe (`E_direct_lx`: the
+/// luminaires' part; `kind` as in the case, e.g. `cylindrical`, whose `E_lx` is `E_z`).
 pub fn write_probes_csv(path: &Path, probes: &[ProbeReading]) -> Result<(), IoError> {
-    let mut text = String::from("name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx\n");
+    let mut text = String::from("name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx,kind\n");
     for p in probes {
         let (x, n) = (p.position, p.normal);
         let name = p.name.replace('"', "\"\"");
         text += &format!(
-            "\"{name}\",{:.9},{:.9},{:.9},{:.9},{:.9},{:.9},{:.9e},{:.9e},{:.9e}\n",
-            x.x, x.y, x.z, n.x, n.y, n.z, p.luminance, p.illuminance, p.direct
+            "\"{name}\",{:.9},{:.9},{:.9},{:.9},{:.9},{:.9},{:.9e},{:.9e},{:.9e},{}\n",
+            x.x,
+            x.y,
+            x.z,
+            n.x,
+            n.y,
+            n.z,
+            p.luminance,
+            p.illuminance,
+            p.direct,
+            p.kind.name()
         );
     }
     write_text(path, &text)

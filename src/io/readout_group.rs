@@ -9,6 +9,7 @@ use ndarray::{Array1, Array2, Array3};
 pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
     let n = probes.len();
     strings(g, "name", probes.iter().map(|p| p.name.as_str()))?;
+    strings(g, "kind", probes.iter().map(|p| p.kind.name()))?;
     dataset(g, "position", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].position[c]))?;
     dataset(g, "normal", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].normal[c]))?;
     dataset(g, "luminance", &Array1::from_iter(probes.iter().map(|p| p.luminance)))?;

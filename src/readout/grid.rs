@@ -5,7 +5,7 @@
 
 use crate::model::Model;
 use crate::readout::field::Field;
-use crate::readout::probe::illuminance_at;
+use crate::readout::gather::illuminance_at;
 use crate::scene::Grid;
 use glam::DVec3;
 

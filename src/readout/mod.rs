@@ -1,8 +1,12 @@
 //! Readouts of a solved field (`design.md` §5, §7): the field as an `N × K × C` array, the
-//! illuminance of patches and points, probes, grids and the energy balance in lumens.
+//! illuminance of patches and points, probes (point sensors, luminance meters, cylindrical
+//! illuminance), grids and the energy balance in lumens.
 
+pub mod cylindrical;
 pub mod energy;
 pub mod field;
+pub mod gather;
 pub mod grid;
 pub mod illuminance;
+pub mod meter;
 pub mod probe;

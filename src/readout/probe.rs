@@ -1,47 +1,43 @@
-//! Point sensors (`[[probe]]`): luminance (cd/m²) and illuminance (lx) at an exact point,
-//! gathered from the solved field rather than read off the patch that holds the point.
+//! `[[probe]]` readings at exact points, gathered from the solved field (`gather.rs`)
+//! rather than read off the patch that holds the point, one reading per kind:
 //!
-//! The light arriving at `p` is gathered per direction cell `d` of a frame at `p`:
-//! `I_d(p) = Σ_j Σ_m L_j(m) F_{dA(p)→P_j}^{d,m} V(p, P_j)` (the exact contour-integral form
-//! factor, split by cells as in the kernel, and a visibility fraction from rays to
-//! stratified points of `P_j`; a patch whose points and corners disagree lies on a shadow
-//! edge and is cut into quarters (`transfer::occlusion::cut_along_shadows`), each piece weighed by its
-//! own rays, while the light the piece would send unoccluded exceeds [`SHADOW_CUT`] of all
-//! the point would receive unoccluded). The luminaires' light arrives exactly at the point (`crate::luminaire::arriving_at`, one
-//! shadow ray each) as `D_d(p)`; the illuminance is `E = π Σ_d (I_d + D_d)`, of which
-//! `π Σ_d D_d` is direct from the luminaires. A probe on a surface (within `1e-4` of the
-//! scene's size, facing the same way) reads that surface's outgoing luminance along its
-//! normal, `L_e + Σ_d ρ̄(k,d) (I_d + D_d)` (plus the light transmitted from the back side
-//! of a transmitting surface); a probe in free space reads what a luminance meter at the
-//! point aimed along the normal would: the outgoing luminance, gathered the same way, of
-//! the first surface point the normal meets, towards the probe (0 when it meets nothing).
+//! * `point`: the illuminance `E = π Σ_d (I_d + D_d)` (lx) on a receiver at the point facing
+//!   the normal, and a luminance: on a surface (within `1e-4` of the scene's size, facing
+//!   the same way) that surface's outgoing luminance along its normal; in free space what a
+//!   luminance meter at the point aimed along the normal reads, with a vanishing field of
+//!   view (`gather::seen`: the first surface point the normal meets, towards the probe);
+//! * `luminance_meter`: the mean luminance within its field of view (`meter.rs`), and the
+//!   illuminance on a receiver at the point facing the viewing direction;
+//! * `cylindrical`, `semi_cylindrical`: the illuminance of EN 12464-1 and EN 13201-2
+//!   (`cylindrical.rs`); no luminance (NaN).
+//!
+//! Each reading keeps the part of its illuminance that comes directly from the luminaires.
 
-use crate::geometry::{ConvexPolygon, Frame, NO_TWIN, Patch};
-use crate::luminaire::arriving_at;
 use crate::model::Model;
+use crate::readout::cylindrical::cylindrical;
 use crate::readout::field::Field;
-use crate::scene::Probe;
-use crate::transfer::contour::point_to_polygon;
-use crate::transfer::form_factor::{Binning, binned_point};
-use crate::transfer::occlusion::cut_along_shadows;
-use crate::visibility::NO_FACE;
+use crate::readout::gather::{incident_at, outgoing, plane_illuminance, seen, sum};
+use crate::readout::meter::mean_luminance;
+use crate::scene::{Probe, ProbeKind};
 use glam::DVec3;
-use rayon::prelude::*;
 use std::f64::consts::PI;
 
 /// One probe's reading.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ProbeReading {
     pub name: String,
+    pub kind: ProbeKind,
     pub position: DVec3,
+    /// The probe's direction (`Probe::normal`: normal, viewing direction, axis, or facing).
     pub normal: DVec3,
-    /// cd/m².
+    /// cd/m² (NaN for the cylindrical kinds).
     pub luminance: f64,
-    /// lx, on a receiver at `position` facing `normal`.
+    /// lx: on a receiver at `position` facing `normal` (a point sensor, a luminance meter),
+    /// or the cylindrical or semi-cylindrical illuminance.
     pub illuminance: f64,
     /// The part of `illuminance` that comes directly from the luminaires, lx.
     pub direct: f64,
-    /// The patch the probe lies on, if any.
+    /// The patch a point sensor lies on, if any.
     pub patch: Option<usize>,
 }
 
@@ -50,114 +46,46 @@ pub fn read_probes(probes: &[Probe], model: &Model, field: &Field) -> Vec<ProbeR
     probes.iter().map(|p| read(p, model, field)).collect()
 }
 
-/// Illuminance, lx, on a receiver at `p` facing the unit `n` (on a surface or in free
-/// space), the luminaires' direct light included.
-pub fn illuminance_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> f64 {
-    let (_, incident, direct) = incident_at(model, field, p, n);
-    PI * (incident.iter().sum::<f64>() + direct.iter().sum::<f64>())
-}
-
-/// The patch `p` lies on (if any) and the light arriving at `p` per cell of its frame:
-/// gathered from the surfaces, and directly from the luminaires.
-fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (Option<usize>, Vec<f64>, Vec<f64>) {
-    let patch = model.faces.under(&model.mesh, &model.visibility, p, n);
-    let frame = patch.map_or_else(|| Frame::around(n), |i| model.mesh.patches[i].frame());
-    let ignore = patch.map_or(NO_FACE, |i| model.mesh.patches[i].face);
-    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &frame, ignore);
-    (patch, gather(model, field, p, &frame, ignore), direct)
-}
-
 fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
+    let (p, n) = (probe.position, probe.normal);
+    let (luminance, (illuminance, direct), patch) = match probe.kind {
+        ProbeKind::Point => return point(probe, model, field),
+        ProbeKind::LuminanceMeter { fov_deg } => {
+            (mean_luminance(model, field, p, n, fov_deg), plane_illuminance(model, field, p, n), None)
+        }
+        ProbeKind::Cylindrical => (f64::NAN, cylindrical(model, field, p, n, None), None),
+        ProbeKind::SemiCylindrical { axis } => (f64::NAN, cylindrical(model, field, p, axis, Some(n)), None),
+    };
+    ProbeReading {
+        name: probe.name.clone(),
+        kind: probe.kind,
+        position: p,
+        normal: n,
+        luminance,
+        illuminance,
+        direct,
+        patch,
+    }
+}
+
+/// A point sensor's reading.
+fn point(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
     let (p, n) = (probe.position, probe.normal);
     let (patch, incident, direct) = incident_at(model, field, p, n);
     let illuminance = PI * (incident.iter().sum::<f64>() + direct.iter().sum::<f64>());
     let luminance = match patch {
         Some(i) => outgoing(model, field, i, p, n, &sum(&incident, &direct)),
-        None => model
-            .faces
-            .landing(&model.mesh, &model.visibility, p, n, NO_FACE)
-            .and_then(|(_, facing, distance)| {
-                let q = p + n * distance;
-                let i = facing?;
-                let s = &model.mesh.patches[i];
-                Some(outgoing(model, field, i, q, -n, &arriving(model, field, q, s)))
-            })
-            .unwrap_or(0.0),
+        None => seen(model, field, p, n),
     };
     let direct = PI * direct.iter().sum::<f64>();
-    ProbeReading { name: probe.name.clone(), position: p, normal: n, luminance, illuminance, direct, patch }
-}
-
-/// All the light arriving at point `q` of patch `s` per cell of its frame: gathered from
-/// the surfaces plus direct from the luminaires.
-fn arriving(model: &Model, field: &Field, q: DVec3, s: &Patch) -> Vec<f64> {
-    let frame = s.frame();
-    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, q, &frame, s.face);
-    sum(&gather(model, field, q, &frame, s.face), &direct)
-}
-
-fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
-    a.iter().zip(b).map(|(x, y)| x + y).collect()
-}
-
-/// Outgoing luminance of patch `i` at point `q` towards `direction`, from the light
-/// `incident` on it per cell (and, for a transmitter, the light arriving at its back).
-fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, incident: &[f64]) -> f64 {
-    let kernel = &model.kernel;
-    let patch = &model.mesh.patches[i];
-    let k = kernel.directions.lookup(patch.frame().local(direction));
-    let block = &kernel.blocks[kernel.patch_material[i] as usize];
-    let mut l = model.mesh.emission[i] + incident.iter().enumerate().map(|(d, e)| block.at(k, d) * e).sum::<f64>();
-    if block.transmits() && patch.twin != NO_TWIN {
-        let through = arriving(model, field, q, &model.mesh.patches[patch.twin as usize]);
-        l += through.iter().enumerate().map(|(d, e)| block.transmit_at(k, d).unwrap_or(0.0) * e).sum::<f64>();
+    ProbeReading {
+        name: probe.name.clone(),
+        kind: probe.kind,
+        position: p,
+        normal: n,
+        luminance,
+        illuminance,
+        direct,
+        patch,
     }
-    l
-}
-
-/// A piece of a patch crossed by a shadow edge is cut further only while the light it
-/// would send to the point unoccluded exceeds this fraction of all the light the point
-/// would receive unoccluded; below it, its visibility is the fraction of its four points
-/// that see (`docs/hierarchy.md`, "Readouts", measures what this changes).
-pub const SHADOW_CUT: f64 = 1e-4;
-
-/// `I_d(p)`: the light arriving at `p` per cell of `frame`, ignoring face `ignore`.
-pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32) -> Vec<f64> {
-    let directions = &model.kernel.directions;
-    let cells = directions.len();
-    let binning = Binning::new(directions);
-    let patches = &model.mesh.patches;
-    let unoccluded: Vec<f64> = patches
-        .par_iter()
-        .enumerate()
-        .map(|(j, s)| match s.face == ignore {
-            true => 0.0,
-            false => point_to_polygon(p, frame.normal, &s.polygon).max(0.0) * field.brightest(j),
-        })
-        .collect();
-    let least = SHADOW_CUT * unoccluded.iter().sum::<f64>();
-    patches
-        .par_iter()
-        .enumerate()
-        .filter(|&(j, _)| unoccluded[j] > 0.0)
-        .fold(
-            || (vec![0.0; cells], Vec::new()),
-            |(mut sum, mut bins), (j, s)| {
-                bins.clear();
-                let sees = |y: DVec3| model.visibility.visible(p, y, [ignore, s.face]);
-                let per_area = unoccluded[j] / s.area;
-                let worth = |piece: &ConvexPolygon| per_area * piece.area() > least;
-                cut_along_shadows(&s.polygon, 0, &sees, &worth, &mut |piece, seen| {
-                    let first = bins.len();
-                    binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);
-                    bins[first..].iter_mut().for_each(|(_, _, f)| *f *= seen);
-                });
-                for &(d, m, f) in &bins {
-                    sum[d as usize] += f * field.at(j, m as usize);
-                }
-                (sum, bins)
-            },
-        )
-        .map(|(sum, _)| sum)
-        .reduce(|| vec![0.0; cells], |a, b| a.iter().zip(&b).map(|(x, y)| x + y).collect())
 }

@@ -3,6 +3,7 @@
 
 use super::error::SceneError;
 use glam::DVec3;
+use serde_spanned::Spanned;
 use std::path::Path;
 
 /// Relative tolerance (to the shape's size) of the planarity, collinearity,
@@ -137,4 +138,10 @@ pub(super) fn unique_names<'n>(
         seen.push(name);
     }
     Ok(())
+}
+
+/// `line N: ` of the value at `span` in `source`.
+pub(super) fn line<T>(source: &str, value: &Spanned<T>) -> String {
+    let at = value.span().start.min(source.len());
+    format!("line {}: ", source.as_bytes()[..at].iter().filter(|&&b| b == b'\n').count() + 1)
 }

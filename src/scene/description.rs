@@ -3,6 +3,7 @@
 use super::files::CaseFile;
 use super::grid::Grid;
 use super::light_scene::Lighting;
+use super::probe::Probe;
 use crate::directions::Scheme;
 use crate::geometry::Surface;
 use crate::luminaire::Luminaire;
@@ -97,15 +98,6 @@ impl Default for SolverSettings {
 pub struct Material {
     pub name: String,
     pub model: MaterialModel,
-}
-
-/// `[[probe]]`: a point sensor of luminance (cd/m²) and illuminance (lx).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Probe {
-    pub name: String,
-    pub position: DVec3,
-    /// Unit normal of the sensor's receiving side.
-    pub normal: DVec3,
 }
 
 /// `[[camera]]`: a pinhole camera for `ugo render`.

@@ -11,7 +11,7 @@
 //! case (luminaires, parallel light included, and emitting surfaces) before anything else
 //! sees it, so every solve, light scene and Monte Carlo reference uses the maintained output.
 
-use super::check::Context;
+use super::check::{Context, line};
 use super::error::SceneError;
 use crate::geometry::{Emission, Surface};
 use crate::luminaire::{Luminaire, LuminaireKind};
@@ -123,12 +123,6 @@ fn dim(emission: Emission, factor: f64) -> Emission {
         Emission::Luminance(l) => Emission::Luminance(l * factor),
         Emission::Flux(f) => Emission::Flux(f * factor),
     }
-}
-
-/// `line N: ` of the value at `span` in `source`.
-fn line<T>(source: &str, value: &Spanned<T>) -> String {
-    let at = value.span().start.min(source.len());
-    format!("line {}: ", source.as_bytes()[..at].iter().filter(|&&b| b == b'\n').count() + 1)
 }
 
 fn maintenance_factor(path: &Path, source: &str, raw: Option<RawLighting>) -> Result<f64, SceneError> {

@@ -1,5 +1,6 @@
 //! `[[luminaire]]` tables: light sources that are not surfaces (photometric point sources
-//! and parallel light), as written and as validated.
+//! and parallel light), as written and as validated; a table with `array` expands into the
+//! members of the array (`luminaire_array.rs`).
 //!
 //! Owns the keys of each luminaire type, their rules, and reading the photometric file
 //! (relative to the case file's folder; a bad file's error names the file, its line and
@@ -9,9 +10,12 @@
 use super::check::{Context, MAGNITUDE, unique_names};
 use super::error::SceneError;
 use super::files::CaseFiles;
+use super::luminaire_array::{Member, RawArray, members};
 use crate::luminaire::{Luminaire, LuminaireKind, PointLuminaire};
 use crate::photometry::{Distribution, PhotometryError, parse_ies, parse_ldt};
+use glam::DVec3;
 use serde::Deserialize;
+use std::collections::HashMap;
 use std::path::Path;
 
 /// `[[luminaire]]` as written.
@@ -35,25 +39,60 @@ pub struct RawLuminaire {
     pub illuminance: Option<f64>,
     /// The group of sources it is dimmed with (`light_scene.rs`).
     pub group: Option<serde_spanned::Spanned<String>>,
+    /// Places a rectangular array of this luminaire (`luminaire_array.rs`).
+    pub array: Option<serde_spanned::Spanned<RawArray>>,
 }
 
 /// Every luminaire type and the keys it takes besides `name` and `type`.
 const TYPES: [(&str, &[&str]); 5] = [
-    ("isotropic", &["position", "flux", "intensity", "multiplier"]),
-    ("lambertian", &["position", "intensity", "aim", "multiplier"]),
-    ("ies", &["position", "file", "aim", "rotate_deg", "multiplier"]),
-    ("eulumdat", &["position", "file", "aim", "rotate_deg", "multiplier"]),
+    ("isotropic", &["position", "flux", "intensity", "multiplier", "array"]),
+    ("lambertian", &["position", "intensity", "aim", "multiplier", "array"]),
+    ("ies", &["position", "file", "aim", "rotate_deg", "multiplier", "array"]),
+    ("eulumdat", &["position", "file", "aim", "rotate_deg", "multiplier", "array"]),
     ("parallel", &["direction", "illuminance"]),
 ];
 
-/// Validates the `[[luminaire]]` tables of the case file `path`.
-pub fn luminaires(path: &Path, raw: &[RawLuminaire], files: &CaseFiles) -> Result<Vec<Luminaire>, SceneError> {
+/// Validates the `[[luminaire]]` tables of the case file `path` (whose text is `source`),
+/// an array expanded into its members: the luminaires, and for each the index of its table.
+pub fn luminaires(
+    path: &Path,
+    source: &str,
+    raw: &[RawLuminaire],
+    files: &CaseFiles,
+) -> Result<(Vec<Luminaire>, Vec<usize>), SceneError> {
     unique_names(path, "luminaire", raw.iter().map(|l| l.name.as_str()))?;
-    let luminaire = |(index, l): (usize, &RawLuminaire)| {
+    let mut names: HashMap<String, usize> = raw.iter().enumerate().map(|(i, l)| (l.name.clone(), i)).collect();
+    let (mut placed, mut tables) = (Vec::new(), Vec::new());
+    for (index, l) in raw.iter().enumerate() {
         let at = Context::item(path, "luminaire", &l.name, index);
-        Ok(Luminaire { name: l.name.clone(), kind: kind(&at, l, files)? })
+        for luminaire in expand(&at, source, l, kind(&at, l, files)?)? {
+            let earlier = if l.array.is_some() { names.insert(luminaire.name.clone(), index) } else { None };
+            if let Some(other) = earlier {
+                let message = format!(
+                    "the array's luminaire \"{}\" has the name of another luminaire ([[luminaire]] #{})",
+                    luminaire.name,
+                    other + 1
+                );
+                return Err(at.error("name", message));
+            }
+            placed.push(luminaire);
+            tables.push(index);
+        }
+    }
+    Ok((placed, tables))
+}
+
+/// The luminaire of table `l` with its `kind`, or the members of its array.
+fn expand(at: &Context, source: &str, l: &RawLuminaire, kind: LuminaireKind) -> Result<Vec<Luminaire>, SceneError> {
+    let (Some(array), LuminaireKind::Point(point)) = (&l.array, &kind) else {
+        return Ok(vec![Luminaire { name: l.name.clone(), kind }]);
     };
-    raw.iter().enumerate().map(luminaire).collect()
+    let members = members(at, source, array, l.position.map(|_| point.position))?;
+    let member = |m: Member| Luminaire {
+        name: format!("{}{}", l.name, m.suffix),
+        kind: LuminaireKind::Point(PointLuminaire { position: m.position, ..point.clone() }),
+    };
+    Ok(members.into_iter().map(member).collect())
 }
 
 fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKind, SceneError> {
@@ -71,6 +110,7 @@ fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKi
         ("file", l.file.is_some()),
         ("direction", l.direction.is_some()),
         ("illuminance", l.illuminance.is_some()),
+        ("array", l.array.is_some()),
     ];
     if let Some((stray, _)) = given.iter().find(|(key, set)| *set && !keys.contains(key)) {
         return Err(at.error(stray, format!("a \"{name}\" luminaire takes only {}", keys.join(", "))));
@@ -89,10 +129,12 @@ fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKi
         let illuminance = at.magnitude("illuminance", illuminance, " lx")?;
         return Ok(LuminaireKind::Parallel { direction, illuminance });
     }
-    let position = at.place(
-        "position",
-        l.position.ok_or_else(|| at.error("position", format!("a \"{name}\" luminaire needs `position`")))?,
-    )?;
+    // An array over a rectangle places its members itself (`luminaire_array.rs`).
+    let position = match (l.position, &l.array) {
+        (Some(p), _) => at.place("position", p)?,
+        (None, Some(_)) => DVec3::ZERO,
+        (None, None) => return Err(at.error("position", format!("a \"{name}\" luminaire needs `position`"))),
+    };
     let aim = at.direction("aim", l.aim.unwrap_or([0.0, -1.0, 0.0]))?;
     let rotate_deg = at.finite("rotate_deg", l.rotate_deg.unwrap_or(0.0))?;
     let multiplier = at.positive("multiplier", l.multiplier.unwrap_or(1.0))?;

@@ -12,18 +12,23 @@ mod files;
 mod grid;
 mod light_scene;
 mod luminaire;
+mod luminaire_array;
 mod material;
+mod obj;
 mod plausible;
 mod polygon;
+mod probe;
 mod schema;
+mod shape_keys;
 mod surface;
 mod validate;
 
-pub use description::{Assembly, Camera, Discretization, Material, Probe, Scene, SolverSettings};
+pub use description::{Assembly, Camera, Discretization, Material, Scene, SolverSettings};
 pub use error::SceneError;
 pub use files::{CaseFile, CaseFiles, regular_file};
 pub use grid::{Grid, MapScale, MapStyle};
 pub use light_scene::{DEFAULT_GROUP, LightGroup, LightScene, Lighting};
+pub use probe::{Probe, ProbeKind};
 pub use schema::RawCamera;
 
 use std::path::Path;

@@ -20,7 +20,7 @@ pub struct RawScene {
     #[serde(default)]
     pub surface: Vec<RawSurface>,
     #[serde(default)]
-    pub probe: Vec<RawProbe>,
+    pub probe: Vec<super::probe::RawProbe>,
     #[serde(default)]
     pub camera: Vec<RawCamera>,
     #[serde(default)]
@@ -117,6 +117,11 @@ pub struct RawSurface {
     pub scale: Option<f64>,
     #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub translate: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub rotate_axis: Option<[f64; 3]>,
+    pub rotate_deg: Option<f64>,
+    /// A mesh's `usemtl` name → the `name` of a `[[material]]` (`obj.rs`).
+    pub materials: Option<serde_spanned::Spanned<std::collections::BTreeMap<String, String>>>,
 }
 
 /// `emission = { luminance = … }` or `emission = { flux = … }`.
@@ -125,17 +130,6 @@ pub struct RawSurface {
 pub struct RawEmission {
     pub luminance: Option<f64>,
     pub flux: Option<f64>,
-}
-
-/// `[[probe]]`.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawProbe {
-    pub name: String,
-    #[serde(deserialize_with = "super::arrays::exact")]
-    pub position: [f64; 3],
-    #[serde(deserialize_with = "super::arrays::exact")]
-    pub normal: [f64; 3],
 }
 
 /// `[[camera]]`.

@@ -1,28 +1,40 @@
-//! `[[surface]]` tables: shapes and their keys, emission, material references, degenerate
-//! geometry, and loading `mesh` OBJ files, validated into `crate::geometry::Surface`.
+//! `[[surface]]` tables: shapes and their keys, emission, material references and degenerate
+//! geometry, validated into `crate::geometry::Surface` (a `mesh` is read by `obj.rs`; one
+//! whose OBJ groups take several materials becomes one surface per material).
 
-use super::check::{COORDINATE, Context, MAGNITUDE, REL_TOL, ZERO_AREA, out_of_range, show, unique_names};
+use super::check::{Context, MAGNITUDE, REL_TOL, show, unique_names};
 use super::description::Material;
 use super::error::SceneError;
 use super::files::CaseFiles;
 use super::polygon::polygon_defect;
 use super::schema::{RawEmission, RawSurface};
+use super::shape_keys::{Part, ShapeKeys, material_index, whole};
 use crate::geometry::{Emission, Shape, Surface, tessellate};
 use crate::material::MaterialModel;
 use glam::DVec3;
 use std::path::Path;
 
+/// Validates the `[[surface]]` tables of `path` (whose text is `source`): the surfaces (a
+/// mesh whose OBJ groups take several materials is one per material) and, for each, the
+/// index of its table.
 pub(super) fn surfaces(
     path: &Path,
+    source: &str,
     raw: &[RawSurface],
     materials: &[Material],
     files: &CaseFiles,
-) -> Result<Vec<Surface>, SceneError> {
+) -> Result<(Vec<Surface>, Vec<usize>), SceneError> {
     unique_names(path, "surface", raw.iter().map(|s| s.name.as_str()))?;
-    raw.iter()
-        .enumerate()
-        .map(|(index, s)| surface(&Context::item(path, "surface", &s.name, index), s, materials, files))
-        .collect()
+    let (mut surfaces, mut tables) = (Vec::new(), Vec::new());
+    for (index, s) in raw.iter().enumerate() {
+        let keys =
+            ShapeKeys { at: &Context::item(path, "surface", &s.name, index), shape: "", files, materials, source };
+        for part in surface(&keys, s)? {
+            surfaces.push(part);
+            tables.push(index);
+        }
+    }
+    Ok((surfaces, tables))
 }
 
 pub(super) fn emits(emission: Emission) -> bool {
@@ -31,22 +43,25 @@ pub(super) fn emits(emission: Emission) -> bool {
     }
 }
 
-fn surface(at: &Context, s: &RawSurface, materials: &[Material], files: &CaseFiles) -> Result<Surface, SceneError> {
-    let material = materials.iter().position(|m| m.name == s.material).ok_or_else(|| {
-        let known: Vec<String> = materials.iter().map(|m| format!("\"{}\"", m.name)).collect();
-        let message = format!("unknown material \"{}\"; known: {}", s.material, known.join(", "));
-        at.error("material", message)
-    })?;
+/// The surface of table `s`, or one per material of its parts, named `NAME/material`.
+fn surface(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Surface>, SceneError> {
+    let at = k.at;
+    let material = material_index(at, "material", &s.material, k.materials)?;
     let two_sided = s.two_sided.unwrap_or(false);
-    if let MaterialModel::Lambert { transmittance, .. } = materials[material].model
-        && transmittance > 0.0
-        && !two_sided
-    {
-        let message = format!("material \"{}\" transmits light, so the surface must be two_sided = true", s.material);
-        return Err(at.error("two_sided", message));
+    let parts = shape(k, s)?;
+    let areas = parts.iter().map(|p| meshable(at, &p.shape)).collect::<Result<Vec<f64>, _>>()?;
+    let area: f64 = areas.iter().sum();
+    for part in &parts {
+        let index = part.material.unwrap_or(material);
+        if let MaterialModel::Lambert { transmittance, .. } = k.materials[index].model
+            && transmittance > 0.0
+            && !two_sided
+        {
+            let name = &k.materials[index].name;
+            let message = format!("material \"{name}\" transmits light, so the surface must be two_sided = true");
+            return Err(at.error("two_sided", message));
+        }
     }
-    let shape = shape(at, s, files)?;
-    let area = meshable(at, &shape)?;
     let emission = s.emission.as_ref().map(|e| emission(at, e)).transpose()?;
     if let Some(Emission::Flux(flux)) = emission
         && flux / (std::f64::consts::PI * area) > MAGNITUDE
@@ -58,7 +73,18 @@ fn surface(at: &Context, s: &RawSurface, materials: &[Material], files: &CaseFil
         );
         return Err(at.error("emission.flux", message));
     }
-    Ok(Surface { name: s.name.clone(), shape, material, two_sided, inside: s.inside.unwrap_or(false), emission })
+    let single = parts.len() == 1;
+    let surface = |(part, part_area): (Part, f64)| {
+        let material = part.material.unwrap_or(material);
+        let name = if single { s.name.clone() } else { format!("{}/{}", s.name, k.materials[material].name) };
+        // A flux is shared by the parts in proportion to their areas.
+        let emission = match emission {
+            Some(Emission::Flux(flux)) if !single => Some(Emission::Flux(flux * part_area / area)),
+            other => other,
+        };
+        Surface { name, shape: part.shape, material, two_sided, inside: s.inside.unwrap_or(false), emission }
+    };
+    Ok(parts.into_iter().zip(areas).map(surface).collect())
 }
 
 /// The shape meshes, at its coarsest, into patches of a total area that double precision
@@ -104,7 +130,7 @@ fn emission(at: &Context, raw: &RawEmission) -> Result<Emission, SceneError> {
 }
 
 /// Builds one shape from its keys.
-type Build = fn(&ShapeKeys, &RawSurface) -> Result<Shape, SceneError>;
+type Build = fn(&ShapeKeys, &RawSurface) -> Result<Vec<Part>, SceneError>;
 
 /// Every shape: its name, its keys, and its builder.
 const SHAPES: [(&str, &[&str], Build); 6] = [
@@ -113,7 +139,7 @@ const SHAPES: [(&str, &[&str], Build); 6] = [
     ("box", &["min", "max", "rotate_y_deg"], cuboid),
     ("disc", &["center", "normal", "radius"], disc),
     ("sphere", &["center", "radius"], sphere),
-    ("mesh", &["file", "scale", "translate"], mesh),
+    ("mesh", &["file", "scale", "translate", "rotate_axis", "rotate_deg", "materials"], super::obj::mesh),
 ];
 
 /// The shape keys a `[[surface]]` sets.
@@ -132,48 +158,28 @@ fn shape_keys_set(s: &RawSurface) -> impl Iterator<Item = &'static str> {
         ("file", s.file.is_some()),
         ("scale", s.scale.is_some()),
         ("translate", s.translate.is_some()),
+        ("rotate_axis", s.rotate_axis.is_some()),
+        ("rotate_deg", s.rotate_deg.is_some()),
+        ("materials", s.materials.is_some()),
     ]
     .into_iter()
     .filter_map(|(key, set)| set.then_some(key))
 }
 
-fn shape(at: &Context, s: &RawSurface, files: &CaseFiles) -> Result<Shape, SceneError> {
+fn shape(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Part>, SceneError> {
     let Some(&(name, keys, build)) = SHAPES.iter().find(|(name, ..)| *name == s.shape) else {
         let known: Vec<&str> = SHAPES.iter().map(|(name, ..)| *name).collect();
         let message = format!("unknown shape \"{}\"; known: {}", s.shape, known.join(", "));
-        return Err(at.error("shape", message));
+        return Err(k.at.error("shape", message));
     };
     if let Some(stray) = shape_keys_set(s).find(|key| !keys.contains(key)) {
         let message = format!("not a key of shape \"{name}\" (its keys: {})", keys.join(", "));
-        return Err(at.error(stray, message));
+        return Err(k.at.error(stray, message));
     }
-    build(&ShapeKeys { at, shape: name, files }, s)
+    build(&ShapeKeys { shape: name, ..*k }, s)
 }
 
-/// Reads the keys of one shape, reporting missing required ones.
-struct ShapeKeys<'a> {
-    at: &'a Context<'a>,
-    shape: &'a str,
-    /// Where a `mesh` reads its OBJ file.
-    files: &'a CaseFiles,
-}
-
-impl ShapeKeys<'_> {
-    fn required<T>(&self, key: &str, value: Option<T>) -> Result<T, SceneError> {
-        let message = || format!("missing: shape \"{}\" needs `{key}`", self.shape);
-        value.ok_or_else(|| self.at.error(key, message()))
-    }
-
-    fn point(&self, key: &str, value: Option<[f64; 3]>) -> Result<DVec3, SceneError> {
-        self.at.place(key, self.required(key, value)?)
-    }
-
-    fn radius(&self, value: Option<f64>) -> Result<f64, SceneError> {
-        self.at.length("radius", self.required("radius", value)?)
-    }
-}
-
-fn rectangle(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
+fn rectangle(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Part>, SceneError> {
     let origin = k.point("origin", s.origin)?;
     let edge_u = k.point("edge_u", s.edge_u)?;
     let edge_v = k.point("edge_v", s.edge_v)?;
@@ -188,18 +194,18 @@ fn rectangle(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
     if unit(edge_u).cross(unit(edge_v)).length() <= REL_TOL {
         return Err(k.at.error("edge_v", "must not be parallel to `edge_u`"));
     }
-    Ok(Shape::Rectangle { origin, edge_u, edge_v })
+    Ok(whole(Shape::Rectangle { origin, edge_u, edge_v }))
 }
 
-fn polygon(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
+fn polygon(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Part>, SceneError> {
     let raw = k.required("vertices", s.vertices.as_ref())?;
     let vertices = raw.iter().map(|&v| k.at.place("vertices", v)).collect::<Result<Vec<_>, _>>()?;
     polygon_defect(&vertices).map_err(|message| k.at.error("vertices", message))?;
-    Ok(Shape::Polygon { vertices })
+    Ok(whole(Shape::Polygon { vertices }))
 }
 
 /// The `box` shape (`box` is a Rust keyword).
-fn cuboid(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
+fn cuboid(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Part>, SceneError> {
     let min = k.point("min", s.min)?;
     let max = k.point("max", s.max)?;
     let rotate_y_deg = k.at.finite("rotate_y_deg", s.rotate_y_deg.unwrap_or(0.0))?;
@@ -207,79 +213,18 @@ fn cuboid(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
         let message = format!("must exceed `min` = {} on every axis, got {}", show(min), show(max));
         return Err(k.at.error("max", message));
     }
-    Ok(Shape::Box { min, max, rotate_y_deg })
+    Ok(whole(Shape::Box { min, max, rotate_y_deg }))
 }
 
-fn disc(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
+fn disc(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Part>, SceneError> {
     let center = k.point("center", s.center)?;
     let normal = k.at.direction("normal", k.required("normal", s.normal)?)?;
     let radius = k.radius(s.radius)?;
-    Ok(Shape::Disc { center, normal, radius })
+    Ok(whole(Shape::Disc { center, normal, radius }))
 }
 
-fn sphere(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
+fn sphere(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Part>, SceneError> {
     let center = k.point("center", s.center)?;
     let radius = k.radius(s.radius)?;
-    Ok(Shape::Sphere { center, radius })
-}
-
-/// `mesh`: loads the OBJ file (relative to the case file's folder), scales, translates,
-/// and drops zero-area triangles.
-fn mesh(k: &ShapeKeys, s: &RawSurface) -> Result<Shape, SceneError> {
-    let name = k.required("file", s.file.as_deref())?;
-    if name.is_empty() {
-        return Err(k.at.error("file", "must not be empty"));
-    }
-    let scale = k.at.positive("scale", s.scale.unwrap_or(1.0))?;
-    let translate = k.at.place("translate", s.translate.unwrap_or([0.0; 3]))?;
-    let file = k.at.file.parent().unwrap_or(Path::new("")).join(name);
-    let loaded = load_obj(&file, k.files).map_err(|message| k.at.error("file", message))?;
-    let placed: Vec<[DVec3; 3]> = loaded.iter().map(|t| t.map(|p| p * scale + translate)).collect();
-    if placed.iter().flatten().any(|p| !p.is_finite()) {
-        let message = format!("{} has a non-finite vertex (after scaling)", file.display());
-        return Err(k.at.error("file", message));
-    }
-    if let Some(far) = placed.iter().flatten().find(|p| p.abs().max_element() > COORDINATE) {
-        let got =
-            format!("the vertex [{:e}, {:e}, {:e}] of {}, scaled and translated", far.x, far.y, far.z, file.display());
-        return Err(k.at.error("scale", out_of_range(got)));
-    }
-    let triangles: Vec<[DVec3; 3]> = placed.into_iter().filter(|t| !zero_area(t)).collect();
-    if triangles.is_empty() {
-        let message = format!("all {} triangles of {} have zero area", loaded.len(), file.display());
-        return Err(k.at.error("file", message));
-    }
-    Ok(Shape::Mesh { file, triangles })
-}
-
-fn zero_area([a, b, c]: &[DVec3; 3]) -> bool {
-    let longest = (b - a).length().max((c - b).length()).max((a - c).length());
-    (b - a).cross(c - a).length() / 2.0 <= ZERO_AREA * longest * longest
-}
-
-/// The triangles of an OBJ file, as loaded; the error names the file.
-fn load_obj(file: &Path, files: &CaseFiles) -> Result<Vec<[DVec3; 3]>, String> {
-    let shown = file.display();
-    let bytes = files.read(file).map_err(|e| format!("cannot open the OBJ file {shown}: {e}"))?;
-    let options = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
-    // Materials of the OBJ file (`mtllib`) are not used: ugo's come from the case.
-    let no_materials = |_: &Path| Err(tobj::LoadError::OpenFileFailed);
-    let (models, _materials) = tobj::load_obj_buf(&mut bytes.as_slice(), &options, no_materials)
-        .map_err(|e| format!("cannot read the OBJ file {shown}: {e}"))?;
-    let mut triangles = Vec::new();
-    for model in &models {
-        let mesh = &model.mesh;
-        let positions: Vec<DVec3> = mesh.positions.chunks_exact(3).map(|p| DVec3::new(p[0], p[1], p[2])).collect();
-        for face in mesh.indices.chunks_exact(3) {
-            let corner = |i: u32| positions.get(i as usize).copied();
-            let (Some(a), Some(b), Some(c)) = (corner(face[0]), corner(face[1]), corner(face[2])) else {
-                return Err(format!("the OBJ file {shown} has a vertex index out of range"));
-            };
-            triangles.push([a, b, c]);
-        }
-    }
-    if triangles.is_empty() {
-        return Err(format!("the OBJ file {shown} has no triangles"));
-    }
-    Ok(triangles)
+    Ok(whole(Shape::Sphere { center, radius }))
 }

@@ -1,20 +1,21 @@
 //! Checks the raw tables of a case file and builds the runtime [`Scene`].
 //!
 //! Owns every rule of `design.md` §7 that serde cannot express for the scene as a whole
-//! and its small tables (`[scene]`, `[discretization]`, `[solver]`, probes, cameras); the
+//! and its small tables (`[scene]`, `[discretization]`, `[solver]`, cameras); the
 //! large tables have their own files (`material.rs`, `surface.rs`, `grid.rs`,
-//! `luminaire.rs`). Each failure is a [`SceneError`] naming the table
+//! `luminaire.rs`, `probe.rs`). Each failure is a [`SceneError`] naming the table
 //! (`[[surface]] "floor" (#3)`) and the key.
 
 use super::check::{Context, REL_TOL, show, unique_names};
-use super::description::{Assembly, Camera, Discretization, Probe, Scene, SolverSettings};
+use super::description::{Assembly, Camera, Discretization, Scene, SolverSettings};
 use super::error::SceneError;
 use super::files::CaseFiles;
 use super::grid::grids;
 use super::light_scene::{Sources, lighting};
 use super::luminaire::luminaires;
 use super::material::materials;
-use super::schema::{RawCamera, RawDirections, RawDiscretization, RawProbe, RawScene, RawSceneInfo, RawSolver};
+use super::probe::probes;
+use super::schema::{RawCamera, RawDirections, RawDiscretization, RawScene, RawSceneInfo, RawSolver};
 use super::surface::{emits, surfaces};
 use crate::directions::Scheme;
 use crate::solve::Method;
@@ -29,18 +30,18 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         return Err(SceneError::new(path, "[[surface]]", "", "the scene has no [[surface]]"));
     }
     let materials = materials(path, &raw.material)?;
-    let mut surfaces = surfaces(path, &raw.surface, &materials, &files)?;
+    let (mut surfaces, surface_tables) = surfaces(path, &source, &raw.surface, &materials, &files)?;
     let probes = probes(path, &raw.probe)?;
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid)?;
-    let mut luminaires = luminaires(path, &raw.luminaire, &files)?;
+    let (mut luminaires, tables) = luminaires(path, &source, &raw.luminaire, &files)?;
     if luminaires.is_empty() && !surfaces.iter().any(|s| s.emission.is_some_and(emits)) {
         let message = "nothing emits light: give a [[surface]] an `emission` greater than 0, or add a [[luminaire]]";
         return Err(SceneError::new(path, "", "emission", message));
     }
     let sources = Sources {
-        surface_groups: raw.surface.into_iter().map(|s| s.group).collect(),
-        luminaire_groups: raw.luminaire.into_iter().map(|l| l.group).collect(),
+        surface_groups: surface_tables.iter().map(|&t| raw.surface[t].group.clone()).collect(),
+        luminaire_groups: tables.iter().map(|&t| raw.luminaire[t].group.clone()).collect(),
         surfaces: &mut surfaces,
         luminaires: &mut luminaires,
     };
@@ -140,17 +141,6 @@ fn solver(path: &Path, raw: Option<RawSolver>) -> Result<SolverSettings, SceneEr
             .ok_or_else(|| at.error("method", format!("unknown method \"{name}\"; known: {}", Method::names())))?,
     };
     Ok(SolverSettings { method, tolerance, max_iterations })
-}
-
-fn probes(path: &Path, raw: &[RawProbe]) -> Result<Vec<Probe>, SceneError> {
-    unique_names(path, "probe", raw.iter().map(|p| p.name.as_str()))?;
-    let probe = |(index, p): (usize, &RawProbe)| {
-        let at = Context::item(path, "probe", &p.name, index);
-        let position = at.place("position", p.position)?;
-        let normal = at.direction("normal", p.normal)?;
-        Ok(Probe { name: p.name.clone(), position, normal })
-    };
-    raw.iter().enumerate().map(probe).collect()
 }
 
 fn cameras(path: &Path, raw: &[RawCamera]) -> Result<Vec<Camera>, SceneError> {

@@ -14,7 +14,7 @@ use super::world::World;
 use crate::geometry::Frame;
 use crate::material::cosine_direction;
 use crate::random::Rng;
-use crate::scene::Probe;
+use crate::scene::{Probe, ProbeKind};
 use crate::visibility::{NO_FACE, standoff};
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_1_PI, PI};
@@ -29,10 +29,17 @@ pub struct ProbeEstimate {
     pub illuminance: (f64, f64),
 }
 
-/// Reads every probe with `samples` paths for each quantity; probe `p`'s streams are
-/// keyed by `(seed, 2p)` and `(seed, 2p + 1)`.
+/// Reads every point sensor (`kind = "point"`; the other kinds have no estimator here)
+/// with `samples` paths for each quantity; probe `p`'s streams are keyed by `(seed, 2p)`
+/// and `(seed, 2p + 1)`.
 pub fn trace_probes(world: &World, probes: &[Probe], samples: usize, options: &TraceOptions) -> Vec<ProbeEstimate> {
-    probes.par_iter().enumerate().map(|(i, probe)| read(world, probe, i as u64, samples, options)).collect()
+    let point = |(_, probe): &(usize, &Probe)| probe.kind == ProbeKind::Point;
+    probes
+        .par_iter()
+        .enumerate()
+        .filter(point)
+        .map(|(i, probe)| read(world, probe, i as u64, samples, options))
+        .collect()
 }
 
 fn read(world: &World, probe: &Probe, index: u64, samples: usize, options: &TraceOptions) -> ProbeEstimate {

@@ -136,8 +136,8 @@ fn shadows_are_cast_on_patches_and_at_probes() {
         DVec3::NEG_Y,
         Distribution::Isotropic { intensity: 100.0 },
     ));
-    s.probes.push(Probe { name: "shade".into(), position: DVec3::new(0.75, 0.0, 1.0), normal: DVec3::Y });
-    s.probes.push(Probe { name: "sun".into(), position: DVec3::new(1.75, 0.0, 1.0), normal: DVec3::Y });
+    s.probes.push(Probe::point("shade", DVec3::new(0.75, 0.0, 1.0), DVec3::Y));
+    s.probes.push(Probe::point("sun", DVec3::new(1.75, 0.0, 1.0), DVec3::Y));
     let model = build(&s);
     let x = solved(&model);
     let probes = read_probes(&s.probes, &model, &Field::from_unknowns(&x, 1));
@@ -167,7 +167,7 @@ fn a_probe_on_a_lit_floor_reads_rho_e_over_pi() {
     let floor = rectangle([0.0, 0.0, 0.0], [0.0, 0.0, 2.0], [2.0, 0.0, 0.0]);
     let mut s = scene(vec![lambert("grey", 0.4)], vec![surface("floor", floor, 0, false, None)], 0.5);
     s.luminaires.push(point("lamp", DVec3::new(0.6, 1.2, 0.9), DVec3::NEG_Y, Distribution::Lambertian { peak: 500.0 }));
-    s.probes.push(Probe { name: "p".into(), position: DVec3::new(1.3, 0.0, 0.4), normal: DVec3::Y });
+    s.probes.push(Probe::point("p", DVec3::new(1.3, 0.0, 0.4), DVec3::Y));
     let model = build(&s);
     let x = solved(&model);
     let probe = &read_probes(&s.probes, &model, &Field::from_unknowns(&x, 1))[0];

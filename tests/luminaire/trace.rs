@@ -26,7 +26,7 @@ fn floor_under(luminaires: Vec<ugo::luminaire::Luminaire>) -> Scene {
 fn backward_paths_and_probes_gather_luminaires_exactly() {
     let lamp = DVec3::new(0.2, 1.0, -0.3);
     let mut s = floor_under(vec![point("lamp", lamp, DVec3::NEG_Y, Distribution::Lambertian { peak: 1000.0 })]);
-    s.probes.push(Probe { name: "on".into(), position: DVec3::new(0.5, 0.0, 0.4), normal: DVec3::Y });
+    s.probes.push(Probe::point("on", DVec3::new(0.5, 0.0, 0.4), DVec3::Y));
     let world = World::new(&s, Mesh::build(&s.surfaces, 0.25));
     let exact = |q: DVec3| {
         let r = q - lamp;

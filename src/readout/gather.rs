@@ -1,0 +1,141 @@
+//! The light arriving at an exact point, gathered from the solved field (`design.md` §5),
+//! and what the readouts at points are made of: the illuminance on a receiver, the
+//! outgoing luminance of a surface point, the luminance seen along a ray.
+//!
+//! The light arriving at `p` is gathered per direction cell `d` of a frame at `p`:
+//! `I_d(p) = Σ_j Σ_m L_j(m) F_{dA(p)→P_j}^{d,m} V(p, P_j)` (the exact contour-integral form
+//! factor, split by cells as in the kernel, and a visibility fraction from rays to
+//! stratified points of `P_j`; a patch whose points and corners disagree lies on a shadow
+//! edge and is cut into quarters (`transfer::occlusion::cut_along_shadows`), each piece
+//! weighed by its own rays, while the light the piece would send unoccluded exceeds
+//! [`SHADOW_CUT`] of all the point would receive unoccluded). The luminaires' light
+//! arrives exactly at the point (`crate::luminaire::arriving_at`, one shadow ray each) as
+//! `D_d(p)`; the illuminance is `E = π Σ_d (I_d + D_d)`, of which `π Σ_d D_d` is direct
+//! from the luminaires. The outgoing luminance of a surface point towards `v` is
+//! `L_e + Σ_d ρ̄(k,d) (I_d + D_d)` with `k` the cell of `v` (plus the light transmitted
+//! from the back side of a transmitting surface).
+
+use crate::geometry::{ConvexPolygon, Frame, NO_TWIN, Patch};
+use crate::luminaire::arriving_at;
+use crate::model::Model;
+use crate::readout::field::Field;
+use crate::transfer::contour::point_to_polygon;
+use crate::transfer::form_factor::{Binning, binned_point};
+use crate::transfer::occlusion::cut_along_shadows;
+use crate::visibility::NO_FACE;
+use glam::DVec3;
+use rayon::prelude::*;
+use std::f64::consts::PI;
+
+/// Illuminance, lx, on a receiver at `p` facing the unit `n` (on a surface or in free
+/// space), the luminaires' direct light included.
+pub fn illuminance_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> f64 {
+    plane_illuminance(model, field, p, n).0
+}
+
+/// [`illuminance_at`] and its part direct from the luminaires, lx.
+pub fn plane_illuminance(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (f64, f64) {
+    let (_, incident, direct) = incident_at(model, field, p, n);
+    let direct = PI * direct.iter().sum::<f64>();
+    (PI * incident.iter().sum::<f64>() + direct, direct)
+}
+
+/// The patch `p` lies on (if any) and the light arriving at `p` per cell of its frame:
+/// gathered from the surfaces, and directly from the luminaires.
+pub(super) fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (Option<usize>, Vec<f64>, Vec<f64>) {
+    let patch = model.faces.under(&model.mesh, &model.visibility, p, n);
+    let frame = patch.map_or_else(|| Frame::around(n), |i| model.mesh.patches[i].frame());
+    let ignore = patch.map_or(NO_FACE, |i| model.mesh.patches[i].face);
+    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &frame, ignore);
+    (patch, gather(model, field, p, &frame, ignore), direct)
+}
+
+/// All the light arriving at point `q` of patch `s` per cell of its frame: gathered from
+/// the surfaces plus direct from the luminaires.
+pub(super) fn arriving(model: &Model, field: &Field, q: DVec3, s: &Patch) -> Vec<f64> {
+    let frame = s.frame();
+    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, q, &frame, s.face);
+    sum(&gather(model, field, q, &frame, s.face), &direct)
+}
+
+pub(super) fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
+    a.iter().zip(b).map(|(x, y)| x + y).collect()
+}
+
+/// Outgoing luminance of patch `i` at point `q` towards `direction`, from the light
+/// `incident` on it per cell (and, for a transmitter, the light arriving at its back).
+pub(super) fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, incident: &[f64]) -> f64 {
+    let kernel = &model.kernel;
+    let patch = &model.mesh.patches[i];
+    let k = kernel.directions.lookup(patch.frame().local(direction));
+    let block = &kernel.blocks[kernel.patch_material[i] as usize];
+    let mut l = model.mesh.emission[i] + incident.iter().enumerate().map(|(d, e)| block.at(k, d) * e).sum::<f64>();
+    if block.transmits() && patch.twin != NO_TWIN {
+        let through = arriving(model, field, q, &model.mesh.patches[patch.twin as usize]);
+        l += through.iter().enumerate().map(|(d, e)| block.transmit_at(k, d).unwrap_or(0.0) * e).sum::<f64>();
+    }
+    l
+}
+
+/// A piece of a patch crossed by a shadow edge is cut further only while the light it
+/// would send to the point unoccluded exceeds this fraction of all the light the point
+/// would receive unoccluded; below it, its visibility is the fraction of its four points
+/// that see (`docs/hierarchy.md`, "Readouts", measures what this changes).
+pub const SHADOW_CUT: f64 = 1e-4;
+
+/// `I_d(p)`: the light arriving at `p` per cell of `frame`, ignoring face `ignore`.
+pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32) -> Vec<f64> {
+    let directions = &model.kernel.directions;
+    let cells = directions.len();
+    let binning = Binning::new(directions);
+    let patches = &model.mesh.patches;
+    let unoccluded: Vec<f64> = patches
+        .par_iter()
+        .enumerate()
+        .map(|(j, s)| match s.face == ignore {
+            true => 0.0,
+            false => point_to_polygon(p, frame.normal, &s.polygon).max(0.0) * field.brightest(j),
+        })
+        .collect();
+    let least = SHADOW_CUT * unoccluded.iter().sum::<f64>();
+    patches
+        .par_iter()
+        .enumerate()
+        .filter(|&(j, _)| unoccluded[j] > 0.0)
+        .fold(
+            || (vec![0.0; cells], Vec::new()),
+            |(mut sum, mut bins), (j, s)| {
+                bins.clear();
+                let sees = |y: DVec3| model.visibility.visible(p, y, [ignore, s.face]);
+                let per_area = unoccluded[j] / s.area;
+                let worth = |piece: &ConvexPolygon| per_area * piece.area() > least;
+                cut_along_shadows(&s.polygon, 0, &sees, &worth, &mut |piece, seen| {
+                    let first = bins.len();
+                    binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);
+                    bins[first..].iter_mut().for_each(|(_, _, f)| *f *= seen);
+                });
+                for &(d, m, f) in &bins {
+                    sum[d as usize] += f * field.at(j, m as usize);
+                }
+                (sum, bins)
+            },
+        )
+        .map(|(sum, _)| sum)
+        .reduce(|| vec![0.0; cells], |a, b| a.iter().zip(&b).map(|(x, y)| x + y).collect())
+}
+
+/// The luminance (cd/m²) seen from `p` along the unit `v`: the outgoing luminance, gathered
+/// as above, of the first surface point the ray meets, towards `p` (0 when it meets none
+/// or the back of a surface).
+pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3) -> f64 {
+    model
+        .faces
+        .landing(&model.mesh, &model.visibility, p, v, NO_FACE)
+        .and_then(|(_, facing, distance)| {
+            let q = p + v * distance;
+            let i = facing?;
+            let s = &model.mesh.patches[i];
+            Some(outgoing(model, field, i, q, -v, &arriving(model, field, q, s)))
+        })
+        .unwrap_or(0.0)
+}

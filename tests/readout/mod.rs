@@ -1,0 +1,33 @@
+//! Tests of the readouts at points (`ugo::readout`): the luminance meter and the
+//! cylindrical and semi-cylindrical illuminance against closed forms (issue 17, item 7).
+
+mod cylindrical;
+mod meter;
+
+use crate::support::{build, solve};
+use std::path::Path;
+use ugo::readout::field::Field;
+use ugo::readout::probe::{ProbeReading, read_probes};
+use ugo::scene::Scene;
+
+/// The probes of the case `text`, read from its solved field.
+fn readings(text: &str) -> Vec<ProbeReading> {
+    let scene = Scene::parse(Path::new("cases/test.toml"), text.to_string()).unwrap_or_else(|e| panic!("{e}"));
+    let model = build(&scene);
+    // A black room lit only by luminaires has L0 = 0, and so is its field.
+    let black = model.l0.iter().all(|&l| l == 0.0);
+    let x = if black { vec![0.0; model.l0.len()] } else { solve(&model) };
+    let field = Field::from_unknowns(&x, model.kernel.cells());
+    read_probes(&scene.probes, &model, &field)
+}
+
+/// A closed box `[0, side]³` seen from inside, of reflectance `rho`, each face emitting
+/// `luminance` (0: none), patches of 0.5 m.
+fn room(side: f64, rho: f64, luminance: f64) -> String {
+    let emission = if luminance > 0.0 { format!("emission = {{ luminance = {luminance} }}\n") } else { String::new() };
+    format!(
+        "[discretization]\npatch_size = 0.5\n[[material]]\nname = \"grey\"\ntype = \"lambert\"\nreflectance = {rho}\n\
+         [[surface]]\nname = \"room\"\nshape = \"box\"\nmaterial = \"grey\"\nmin = [0, 0, 0]\nmax = [{side}, {side}, {side}]\n\
+         inside = true\n{emission}"
+    )
+}
