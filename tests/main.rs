@@ -17,6 +17,7 @@ mod photometry;
 mod render;
 mod robustness;
 mod scene;
+mod sky;
 pub mod solve;
 mod study;
 mod support;

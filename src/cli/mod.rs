@@ -126,6 +126,14 @@ pub fn describe(source: &Source) -> String {
                 direction.x, direction.y, direction.z
             )
         }
+        Light::Window { window, sky } => format!(
+            "opening of {:.4} m², sky {:?}, E_h = {:.1} lx, L_z = {:.1} cd/m², ground ρ = {}",
+            window.area(),
+            sky.distribution,
+            sky.horizontal_illuminance,
+            sky.zenith_luminance,
+            sky.ground_reflectance
+        ),
     }
 }
 

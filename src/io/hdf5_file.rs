@@ -291,6 +291,7 @@ fn write_luminaires(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
     strings(g, "name", sources.iter().map(|l| l.name.as_str()))?;
     let kinds = s.scene.luminaires.iter().map(|l| match &l.kind {
         LuminaireKind::Parallel { .. } => "parallel",
+        LuminaireKind::Window { .. } => "window",
         LuminaireKind::Point(p) => match &p.distribution {
             Distribution::Isotropic { .. } => "isotropic",
             Distribution::Lambertian { .. } => "lambertian",
@@ -303,6 +304,7 @@ fn write_luminaires(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
         .map(|l| match &l.light {
             Light::Point { position, frame, .. } => (*position, -frame.normal),
             Light::Parallel { direction, .. } => (DVec3::NAN, *direction),
+            Light::Window { window, .. } => (window.centroid(), window.normal()),
         })
         .unzip();
     dataset(g, "position", &Array2::from_shape_fn((n, 3), |(i, c)| position[i][c]))?;
@@ -310,7 +312,7 @@ fn write_luminaires(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
     dataset(g, "flux", &Array1::from(s.energy.luminaire_emitted.clone()))?;
     let distribution = sources.iter().map(|l| match &l.light {
         Light::Point { distribution, .. } => distribution.flux(),
-        Light::Parallel { .. } => f64::NAN,
+        Light::Parallel { .. } | Light::Window { .. } => f64::NAN,
     });
     dataset(g, "distribution_flux", &Array1::from_iter(distribution))?;
     let stated = sources.iter().map(|l| match &l.light {

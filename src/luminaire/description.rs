@@ -2,7 +2,9 @@
 //! distribution, before it is placed in a frame (`Source`). The scene file is validated
 //! into these; nothing here sees TOML.
 
+use crate::geometry::ConvexPolygon;
 use crate::photometry::Distribution;
+use crate::sky::Sky;
 use glam::DVec3;
 use std::path::PathBuf;
 
@@ -20,6 +22,8 @@ pub enum LuminaireKind {
     Point(PointLuminaire),
     /// Parallel light (the sun): unit direction of travel and illuminance normal to the beam, lx.
     Parallel { direction: DVec3, illuminance: f64 },
+    /// An opening (`[[window]]`): the sky and the ground seen through the polygon.
+    Window { window: ConvexPolygon, sky: Sky },
 }
 
 /// A photometric point source.

@@ -16,6 +16,7 @@ mod material;
 mod plausible;
 mod polygon;
 mod schema;
+mod sky;
 mod surface;
 mod validate;
 
@@ -25,6 +26,7 @@ pub use files::{CaseFile, CaseFiles, regular_file};
 pub use grid::Grid;
 pub use light_scene::{DEFAULT_GROUP, LightGroup, LightScene, Lighting};
 pub use schema::RawCamera;
+pub use sky::{DEFAULT_GROUND_REFLECTANCE, DEFAULT_HORIZONTAL_ILLUMINANCE};
 
 use std::path::Path;
 

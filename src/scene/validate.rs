@@ -14,6 +14,7 @@ use super::grid::grids;
 use super::light_scene::{Sources, lighting};
 use super::luminaire::luminaires;
 use super::material::materials;
+use super::sky::daylight;
 use super::schema::{RawCamera, RawDirections, RawDiscretization, RawProbe, RawScene, RawSceneInfo, RawSolver};
 use super::surface::{emits, surfaces};
 use crate::directions::Scheme;
@@ -34,13 +35,19 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid)?;
     let mut luminaires = luminaires(path, &raw.luminaire, &files)?;
+    let (sky, openings) = daylight(path, raw.sky.as_ref(), &raw.window)?;
+    if let Some(clash) = openings.iter().find(|o| luminaires.iter().any(|l| l.name == o.name)) {
+        let message = format!("\"{}\" names a [[luminaire]] and a [[window]] or the [sky]'s sun", clash.name);
+        return Err(SceneError::new(path, "[[luminaire]]", "name", message));
+    }
+    luminaires.extend(openings);
     if luminaires.is_empty() && !surfaces.iter().any(|s| s.emission.is_some_and(emits)) {
         let message = "nothing emits light: give a [[surface]] an `emission` greater than 0, or add a [[luminaire]]";
         return Err(SceneError::new(path, "", "emission", message));
     }
     let sources = Sources {
         surface_groups: raw.surface.into_iter().map(|s| s.group).collect(),
-        luminaire_groups: raw.luminaire.into_iter().map(|l| l.group).collect(),
+        luminaire_groups: raw.luminaire.into_iter().map(|l| l.group).chain(std::iter::repeat_with(|| None)).take(luminaires.len()).collect(),
         surfaces: &mut surfaces,
         luminaires: &mut luminaires,
     };
@@ -58,6 +65,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         cameras,
         grids,
         luminaires,
+        sky,
         lighting,
         files: files.into_read(),
     })

@@ -9,6 +9,7 @@ mod magnitudes;
 mod parse_errors;
 mod ranges;
 mod rooms;
+mod sky;
 mod valid;
 mod validation_errors;
 
