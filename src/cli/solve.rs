@@ -96,6 +96,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         energy: &s.energy,
         probes: &s.probes,
         grids: &s.grids,
+        daylight: s.daylight.as_ref(),
         orders: s.orders.as_ref(),
         runs: &s.runs,
         norms: s.norms.as_ref(),
@@ -211,6 +212,9 @@ fn summary(s: &Solution, output: &Path) {
         for p in s.probes {
             println!("    {:<22} {:>15.4} {:>16.4} {:>17.4}", p.name, p.luminance, p.illuminance, p.direct);
         }
+    }
+    if let Some(d) = s.daylight.as_ref() {
+        super::daylight::report(d, s.probes, s.grids);
     }
     println!("  written            {}", output.display());
 }

@@ -2,9 +2,8 @@
 //! distribution, before it is placed in a frame (`Source`). The scene file is validated
 //! into these; nothing here sees TOML.
 
-use crate::geometry::ConvexPolygon;
 use crate::photometry::Distribution;
-use crate::sky::Sky;
+use crate::sky::{Opening, Sky};
 use glam::DVec3;
 use std::path::PathBuf;
 
@@ -23,7 +22,7 @@ pub enum LuminaireKind {
     /// Parallel light (the sun): unit direction of travel and illuminance normal to the beam, lx.
     Parallel { direction: DVec3, illuminance: f64 },
     /// An opening (`[[window]]`): the sky and the ground seen through the polygon.
-    Window { window: ConvexPolygon, sky: Sky },
+    Window { window: Opening, sky: Sky },
 }
 
 /// A photometric point source.

@@ -25,9 +25,9 @@ pub use description::{Luminaire, LuminaireKind, PointLuminaire};
 pub use patch::{DirectLight, PatchLight, direct_light, patch_lights};
 pub use point::{arriving_at, incoming};
 
-use crate::geometry::{ConvexPolygon, Frame};
+use crate::geometry::Frame;
 use crate::photometry::Distribution;
-use crate::sky::Sky;
+use crate::sky::{Opening, Sky};
 use glam::DVec3;
 
 /// A luminaire placed in the scene.
@@ -45,7 +45,7 @@ pub enum Light {
     /// Illuminance `illuminance` normal to a beam travelling along `direction`.
     Parallel { direction: DVec3, illuminance: f64 },
     /// The sky and the ground seen through the opening `window` (`crate::sky`).
-    Window { window: ConvexPolygon, sky: Sky },
+    Window { window: Opening, sky: Sky },
 }
 
 impl Source {

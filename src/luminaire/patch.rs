@@ -19,7 +19,7 @@
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Frame, Mesh, Patch};
-use crate::sky::{Sky, through_window};
+use crate::sky::{Opening, Sky, through_window};
 use crate::transfer::occlusion::cut_along_shadows;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
@@ -180,9 +180,9 @@ impl Onto<'_> {
     /// The sky and ground through `window`: `piece` is cut into quarters while it is large
     /// seen from the opening (diameter over distance above [`WINDOW_ETA`], at most
     /// [`WINDOW_DEPTH`] times), and each piece gets the light at its centroid.
-    fn window(&mut self, sky: &Sky, window: &ConvexPolygon, piece: &ConvexPolygon, depth: u32) {
+    fn window(&mut self, sky: &Sky, window: &Opening, piece: &ConvexPolygon, depth: u32) {
         let c = piece.centroid();
-        if depth < WINDOW_DEPTH && piece.diameter() > WINDOW_ETA * window.distance_to(c) {
+        if depth < WINDOW_DEPTH && piece.diameter() > WINDOW_ETA * window.polygon.distance_to(c) {
             piece.split().iter().for_each(|p| self.window(sky, window, p, depth + 1));
             return;
         }

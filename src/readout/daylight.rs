@@ -87,3 +87,23 @@ pub fn stats(daylight_factor: &[f64]) -> DaylightStats {
     let max = daylight_factor.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     DaylightStats { average, min, max, uniformity: if average > 0.0 { min / average } else { 0.0 } }
 }
+
+/// The daylight readouts of a solve under a `[sky]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DaylightReadings {
+    /// `E_h`, lx: the unobstructed sky's horizontal illuminance every quantity is a share of.
+    pub horizontal_illuminance: f64,
+    /// One per probe.
+    pub probes: Vec<Daylight>,
+    /// The daylight factor (%) at every point of every grid, grid by grid.
+    pub grids: Vec<Vec<f64>>,
+}
+
+/// The daylight at the probes and grids already read, under `sky`.
+pub fn read_daylight(model: &Model, sky: &Sky, probes: &[ProbeReading], grids: &[GridReading]) -> DaylightReadings {
+    DaylightReadings {
+        horizontal_illuminance: sky.horizontal_illuminance,
+        probes: probe_daylight(model, sky, probes),
+        grids: grids.iter().map(|g| grid_daylight_factor(sky, g)).collect(),
+    }
+}

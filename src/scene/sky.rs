@@ -9,7 +9,7 @@ use super::check::{Context, REL_TOL, show, unique_names};
 use super::error::SceneError;
 use crate::geometry::ConvexPolygon;
 use crate::luminaire::{Luminaire, LuminaireKind};
-use crate::sky::{Brightness, Distribution, SiteTime, Sky, SunPosition, day_of_year};
+use crate::sky::{Brightness, Distribution, Glazing, Opening, SiteTime, Sky, SunPosition, day_of_year};
 use serde::Deserialize;
 use std::path::Path;
 
@@ -42,7 +42,8 @@ pub enum RawSkyType {
     Name(String),
 }
 
-/// `[[window]]` as written: a rectangle (parallelogram) opening.
+/// `[[window]]` as written: a rectangle (parallelogram) opening, glazed when
+/// `transmittance` is given.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawWindow {
@@ -53,10 +54,16 @@ pub struct RawWindow {
     pub edge_u: [f64; 3],
     #[serde(deserialize_with = "super::arrays::exact")]
     pub edge_v: [f64; 3],
+    /// Glazing: the normal transmittance of one pane (none: an unglazed opening).
+    pub transmittance: Option<f64>,
+    pub panes: Option<i64>,
+    pub refractive_index: Option<f64>,
 }
 
 /// The horizontal illuminance of the sky when neither brightness key is given, lx.
 pub const DEFAULT_HORIZONTAL_ILLUMINANCE: f64 = 10_000.0;
+/// The glass's refractive index when `refractive_index` is not given.
+pub const DEFAULT_REFRACTIVE_INDEX: f64 = 1.52;
 /// The ground's reflectance when `ground_reflectance` is not given.
 pub const DEFAULT_GROUND_REFLECTANCE: f64 = 0.2;
 
@@ -90,10 +97,16 @@ pub(super) fn daylight(
         (Some(_), Some(_)) => {
             return Err(at.error("zenith_luminance", "give `zenith_luminance` or `horizontal_illuminance`, not both"));
         }
-        (Some(l), None) => Brightness::Zenith(at.magnitude("zenith_luminance", at.positive("zenith_luminance", l)?, " cd/m²")?),
+        (Some(l), None) => {
+            Brightness::Zenith(at.magnitude("zenith_luminance", at.positive("zenith_luminance", l)?, " cd/m²")?)
+        }
         (None, e) => {
             let e = e.unwrap_or(DEFAULT_HORIZONTAL_ILLUMINANCE);
-            Brightness::Horizontal(at.magnitude("horizontal_illuminance", at.positive("horizontal_illuminance", e)?, " lx")?)
+            Brightness::Horizontal(at.magnitude(
+                "horizontal_illuminance",
+                at.positive("horizontal_illuminance", e)?,
+                " lx",
+            )?)
         }
     };
     let ground = at.non_negative("ground_reflectance", raw.ground_reflectance.unwrap_or(DEFAULT_GROUND_REFLECTANCE))?;
@@ -146,8 +159,8 @@ fn site_time(at: &Context, raw: &RawSky) -> Result<SiteTime, SceneError> {
     }
     let longitude_deg = at.finite("longitude_deg", raw.longitude_deg.unwrap_or(0.0))?;
     let date = raw.date.as_deref().unwrap_or("");
-    let day_of_year = parse_date(date)
-        .ok_or_else(|| at.error("date", format!("must be a date \"YYYY-MM-DD\", got \"{date}\"")))?;
+    let day_of_year =
+        parse_date(date).ok_or_else(|| at.error("date", format!("must be a date \"YYYY-MM-DD\", got \"{date}\"")))?;
     let time = raw.time.as_deref().unwrap_or("");
     let hours = parse_time(time)
         .ok_or_else(|| at.error("time", format!("must be a local standard time \"HH:MM\", got \"{time}\"")))?;
@@ -175,7 +188,36 @@ fn window(at: &Context, w: &RawWindow, sky: &Sky) -> Result<Luminaire, SceneErro
     if u.cross(v).length() <= REL_TOL * u.length() * v.length() || u.length() == 0.0 || v.length() == 0.0 {
         return Err(at.error("edge_v", format!("edge_u {} and edge_v {} span no area", show(u), show(v))));
     }
-    let window = ConvexPolygon::quad(origin, origin + u, origin + u + v, origin + v);
+    let polygon = ConvexPolygon::quad(origin, origin + u, origin + u + v, origin + v);
+    let window = Opening { polygon, glazing: glazing(at, w)? };
     Ok(Luminaire { name: w.name.clone(), kind: LuminaireKind::Window { window, sky: sky.clone() } })
 }
 
+/// `transmittance`, `panes` (1 or 2, default 1) and `refractive_index` (default 1.52).
+fn glazing(at: &Context, w: &RawWindow) -> Result<Option<Glazing>, SceneError> {
+    let Some(normal) = w.transmittance else {
+        if let Some((key, _)) = [("panes", w.panes.is_some()), ("refractive_index", w.refractive_index.is_some())]
+            .into_iter()
+            .find(|(_, given)| *given)
+        {
+            return Err(at.error(key, "applies only to a glazed window: give `transmittance`"));
+        }
+        return Ok(None);
+    };
+    let index = at.finite("refractive_index", w.refractive_index.unwrap_or(DEFAULT_REFRACTIVE_INDEX))?;
+    if !(1.0..=4.0).contains(&index) || index == 1.0 {
+        return Err(at.error("refractive_index", format!("must be greater than 1 and at most 4, got {index}")));
+    }
+    let panes = match w.panes.unwrap_or(1) {
+        n @ (1 | 2) => n as u8,
+        n => return Err(at.error("panes", format!("must be 1 or 2, got {n}"))),
+    };
+    let normal = at.positive("transmittance", normal)?;
+    Glazing::new(normal, index, panes).map(Some).ok_or_else(|| {
+        let most = Glazing::lossless(index);
+        at.error(
+            "transmittance",
+            format!("a pane of refractive index {index} transmits at most {most:.4}, got {normal}"),
+        )
+    })
+}

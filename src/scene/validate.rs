@@ -14,8 +14,8 @@ use super::grid::grids;
 use super::light_scene::{Sources, lighting};
 use super::luminaire::luminaires;
 use super::material::materials;
-use super::sky::daylight;
 use super::schema::{RawCamera, RawDirections, RawDiscretization, RawProbe, RawScene, RawSceneInfo, RawSolver};
+use super::sky::daylight;
 use super::surface::{emits, surfaces};
 use crate::directions::Scheme;
 use crate::solve::Method;
@@ -47,7 +47,13 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     }
     let sources = Sources {
         surface_groups: raw.surface.into_iter().map(|s| s.group).collect(),
-        luminaire_groups: raw.luminaire.into_iter().map(|l| l.group).chain(std::iter::repeat_with(|| None)).take(luminaires.len()).collect(),
+        luminaire_groups: raw
+            .luminaire
+            .into_iter()
+            .map(|l| l.group)
+            .chain(std::iter::repeat_with(|| None))
+            .take(luminaires.len())
+            .collect(),
         surfaces: &mut surfaces,
         luminaires: &mut luminaires,
     };

@@ -41,7 +41,5 @@ pub fn hemisphere(g: impl Fn(f64, f64) -> f64) -> f64 {
     let (n, m) = NODES;
     let rule = gauss_legendre(n);
     let step = TAU / m as f64;
-    rule.iter()
-        .map(|&(u, w)| w * u * (0..m).map(|j| g(u, (j as f64 + 0.5) * step)).sum::<f64>() * step)
-        .sum()
+    rule.iter().map(|&(u, w)| w * u * (0..m).map(|j| g(u, (j as f64 + 0.5) * step)).sum::<f64>() * step).sum()
 }

@@ -6,7 +6,7 @@
 //! of ISO 15469/CIE S 011 and the traditional overcast sky), the sun's position
 //! (`sun.rs`), the normalisation by the zenith luminance or by the unobstructed horizontal
 //! illuminance (`integrate.rs`), and the light a receiving point gets through an opening
-//! (`window.rs`): sky and ground seen through the opening's polygon, piece by piece, each
+//! (`window.rs`, glazed or not: `glazing.rs`): sky and ground seen through the opening's polygon, piece by piece, each
 //! piece's exact projected solid angle times the luminance towards it, shadows included.
 //! The sky enters the system exactly like a luminaire's direct light (`crate::luminaire`,
 //! `Light::Window`); nothing here knows about patches' cells or materials.
@@ -15,15 +15,17 @@
 //! The ground is a uniform Lambertian plane of reflectance `ρ_g` below the horizon:
 //! `L_g = ρ_g (E_h + E_sun,h)/π`, lit by the unobstructed sky and the sun.
 
+mod glazing;
 mod integrate;
 mod standard;
 mod sun;
 mod window;
 
+pub use glazing::Glazing;
 pub use integrate::{gauss_legendre, hemisphere};
 pub use standard::{Distribution, GENERAL, Parameters, gradation, indicatrix};
 pub use sun::{SiteTime, SunPosition, day_of_year, declination_and_equation_of_time};
-pub use window::{Component, ETA, MAX_DEPTH, through_window};
+pub use window::{Component, ETA, MAX_DEPTH, Opening, through_window};
 
 use glam::DVec3;
 use std::f64::consts::PI;

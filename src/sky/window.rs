@@ -11,8 +11,10 @@
 //! ray through them leaves the scene (`sees`), pieces on a shadow edge cut further
 //! (`crate::transfer::occlusion::cut_along_shadows`). A uniform sky is thus exact
 //! (`E = π L F`), and the error of a graded sky is of second order in the pieces' size.
+//! A glazed opening multiplies each piece's luminance by the glazing's `τ(θ)` at the
+//! incidence of the piece's direction on the opening (`glazing.rs`).
 
-use super::Sky;
+use super::{Glazing, Sky};
 use crate::geometry::{ConvexPolygon, MAX_CLIPPED};
 use crate::transfer::contour::projected_solid_angle;
 use crate::transfer::occlusion::cut_along_shadows;
@@ -23,6 +25,14 @@ pub const ETA: f64 = 0.1;
 /// Most levels of cutting for size.
 pub const MAX_DEPTH: u32 = 8;
 
+/// An opening: a parallelogram (or triangle) in the surfaces, glazed or not.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Opening {
+    pub polygon: ConvexPolygon,
+    /// The glass over it, if any: the outside is seen times `τ(θ)`.
+    pub glazing: Option<Glazing>,
+}
+
 /// Which part of the outside a piece of the opening shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Component {
@@ -32,20 +42,22 @@ pub enum Component {
     Ground,
 }
 
-/// Hands `visit` every piece of `window` seen from `p` (unit normal `n`): the unit
+/// Hands `visit` every piece of the opening `window` seen from `p` (unit normal `n`): the unit
 /// direction towards it, the illuminance it gives on the plane of `p` (lx) and its
 /// component. `sees(x)` says whether the ray from `p` through the point `x` of the
 /// opening leaves the scene; a piece crossed by a shadow edge is cut further only while
 /// its unshadowed illuminance exceeds `least` lx. Returns the rays traced.
 pub fn through_window(
     sky: &Sky,
-    window: &ConvexPolygon,
+    opening: &Opening,
     p: DVec3,
     n: DVec3,
     sees: &dyn Fn(DVec3) -> bool,
     least: f64,
     visit: &mut dyn FnMut(DVec3, f64, Component),
 ) -> usize {
+    let window = &opening.polygon;
+    let glazing = opening.glazing.map(|g| (g, window.normal()));
     let size = window.diameter();
     if window.vertices().iter().all(|v| (*v - p).dot(n) <= 1e-12 * size) {
         return 0;
@@ -61,7 +73,8 @@ pub fn through_window(
             if m >= 3 {
                 let piece = ConvexPolygon::from_slice(&part[..m]);
                 let smallest = 1e-12 * size * size;
-                let mut view = View { sky, p, n, sees, least, component, visit: &mut *visit, rays: 0, smallest };
+                let mut view =
+                    View { sky, glazing, p, n, sees, least, component, visit: &mut *visit, rays: 0, smallest };
                 view.piece(&piece, 0);
                 rays += view.rays;
             }
@@ -73,6 +86,8 @@ pub fn through_window(
 /// One component of one triangle of the opening, seen from one point.
 struct View<'a, 'v> {
     sky: &'a Sky,
+    /// The glass and the opening's unit normal.
+    glazing: Option<(Glazing, DVec3)>,
     p: DVec3,
     n: DVec3,
     sees: &'a dyn Fn(DVec3) -> bool,
@@ -94,12 +109,14 @@ impl View<'_, '_> {
             return;
         }
         let (sky, p, n, component, least) = (self.sky, self.p, self.n, self.component, self.least);
+        let glazing = self.glazing;
         let light = |part: &ConvexPolygon| {
             let towards = (part.centroid() - p).normalize_or_zero();
-            let luminance = match component {
+            let outside = match component {
                 Component::Sky => sky.sky_luminance(towards),
                 Component::Ground => sky.ground_luminance(),
             };
+            let luminance = glazing.map_or(outside, |(g, normal)| outside * g.transmittance(towards.dot(normal)));
             (towards, luminance * projected_solid_angle(p, n, part.vertices()).abs())
         };
         let worth = |part: &ConvexPolygon| light(part).1 > least;

@@ -41,13 +41,16 @@ fn a_sky_with_a_window_and_the_sun_is_read() {
 
 #[test]
 fn daylight_mistakes_are_named_by_table_and_key() {
-    let e = rejected(&daylit("type = \"overcast\"\nsun_altitude_deg = 60\nsun_azimuth_deg = 180\ngruond_reflectance = 0.2"));
+    let e = rejected(&daylit(
+        "type = \"overcast\"\nsun_altitude_deg = 60\nsun_azimuth_deg = 180\ngruond_reflectance = 0.2",
+    ));
     assert_error(&e, "[sky]", "gruond_reflectance", &["unknown field"]);
     let e = rejected(&daylit("type = 16\nsun_altitude_deg = 60\nsun_azimuth_deg = 180"));
     assert_error(&e, "[sky]", "type", &["overcast", "1 to 15"]);
     let e = rejected(&daylit("type = \"overcast\"\nsun_altitude_deg = 60"));
     assert_error(&e, "[sky]", "sun_altitude_deg", &["latitude_deg"]);
-    let e = rejected(&daylit("type = 3\nlatitude_deg = 52\nlongitude_deg = 13\ndate = \"2026-02-30\"\ntime = \"12:00\""));
+    let e =
+        rejected(&daylit("type = 3\nlatitude_deg = 52\nlongitude_deg = 13\ndate = \"2026-02-30\"\ntime = \"12:00\""));
     assert_error(&e, "[sky]", "date", &["YYYY-MM-DD"]);
     let e = rejected(&daylit("type = 3\nsun_altitude_deg = 60\nsun_azimuth_deg = 0\nground_reflectance = 1.5"));
     assert_error(&e, "[sky]", "ground_reflectance", &["at most 1"]);
@@ -55,6 +58,13 @@ fn daylight_mistakes_are_named_by_table_and_key() {
     assert_error(&e, "[sky]", "north", &["horizontal"]);
     let e = rejected(&format!("{BASE}{FLOOR}{WINDOW}"));
     assert_error(&e, "[[window]] \"roof\" (#1)", "", &["[sky]"]);
+    let glazed =
+        format!("{BASE}{FLOOR}[sky]\ntype = 5\nsun_altitude_deg = 60\nsun_azimuth_deg = 0\n{WINDOW}panes = 2\n");
+    assert_error(&rejected(&glazed), "[[window]] \"roof\" (#1)", "panes", &["transmittance"]);
+    let clear = format!(
+        "{BASE}{FLOOR}[sky]\ntype = 5\nsun_altitude_deg = 60\nsun_azimuth_deg = 0\n{WINDOW}transmittance = 0.97\n"
+    );
+    assert_error(&rejected(&clear), "[[window]] \"roof\" (#1)", "transmittance", &["at most 0.9"]);
     let flat = WINDOW.replace("edge_v = [0, 0, 1]", "edge_v = [2, 0, 0]");
     let e = rejected(&format!("{BASE}{FLOOR}[sky]\ntype = 5\nsun_altitude_deg = 60\nsun_azimuth_deg = 0\n{flat}"));
     assert_error(&e, "[[window]] \"roof\" (#1)", "edge_v", &["no area"]);

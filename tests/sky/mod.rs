@@ -1,6 +1,8 @@
 //! The sky model (`src/sky/`): the CIE distributions against their published values and
 //! closed forms, the normalisation by integration, the sun's position.
 
+mod glazing;
+mod office;
 mod position;
 mod window;
 

@@ -24,7 +24,9 @@ fn days_of_the_year_count_leap_years() {
 #[test]
 fn the_sun_culminates_due_south_at_ninety_minus_latitude_plus_declination() {
     // Berlin, 21 June, local standard time UTC+1: the highest altitude of the day.
-    let at = |hours: f64| SiteTime { latitude_deg: 52.5, longitude_deg: 13.4, day_of_year: 172, hours, timezone_h: 1.0 }.sun();
+    let at = |hours: f64| {
+        SiteTime { latitude_deg: 52.5, longitude_deg: 13.4, day_of_year: 172, hours, timezone_h: 1.0 }.sun()
+    };
     let (mut best, mut when) = (f64::MIN, 0.0);
     for minute in 0..24 * 60 {
         let s = at(minute as f64 / 60.0);

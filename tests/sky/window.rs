@@ -6,7 +6,7 @@ use super::sun;
 use glam::DVec3;
 use std::f64::consts::PI;
 use ugo::geometry::ConvexPolygon;
-use ugo::sky::{Brightness, Component, Distribution, Sky, through_window};
+use ugo::sky::{Brightness, Component, Distribution, Opening, Sky, through_window};
 use ugo::transfer::contour::point_to_polygon;
 
 fn sky(distribution: Distribution, ground: f64) -> Sky {
@@ -16,7 +16,8 @@ fn sky(distribution: Distribution, ground: f64) -> Sky {
 /// `(SC, ERC)` at `p` facing `n` through `window`, nothing in the way, lx.
 fn components(sky: &Sky, window: &ConvexPolygon, p: DVec3, n: DVec3) -> (f64, f64) {
     let (mut s, mut g) = (0.0, 0.0);
-    through_window(sky, window, p, n, &|_| true, 0.0, &mut |_, e, c| match c {
+    let opening = Opening { polygon: *window, glazing: None };
+    through_window(sky, &opening, p, n, &|_| true, 0.0, &mut |_, e, c| match c {
         Component::Sky => s += e,
         Component::Ground => g += e,
     });
