@@ -81,6 +81,7 @@ test-petsc: petsc build
 # (the OBJ included).
 cases: deps
 	python3 $(ROOMS) --check
+	python3 cases/generate/daylight.py --check
 	python3 $(ROOMS)
 
 $(HALL_OBJ): $(ROOMS) | deps

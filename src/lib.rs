@@ -5,7 +5,7 @@
 //! `src/` and enforces both). From the bottom up:
 //!
 //! 1. vocabulary: [`directions`], [`geometry`], [`visibility`], [`random`], [`progress`], [`interrupt`]
-//! 2. physics: [`material`], [`photometry`], [`transfer`], [`luminaire`]
+//! 2. physics: [`material`], [`photometry`], [`transfer`], [`sky`], [`luminaire`]
 //! 3. kernel: [`kernel`]
 //! 4. solve: [`solve`], [`basis`]
 //! 5. scene: [`scene`]
@@ -32,6 +32,7 @@ pub mod random;
 pub mod readout;
 pub mod render;
 pub mod scene;
+pub mod sky;
 pub mod solve;
 pub mod study;
 pub mod trace;

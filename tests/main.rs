@@ -19,6 +19,7 @@ mod readout;
 mod render;
 mod robustness;
 mod scene;
+mod sky;
 pub mod solve;
 mod study;
 mod support;

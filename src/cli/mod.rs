@@ -3,6 +3,7 @@
 pub mod agree;
 pub mod basis;
 pub mod bench;
+pub mod daylight;
 pub mod export;
 pub mod info;
 pub mod kernel;
@@ -127,6 +128,15 @@ pub fn describe(source: &Source) -> String {
                 direction.x, direction.y, direction.z
             )
         }
+        Light::Window { window, sky } => format!(
+            "opening of {:.4} m²{}, sky {:?}, E_h = {:.1} lx, L_z = {:.1} cd/m², ground ρ = {}",
+            window.polygon.area(),
+            window.glazing.map_or(String::new(), |g| format!(" glazed ({} pane(s), n = {})", g.panes, g.index)),
+            sky.distribution,
+            sky.horizontal_illuminance,
+            sky.zenith_luminance,
+            sky.ground_reflectance
+        ),
     }
 }
 

@@ -98,6 +98,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         energy: &s.energy,
         probes: &s.probes,
         grids: &s.grids,
+        daylight: s.daylight.as_ref(),
         orders: s.orders.as_ref(),
         runs: &s.runs,
         norms: s.norms.as_ref(),
@@ -215,16 +216,20 @@ fn summary(s: &Solution, output: &Path) {
             println!("    {:<22} {:>15.4} {:>16.4} {:>17.4}", p.name, p.luminance, p.illuminance, p.direct);
         }
     }
+    if let Some(d) = s.daylight.as_ref() {
+        super::daylight::report(d, s.probes, s.grids);
+    }
     println!("  written            {}", output.display());
 }
 
-/// Where the luminaires are, for the grids' plans (a parallel light is nowhere).
+/// Where the luminaires are, for the grids' plans (a parallel light and the sky through a
+/// window are nowhere).
 fn positions(sources: &[Source]) -> Vec<DVec3> {
     sources
         .iter()
         .filter_map(|s| match &s.light {
             Light::Point { position, .. } => Some(*position),
-            Light::Parallel { .. } => None,
+            Light::Parallel { .. } | Light::Window { .. } => None,
         })
         .collect()
 }

@@ -21,6 +21,7 @@
 //! The file is written under a temporary name and renamed when complete.
 
 use super::dataset::{dataset, strings, text_attr};
+use super::daylight_group::write_daylight;
 use super::readout_group::{write_grid, write_probes};
 use crate::basis::{Factorization, MaterialFactor};
 use crate::directions::DirectionSet;
@@ -29,6 +30,7 @@ use crate::luminaire::Light;
 use crate::luminaire::LuminaireKind;
 use crate::model::{Fingerprint, Model};
 use crate::photometry::Distribution;
+use crate::readout::daylight::DaylightReadings;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
 use crate::readout::grid::GridReading;
@@ -54,6 +56,8 @@ pub struct Solution<'a> {
     pub energy: &'a EnergyBalance,
     pub probes: &'a [ProbeReading],
     pub grids: &'a [GridReading],
+    /// The daylight readouts, under a `[sky]` (`/daylight`, `daylight_group.rs`).
+    pub daylight: Option<&'a DaylightReadings>,
     /// The reflection-order record, when taken.
     pub orders: Option<&'a OrderRecord>,
     /// Every method run on the system (one for `solve`, several for `compare`).
@@ -141,6 +145,7 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     dataset(&energy, "surface_absorbed", &Array1::from(s.energy.surface_absorbed.clone()))?;
 
     write_probes(&file.create_group("probes")?, s.probes)?;
+    s.daylight.map(|d| write_daylight(&file.create_group("daylight")?, d, s.probes, s.grids)).transpose()?;
     let grids = file.create_group("grids")?;
     for grid in s.grids {
         write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
@@ -291,6 +296,7 @@ fn write_luminaires(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
     strings(g, "name", sources.iter().map(|l| l.name.as_str()))?;
     let kinds = s.scene.luminaires.iter().map(|l| match &l.kind {
         LuminaireKind::Parallel { .. } => "parallel",
+        LuminaireKind::Window { .. } => "window",
         LuminaireKind::Point(p) => match &p.distribution {
             Distribution::Isotropic { .. } => "isotropic",
             Distribution::Lambertian { .. } => "lambertian",
@@ -303,6 +309,7 @@ fn write_luminaires(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
         .map(|l| match &l.light {
             Light::Point { position, frame, .. } => (*position, -frame.normal),
             Light::Parallel { direction, .. } => (DVec3::NAN, *direction),
+            Light::Window { window, .. } => (window.polygon.centroid(), window.polygon.normal()),
         })
         .unzip();
     dataset(g, "position", &Array2::from_shape_fn((n, 3), |(i, c)| position[i][c]))?;
@@ -310,7 +317,7 @@ fn write_luminaires(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
     dataset(g, "flux", &Array1::from(s.energy.luminaire_emitted.clone()))?;
     let distribution = sources.iter().map(|l| match &l.light {
         Light::Point { distribution, .. } => distribution.flux(),
-        Light::Parallel { .. } => f64::NAN,
+        Light::Parallel { .. } | Light::Window { .. } => f64::NAN,
     });
     dataset(g, "distribution_flux", &Array1::from_iter(distribution))?;
     let stated = sources.iter().map(|l| match &l.light {

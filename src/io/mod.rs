@@ -7,6 +7,7 @@ mod atomic;
 mod basis_plot;
 mod bytes_file;
 mod dataset;
+mod daylight_group;
 mod error;
 mod estimate_file;
 mod export;

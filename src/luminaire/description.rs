@@ -3,6 +3,7 @@
 //! into these; nothing here sees TOML.
 
 use crate::photometry::Distribution;
+use crate::sky::{Opening, Sky};
 use glam::DVec3;
 use std::path::PathBuf;
 
@@ -20,6 +21,8 @@ pub enum LuminaireKind {
     Point(PointLuminaire),
     /// Parallel light (the sun): unit direction of travel and illuminance normal to the beam, lx.
     Parallel { direction: DVec3, illuminance: f64 },
+    /// An opening (`[[window]]`): the sky and the ground seen through the polygon.
+    Window { window: Opening, sky: Sky },
 }
 
 /// A photometric point source.

@@ -12,7 +12,8 @@
 //!
 //! Owns the luminaires as described (`description.rs`), the placed sources ([`Source`]: a point source's frame from its aim, its
 //! multiplier and tilt factor; parallel light), the patch-averaged illuminance
-//! (`patch.rs`) and the exact illuminance at a point for probes (`point.rs`).
+//! (`patch.rs`) and the exact illuminance at a point for probes (`point.rs`). An opening
+//! (`[[window]]`) is a source too: the sky and the ground seen through it (`crate::sky`).
 
 mod aim;
 mod description;
@@ -26,6 +27,7 @@ pub use point::{arriving_at, incoming};
 
 use crate::geometry::Frame;
 use crate::photometry::Distribution;
+use crate::sky::{Opening, Sky};
 use glam::DVec3;
 
 /// A luminaire placed in the scene.
@@ -42,6 +44,8 @@ pub enum Light {
     Point { position: DVec3, frame: Frame, distribution: Distribution, scale: f64 },
     /// Illuminance `illuminance` normal to a beam travelling along `direction`.
     Parallel { direction: DVec3, illuminance: f64 },
+    /// The sky and the ground seen through the opening `window` (`crate::sky`).
+    Window { window: Opening, sky: Sky },
 }
 
 impl Source {
@@ -68,6 +72,7 @@ impl Source {
             LuminaireKind::Parallel { direction, illuminance } => {
                 Light::Parallel { direction: *direction, illuminance: *illuminance }
             }
+            LuminaireKind::Window { window, sky } => Light::Window { window: *window, sky: sky.clone() },
         };
         Source { name: luminaire.name.clone(), light }
     }
@@ -85,15 +90,17 @@ impl Source {
             Light::Parallel { direction, illuminance } => {
                 Light::Parallel { direction: *direction, illuminance: illuminance * factor }
             }
+            Light::Window { window, sky } => Light::Window { window: *window, sky: sky.scaled(factor) },
         };
         Source { name: self.name.clone(), light }
     }
 
-    /// The flux leaving a point source, lm; none for parallel light (an unbounded beam).
+    /// The flux leaving a point source, lm; none for parallel light (an unbounded beam)
+    /// and an opening.
     pub fn flux(&self) -> Option<f64> {
         match &self.light {
             Light::Point { distribution, scale, .. } => Some(scale * distribution.flux()),
-            Light::Parallel { .. } => None,
+            Light::Parallel { .. } | Light::Window { .. } => None,
         }
     }
 
@@ -101,7 +108,7 @@ impl Source {
     pub fn intensity(&self, w: DVec3) -> f64 {
         match &self.light {
             Light::Point { frame, distribution, scale, .. } => scale * distribution.intensity(frame.local(w)),
-            Light::Parallel { .. } => 0.0,
+            Light::Parallel { .. } | Light::Window { .. } => 0.0,
         }
     }
 }

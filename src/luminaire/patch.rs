@@ -11,10 +11,15 @@
 //! Parallel light along `l` with normal illuminance `E_n`: each piece receives
 //! `E_n cosθ A` times the fraction of its points from which a ray towards `−l` escapes the
 //! scene. Each piece's light goes to the cell of the patch frame it arrives from.
+//!
+//! An opening: the patch is cut while it is large seen from the opening, and each piece
+//! gets the sky and ground through it at its centroid (`crate::sky::through_window`),
+//! piece of the opening by piece, each to the cell it arrives from.
 
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Frame, Mesh, Patch};
+use crate::sky::{Opening, Sky, through_window};
 use crate::transfer::occlusion::cut_along_shadows;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
@@ -25,6 +30,10 @@ use std::f64::consts::PI;
 pub const ETA: f64 = 0.15;
 /// Most levels of cutting for size.
 pub const MAX_DEPTH: u32 = 8;
+/// A patch is cut while its diameter exceeds `WINDOW_ETA` times its distance from an opening.
+pub const WINDOW_ETA: f64 = 0.25;
+/// Most levels of cutting a patch for an opening.
+pub const WINDOW_DEPTH: u32 = 3;
 
 /// The luminaires' direct light on the patches.
 #[derive(Debug, Clone, PartialEq)]
@@ -111,6 +120,7 @@ pub fn patch_lights(
                                 onto.parallel(*direction, illuminance * cos, &patch.polygon);
                             }
                         }
+                        Light::Window { window, sky } => onto.window(sky, window, &patch.polygon, 0),
                     }
                     onto.flux
                 })
@@ -165,6 +175,25 @@ impl Onto<'_> {
             cut_along_shadows(piece, 0, &escapes, &worth, &mut |part, seen| flux += normal_share * part.area() * seen);
         self.rays += rays;
         self.add(-direction, flux);
+    }
+
+    /// The sky and ground through `window`: `piece` is cut into quarters while it is large
+    /// seen from the opening (diameter over distance above [`WINDOW_ETA`], at most
+    /// [`WINDOW_DEPTH`] times), and each piece gets the light at its centroid.
+    fn window(&mut self, sky: &Sky, window: &Opening, piece: &ConvexPolygon, depth: u32) {
+        let c = piece.centroid();
+        if depth < WINDOW_DEPTH && piece.diameter() > WINDOW_ETA * window.polygon.distance_to(c) {
+            piece.split().iter().for_each(|p| self.window(sky, window, p, depth + 1));
+            return;
+        }
+        let (visibility, face, area) = (self.visibility, self.patch.face, piece.area());
+        let sees = |x: DVec3| visibility.closest_hit(c, x - c, face).is_none();
+        let least = self.least / area;
+        let mut arrivals = Vec::new();
+        self.rays += through_window(sky, window, c, self.patch.normal, &sees, least, &mut |towards, e, _| {
+            arrivals.push((towards, e * area));
+        });
+        arrivals.into_iter().for_each(|(towards, flux)| self.add(towards, flux));
     }
 
     /// `flux` arriving from the world direction `towards_source`.

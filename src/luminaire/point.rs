@@ -1,10 +1,13 @@
 //! The luminaires' direct light at one point, exactly: for a probe, `E = I(w) cosθ / r²`
 //! with one shadow ray to the source (parallel light: `E_n cosθ` when a ray towards the sun
-//! escapes), split by the direction cell of `frame` it arrives in.
+//! escapes), split by the direction cell of `frame` it arrives in. An opening gives the sky
+//! and ground through it piece by piece (`crate::sky::through_window`); it has no single
+//! direction, so [`incoming`] knows none.
 
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::Frame;
+use crate::sky::through_window;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
 use std::f64::consts::PI;
@@ -26,6 +29,7 @@ pub fn incoming(source: &Source, visibility: &Visibility, p: DVec3, ignore: u32)
         Light::Parallel { direction, illuminance } => {
             visibility.closest_hit(p, -*direction, ignore).is_none().then_some((-*direction, *illuminance))
         }
+        Light::Window { .. } => None,
     }
 }
 
@@ -44,6 +48,13 @@ pub fn arriving_at(
         let faces = match &source.light {
             Light::Point { position, .. } => (*position - p).dot(frame.normal) > 0.0,
             Light::Parallel { direction, .. } => direction.dot(frame.normal) < 0.0,
+            Light::Window { window, sky } => {
+                let sees = |x: DVec3| visibility.closest_hit(p, x - p, ignore).is_none();
+                through_window(sky, window, p, frame.normal, &sees, 0.0, &mut |towards, e, _| {
+                    out[directions.lookup(frame.local(towards))] += e / PI;
+                });
+                false
+            }
         };
         if let Some((towards, normal)) = faces.then(|| incoming(source, visibility, p, ignore)).flatten() {
             out[directions.lookup(frame.local(towards))] += normal * towards.dot(frame.normal) / PI;

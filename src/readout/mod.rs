@@ -3,6 +3,7 @@
 //! illuminance), grids and the energy balance in lumens.
 
 pub mod cylindrical;
+pub mod daylight;
 pub mod energy;
 pub mod field;
 pub mod gather;

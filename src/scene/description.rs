@@ -8,6 +8,7 @@ use crate::directions::Scheme;
 use crate::geometry::Surface;
 use crate::luminaire::Luminaire;
 use crate::material::MaterialModel;
+use crate::sky::Sky;
 use crate::solve::Method;
 use glam::DVec3;
 use std::path::PathBuf;
@@ -28,7 +29,10 @@ pub struct Scene {
     pub probes: Vec<Probe>,
     pub cameras: Vec<Camera>,
     pub grids: Vec<Grid>,
+    /// The `[[luminaire]]` tables, then one per `[[window]]`, then the `[sky]`'s sun.
     pub luminaires: Vec<Luminaire>,
+    /// `[sky]`: the sky, sun and ground outside the openings.
+    pub sky: Option<Sky>,
     /// The sources' groups, the light scenes and the maintenance factor (already applied).
     pub lighting: Lighting,
     /// Every file the case names (OBJ, photometric), as read.

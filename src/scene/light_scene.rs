@@ -113,6 +113,7 @@ pub(super) fn lighting(
         match &mut l.kind {
             LuminaireKind::Point(p) => p.multiplier *= maintenance_factor,
             LuminaireKind::Parallel { illuminance, .. } => *illuminance *= maintenance_factor,
+            LuminaireKind::Window { sky, .. } => *sky = sky.scaled(maintenance_factor),
         }
     }
     Ok(Lighting { maintenance_factor, groups, scenes })

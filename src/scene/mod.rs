@@ -20,6 +20,7 @@ mod polygon;
 mod probe;
 mod schema;
 mod shape_keys;
+mod sky;
 mod surface;
 mod validate;
 
@@ -30,6 +31,7 @@ pub use grid::{Grid, MapScale, MapStyle};
 pub use light_scene::{DEFAULT_GROUP, LightGroup, LightScene, Lighting};
 pub use probe::{Probe, ProbeKind};
 pub use schema::RawCamera;
+pub use sky::{DEFAULT_GROUND_REFLECTANCE, DEFAULT_HORIZONTAL_ILLUMINANCE};
 
 use std::path::Path;
 

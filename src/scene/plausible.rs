@@ -116,7 +116,7 @@ pub fn warnings(scene: &Scene) -> Vec<SceneError> {
                 "illuminance",
                 format!("{illuminance:e} lx is more than direct sunlight gives (about 1.2e5 lx)"),
             )),
-            LuminaireKind::Parallel { .. } => {}
+            LuminaireKind::Parallel { .. } | LuminaireKind::Window { .. } => {}
         }
     }
     out

@@ -30,6 +30,9 @@ pub struct RawScene {
     pub lighting: Option<super::light_scene::RawLighting>,
     #[serde(default)]
     pub light_scene: Vec<super::light_scene::RawLightScene>,
+    pub sky: Option<super::sky::RawSky>,
+    #[serde(default)]
+    pub window: Vec<super::sky::RawWindow>,
 }
 
 /// `[scene]`.

@@ -16,6 +16,7 @@ use super::luminaire::luminaires;
 use super::material::materials;
 use super::probe::probes;
 use super::schema::{RawCamera, RawDirections, RawDiscretization, RawScene, RawSceneInfo, RawSolver};
+use super::sky::daylight;
 use super::surface::{emits, surfaces};
 use crate::directions::Scheme;
 use crate::solve::Method;
@@ -35,13 +36,25 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid)?;
     let (mut luminaires, tables) = luminaires(path, &source, &raw.luminaire, &files)?;
+    let (sky, openings) = daylight(path, raw.sky.as_ref(), &raw.window)?;
+    if let Some(clash) = openings.iter().find(|o| luminaires.iter().any(|l| l.name == o.name)) {
+        let message = format!("\"{}\" names a [[luminaire]] and a [[window]] or the [sky]'s sun", clash.name);
+        return Err(SceneError::new(path, "[[luminaire]]", "name", message));
+    }
+    luminaires.extend(openings);
     if luminaires.is_empty() && !surfaces.iter().any(|s| s.emission.is_some_and(emits)) {
         let message = "nothing emits light: give a [[surface]] an `emission` greater than 0, or add a [[luminaire]]";
         return Err(SceneError::new(path, "", "emission", message));
     }
     let sources = Sources {
         surface_groups: surface_tables.iter().map(|&t| raw.surface[t].group.clone()).collect(),
-        luminaire_groups: tables.iter().map(|&t| raw.luminaire[t].group.clone()).collect(),
+        // windows and the sun (after the tables' luminaires) belong to the default group
+        luminaire_groups: tables
+            .iter()
+            .map(|&t| raw.luminaire[t].group.clone())
+            .chain(std::iter::repeat_with(|| None))
+            .take(luminaires.len())
+            .collect(),
         surfaces: &mut surfaces,
         luminaires: &mut luminaires,
     };
@@ -59,6 +72,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         cameras,
         grids,
         luminaires,
+        sky,
         lighting,
         files: files.into_read(),
     })

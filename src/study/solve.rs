@@ -10,6 +10,7 @@ use crate::io::Run;
 use crate::kernel::{Explicit, Factored, TooLarge};
 use crate::model::{Model, ModelError, ModelOptions};
 use crate::progress::Progress;
+use crate::readout::daylight::{DaylightReadings, read_daylight};
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
 use crate::readout::grid::{GridReading, read_grids};
@@ -105,6 +106,8 @@ pub struct Solved {
     pub energy: EnergyBalance,
     pub probes: Vec<ProbeReading>,
     pub grids: Vec<GridReading>,
+    /// SC, ERC, IRC and DF at the probes and grids, under a `[sky]`.
+    pub daylight: Option<DaylightReadings>,
     pub orders: Option<OrderRecord>,
     pub norms: Option<Norms>,
     /// The leading eigenpairs of the full `K` (`--spectrum N`).
@@ -174,6 +177,7 @@ pub fn solve_case(
     let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
     let probes = read_probes(&scene.probes, &model, &field);
     let grids = read_grids(&scene.grids, &model, &field);
+    let daylight = scene.sky.as_ref().map(|sky| read_daylight(&model, sky, &probes, &grids));
     let mut solved = Solved {
         model,
         runs,
@@ -187,6 +191,7 @@ pub fn solve_case(
         energy,
         probes,
         grids,
+        daylight,
         orders,
         norms,
         spectrum,

@@ -47,6 +47,7 @@ impl Luminaires {
             .map(|s| match &s.light {
                 Light::Point { .. } => s.flux().unwrap_or(0.0),
                 Light::Parallel { illuminance, .. } => illuminance * PI * radius * radius,
+                Light::Window { .. } => 0.0,
             })
             .collect();
         Luminaires { sources, flux, centre, radius }
@@ -117,6 +118,7 @@ impl Luminaires {
                     + (across.tangent * phi.cos() + across.bitangent * phi.sin()) * r;
                 Some((Departure { origin, direction: *direction, face: NO_FACE }, 1.0))
             }
+            Light::Window { .. } => None,
         }
     }
 }

@@ -6,6 +6,7 @@
 
 mod area_source;
 mod cube;
+mod daylight;
 mod flux;
 mod obstruction;
 mod point_source;

@@ -12,6 +12,7 @@ mod parse_errors;
 mod probes;
 mod ranges;
 mod rooms;
+mod sky;
 mod valid;
 mod validation_errors;
 

@@ -38,7 +38,7 @@ fn triangles(scene: &Scene) -> usize {
 fn luminaires(scene: &Scene) -> Vec<DVec3> {
     let position = |kind: &LuminaireKind| match kind {
         LuminaireKind::Point(p) => p.position,
-        LuminaireKind::Parallel { .. } => panic!("a room lit by parallel light"),
+        LuminaireKind::Parallel { .. } | LuminaireKind::Window { .. } => panic!("a room lit by daylight"),
     };
     scene.luminaires.iter().map(|l| position(&l.kind)).collect()
 }

@@ -36,6 +36,7 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         cameras: Vec::new(),
         grids: Vec::new(),
         luminaires: Vec::new(),
+        sky: None,
         lighting: ugo::scene::Lighting::default(),
         files: Vec::new(),
     }

@@ -1,0 +1,41 @@
+//! `/daylight` (`docs/daylight.md`): under a `[sky]`, the sky component, the externally and
+//! internally reflected components and the daylight factor at every probe
+//! (`/daylight/probes/{name,sky_component,externally_reflected,internally_reflected,daylight_factor}`,
+//! %) and the daylight factor on every grid (`/daylight/grids/<name>/daylight_factor`,
+//! `nv × nu`, %, with `DF_avg`, `DF_min`, `DF_max` and `uniformity` as attributes); the
+//! attribute `E_h` (lx) is the unobstructed sky's horizontal illuminance they are shares of.
+
+use super::dataset::{dataset, strings};
+use crate::readout::daylight::{Daylight, DaylightReadings, stats};
+use crate::readout::grid::GridReading;
+use crate::readout::probe::ProbeReading;
+use ndarray::{Array1, Array2};
+
+pub(super) fn write_daylight(
+    g: &hdf5::Group,
+    d: &DaylightReadings,
+    probes: &[ProbeReading],
+    grids: &[GridReading],
+) -> hdf5::Result<()> {
+    g.new_attr::<f64>().create("E_h")?.write_scalar(&d.horizontal_illuminance)?;
+    let p = g.create_group("probes")?;
+    strings(&p, "name", probes.iter().map(|r| r.name.as_str()))?;
+    let column = |f: fn(&Daylight) -> f64| Array1::from_iter(d.probes.iter().map(f));
+    dataset(&p, "sky_component", &column(|x| x.sky_component))?;
+    dataset(&p, "externally_reflected", &column(|x| x.externally_reflected))?;
+    dataset(&p, "internally_reflected", &column(|x| x.internally_reflected))?;
+    dataset(&p, "daylight_factor", &column(|x| x.daylight_factor))?;
+    let all = g.create_group("grids")?;
+    for (grid, df) in grids.iter().zip(&d.grids) {
+        let h = all.create_group(&grid.grid.name)?;
+        let [nu, nv] = grid.grid.resolution;
+        dataset(&h, "daylight_factor", &Array2::from_shape_fn((nv, nu), |(b, a)| df[b * nu + a]))?;
+        let st = stats(df);
+        for (name, value) in
+            [("DF_avg", st.average), ("DF_min", st.min), ("DF_max", st.max), ("uniformity", st.uniformity)]
+        {
+            h.new_attr::<f64>().create(name)?.write_scalar(&value)?;
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,109 @@
+//! Daylight quantities at probes and grid points (`docs/daylight.md`): the sky component
+//! SC (the sky seen directly through the openings), the externally reflected component
+//! ERC (the ground seen through them), the internally reflected component IRC (all the
+//! light from the room's surfaces) and the daylight factor `DF = E / E_h`, every one in %
+//! of the unobstructed sky's horizontal illuminance `E_h` (the sun excluded).
+//!
+//! SC and ERC come from the openings piece by piece exactly as the source term does
+//! (`crate::sky::through_window`, one ray per test point); `E` is the probe's or grid
+//! point's illuminance from the solved field (`probe.rs`), and `IRC = E − E_direct`, the
+//! direct light of every source (openings, sun, luminaires) taken away. Under a sky
+//! without sun or luminaires `DF = SC + ERC + IRC`.
+
+use crate::geometry::Frame;
+use crate::luminaire::Light;
+use crate::model::Model;
+use crate::readout::grid::GridReading;
+use crate::readout::probe::ProbeReading;
+use crate::sky::{Component, Sky, through_window};
+use crate::visibility::NO_FACE;
+use glam::DVec3;
+
+/// The daylight at one point, in % of `E_h`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Daylight {
+    pub sky_component: f64,
+    pub externally_reflected: f64,
+    pub internally_reflected: f64,
+    pub daylight_factor: f64,
+}
+
+/// Statistics of the daylight factor over a grid, %.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DaylightStats {
+    pub average: f64,
+    pub min: f64,
+    pub max: f64,
+    /// `DF_min / DF_avg` (0 when the average is 0).
+    pub uniformity: f64,
+}
+
+/// The illuminance (lx) at `p` (receiving side facing the unit `n`) from the sky and from
+/// the ground through every opening of the model: `(SC, ERC)` in lx.
+pub fn sky_and_ground(model: &Model, p: DVec3, n: DVec3) -> (f64, f64) {
+    let patch = model.faces.under(&model.mesh, &model.visibility, p, n);
+    let ignore = patch.map_or(NO_FACE, |i| model.mesh.patches[i].face);
+    let normal = patch.map_or_else(|| Frame::around(n), |i| model.mesh.patches[i].frame()).normal;
+    let sees = |x: DVec3| model.visibility.closest_hit(p, x - p, ignore).is_none();
+    let (mut sky, mut ground) = (0.0, 0.0);
+    for source in &model.sources {
+        if let Light::Window { window, sky: outside } = &source.light {
+            through_window(outside, window, p, normal, &sees, 0.0, &mut |_, e, component| match component {
+                Component::Sky => sky += e,
+                Component::Ground => ground += e,
+            });
+        }
+    }
+    (sky, ground)
+}
+
+/// The daylight at `p` facing `n` whose illuminance is `illuminance` lx, `direct` lx of it
+/// directly from the sources, under `sky`.
+pub fn daylight_at(model: &Model, sky: &Sky, p: DVec3, n: DVec3, illuminance: f64, direct: f64) -> Daylight {
+    let (s, g) = sky_and_ground(model, p, n);
+    let percent = 100.0 / sky.horizontal_illuminance;
+    Daylight {
+        sky_component: s * percent,
+        externally_reflected: g * percent,
+        internally_reflected: (illuminance - direct) * percent,
+        daylight_factor: illuminance * percent,
+    }
+}
+
+/// The daylight at every probe.
+pub fn probe_daylight(model: &Model, sky: &Sky, probes: &[ProbeReading]) -> Vec<Daylight> {
+    probes.iter().map(|r| daylight_at(model, sky, r.position, r.normal, r.illuminance, r.direct)).collect()
+}
+
+/// The daylight factor (%) at every point of a grid.
+pub fn grid_daylight_factor(sky: &Sky, grid: &GridReading) -> Vec<f64> {
+    grid.illuminance.iter().map(|e| 100.0 * e / sky.horizontal_illuminance).collect()
+}
+
+/// `DF_avg`, `DF_min`, `DF_max` and the uniformity `DF_min / DF_avg` of equal cells.
+pub fn stats(daylight_factor: &[f64]) -> DaylightStats {
+    let average = daylight_factor.iter().sum::<f64>() / daylight_factor.len().max(1) as f64;
+    let min = daylight_factor.iter().copied().fold(f64::INFINITY, f64::min);
+    let max = daylight_factor.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    DaylightStats { average, min, max, uniformity: if average > 0.0 { min / average } else { 0.0 } }
+}
+
+/// The daylight readouts of a solve under a `[sky]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DaylightReadings {
+    /// `E_h`, lx: the unobstructed sky's horizontal illuminance every quantity is a share of.
+    pub horizontal_illuminance: f64,
+    /// One per probe.
+    pub probes: Vec<Daylight>,
+    /// The daylight factor (%) at every point of every grid, grid by grid.
+    pub grids: Vec<Vec<f64>>,
+}
+
+/// The daylight at the probes and grids already read, under `sky`.
+pub fn read_daylight(model: &Model, sky: &Sky, probes: &[ProbeReading], grids: &[GridReading]) -> DaylightReadings {
+    DaylightReadings {
+        horizontal_illuminance: sky.horizontal_illuminance,
+        probes: probe_daylight(model, sky, probes),
+        grids: grids.iter().map(|g| grid_daylight_factor(sky, g)).collect(),
+    }
+}

@@ -1,0 +1,223 @@
+//! `[sky]` and `[[window]]`: the sky, the sun and the ground outside, and the openings
+//! that let them in, as written and as validated (`docs/daylight.md`).
+//!
+//! Owns the keys and rules of both tables. Each `[[window]]` becomes a luminaire of kind
+//! `Window` (the sky and ground seen through it); `sun_illuminance` adds the sun as a
+//! parallel luminaire named `"sun"`. The luminance model is `crate::sky`.
+
+use super::check::{Context, REL_TOL, show, unique_names};
+use super::error::SceneError;
+use crate::geometry::ConvexPolygon;
+use crate::luminaire::{Luminaire, LuminaireKind};
+use crate::sky::{Brightness, Distribution, Glazing, Opening, SiteTime, Sky, SunPosition, day_of_year};
+use serde::Deserialize;
+use std::path::Path;
+
+/// `[sky]` as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSky {
+    #[serde(rename = "type")]
+    pub kind: RawSkyType,
+    pub sun_altitude_deg: Option<f64>,
+    pub sun_azimuth_deg: Option<f64>,
+    pub latitude_deg: Option<f64>,
+    pub longitude_deg: Option<f64>,
+    pub date: Option<String>,
+    pub time: Option<String>,
+    pub timezone_h: Option<f64>,
+    pub zenith_luminance: Option<f64>,
+    pub horizontal_illuminance: Option<f64>,
+    pub ground_reflectance: Option<f64>,
+    pub sun_illuminance: Option<f64>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub north: Option<[f64; 3]>,
+}
+
+/// `type = 12` or `type = "overcast"`.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+pub enum RawSkyType {
+    Number(i64),
+    Name(String),
+}
+
+/// `[[window]]` as written: a rectangle (parallelogram) opening, glazed when
+/// `transmittance` is given.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawWindow {
+    pub name: String,
+    #[serde(deserialize_with = "super::arrays::exact")]
+    pub origin: [f64; 3],
+    #[serde(deserialize_with = "super::arrays::exact")]
+    pub edge_u: [f64; 3],
+    #[serde(deserialize_with = "super::arrays::exact")]
+    pub edge_v: [f64; 3],
+    /// Glazing: the normal transmittance of one pane (none: an unglazed opening).
+    pub transmittance: Option<f64>,
+    pub panes: Option<i64>,
+    pub refractive_index: Option<f64>,
+}
+
+/// The horizontal illuminance of the sky when neither brightness key is given, lx.
+pub const DEFAULT_HORIZONTAL_ILLUMINANCE: f64 = 10_000.0;
+/// The glass's refractive index when `refractive_index` is not given.
+pub const DEFAULT_REFRACTIVE_INDEX: f64 = 1.52;
+/// The ground's reflectance when `ground_reflectance` is not given.
+pub const DEFAULT_GROUND_REFLECTANCE: f64 = 0.2;
+
+/// The sky of `[sky]` (if any) and the luminaires it brings: one per `[[window]]`, and the
+/// sun when `sun_illuminance` is given.
+pub(super) fn daylight(
+    path: &Path,
+    raw: Option<&RawSky>,
+    windows: &[RawWindow],
+) -> Result<(Option<Sky>, Vec<Luminaire>), SceneError> {
+    let Some(raw) = raw else {
+        return match windows.first() {
+            None => Ok((None, Vec::new())),
+            Some(w) => Err(Context::item(path, "window", &w.name, 0)
+                .error("", "a [[window]] lets the sky in: the case needs a [sky] table")),
+        };
+    };
+    let at = Context::new(path, "[sky]");
+    let distribution = match &raw.kind {
+        RawSkyType::Number(n) => u8::try_from(*n).ok().and_then(|t| Distribution::parse(&t.to_string())),
+        RawSkyType::Name(name) => Distribution::parse(name),
+    }
+    .ok_or_else(|| at.error("type", format!("unknown sky type; give {}", Distribution::NAMES)))?;
+    let north = at.direction("north", raw.north.unwrap_or([0.0, 0.0, -1.0]))?;
+    if north.y.abs() > REL_TOL {
+        return Err(at.error("north", format!("must be horizontal (y = 0; y is up), got {}", show(north))));
+    }
+    let position = sun_position(&at, raw)?;
+    let sun = position.direction(north);
+    let brightness = match (raw.zenith_luminance, raw.horizontal_illuminance) {
+        (Some(_), Some(_)) => {
+            return Err(at.error("zenith_luminance", "give `zenith_luminance` or `horizontal_illuminance`, not both"));
+        }
+        (Some(l), None) => {
+            Brightness::Zenith(at.magnitude("zenith_luminance", at.positive("zenith_luminance", l)?, " cd/m²")?)
+        }
+        (None, e) => {
+            let e = e.unwrap_or(DEFAULT_HORIZONTAL_ILLUMINANCE);
+            Brightness::Horizontal(at.magnitude(
+                "horizontal_illuminance",
+                at.positive("horizontal_illuminance", e)?,
+                " lx",
+            )?)
+        }
+    };
+    let ground = at.non_negative("ground_reflectance", raw.ground_reflectance.unwrap_or(DEFAULT_GROUND_REFLECTANCE))?;
+    if ground > 1.0 {
+        return Err(at.error("ground_reflectance", format!("must be at most 1, got {ground}")));
+    }
+    let sun_normal = match raw.sun_illuminance {
+        None => 0.0,
+        Some(e) => at.magnitude("sun_illuminance", at.non_negative("sun_illuminance", e)?, " lx")?,
+    };
+    let sun_horizontal = sun_normal * sun.y.max(0.0);
+    let sky = Sky::new(distribution, sun, brightness, ground, sun_horizontal);
+    unique_names(path, "window", windows.iter().map(|w| w.name.as_str()))?;
+    let mut luminaires = windows
+        .iter()
+        .enumerate()
+        .map(|(index, w)| window(&Context::item(path, "window", &w.name, index), w, &sky))
+        .collect::<Result<Vec<_>, _>>()?;
+    if sun_normal > 0.0 && sun.y > 0.0 {
+        let kind = LuminaireKind::Parallel { direction: -sun, illuminance: sun_normal };
+        luminaires.push(Luminaire { name: "sun".to_string(), kind });
+    }
+    Ok((Some(sky), luminaires))
+}
+
+/// The sun's position: `sun_altitude_deg` and `sun_azimuth_deg`, or the site and time.
+fn sun_position(at: &Context, raw: &RawSky) -> Result<SunPosition, SceneError> {
+    let site = [raw.latitude_deg.is_some(), raw.longitude_deg.is_some(), raw.date.is_some(), raw.time.is_some()];
+    match (raw.sun_altitude_deg, raw.sun_azimuth_deg) {
+        (Some(h), Some(a)) if !site.contains(&true) => {
+            let altitude_deg = at.finite("sun_altitude_deg", h)?;
+            if altitude_deg.abs() > 90.0 {
+                return Err(at.error("sun_altitude_deg", format!("must be from -90 to 90, got {altitude_deg}")));
+            }
+            Ok(SunPosition { altitude_deg, azimuth_deg: at.finite("sun_azimuth_deg", a)? })
+        }
+        (None, None) if !site.contains(&false) => site_time(at, raw).map(|s| s.sun()),
+        _ => Err(at.error(
+            "sun_altitude_deg",
+            "give the sun as `sun_altitude_deg` and `sun_azimuth_deg`, or as `latitude_deg`, `longitude_deg`, \
+             `date` and `time`",
+        )),
+    }
+}
+
+fn site_time(at: &Context, raw: &RawSky) -> Result<SiteTime, SceneError> {
+    let latitude_deg = at.finite("latitude_deg", raw.latitude_deg.unwrap_or(0.0))?;
+    if latitude_deg.abs() > 90.0 {
+        return Err(at.error("latitude_deg", format!("must be from -90 to 90, got {latitude_deg}")));
+    }
+    let longitude_deg = at.finite("longitude_deg", raw.longitude_deg.unwrap_or(0.0))?;
+    let date = raw.date.as_deref().unwrap_or("");
+    let day_of_year =
+        parse_date(date).ok_or_else(|| at.error("date", format!("must be a date \"YYYY-MM-DD\", got \"{date}\"")))?;
+    let time = raw.time.as_deref().unwrap_or("");
+    let hours = parse_time(time)
+        .ok_or_else(|| at.error("time", format!("must be a local standard time \"HH:MM\", got \"{time}\"")))?;
+    let timezone_h = at.finite("timezone_h", raw.timezone_h.unwrap_or((longitude_deg / 15.0).round()))?;
+    Ok(SiteTime { latitude_deg, longitude_deg, day_of_year, hours, timezone_h })
+}
+
+fn parse_date(text: &str) -> Option<u32> {
+    let mut parts = text.split('-');
+    let (year, month, day) = (parts.next()?.parse().ok()?, parts.next()?.parse().ok()?, parts.next()?.parse().ok()?);
+    parts.next().is_none().then_some(())?;
+    day_of_year(year, month, day)
+}
+
+fn parse_time(text: &str) -> Option<f64> {
+    let (h, m) = text.split_once(':')?;
+    let (h, m): (u32, u32) = (h.parse().ok()?, m.parse().ok()?);
+    (h < 24 && m < 60).then(|| h as f64 + m as f64 / 60.0)
+}
+
+fn window(at: &Context, w: &RawWindow, sky: &Sky) -> Result<Luminaire, SceneError> {
+    let origin = at.place("origin", w.origin)?;
+    let u = at.place("edge_u", w.edge_u)?;
+    let v = at.place("edge_v", w.edge_v)?;
+    if u.cross(v).length() <= REL_TOL * u.length() * v.length() || u.length() == 0.0 || v.length() == 0.0 {
+        return Err(at.error("edge_v", format!("edge_u {} and edge_v {} span no area", show(u), show(v))));
+    }
+    let polygon = ConvexPolygon::quad(origin, origin + u, origin + u + v, origin + v);
+    let window = Opening { polygon, glazing: glazing(at, w)? };
+    Ok(Luminaire { name: w.name.clone(), kind: LuminaireKind::Window { window, sky: sky.clone() } })
+}
+
+/// `transmittance`, `panes` (1 or 2, default 1) and `refractive_index` (default 1.52).
+fn glazing(at: &Context, w: &RawWindow) -> Result<Option<Glazing>, SceneError> {
+    let Some(normal) = w.transmittance else {
+        if let Some((key, _)) = [("panes", w.panes.is_some()), ("refractive_index", w.refractive_index.is_some())]
+            .into_iter()
+            .find(|(_, given)| *given)
+        {
+            return Err(at.error(key, "applies only to a glazed window: give `transmittance`"));
+        }
+        return Ok(None);
+    };
+    let index = at.finite("refractive_index", w.refractive_index.unwrap_or(DEFAULT_REFRACTIVE_INDEX))?;
+    if !(1.0..=4.0).contains(&index) || index == 1.0 {
+        return Err(at.error("refractive_index", format!("must be greater than 1 and at most 4, got {index}")));
+    }
+    let panes = match w.panes.unwrap_or(1) {
+        n @ (1 | 2) => n as u8,
+        n => return Err(at.error("panes", format!("must be 1 or 2, got {n}"))),
+    };
+    let normal = at.positive("transmittance", normal)?;
+    Glazing::new(normal, index, panes).map(Some).ok_or_else(|| {
+        let most = Glazing::lossless(index);
+        at.error(
+            "transmittance",
+            format!("a pane of refractive index {index} transmits at most {most:.4}, got {normal}"),
+        )
+    })
+}
