@@ -282,6 +282,6 @@ fn axes(root: &Area, plan: &GridPlan) -> Drawn {
     let style = caption.clone().pos(Pos::new(HPos::Center, VPos::Top));
     root.draw(&Text::new(plan.frame.right.caption(), (centre, bottom + 30), style))?;
     let style = caption.pos(Pos::new(HPos::Left, VPos::Bottom));
-    root.draw(&Text::new(format!("↑ {}", plan.frame.up.caption()), (8, top - 6), style))?;
+    root.draw(&Text::new(plan.frame.up.caption(), (8, top - 6), style))?;
     Ok(())
 }

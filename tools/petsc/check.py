@@ -147,7 +147,7 @@ def spectrum(mine, theirs, figures):
 def agreement(ugo, work, mine, theirs):
     for path, folder in ((theirs, "render"), (theirs.removesuffix(".h5") + "-mode-1.h5", "render-mode")):
         run(ugo, "render", path, "-o", os.path.join(work, folder))
-        if not os.path.exists(os.path.join(work, folder, "glossy-cornell-camera.png")):
+        if not os.path.exists(os.path.join(work, folder, "glossy-cornell-camera-flat.png")):
             failures.append(f"ugo render wrote no picture of {path}")
     forward = os.path.join(work, "forward.h5")
     run(ugo, "trace", *CORNELL, "--forward", "--photons", "100000", "-o", forward)
