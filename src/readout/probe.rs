@@ -49,7 +49,7 @@ pub fn read_probes(probes: &[Probe], model: &Model, field: &Field) -> Vec<ProbeR
 fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
     let (p, n) = (probe.position, probe.normal);
     let (luminance, (illuminance, direct), patch) = match probe.kind {
-        ProbeKind::Point => return point(probe, model, field),
+        ProbeKind::Point => point(model, field, p, n),
         ProbeKind::LuminanceMeter { fov_deg } => {
             (mean_luminance(model, field, p, n, fov_deg), plane_illuminance(model, field, p, n), None)
         }
@@ -68,24 +68,13 @@ fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
     }
 }
 
-/// A point sensor's reading.
-fn point(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
-    let (p, n) = (probe.position, probe.normal);
+/// A point sensor's luminance, (illuminance, direct illuminance) and the patch it lies on.
+fn point(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (f64, (f64, f64), Option<usize>) {
     let (patch, incident, direct) = incident_at(model, field, p, n);
     let illuminance = PI * (incident.iter().sum::<f64>() + direct.iter().sum::<f64>());
     let luminance = match patch {
         Some(i) => outgoing(model, field, i, p, n, &sum(&incident, &direct)),
         None => seen(model, field, p, n),
     };
-    let direct = PI * direct.iter().sum::<f64>();
-    ProbeReading {
-        name: probe.name.clone(),
-        kind: probe.kind,
-        position: p,
-        normal: n,
-        luminance,
-        illuminance,
-        direct,
-        patch,
-    }
+    (luminance, (illuminance, PI * direct.iter().sum::<f64>()), patch)
 }
