@@ -132,24 +132,13 @@ fn histories(area: &Area, runs: &[Run], lines: &[RateLine]) -> Result<(), Box<dy
     for line in lines.iter().filter(|l| l.rate.is_finite() && l.rate > 0.0) {
         let color = Palette99::pick(line.run).to_rgba();
         let (dash, gap) = if line.dotted { (2, 5) } else { (8, 6) };
-        let (a0, r0) = line.start;
-        let dashes: Vec<(f64, f64)> = (0..=60)
-            .map(|t| a0 + (line.end - a0) * t as f64 / 60.0)
-            .map(|a| (a, (r0 * line.rate.powf(a - a0)).max(y_min)))
-            .collect();
+        let dashes = decay(line.start, line.end, line.rate, y_min);
         chart
             .draw_series(DashedLineSeries::new(dashes, dash, gap, color.stroke_width(2)))?
             .label(line.label.clone())
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 10, y)], color.stroke_width(2)));
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 15))
-        .draw()?;
-    Ok(())
+    legend(&mut chart)
 }
 
 /// `| ‖r_{n+1}‖/‖r_n‖ − |λ₁| |` of successive approximation against `n`, with `|λ₂/λ₁|ⁿ`
@@ -175,22 +164,26 @@ fn settling(area: &Area, spectrum: &Spectrum, run: &Run) -> Result<(), Box<dyn s
         .label("measured")
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(3)));
     let black = BLACK.to_rgba();
-    let predicted: Vec<(f64, f64)> = (0..=60)
-        .map(|t| n0 + (x_max - 1.0 - n0) * t as f64 / 60.0)
-        .map(|n| (n, (d0 * gap.powf(n - n0)).max(y_min)))
-        .collect();
+    let predicted = decay((n0, d0), x_max - 1.0, gap, y_min);
     chart
         .draw_series(DashedLineSeries::new(predicted, 8, 6, black.stroke_width(2)))?
         .label(format!("|λ₂/λ₁|ⁿ = {gap:.4}ⁿ"))
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 10, y)], black.stroke_width(2)));
-    let squared: Vec<(f64, f64)> = (0..=60)
-        .map(|t| n0 + (x_max - 1.0 - n0) * t as f64 / 60.0)
-        .map(|n| (n, (d0 * gap.powf(2.0 * (n - n0))).max(y_min)))
-        .collect();
+    let squared = decay((n0, d0), x_max - 1.0, gap * gap, y_min);
     chart
         .draw_series(DashedLineSeries::new(squared, 2, 5, black.stroke_width(2)))?
         .label("|λ₂/λ₁|²ⁿ (orthogonal eigenvectors)")
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 4, y)], black.stroke_width(2)));
+    legend(&mut chart)
+}
+
+/// `y0 · rateˣ⁻ˣ⁰` from `(x0, y0)` to `x1` at 61 points, floored at `y_min` (a dashed line).
+fn decay((x0, y0): (f64, f64), x1: f64, rate: f64, y_min: f64) -> Vec<(f64, f64)> {
+    (0..=60).map(|t| x0 + (x1 - x0) * t as f64 / 60.0).map(|x| (x, (y0 * rate.powf(x - x0)).max(y_min))).collect()
+}
+
+/// The series' legend, upper right.
+fn legend<'a: 'b, 'b>(chart: &mut LogChart<'a, 'b>) -> Result<(), Box<dyn std::error::Error>> {
     chart
         .configure_series_labels()
         .position(SeriesLabelPosition::UpperRight)
