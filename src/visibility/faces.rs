@@ -2,7 +2,7 @@
 //! which of them a ray meets or a point lies on. The one place that turns a hit face into
 //! a patch, for renders, probes and the Monte Carlo estimators.
 
-use super::{NEAREST_BOX, NO_FACE, Visibility};
+use super::{NO_FACE, Visibility};
 use crate::geometry::{Mesh, NO_TWIN};
 use glam::DVec3;
 
@@ -61,8 +61,7 @@ impl Faces {
     }
 }
 
-/// How far above a surface a ray starts that must find it: `1e-4` of the scene's extent,
-/// and at least twice [`NEAREST_BOX`], within which the traversal drops the face's box.
+/// How far above a surface a ray starts that must find it: `1e-4` of the scene's extent.
 pub fn standoff(mesh: &Mesh) -> f64 {
-    (1e-4 * mesh.extent()).max(2.0 * NEAREST_BOX)
+    1e-4 * mesh.extent()
 }

@@ -16,8 +16,8 @@
 //! generic rotation before the build, every query turned with it. Which layout is
 //! fastest and correct was measured with `ugo bench --layouts` (`docs/performance.md`).
 //! Its traversal also drops every box that ends within [`NEAREST_BOX`] (an absolute
-//! length, in the scene's metres) of the ray's origin, whatever the ray's own `tmin`: a
-//! query meant to find a surface just below its origin starts at least twice that far.
+//! length, in the scene's metres) of the ray's origin, whatever the ray's own `tmin`: every
+//! query's ray starts that far behind its origin, its `tmin` moved on to match.
 
 mod faces;
 
@@ -89,7 +89,7 @@ pub struct Blocker(Option<usize>);
 
 /// obvhs's compressed wide traversal ignores boxes whose far side lies closer than this to
 /// the ray's origin, m (its `cwbvh::node::EPSILON`): a flat box (a face of an axis-aligned
-/// room) nearer than this is never hit.
+/// room) nearer than this would never be hit, so rays start this far back.
 pub const NEAREST_BOX: f64 = 1e-4;
 
 /// No blocker known yet.
@@ -196,17 +196,21 @@ impl Visibility {
             Hierarchy::Binary(bvh) => bvh.ray_traverse(ray, &mut hit, test),
             Hierarchy::Wide(bvh) => bvh.ray_traverse(ray, &mut hit, test),
         };
-        found.then(|| Hit { face: self.face_of[hit.primitive_id as usize], distance: hit.t as f64 })
+        found.then(|| Hit { face: self.face_of[hit.primitive_id as usize], distance: hit.t as f64 - NEAREST_BOX })
     }
 
+    /// The ray of a query, started [`NEAREST_BOX`] behind `origin` with its `tmin` and
+    /// `tmax` moved on by as much: the wide traversal drops boxes that end nearer than that
+    /// to the ray's origin, which would lose faces just beyond `origin`. Hit distances
+    /// along it are [`NEAREST_BOX`] longer than from `origin`.
     fn ray(&self, origin: DVec3, direction: DVec3, tmin: f64, tmax: f64) -> Ray {
-        let o = Vec3A::from((self.rotation * origin).as_vec3());
+        let o = Vec3A::from((self.rotation * (origin - direction * NEAREST_BOX)).as_vec3());
         let mut d = Vec3A::from((self.rotation * direction).as_vec3());
         if matches!(self.hierarchy, Hierarchy::Wide(_)) {
             // obvhs's wide traversal misses boxes along exactly axis-aligned rays.
             d = Vec3A::select(d.abs().cmplt(Vec3A::splat(1e-7)), Vec3A::splat(1e-7).copysign(d), d);
         }
-        Ray::new(o, d, tmin as f32, tmax as f32)
+        Ray::new(o, d, (tmin + NEAREST_BOX) as f32, (tmax + NEAREST_BOX) as f32)
     }
 }
 
