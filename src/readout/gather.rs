@@ -131,9 +131,8 @@ pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3) -> f64 {
     model
         .faces
         .landing(&model.mesh, &model.visibility, p, v, NO_FACE)
-        .and_then(|(_, facing, distance)| {
-            let q = p + v * distance;
-            let i = facing?;
+        .and_then(|hit| {
+            let (q, i) = (hit.point, hit.facing?);
             let s = &model.mesh.patches[i];
             Some(outgoing(model, field, i, q, -v, &arriving(model, field, q, s)))
         })

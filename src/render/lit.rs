@@ -71,15 +71,15 @@ impl LitScene {
     /// whose lower cells hold transmitted light).
     pub fn luminance_along(&self, origin: DVec3, direction: DVec3, rays: usize, rng: &mut Rng) -> f64 {
         let solved = &self.solved;
-        let Some((patch, distance)) = solved.hit(origin, direction) else { return 0.0 };
+        let Some((patch, point)) = solved.hit(origin, direction) else { return 0.0 };
         let towards = -direction;
         match self.shading {
             Shading::Flat => solved.flat(patch, towards),
             Shading::Smooth => {
                 let corners = self.corners.as_ref().expect("set_shading builds the corners");
-                corners.smooth(solved, patch, origin + direction * distance, towards)
+                corners.smooth(solved, patch, point, towards)
             }
-            Shading::Gather { .. } => final_gather(solved, patch, origin + direction * distance, towards, rays, rng),
+            Shading::Gather { .. } => final_gather(solved, patch, point, towards, rays, rng),
         }
     }
 }

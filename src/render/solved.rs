@@ -34,21 +34,21 @@ impl Solved {
         Solved { mesh, directions, luminance, visibility, faces, blocks, emitters, sources: Vec::new() }
     }
 
-    /// The patch first hit along the ray (the one facing back along it) and the distance.
-    pub(super) fn hit(&self, origin: DVec3, direction: DVec3) -> Option<(usize, f64)> {
+    /// The patch first hit along the ray (the one facing back along it) and the point hit.
+    pub(super) fn hit(&self, origin: DVec3, direction: DVec3) -> Option<(usize, DVec3)> {
         self.hit_ignoring(origin, direction, NO_FACE)
     }
 
     /// [`Solved::hit`] ignoring face `ignore`. The back of a one-sided surface is a miss,
     /// unless the direction set covers the sphere (its lower cells hold transmitted light).
-    pub(super) fn hit_ignoring(&self, origin: DVec3, direction: DVec3, ignore: u32) -> Option<(usize, f64)> {
-        let (face, facing, distance) = self.faces.landing(&self.mesh, &self.visibility, origin, direction, ignore)?;
-        let patch = match facing {
+    pub(super) fn hit_ignoring(&self, origin: DVec3, direction: DVec3, ignore: u32) -> Option<(usize, DVec3)> {
+        let hit = self.faces.landing(&self.mesh, &self.visibility, origin, direction, ignore)?;
+        let patch = match hit.facing {
             Some(i) => i,
-            None if self.directions.is_sphere() => self.faces.first(face),
+            None if self.directions.is_sphere() => self.faces.first(hit.face),
             None => return None,
         };
-        Some((patch, distance))
+        Some((patch, hit.point))
     }
 
     /// The stored luminance of `patch` in the cell holding the unit direction `towards`.

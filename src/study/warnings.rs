@@ -96,10 +96,10 @@ fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalan
 /// The first surface along `direction` from `origin`: `Some(Some(surface))` for the back
 /// of a one-sided surface, `Some(None)` for a front, `None` for nothing.
 fn back_hit(model: &Model, origin: DVec3, direction: DVec3, ignore: u32) -> Option<Option<usize>> {
-    let (face, facing, _) = model.faces.landing(&model.mesh, &model.visibility, origin, direction, ignore)?;
-    Some(match facing {
+    let hit = model.faces.landing(&model.mesh, &model.visibility, origin, direction, ignore)?;
+    Some(match hit.facing {
         Some(_) => None,
-        None => Some(model.mesh.patches[model.faces.first(face)].surface as usize),
+        None => Some(model.mesh.patches[model.faces.first(hit.face)].surface as usize),
     })
 }
 

@@ -60,12 +60,7 @@ impl World {
     /// The first surface along the unit `direction` from `origin`, ignoring face `ignore`;
     /// `None` for a miss and for the back of a one-sided surface (which absorbs).
     pub fn landing(&self, origin: DVec3, direction: DVec3, ignore: u32) -> Option<Landing> {
-        let (_, patch, distance) = self.faces.landing(&self.mesh, &self.visibility, origin, direction, ignore)?;
-        let patch = patch?;
-        // The hit distance is single precision: put the point back onto the patch's plane.
-        let p = &self.mesh.patches[patch];
-        let point = origin + direction * distance;
-        let point = point - p.normal * p.normal.dot(point - p.centroid);
-        Some(Landing { patch, point })
+        let hit = self.faces.landing(&self.mesh, &self.visibility, origin, direction, ignore)?;
+        Some(Landing { patch: hit.facing?, point: hit.point })
     }
 }

@@ -6,6 +6,15 @@ use super::{NO_FACE, Visibility};
 use crate::geometry::{Mesh, NO_TWIN};
 use glam::DVec3;
 
+/// Where a ray lands: the face, its patch facing back along the ray (none on the back of
+/// a one-sided surface) and the point hit, on the face's plane.
+#[derive(Debug, Clone, Copy)]
+pub struct Landing {
+    pub face: u32,
+    pub facing: Option<usize>,
+    pub point: DVec3,
+}
+
 /// The patches of every face of a mesh.
 #[derive(Debug, Clone)]
 pub struct Faces {
@@ -36,7 +45,7 @@ impl Faces {
     }
 
     /// The first face along the unit `direction` from `origin` (ignoring face `ignore`),
-    /// the patch of it that faces back along the ray (if any), and the hit distance.
+    /// the patch of it that faces back along the ray (if any), and the point hit.
     pub fn landing(
         &self,
         mesh: &Mesh,
@@ -44,9 +53,13 @@ impl Faces {
         origin: DVec3,
         direction: DVec3,
         ignore: u32,
-    ) -> Option<(u32, Option<usize>, f64)> {
+    ) -> Option<Landing> {
         let hit = visibility.closest_hit(origin, direction, ignore)?;
-        Some((hit.face, self.facing(mesh, hit.face, -direction), hit.distance))
+        // The hit distance is single precision: put the point back onto the face's plane.
+        let plane = &mesh.patches[self.first(hit.face)];
+        let point = origin + direction * hit.distance;
+        let point = point - plane.normal * plane.normal.dot(point - plane.centroid);
+        Some(Landing { face: hit.face, facing: self.facing(mesh, hit.face, -direction), point })
     }
 
     /// The patch that the point `p` lies on, facing the unit `n` (normal within 60°): a

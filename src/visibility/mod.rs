@@ -21,7 +21,7 @@
 
 mod faces;
 
-pub use faces::{Faces, standoff};
+pub use faces::{Faces, Landing, standoff};
 
 use crate::geometry::Mesh;
 use glam::{DMat3, DVec3, Vec3A};

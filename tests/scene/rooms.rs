@@ -84,8 +84,8 @@ fn closed_around_luminaires(scene: &Scene) {
         assert!(at.cmpgt(lo).all() && at.cmplt(hi).all(), "{name} at {at} outside the room {lo} … {hi}");
         for direction in sphere_directions(500) {
             let landing = faces.landing(&mesh, &visibility, at, direction, NO_FACE);
-            let Some((_, patch, _)) = landing else { panic!("{name}: the ray towards {direction} escapes") };
-            assert!(patch.is_some(), "{name}: the ray towards {direction} meets the back of a face");
+            let Some(hit) = landing else { panic!("{name}: the ray towards {direction} escapes") };
+            assert!(hit.facing.is_some(), "{name}: the ray towards {direction} meets the back of a face");
         }
     }
 }
