@@ -24,4 +24,5 @@ pub mod solve;
 mod study;
 mod support;
 mod trace;
+mod transfer;
 mod visibility;

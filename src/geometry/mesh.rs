@@ -19,6 +19,11 @@ pub struct Patch {
     /// Unit normal of the reflecting side.
     pub normal: DVec3,
     pub area: f64,
+    /// The part of `area` outside every solid, m²: what the patch's luminance is spread
+    /// over (`design.md` §3, "Contacts"). The area itself until the model measures it
+    /// (`transfer::exposure`): a patch under a cabinet standing on it, or behind a shelf
+    /// against it, sends and receives light only through its exposed part.
+    pub exposed: f64,
     /// Local frame `(tangent, bitangent, normal)`, right-handed.
     pub tangent: DVec3,
     pub bitangent: DVec3,
@@ -42,6 +47,11 @@ impl Patch {
         Frame { tangent: self.tangent, bitangent: self.bitangent, normal: self.normal }
     }
 
+    /// `flux` (lm) spread over the exposed area, lm/m² (0 when none of it is exposed).
+    pub fn per_exposed_area(&self, flux: f64) -> f64 {
+        if self.exposed > 0.0 { flux / self.exposed } else { 0.0 }
+    }
+
     /// The patch of `polygon` with its derived quantities.
     pub fn from_polygon(polygon: ConvexPolygon, surface: u32, material: u32, face: u32) -> Patch {
         let normal = polygon.normal();
@@ -52,6 +62,7 @@ impl Patch {
             centroid: polygon.centroid(),
             normal,
             area: polygon.area(),
+            exposed: polygon.area(),
             tangent,
             bitangent: normal.cross(tangent),
             surface,

@@ -173,6 +173,7 @@ pub(super) fn write_mesh(g: &hdf5::Group, scene: &Scene, mesh: &Mesh) -> hdf5::R
     dataset(g, "points", &vec3(&|i| p[i].centroid))?;
     dataset(g, "normals", &vec3(&|i| p[i].normal))?;
     dataset(g, "areas", &Array1::from_iter(p.iter().map(|q| q.area)))?;
+    dataset(g, "exposed_areas", &Array1::from_iter(p.iter().map(|q| q.exposed)))?;
     dataset(g, "surface_id", &Array1::from_iter(p.iter().map(|q| q.surface)))?;
     dataset(g, "material_id", &Array1::from_iter(p.iter().map(|q| q.material)))?;
     let vertices = Array3::from_shape_fn((n, 4, 3), |(i, v, c)| {

@@ -94,10 +94,10 @@ pub fn assemble(
         (d, report) = balance(&exchange, &cell_targets(mesh, directions, &work, &exchange, false));
     }
     let mut g = exchange;
-    let areas: Vec<f64> = mesh.patches.iter().map(|p| p.area).collect();
     for (r, mut row) in g.outer_iterator_mut().enumerate() {
+        let patch = &mesh.patches[r / k];
         for (c, v) in row.iter_mut() {
-            *v *= d[r] * d[c] / areas[r / k];
+            *v = patch.per_exposed_area(*v * d[r] * d[c]);
         }
     }
     Ok(Assembled {
@@ -161,10 +161,10 @@ fn cell_targets(
         let adaptive: f64 = cells.iter().sum();
         let trusted = (closure[i] - adaptive).abs() <= TRUSTED_CLOSURE * adaptive;
         let total = if trusted { closure[i] } else { adaptive };
-        let closed = by_cell && trusted && (closure[i] - patch.area).abs() <= 1e-9 * patch.area;
+        let closed = by_cell && trusted && (closure[i] - patch.exposed).abs() <= 1e-9 * patch.area;
         for (c, target) in targets[i * k..(i + 1) * k].iter_mut().enumerate() {
             *target = if closed {
-                patch.area * directions.cells()[c].projected / std::f64::consts::PI
+                patch.exposed * directions.cells()[c].projected / std::f64::consts::PI
             } else if adaptive > 0.0 {
                 total * cells[c] / adaptive
             } else {

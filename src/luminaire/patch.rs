@@ -87,7 +87,8 @@ impl DirectLight {
 /// `visibility`), in parallel. A piece of patch `i` crossed by a shadow edge is cut further
 /// only while the flux it would receive unshadowed from one source exceeds `least[i]`, lm
 /// (every piece when `least` is empty); below that its lit fraction is that of its four
-/// points.
+/// points. A patch with no exposed area (inside a solid) takes none: what its pieces
+/// would catch through gaps its points miss counts as escaped (`readout::energy`).
 pub fn patch_lights(
     sources: &[Source],
     patches: &[Patch],
@@ -101,6 +102,9 @@ pub fn patch_lights(
         .enumerate()
         .map(|(i, patch)| {
             let mut out = vec![0.0; k];
+            if patch.exposed <= 0.0 {
+                return PatchLight { arriving: out, intercepted: vec![0.0; sources.len()], rays: 0 };
+            }
             let least = least.get(i).copied().unwrap_or(0.0);
             let mut onto =
                 Onto { patch, frame: patch.frame(), visibility, directions, least, out: &mut out, flux: 0.0, rays: 0 };
@@ -126,7 +130,7 @@ pub fn patch_lights(
                 })
                 .collect();
             let rays = onto.rays;
-            out.iter_mut().for_each(|d| *d /= PI * patch.area);
+            out.iter_mut().for_each(|d| *d = patch.per_exposed_area(*d) / PI);
             PatchLight { arriving: out, intercepted, rays }
         })
         .collect()

@@ -9,6 +9,7 @@ use crate::kernel::{Assembled, Estimate, Footprint, Kernel, Transport, Transport
 use crate::luminaire::{Source, direct_light};
 use crate::progress::Progress;
 use crate::scene::Scene;
+use crate::transfer::exposure::measure_exposure;
 use crate::visibility::{Faces, Visibility};
 use std::time::Instant;
 
@@ -16,7 +17,7 @@ use std::time::Instant;
 /// kernel and the source term for values out of range (`super::range`).
 pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> Result<Model, ModelError> {
     let t = Instant::now();
-    let mesh = Mesh::build(&scene.surfaces, options.patch_size);
+    let mut mesh = Mesh::build(&scene.surfaces, options.patch_size);
     let directions = options.directions.clone();
     let estimate = Estimate::of(&mesh, &directions);
     Footprint {
@@ -30,6 +31,7 @@ pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> 
     let mesh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let visibility = Visibility::build(&mesh);
+    measure_exposure(&mut mesh, &visibility);
     let bvh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let n = mesh.len() as u64;

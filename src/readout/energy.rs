@@ -55,15 +55,15 @@ impl EnergyBalance {
         for (i, p) in mesh.patches.iter().enumerate() {
             let block = &kernel.blocks[kernel.patch_material[i] as usize];
             let range = i * k..(i + 1) * k;
-            outgoing += p.area * x[range.clone()].iter().zip(cells).map(|(l, c)| l * c.projected).sum::<f64>();
-            from_surfaces += p.area * (PI * light[range].iter().sum::<f64>() - from_luminaires[i]);
+            outgoing += p.exposed * x[range.clone()].iter().zip(cells).map(|(l, c)| l * c.projected).sum::<f64>();
+            from_surfaces += p.exposed * (PI * light[range].iter().sum::<f64>() - from_luminaires[i]);
             let absorbed: f64 = (0..k)
                 .map(|d| {
                     let (reflected, transmitted) = block.albedo(d, &kernel.directions);
-                    p.area * PI * light[i * k + d] * (1.0 - reflected - transmitted)
+                    p.exposed * PI * light[i * k + d] * (1.0 - reflected - transmitted)
                 })
                 .sum();
-            b.surface_emitted[p.surface as usize] += p.area * mesh.emission[i] * projected;
+            b.surface_emitted[p.surface as usize] += p.exposed * mesh.emission[i] * projected;
             b.surface_absorbed[p.surface as usize] += absorbed;
         }
         let lost_by_luminaires: f64 =

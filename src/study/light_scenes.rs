@@ -75,7 +75,7 @@ fn solve_groups(
         false => None,
     };
     let factored = Factored::new(&model.kernel);
-    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
     let mut projection = Projection::new(how.warm);
     if how.warm {
         projection.learn(&factored, x.to_vec());

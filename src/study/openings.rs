@@ -37,7 +37,7 @@ pub fn small_opening(
     for (c, s) in shares.iter().enumerate() {
         let p = &model.mesh.patches[c / k];
         if x[c] > 0.0 {
-            let share = p.area * cells[c % k].projected / PI * (1.0 - s).max(0.0);
+            let share = p.exposed * cells[c % k].projected / PI * (1.0 - s).max(0.0);
             leak[p.surface as usize] += share;
             escaping += PI * share * x[c];
         }

@@ -146,7 +146,7 @@ pub fn solve_case(
         (None, true) => Some(Explicit(model.kernel.explicit(options.memory_limit)?)),
     };
     let factored = Factored::new(&model.kernel);
-    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
     let source = reduced.as_ref().map(|r| r.source(&model.l0));
     let system = match (&reduced, &source) {
         (Some(r), Some(s)) => System { operator: r, explicit: explicit.as_ref(), areas: &[], l0: s },

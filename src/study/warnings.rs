@@ -47,7 +47,7 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
     luminaires(scene, model, &mut out);
     sensors(scene, model, &mut out);
     let shares = || {
-        let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+        let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
         sent_shares(&model.kernel, &areas)
     };
     if energy.escaped < -1e-9 * energy.emitted.abs() {
@@ -64,7 +64,7 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
 /// the luminaires' light that lands nowhere).
 fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, shares: &[f64]) -> String {
     let (e, k) = (energy, model.kernel.cells());
-    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.area).collect();
+    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
     let cells = model.kernel.directions.cells();
     let flux = |c: usize| areas[c / k] * cells[c % k].projected * x[c].max(0.0);
     let over: f64 = (0..shares.len()).map(|c| flux(c) * (shares[c] - 1.0).max(0.0)).sum();
@@ -110,7 +110,7 @@ fn backs(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, out: &
         .patches
         .iter()
         .enumerate()
-        .map(|(i, p)| p.area * (0..k).map(|c| x[i * k + c] * cells[c].projected).sum::<f64>())
+        .map(|(i, p)| p.exposed * (0..k).map(|c| x[i * k + c] * cells[c].projected).sum::<f64>())
         .collect();
     let total: f64 = outgoing.iter().sum();
     let mut lost = vec![0.0; scene.surfaces.len()];

@@ -93,9 +93,8 @@ pub fn trace_photons(
     for (i, p) in mesh.patches.iter().enumerate() {
         for (c, cell) in cells.iter().enumerate() {
             let (flux, error) = tallies[i * k + c].total_and_error(photons);
-            let scale = p.area * cell.projected;
-            luminance[i * k + c] = mesh.emission[i] + flux / scale;
-            luminance_error[i * k + c] = error / scale;
+            luminance[i * k + c] = mesh.emission[i] + p.per_exposed_area(flux) / cell.projected;
+            luminance_error[i * k + c] = p.per_exposed_area(error) / cell.projected;
         }
     }
     let (illuminance, illuminance_error) = mesh
@@ -104,7 +103,7 @@ pub fn trace_photons(
         .enumerate()
         .map(|(i, p)| {
             let (flux, error) = tallies[n * k + i].total_and_error(photons);
-            (flux / p.area, error / p.area)
+            (p.per_exposed_area(flux), p.per_exposed_area(error))
         })
         .unzip();
     FieldEstimate {

@@ -8,6 +8,7 @@ use super::luminaires::Luminaires;
 use crate::geometry::Mesh;
 use crate::material::MaterialModel;
 use crate::scene::Scene;
+use crate::transfer::exposure::measure_exposure;
 use crate::visibility::{Faces, Visibility};
 use glam::DVec3;
 
@@ -31,13 +32,15 @@ pub struct World {
 }
 
 impl World {
-    /// `mesh` must be `scene`'s (its patches name the scene's materials).
-    pub fn new(scene: &Scene, mesh: Mesh) -> World {
+    /// `mesh` must be `scene`'s (its patches name the scene's materials); its patches'
+    /// exposed areas are measured (`transfer::exposure`), which the forward tracer bins by.
+    pub fn new(scene: &Scene, mut mesh: Mesh) -> World {
         let visibility = Visibility::build(&mesh);
+        measure_exposure(&mut mesh, &visibility);
         World::with_visibility(scene, mesh, visibility)
     }
 
-    /// [`World::new`] with a ray caster already built over `mesh`.
+    /// [`World::new`] with a ray caster already built over `mesh` (exposure measured).
     pub fn with_visibility(scene: &Scene, mesh: Mesh, visibility: Visibility) -> World {
         let faces = Faces::of(&mesh);
         let materials = mesh.patches.iter().map(|p| scene.materials[p.material as usize].model.clone()).collect();

@@ -5,5 +5,6 @@
 //! the final gather all build on it; it knows nothing of materials, kernels or scenes.
 
 pub mod contour;
+pub mod exposure;
 pub mod form_factor;
 pub mod occlusion;

@@ -88,7 +88,7 @@ fn a_negative_escaped_flux_is_explained_and_bounded_by_the_kernels_columns() {
     assert!(w.contains("-6.8385 lm") && w.contains("discretization error") && w.contains("0.684 %"), "{w}");
     // The columns' range and their deviation from 1 weighted by the solved flux, computed
     // here from the balance's own identity: escaped = Σ Φ (1 − s) (the lamp's light all lands).
-    let (areas, k) = (s.model.mesh.patches.iter().map(|p| p.area).collect::<Vec<_>>(), s.model.kernel.cells());
+    let (areas, k) = (s.model.mesh.patches.iter().map(|p| p.exposed).collect::<Vec<_>>(), s.model.kernel.cells());
     let shares = sent_shares(&s.model.kernel, &areas);
     let cells = s.model.kernel.directions.cells();
     let flux = |c: usize| areas[c / k] * cells[c % k].projected * s.x[c];
@@ -113,7 +113,7 @@ fn the_escaped_flux_is_the_outgoing_flux_weighted_by_the_columns_shortfall() {
     for text in [room(false, CRATE), open] {
         let (_, s) = solved(&text);
         let (m, e) = (&s.model, &s.energy);
-        let areas: Vec<f64> = m.mesh.patches.iter().map(|p| p.area).collect();
+        let areas: Vec<f64> = m.mesh.patches.iter().map(|p| p.exposed).collect();
         let (shares, k, cells) = (sent_shares(&m.kernel, &areas), m.kernel.cells(), m.kernel.directions.cells());
         let from_surfaces: f64 =
             (0..shares.len()).map(|c| areas[c / k] * cells[c % k].projected * s.x[c] * (1.0 - shares[c])).sum();

@@ -14,6 +14,7 @@ use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, NO_TWIN, Patch};
 use crate::material::Block;
+use crate::transfer::exposure::Backs;
 use crate::transfer::form_factor::Quadrature;
 use crate::visibility::Visibility;
 use rayon::prelude::*;
@@ -49,6 +50,8 @@ pub struct Hierarchy {
     tree: Tree,
     links: Vec<Link>,
     visibility: Visibility,
+    /// The backs of the roots' faces, for the exposed area of new elements.
+    backs: Backs,
     directions: DirectionSet,
     blocks: Vec<Block>,
     options: Options,
@@ -67,13 +70,24 @@ impl Hierarchy {
     pub fn new(roots: &Mesh, directions: DirectionSet, blocks: Vec<Block>, options: Options, l0: &[f64]) -> Hierarchy {
         let start = Instant::now();
         let albedo: Vec<f64> = blocks.iter().map(|b| largest_albedo(b, &directions)).collect();
-        let tree = Tree::new(roots, &albedo);
+        let visibility = Visibility::build(roots);
+        let backs = Backs::of(roots);
+        let exposed: Vec<f64> = roots.patches.par_iter().map(|p| backs.exposed_area(&visibility, p)).collect();
+        let tree = Tree::new(roots, &albedo, &exposed);
         let share = cell_shares(&directions);
         let (guess, ambient) = first_guess(&tree, l0, &share);
         let oracle = Oracle { epsilon: options.tolerance * ambient, smallest: options.smallest };
-        let visibility = Visibility::build(roots);
-        let mut h =
-            Hierarchy { tree, links: Vec::new(), visibility, directions, blocks, options, oracle, history: Vec::new() };
+        let mut h = Hierarchy {
+            tree,
+            links: Vec::new(),
+            visibility,
+            backs,
+            directions,
+            blocks,
+            options,
+            oracle,
+            history: Vec::new(),
+        };
         let roots: Vec<u32> = (0..roots.len() as u32).collect();
         let mut brightness = h.brightness(&roots, &guess);
         let top = h.tree.top();
@@ -108,7 +122,8 @@ impl Hierarchy {
                 if !self.tree.node(id).is_leaf() {
                     continue; // the twin of an element split just before
                 }
-                self.tree.split(id);
+                let (visibility, backs) = (&self.visibility, &self.backs);
+                self.tree.split(id, &|p| backs.exposed_area(visibility, p));
                 splits += 1;
                 todo.extend_from_slice(self.tree.children(id));
             }
@@ -140,8 +155,9 @@ impl Hierarchy {
         }
         self.links = keep;
         let mut candidates = Vec::with_capacity(4 * redo.len());
+        let (visibility, backs) = (&self.visibility, &self.backs);
         for &(p, q, n) in &redo {
-            split_node(&mut self.tree, &mut brightness, n);
+            split_node(&mut self.tree, &mut brightness, n, &|e| backs.exposed_area(visibility, e));
             children_pairs(&self.tree, p, q, n, &mut candidates);
         }
         let rays = self.refine_candidates(&mut brightness, candidates);
@@ -152,6 +168,7 @@ impl Hierarchy {
     fn refine_candidates(&mut self, brightness: &mut Vec<f64>, candidates: Vec<(u32, u32)>) -> usize {
         let settings = Settings {
             visibility: &self.visibility,
+            backs: &self.backs,
             oracle: self.oracle,
             quadrature: &self.options.quadrature,
             directions: &self.directions,
@@ -189,8 +206,8 @@ impl Hierarchy {
             let node = self.tree.node(id);
             let cells = x.get(l * share.len()..(l + 1) * share.len()).unwrap_or(&[]);
             let value: f64 = cells.iter().zip(&share).map(|(v, s)| v * s).sum();
-            sum += node.area * (value - node.emission);
-            area += node.area;
+            sum += node.exposed * (value - node.emission);
+            area += node.exposed;
         }
         if area > 0.0 { (sum / area).max(0.0) } else { 0.0 }
     }
@@ -312,9 +329,9 @@ fn first_guess(tree: &Tree, l0: &[f64], share: &[f64]) -> (Vec<f64>, f64) {
     let (mut area, mut source, mut reflected) = (0.0, 0.0, 0.0);
     for (i, cells) in l0.chunks(k).enumerate() {
         let n = tree.node(i as u32);
-        area += n.area;
-        source += n.area * cells.iter().zip(share).map(|(l, s)| l * s).sum::<f64>();
-        reflected += n.area * n.albedo;
+        area += n.exposed;
+        source += n.exposed * cells.iter().zip(share).map(|(l, s)| l * s).sum::<f64>();
+        reflected += n.exposed * n.albedo;
     }
     if area <= 0.0 {
         return (l0.to_vec(), 0.0);

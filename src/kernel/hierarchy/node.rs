@@ -29,6 +29,8 @@ pub struct Node {
     pub child_count: u32,
     /// Area of the elements under it, m² (both sides of a two-sided element count).
     pub area: f64,
+    /// The part of `area` outside every solid (`Patch::exposed`), m².
+    pub exposed: f64,
     /// Axis-aligned bounding box, m.
     pub lo: DVec3,
     pub hi: DVec3,
@@ -36,7 +38,7 @@ pub struct Node {
     pub albedo: f64,
     /// Emitted luminance of an element, cd/m² (0 for a cluster).
     pub emission: f64,
-    /// Area facing each axis direction, `Σ A_e max(0, ±n_e·axis)` over the elements under it
+    /// Exposed area facing each axis direction, `Σ A_e max(0, ±n_e·axis)` over the elements under it
     /// (`+x, −x, +y, −y, +z, −z`), m²: the projected area of a cluster (`projected`).
     pub facing: [f64; 6],
 }
@@ -46,13 +48,14 @@ impl Node {
     pub fn element(patch: Patch, twin: u32, level: u8, albedo: f64, emission: f64) -> Node {
         let (lo, hi) = polygon_bounds(&patch.polygon);
         let n = patch.normal;
-        let facing = [n.x, -n.x, n.y, -n.y, n.z, -n.z].map(|c| patch.area * c.max(0.0));
+        let facing = [n.x, -n.x, n.y, -n.y, n.z, -n.z].map(|c| patch.exposed * c.max(0.0));
         Node {
             kind: Kind::Element { patch, twin, level },
             parent: NONE,
             first_child: 0,
             child_count: 0,
             area: patch.area,
+            exposed: patch.exposed,
             lo,
             hi,
             albedo,
@@ -61,13 +64,13 @@ impl Node {
         }
     }
 
-    /// Area of the node's elements projected onto a plane across the unit direction `u`,
-    /// counting the elements that face `u`: `A max(0, n·u)` for an element; for a cluster
+    /// Exposed area of the node's elements projected onto a plane across the unit direction
+    /// `u`, counting the elements that face `u`: `A max(0, n·u)` for an element; for a cluster
     /// `Σ_axes |u_a| facing[a, sign u_a]`, exact when its elements are axis-aligned (walls,
     /// furniture) and otherwise at most `√3` times too large, m².
     pub fn projected(&self, u: DVec3) -> f64 {
         match &self.kind {
-            Kind::Element { patch, .. } => self.area * patch.normal.dot(u).max(0.0),
+            Kind::Element { patch, .. } => self.exposed * patch.normal.dot(u).max(0.0),
             Kind::Cluster => [u.x, u.y, u.z]
                 .iter()
                 .enumerate()

@@ -226,11 +226,11 @@ fn parents(tree: &Tree, order: &[u32], position: &[u32]) -> (Vec<u32>, Vec<f64>,
     let mut into_cluster = vec![false; order.len()];
     for (pos, &id) in order.iter().enumerate() {
         let children = tree.children(id);
-        let total: f64 = children.iter().map(|&c| tree.node(c).area).sum();
+        let total: f64 = children.iter().map(|&c| tree.node(c).exposed).sum();
         for &c in children {
             let cp = position[c as usize] as usize;
             parent[cp] = pos as u32;
-            weight[cp] = tree.node(c).area / total;
+            weight[cp] = if total > 0.0 { tree.node(c).exposed / total } else { 0.0 };
             into_cluster[cp] = matches!(tree.node(id).kind, Kind::Cluster);
         }
     }

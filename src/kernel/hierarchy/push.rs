@@ -34,7 +34,7 @@ pub fn push_rows(tree: &Tree, links: &[Link], position: &[u32], leaves: &[u32]) 
         .par_iter()
         .map(|&leaf| {
             let mut row = Vec::new();
-            let Some(patch) = tree.node(leaf).patch() else { return row };
+            let Some(patch) = tree.node(leaf).patch().filter(|p| p.exposed > 0.0) else { return row };
             let mut a = leaf;
             while a != NONE {
                 if !own(a).is_empty() {
@@ -45,13 +45,14 @@ pub fn push_rows(tree: &Tree, links: &[Link], position: &[u32], leaves: &[u32]) 
             row
         })
         .collect();
-    // S̄_a: the area-weighted mean of S_ia over the leaves of an element a
+    // S̄_a: Σ A_i^exp S_ia / Σ A_i over the leaves of an element a, so that the leaves'
+    // exposed areas take all the flux a gathers
     let (mut sum, mut area) = (vec![0.0; tree.len()], vec![0.0; tree.len()]);
     for (row, &leaf) in rows.iter().zip(leaves) {
-        let a_i = tree.node(leaf).area;
+        let node = tree.node(leaf);
         for &(a, s) in row {
-            sum[a as usize] += a_i * s;
-            area[a as usize] += a_i;
+            sum[a as usize] += node.exposed * s;
+            area[a as usize] += node.area;
         }
     }
     let mut row = Vec::with_capacity(rows.len() + 1);

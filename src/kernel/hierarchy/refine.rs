@@ -9,10 +9,11 @@ use super::link::{Link, cluster_factor, element_factor};
 use super::node::Node;
 use super::oracle::{Oracle, cluster_bound, variation};
 use super::sight::{Sight, sight, stand_in_sight, stand_ins};
-use super::tree::Tree;
+use super::tree::{Exposure, Tree};
 use crate::directions::DirectionSet;
 use crate::geometry::Patch;
 use crate::kernel::facing;
+use crate::transfer::exposure::Backs;
 use crate::transfer::form_factor::{Binning, Quadrature};
 use crate::transfer::occlusion::polygon_points;
 use crate::visibility::{Blocker, NO_BLOCKER, Visibility};
@@ -21,6 +22,8 @@ use rayon::prelude::*;
 /// What stays fixed during refinement.
 pub struct Settings<'a> {
     pub visibility: &'a Visibility,
+    /// The backs of the roots' faces, for the exposed area of new elements.
+    pub backs: &'a Backs,
     pub oracle: Oracle,
     pub quadrature: &'a Quadrature,
     pub directions: &'a DirectionSet,
@@ -63,7 +66,7 @@ pub fn refine(
         }
         candidates = Vec::with_capacity(4 * split.len());
         for &(p, q, n) in &split {
-            split_node(tree, brightness, n);
+            split_node(tree, brightness, n, &|e| settings.backs.exposed_area(settings.visibility, e));
             children_pairs(tree, p, q, n, &mut candidates);
         }
     }
@@ -72,8 +75,8 @@ pub fn refine(
 
 /// Splits `n` (a no-op for a cluster or an element already split); new nodes inherit
 /// their parent's brightness.
-pub fn split_node(tree: &mut Tree, brightness: &mut Vec<f64>, n: u32) {
-    tree.split(n);
+pub fn split_node(tree: &mut Tree, brightness: &mut Vec<f64>, n: u32, exposed: &Exposure<'_>) {
+    tree.split(n, exposed);
     for id in brightness.len()..tree.len() {
         let parent = tree.node(id as u32).parent;
         brightness.push(brightness[parent as usize]);

@@ -8,6 +8,9 @@ use super::cluster;
 use super::node::{Kind, NONE, Node, longest_edge};
 use crate::geometry::{ConvexPolygon, Mesh, Patch};
 
+/// How a new element's exposed area is measured, m².
+pub type Exposure<'a> = dyn Fn(&Patch) -> f64 + Sync + 'a;
+
 /// Every node of the hierarchy.
 #[derive(Debug, Clone)]
 pub struct Tree {
@@ -18,14 +21,18 @@ pub struct Tree {
 }
 
 impl Tree {
-    /// The roots are the patches of `roots` (node `i` is patch `i`), clustered above;
-    /// `albedo[m]` is material `m`'s largest albedo.
-    pub fn new(roots: &Mesh, albedo: &[f64]) -> Tree {
+    /// The roots are the patches of `roots` (node `i` is patch `i`, with exposed area
+    /// `exposed[i]`, m²), clustered above; `albedo[m]` is material `m`'s largest albedo.
+    pub fn new(roots: &Mesh, albedo: &[f64], exposed: &[f64]) -> Tree {
         let nodes = roots
             .patches
             .iter()
             .zip(&roots.emission)
-            .map(|(p, &e)| Node::element(*p, p.twin, 0, albedo.get(p.material as usize).copied().unwrap_or(1.0), e))
+            .zip(exposed)
+            .map(|((p, &e), &exposed)| {
+                let albedo = albedo.get(p.material as usize).copied().unwrap_or(1.0);
+                Node::element(Patch { exposed, ..*p }, p.twin, 0, albedo, e)
+            })
             .collect();
         let mut tree = Tree { nodes, children: Vec::new(), top: NONE };
         let mut ids: Vec<u32> = (0..roots.len() as u32).collect();
@@ -63,12 +70,14 @@ impl Tree {
         let mut node = Node { kind: Kind::Cluster, parent: NONE, first_child: self.children.len() as u32, ..*first };
         node.child_count = members.len() as u32;
         node.area = 0.0;
+        node.exposed = 0.0;
         node.emission = 0.0;
         node.facing = [0.0; 6];
         for &m in members {
             let member = &mut self.nodes[m as usize];
             member.parent = id;
             node.area += member.area;
+            node.exposed += member.exposed;
             node.lo = node.lo.min(member.lo);
             node.hi = node.hi.max(member.hi);
             node.albedo = node.albedo.max(member.albedo);
@@ -89,19 +98,20 @@ impl Tree {
         }
     }
 
-    /// Gives element `id` (and its twin) their four children, unless they have them.
-    pub fn split(&mut self, id: u32) {
+    /// Gives element `id` (and its twin) their four children, unless they have them;
+    /// `exposed` measures a child's exposed area (`transfer::exposure`).
+    pub fn split(&mut self, id: u32, exposed: &Exposure<'_>) {
         let node = self.nodes[id as usize];
         let Kind::Element { patch, twin, .. } = node.kind else { return };
         if !node.is_leaf() {
             return;
         }
         let pieces = patch.polygon.split();
-        let front = self.add_children(id, pieces);
+        let front = self.add_children(id, pieces, exposed);
         if twin == NONE {
             return;
         }
-        let back = self.add_children(twin, pieces.map(|p| p.reversed()));
+        let back = self.add_children(twin, pieces.map(|p| p.reversed()), exposed);
         for (f, b) in front.into_iter().zip(back) {
             self.set_twin(f, b);
             self.set_twin(b, f);
@@ -109,13 +119,14 @@ impl Tree {
     }
 
     /// Appends the elements of `polygons` as the children of element `id`; returns their ids.
-    fn add_children(&mut self, id: u32, polygons: [ConvexPolygon; 4]) -> [u32; 4] {
+    fn add_children(&mut self, id: u32, polygons: [ConvexPolygon; 4], exposed: &Exposure<'_>) -> [u32; 4] {
         let parent = self.nodes[id as usize];
         let first = self.nodes.len() as u32;
         if let Kind::Element { patch, level, .. } = parent.kind {
             for polygon in polygons {
                 let mut p = Patch::from_polygon(polygon, patch.surface, patch.material, patch.face);
                 inherit_frame(&mut p, &patch);
+                p.exposed = exposed(&p);
                 let child = Node::element(p, NONE, level + 1, parent.albedo, parent.emission);
                 self.nodes.push(Node { parent: id, ..child });
             }
