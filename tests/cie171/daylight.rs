@@ -8,7 +8,8 @@
 //! than 1 % must be a listed deviation
 //! (`tests/data/cie171/deviations.txt`, with the value ugo computed, which it must still
 //! give to 0.1 %), and there ugo must agree within 0.3 % (+ 0.002) with a brute-force integral over
-//! the opening's area written out here (2-D midpoint rule, a ray per sample).
+//! the opening's area written out here (2-D midpoint rule, a ray per sample, traced once per
+//! point and reused for every sky and glass).
 //! Run with `--nocapture` for the rows of `docs/validation-daylight.md`.
 
 use super::{TOLERANCE, solve_model};
@@ -185,7 +186,10 @@ fn check(case: &str, files: &[&str]) -> Vec<String> {
                         (true, None) => " FAIL",
                         _ => "",
                     };
-                    eprintln!("| {case} | {ty} | {name} | {reference} | {ugo:.3} | {:+.2} %{mark} |", 100.0 * off);
+                    eprintln!(
+                        "| {case} | {file} | {ty} | {name} | {reference} | {ugo:.3} | {:+.2} %{mark} |",
+                        100.0 * off
+                    );
                     if off.abs() > TOLERANCE || recorded.is_some() {
                         if !seen.iter().any(|(n, _)| n == name) {
                             seen.push((name.clone(), seen_from(&model, probe.position, probe.normal)));
