@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the CIE 171:2006 daylight cases (5.9, 5.11, 5.13, 5.14) into cases/cie171/ and
-the daylit office, cases/daylit-office.toml.
+"""Writes the CIE 171:2006 daylight cases (5.9 to 5.14) into cases/cie171/ and the daylit
+office, cases/daylit-office.toml.
 
     python3 cases/generate/daylight.py           # write every file
     python3 cases/generate/daylight.py --check   # compare the committed files; write nothing
@@ -10,8 +10,9 @@ sky component plus the externally reflected component of CIE 171 (the ground: rh
 uniform luminance below the horizon). The sun is at 60 deg altitude due south and gives
 no direct light. CIE's (x, y, z) are ugo's (x, z, y): y is up and CIE's y axis, which
 points south, is ugo's z (north = [0, 0, -1]). The sky is the CIE traditional overcast
-sky; the tests set `type` to each of the 16 columns of the tables. Standard library only,
-deterministic.
+sky; the tests set `type` to each of the 16 columns of the tables. The glazed cases (5.10,
+5.12) cover their opening with CIE 171's 6 mm clear glass (glass = "cie171"). Standard
+library only, deterministic.
 """
 
 import argparse
@@ -31,8 +32,9 @@ def rect(name, o, u, v, material="black"):
             f'edge_u = {vec(u)}\nedge_v = {vec(v)}\nmaterial = "{material}"\n\n')
 
 
-def window(name, o, u, v):
-    return f'[[window]]\nname = "{name}"\norigin = {vec(o)}\nedge_u = {vec(u)}\nedge_v = {vec(v)}\n\n'
+def window(name, o, u, v, glazed=False):
+    glass = 'glass = "cie171"\n' if glazed else ""
+    return f'[[window]]\nname = "{name}"\norigin = {vec(o)}\nedge_u = {vec(u)}\nedge_v = {vec(v)}\n{glass}\n'
 
 
 def probe(name, p, n):
@@ -66,21 +68,25 @@ def ceiling_around(a, b):
     ]
 
 
-def roof(size):
-    """5.9: a size x size opening in the middle of the roof."""
+def roof(size, glazed=False):
+    """5.9 (5.10 glazed): a size x size opening in the middle of the roof."""
     a, b = 2 - size / 2, 2 + size / 2
+    case, title, glass = ("5.10", "Sky component, glazed roof opening",
+                          "\nIt is glazed with CIE 171's 6 mm clear glass (its test 5.5).") if glazed \
+        else ("5.9", "Sky component, unglazed roof opening", "")
+    first = (5 if size == 1 else 7) if glazed else (1 if size == 1 else 3)
     comment = f"""
-CIE 171:2006, test case 5.9 "Sky component, unglazed roof opening": a black 4 x 4 x 3 m
-room with a {size:g} x {size:g} m opening in the middle of its roof. The quantity is the sky
+CIE 171:2006, test case {case} "{title}": a black 4 x 4 x 3 m
+room with a {size:g} x {size:g} m opening in the middle of its roof.{glass} The quantity is the sky
 component SC = 100 E / E_h (%), E_h the unobstructed sky's horizontal illuminance: on the
 north wall (A-F, 2.75 m down to 0.25 m high, facing south) and on the floor (G-N, 0.25 m
-to 3.75 m from the north wall). Tables B.{1 if size == 1 else 3} and B.{2 if size == 1 else 4}.
+to 3.75 m from the north wall). Tables B.{first} and B.{first + 1}.
 Written by cases/generate/daylight.py. CIE's (x, y, z) are ugo's (x, z, y); y is up."""
-    text = head(comment, f"CIE 171 5.9 roof opening {size:g} x {size:g} m",
-                f"Black room, {size:g} x {size:g} m roof opening, CIE overcast sky", 0.0)
+    text = head(comment, f"CIE 171 {case} roof opening {size:g} x {size:g} m" + (", glazed" if glazed else ""),
+                f"Black room, {size:g} x {size:g} m {'glazed ' if glazed else ''}roof opening, CIE overcast sky", 0.0)
     walls = [FLOOR, NORTH, SOUTH, WEST, EAST] + (ceiling_around(a, b) if size < 4 else [])
     text += "".join(rect(*w) for w in walls)
-    text += window("roof", (a, 3, a), (b - a, 0, 0), (0, 0, b - a))
+    text += window("roof", (a, 3, a), (b - a, 0, 0), (0, 0, b - a), glazed)
     for i, name in enumerate("ABCDEF"):
         text += probe(name, (2, 2.75 - 0.5 * i, 0), (0, 0, 1))
     for i, name in enumerate("GHIJKLMN"):
@@ -104,13 +110,15 @@ def facade(width, height, sill, case="5.11", mask=""):
     north wall, G-N on the floor and G'-N' on the ceiling, G and G' farthest from the
     opening) or of 5.13 and 5.14 (A-H on the floor, A farthest)."""
     x0, x1, y0, y1 = 2 - width / 2, 2 + width / 2, sill, sill + height
-    tables = {"5.11": "B.9 to B.14", "5.13": "B.21 to B.23", "5.14": "B.24 to B.26"}[case]
+    tables = {"5.11": "B.9 to B.14", "5.12": "B.15 to B.20", "5.13": "B.21 to B.23", "5.14": "B.24 to B.26"}[case]
     what = {
         "5.11": "the back (north) wall (A-F, 2.75 m down to 0.25 m high), the floor (G-N)\nand the ceiling (G'-N', ERC alone), 0.25 m to 3.75 m from the back wall",
+        "5.12": "the back (north) wall (A-F, 2.75 m down to 0.25 m high), the floor (G-N)\nand the ceiling (G'-N', ERC alone), 0.25 m to 3.75 m from the back wall",
         "5.13": "the floor (A-H, 0.25 m to 3.75 m from the back wall), under a black\nhorizontal mask (an overhang at the top of the facade, 4 m wide)",
         "5.14": "the floor (A-H, 0.25 m to 3.75 m from the back wall), facing a black vertical\nmask (a wall 100 m long, parallel to the facade, 6 m in front of it)",
     }[case]
     title = {"5.11": "Sky component plus externally reflected component, unglazed facade opening",
+             "5.12": "SC + ERC, glazed facade opening",
              "5.13": "SC + ERC with a horizontal mask", "5.14": "SC + ERC with a vertical mask"}[case]
     comment = f"""
 CIE 171:2006, test case {case} "{title}": a black 4 x 4 x 3 m room with a {width:g} x {height:g} m
@@ -119,16 +127,19 @@ a uniform luminance. The quantity is SC + ERC = 100 E / E_h (%) on
 {what}. Tables {tables}.
 Written by cases/generate/daylight.py. CIE's (x, y, z) are ugo's (x, z, y); y is up."""
     name = f"CIE 171 {case} facade opening {width:g} x {height:g} m" + (f", {mask}" if mask else "")
-    text = head(comment, name, f"Black room, {width:g} x {height:g} m facade opening, CIE overcast sky", 0.3)
+    glazed = "glazed " if case == "5.12" else ""
+    text = head(comment, name, f"Black room, {width:g} x {height:g} m {glazed}facade opening, CIE overcast sky", 0.3)
     walls = [FLOOR, NORTH, WEST, EAST] + south_wall_around(x0, x1, y0, y1)
     walls += [("ceiling", (0, 3, 0), (4, 0, 0), (0, 0, 4))]
     text += "".join(rect(*w) for w in walls)
     return text, (x0, x1, y0, y1)
 
 
-def facade_511(width, height, sill):
-    text, (x0, x1, y0, y1) = facade(width, height, sill)
-    text += window("facade", (x0, y0, 4), (x1 - x0, 0, 0), (0, y1 - y0, 0))
+def facade_511(width, height, sill, glazed=False):
+    """5.11 (5.12 glazed with CIE 171's 6 mm clear glass)."""
+    case, mask = ("5.12", "glazed with 6 mm clear glass") if glazed else ("5.11", "")
+    text, (x0, x1, y0, y1) = facade(width, height, sill, case, mask)
+    text += window("facade", (x0, y0, 4), (x1 - x0, 0, 0), (0, y1 - y0, 0), glazed)
     for i, name in enumerate("ABCDEF"):
         text += probe(name, (2, 2.75 - 0.5 * i, 0), (0, 0, 1))
     for i, name in enumerate("GHIJKLMN"):
@@ -201,8 +212,12 @@ FILES = {
     "daylit-office.toml": office,
     "cie171/5.9-roof-1x1.toml": lambda: roof(1),
     "cie171/5.9-roof-4x4.toml": lambda: roof(4),
+    "cie171/5.10-roof-1x1.toml": lambda: roof(1, glazed=True),
+    "cie171/5.10-roof-4x4.toml": lambda: roof(4, glazed=True),
     "cie171/5.11-facade-2x1.toml": lambda: facade_511(2, 1, 1),
     "cie171/5.11-facade-4x3.toml": lambda: facade_511(4, 3, 0),
+    "cie171/5.12-facade-2x1.toml": lambda: facade_511(2, 1, 1, glazed=True),
+    "cie171/5.12-facade-4x3.toml": lambda: facade_511(4, 3, 0, glazed=True),
     "cie171/5.13-overhang-0.5.toml": lambda: overhang(0.5),
     "cie171/5.13-overhang-1.0.toml": lambda: overhang(1.0),
     "cie171/5.13-overhang-2.0.toml": lambda: overhang(2.0),

@@ -9,7 +9,7 @@ use super::check::{Context, REL_TOL, show, unique_names};
 use super::error::SceneError;
 use crate::geometry::ConvexPolygon;
 use crate::luminaire::{Luminaire, LuminaireKind};
-use crate::sky::{Brightness, Distribution, Glazing, Opening, SiteTime, Sky, SunPosition, day_of_year};
+use crate::sky::{Brightness, Distribution, Fresnel, Glazing, Opening, SiteTime, Sky, SunPosition, day_of_year};
 use serde::Deserialize;
 use std::path::Path;
 
@@ -42,7 +42,7 @@ pub enum RawSkyType {
     Name(String),
 }
 
-/// `[[window]]` as written: a rectangle (parallelogram) opening, glazed when
+/// `[[window]]` as written: a rectangle (parallelogram) opening, glazed when `glass` or
 /// `transmittance` is given.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -54,10 +54,20 @@ pub struct RawWindow {
     pub edge_u: [f64; 3],
     #[serde(deserialize_with = "super::arrays::exact")]
     pub edge_v: [f64; 3],
-    /// Glazing: the normal transmittance of one pane (none: an unglazed opening).
+    /// The glass model (none: Fresnel panes if `transmittance` is given, else unglazed).
+    pub glass: Option<RawGlass>,
+    /// Fresnel panes: the normal transmittance of one pane.
     pub transmittance: Option<f64>,
     pub panes: Option<i64>,
     pub refractive_index: Option<f64>,
+}
+
+/// `glass = "fresnel"` or `glass = "cie171"`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum RawGlass {
+    Fresnel,
+    Cie171,
 }
 
 /// The horizontal illuminance of the sky when neither brightness key is given, lx.
@@ -193,17 +203,33 @@ fn window(at: &Context, w: &RawWindow, sky: &Sky) -> Result<Luminaire, SceneErro
     Ok(Luminaire { name: w.name.clone(), kind: LuminaireKind::Window { window, sky: sky.clone() } })
 }
 
+/// `glass` (`"fresnel"` when `transmittance` is given), and for Fresnel panes
 /// `transmittance`, `panes` (1 or 2, default 1) and `refractive_index` (default 1.52).
 fn glazing(at: &Context, w: &RawWindow) -> Result<Option<Glazing>, SceneError> {
-    let Some(normal) = w.transmittance else {
-        if let Some((key, _)) = [("panes", w.panes.is_some()), ("refractive_index", w.refractive_index.is_some())]
-            .into_iter()
-            .find(|(_, given)| *given)
-        {
-            return Err(at.error(key, "applies only to a glazed window: give `transmittance`"));
+    let fresnel_keys = [
+        ("transmittance", w.transmittance.is_some()),
+        ("panes", w.panes.is_some()),
+        ("refractive_index", w.refractive_index.is_some()),
+    ];
+    let given = fresnel_keys.into_iter().find(|(_, given)| *given).map(|(key, _)| key);
+    match (w.glass, w.transmittance) {
+        (Some(RawGlass::Cie171), _) => match given {
+            Some(key) => Err(at.error(key, "does not apply to glass = \"cie171\", whose transmittance is CIE 171's")),
+            None => Ok(Some(Glazing::Cie171)),
+        },
+        (_, Some(normal)) => fresnel(at, w, normal).map(|f| Some(Glazing::Fresnel(f))),
+        (Some(RawGlass::Fresnel), None) => {
+            Err(at.error("transmittance", "Fresnel panes need their normal transmittance"))
         }
-        return Ok(None);
-    };
+        (None, None) => match given {
+            Some(key) => Err(at.error(key, "applies only to a glazed window: give `transmittance`")),
+            None => Ok(None),
+        },
+    }
+}
+
+/// Fresnel panes transmitting `normal` at normal incidence.
+fn fresnel(at: &Context, w: &RawWindow, normal: f64) -> Result<Fresnel, SceneError> {
     let index = at.finite("refractive_index", w.refractive_index.unwrap_or(DEFAULT_REFRACTIVE_INDEX))?;
     if !(1.0..=4.0).contains(&index) || index == 1.0 {
         return Err(at.error("refractive_index", format!("must be greater than 1 and at most 4, got {index}")));
@@ -213,8 +239,8 @@ fn glazing(at: &Context, w: &RawWindow) -> Result<Option<Glazing>, SceneError> {
         n => return Err(at.error("panes", format!("must be 1 or 2, got {n}"))),
     };
     let normal = at.positive("transmittance", normal)?;
-    Glazing::new(normal, index, panes).map(Some).ok_or_else(|| {
-        let most = Glazing::lossless(index);
+    Fresnel::new(normal, index, panes).ok_or_else(|| {
+        let most = Fresnel::lossless(index);
         at.error(
             "transmittance",
             format!("a pane of refractive index {index} transmits at most {most:.4}, got {normal}"),

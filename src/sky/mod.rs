@@ -6,8 +6,9 @@
 //! of ISO 15469/CIE S 011 and the traditional overcast sky), the sun's position
 //! (`sun.rs`), the normalisation by the zenith luminance or by the unobstructed horizontal
 //! illuminance (`integrate.rs`), and the light a receiving point gets through an opening
-//! (`window.rs`, glazed or not: `glazing.rs`): sky and ground seen through the opening's polygon, piece by piece, each
-//! piece's exact projected solid angle times the luminance towards it, shadows included.
+//! (`window.rs`, glazed or not: `glazing.rs`, the models in `glazing_*.rs`): sky and ground
+//! seen through the opening's polygon, piece by piece, each piece's exact projected solid
+//! angle times the luminance towards it, shadows included.
 //! The sky enters the system exactly like a luminaire's direct light (`crate::luminaire`,
 //! `Light::Window`); nothing here knows about patches' cells or materials.
 //!
@@ -16,12 +17,16 @@
 //! `L_g = ρ_g (E_h + E_sun,h)/π`, lit by the unobstructed sky and the sun.
 
 mod glazing;
+mod glazing_cie171;
+mod glazing_fresnel;
 mod integrate;
 mod standard;
 mod sun;
 mod window;
 
 pub use glazing::Glazing;
+pub use glazing_cie171::COEFFICIENTS as CIE171_GLASS;
+pub use glazing_fresnel::Fresnel;
 pub use integrate::{gauss_legendre, hemisphere};
 pub use standard::{Distribution, GENERAL, Parameters, gradation, indicatrix};
 pub use sun::{SiteTime, SunPosition, day_of_year, declination_and_equation_of_time};

@@ -7,7 +7,7 @@ use crate::support::{scratch, ugo};
 fn every_cie_case_is_valid_and_lists_its_luminaires() {
     let mut cases: Vec<_> = std::fs::read_dir("cases/cie171").unwrap().map(|e| e.unwrap().path()).collect();
     cases.retain(|p| p.extension().is_some_and(|e| e == "toml"));
-    assert_eq!(cases.len(), 16, "6 with luminaires, 10 daylit: {cases:?}");
+    assert_eq!(cases.len(), 20, "6 with luminaires, 14 daylit: {cases:?}");
     for case in &cases {
         let o = ugo(&["info", case.to_str().unwrap()]);
         assert!(o.status.success(), "{}: {}", case.display(), String::from_utf8_lossy(&o.stderr));

@@ -3,7 +3,7 @@
 
 use super::{BASE, assert_error, parse, rejected};
 use ugo::luminaire::LuminaireKind;
-use ugo::sky::Distribution;
+use ugo::sky::{Distribution, Glazing};
 
 const FLOOR: &str = "[[surface]]\nname = \"floor\"\nshape = \"rectangle\"\nmaterial = \"white\"\norigin = [0, 0, 0]\nedge_u = [0, 0, 1]\nedge_v = [1, 0, 0]\n";
 const WINDOW: &str = "[[window]]\nname = \"roof\"\norigin = [0, 1, 0]\nedge_u = [1, 0, 0]\nedge_v = [0, 0, 1]\n";
@@ -68,4 +68,29 @@ fn daylight_mistakes_are_named_by_table_and_key() {
     let flat = WINDOW.replace("edge_v = [0, 0, 1]", "edge_v = [2, 0, 0]");
     let e = rejected(&format!("{BASE}{FLOOR}[sky]\ntype = 5\nsun_altitude_deg = 60\nsun_azimuth_deg = 0\n{flat}"));
     assert_error(&e, "[[window]] \"roof\" (#1)", "edge_v", &["no area"]);
+}
+
+#[test]
+fn a_window_of_cie_171_glass_is_read_and_its_mistakes_named() {
+    let sky = "[sky]\ntype = 5\nsun_altitude_deg = 60\nsun_azimuth_deg = 0\n";
+    let scene = parse(&format!("{BASE}{FLOOR}{sky}{WINDOW}glass = \"cie171\"\n")).unwrap_or_else(|e| panic!("{e}"));
+    match &scene.luminaires[0].kind {
+        LuminaireKind::Window { window, .. } => assert_eq!(window.glazing, Some(Glazing::Cie171)),
+        other => panic!("{other:?}"),
+    }
+    let fresnel = parse(&format!("{BASE}{FLOOR}{sky}{WINDOW}glass = \"fresnel\"\ntransmittance = 0.88\n"));
+    match &fresnel.unwrap_or_else(|e| panic!("{e}")).luminaires[0].kind {
+        LuminaireKind::Window { window, .. } => assert!(matches!(window.glazing, Some(Glazing::Fresnel(_)))),
+        other => panic!("{other:?}"),
+    }
+    let window = "[[window]] \"roof\" (#1)";
+    let both = format!("{BASE}{FLOOR}{sky}{WINDOW}glass = \"cie171\"\ntransmittance = 0.88\n");
+    assert_error(&rejected(&both), window, "transmittance", &["cie171"]);
+    let panes = format!("{BASE}{FLOOR}{sky}{WINDOW}glass = \"cie171\"\npanes = 2\n");
+    assert_error(&rejected(&panes), window, "panes", &["cie171"]);
+    let bare = format!("{BASE}{FLOOR}{sky}{WINDOW}glass = \"fresnel\"\n");
+    assert_error(&rejected(&bare), window, "transmittance", &["normal transmittance"]);
+    let misspelt = rejected(&format!("{BASE}{FLOOR}{sky}{WINDOW}glass = \"cie-171\"\n"));
+    assert_eq!(misspelt.key(), "glass", "{misspelt}");
+    assert!(misspelt.message().contains("cie171") && misspelt.message().contains("line "), "{misspelt}");
 }
