@@ -12,7 +12,7 @@
 //! is met within twice that distance.
 
 use crate::geometry::{Mesh, NO_TWIN, Patch};
-use crate::transfer::occlusion::polygon_points;
+use crate::transfer::occlusion::{POINTS, polygon_points};
 use crate::visibility::{Visibility, standoff};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -44,22 +44,22 @@ impl Backs {
         })
     }
 
-    /// The exposed area of `patch`, m²: its area times the share of its points that lie
-    /// outside every solid; the four stratified points when all four do, else the 64 of
-    /// its quarters' quarters (a patch across a contact line: the luminaires' light on it,
-    /// integrated finely, is spread over its exposed area to about 1/64).
+    /// The exposed area of `patch`, m²: its area times the share of its [`POINTS`]
+    /// stratified points that lie outside every solid. When all of them lie inside, the
+    /// share of the `POINTS²` points of its four quarters: a sliver outside still takes
+    /// the luminaires' light that lands on it, rather than losing it.
     pub fn exposed_area(&self, visibility: &Visibility, patch: &Patch) -> f64 {
         let (c, s) = TILT;
         let frame = patch.frame();
         let tilted = [(s, 0.0), (0.0, s), (-s, 0.0), (0.0, -s)].map(|(a, b)| frame.world(DVec3::new(a, b, c)));
         let outside =
             |x: &DVec3| !std::iter::once(patch.normal).chain(tilted).all(|d| self.blocked(visibility, patch, *x, d));
-        if polygon_points(&patch.polygon).iter().all(outside) {
-            return patch.area;
+        let open = polygon_points(&patch.polygon).iter().filter(|x| outside(x)).count();
+        if open > 0 {
+            return patch.area * open as f64 / POINTS as f64;
         }
-        let pieces = patch.polygon.split().into_iter().flat_map(|q| q.split());
-        let points: Vec<DVec3> = pieces.flat_map(|q| polygon_points(&q)).collect();
-        patch.area * points.iter().filter(|x| outside(x)).count() as f64 / points.len() as f64
+        let finer = patch.polygon.split().iter().flat_map(polygon_points).filter(outside).count();
+        patch.area * finer as f64 / (POINTS * POINTS) as f64
     }
 }
 

@@ -261,7 +261,7 @@ fn the_groups_of_a_hierarchical_case_are_solved_on_its_one_hierarchy() {
     // cut six levels deep, against the light the refinement cached with the roots' ray
     // caster, its shadow edges cut only while a piece could change a leaf by the oracle's
     // ε (`docs/hierarchy.md`, "Luminaires' light"): measured 6.8e-4 apart on the 1,010
-    // leaves wholly exposed, up to 2.3e-3 over all 1,020: the 10 partly hidden under the furniture
+    // leaves wholly exposed, 2.3e-3 over all 1,020: the 10 partly hidden under the furniture
     // spread their light over their exposed part, which scales the two integrations'
     // difference up with it.
     let k = model.kernel.cells();
