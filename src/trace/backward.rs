@@ -10,9 +10,12 @@
 //! `1 − min(β, 0.95)` and divides the survivors' throughput `β` by the survival chance.
 //! `max_order = n` keeps only light reflected at most `n` times: the truncated Neumann sum
 //! `Σ_{m≤n} Kᵐ L0`. Luminaires are gathered exactly at every vertex (`luminaires.rs`);
-//! their light, reflected once in `L0`, is kept at the vertices up to `n`.
+//! their light, reflected once in `L0`, is kept at the vertices up to `n`. So is the sky
+//! through the openings (`openings.rs`): sampled towards an opening at every vertex, and
+//! met by a scattered ray that leaves the scene through one, the two weighted by the
+//! power heuristic (only the first at the last vertex kept).
 
-use super::world::World;
+use super::world::{Cast, World};
 use crate::random::Rng;
 use crate::visibility::NO_FACE;
 use glam::DVec3;
@@ -72,7 +75,21 @@ pub fn luminance_along(world: &World, start: Start, rng: &mut Rng, options: &Tra
     let mut scattered = start.drawn;
     for order in 0..=last {
         *rays += 1;
-        let Some(hit) = world.landing(origin, direction, ignore) else { break };
+        let hit = match world.cast(origin, direction, ignore) {
+            Cast::Lands(hit) => hit,
+            Cast::Absorbed => break,
+            Cast::Escapes => {
+                // The sky through an opening lights the last vertex (or the probe); the eye
+                // does not see it directly.
+                if (order > 0 || start.drawn.is_some())
+                    && let Some(seen) = world.openings.seen(origin, direction)
+                {
+                    let weight = scattered.map_or(1.0, |pdf| power_heuristic(pdf, seen.pdf));
+                    total += beta * seen.luminance * weight;
+                }
+                break;
+            }
+        };
         let emitted = mesh.emission[hit.patch];
         if emitted > 0.0 {
             let weight = match scattered {
@@ -90,6 +107,20 @@ pub fn luminance_along(world: &World, start: Start, rng: &mut Rng, options: &Tra
         let out = frame.local(-direction);
         if !material.is_delta() {
             total += beta * world.luminaires.reflected(&world.visibility, material, &frame, hit.point, patch.face, out);
+            if !world.openings.is_empty() {
+                let (sky, cast) = world.openings.reflected(
+                    &world.visibility,
+                    material,
+                    &frame,
+                    hit.point,
+                    patch.face,
+                    out,
+                    order < last,
+                    rng.uniform3(),
+                );
+                total += beta * sky;
+                *rays += cast;
+            }
         }
         if order == last {
             break;
