@@ -27,7 +27,7 @@ use glam::DVec3;
 use std::f64::consts::FRAC_1_PI;
 
 /// The openings of a scene and the sky each lets in.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone)]
 pub struct Openings {
     list: Vec<(Opening, Sky)>,
     /// Probability of choosing each opening: its share of the openings' area.
