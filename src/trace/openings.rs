@@ -16,15 +16,12 @@
 //! The eye does not see the sky directly, as in the render of the solved field: the
 //! openings light surfaces (and probes), like a luminaire.
 
-use super::backward::power_heuristic;
 use super::emitters::{Incoming, point_on};
-use crate::geometry::{ConvexPolygon, Frame};
+use crate::geometry::ConvexPolygon;
 use crate::luminaire::{Light, Source};
-use crate::material::MaterialModel;
 use crate::sky::{Opening, Sky};
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
-use std::f64::consts::FRAC_1_PI;
 
 /// The openings of a scene and the sky each lets in.
 #[derive(Debug, Clone)]
@@ -87,35 +84,6 @@ impl Openings {
         let direction = (point - x).normalize_or_zero();
         let seen = self.seen(x, direction).filter(|s| s.pdf.is_finite() && s.pdf > 0.0)?;
         Some(Incoming { direction, point, face: NO_FACE, luminance: seen.luminance, pdf: seen.pdf })
-    }
-
-    /// Next-event estimation at a surface point: the sky through a sampled point of an
-    /// opening, reflected by `material` (local frame `frame`, face `face`) towards the
-    /// local `out`, cd/m², weighted by the power heuristic against the material's own
-    /// sampling when the path also continues from here (`weighted`); and the rays cast.
-    #[allow(clippy::too_many_arguments)]
-    pub fn reflected(
-        &self,
-        visibility: &Visibility,
-        material: &MaterialModel,
-        frame: &Frame,
-        point: DVec3,
-        face: u32,
-        out: DVec3,
-        weighted: bool,
-        u: [f64; 3],
-    ) -> (f64, u64) {
-        let Some(light) = self.sample_towards(point, u) else { return (0.0, 0) };
-        let l_in = frame.local(light.direction);
-        let rho = material.luminance_factor(out, l_in);
-        if rho <= 0.0 || light.luminance <= 0.0 {
-            return (0.0, 0);
-        }
-        if !Openings::clear(visibility, point, light.direction, face) {
-            return (0.0, 1);
-        }
-        let weight = if weighted { power_heuristic(light.pdf, material.pdf(out, l_in)) } else { 1.0 };
-        (rho * l_in.z.abs() * FRAC_1_PI * light.luminance / light.pdf * weight, 1)
     }
 
     /// True when the ray from `x` (on face `ignore`) along the unit `direction` leaves the
