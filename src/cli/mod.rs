@@ -129,7 +129,8 @@ pub fn describe(source: &Source) -> String {
             )
         }
         Light::Window { window, sky } => format!(
-            "opening of {:.4} m²{}, sky {:?}, E_h = {:.1} lx, L_z = {:.1} cd/m², ground ρ = {}",
+            "opening of {:.4} m²{}, sky {:?} as let in (times its maintenance factor): E_h = {:.1} lx, \
+             L_z = {:.1} cd/m², ground ρ = {}",
             window.polygon.area(),
             window.glazing.map_or(String::new(), |g| format!(" {g}")),
             sky.distribution,

@@ -179,6 +179,7 @@ fn summary(s: &Solution, output: &Path) {
         (None, Some(h)) => print_hierarchy(assembly, st.rays, h),
         (None, None) => println!("  assembly           {assembly:>12.3} s   ({} occlusion rays)", st.rays),
     }
+    println!("    of it direct light {:>8.3} s   (the sources' light on the patches: L0)", st.light_seconds);
     let i = s.info;
     println!(
         "  solve              {:>12.3} s   ({}, {} iterations, residual {:.2e})",

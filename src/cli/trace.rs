@@ -45,10 +45,17 @@ pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
     // Surfaces and luminaires both emit: the tracers start paths on the one and gather
     // (or, forward, start photons at) the other.
     let emitted = world.emitters.flux() + world.luminaires.flux();
-    if emitted.is_nan() || emitted <= 0.0 {
+    if (emitted.is_nan() || emitted <= 0.0) && world.openings.is_empty() {
         bail!("nothing in {} emits light: give a surface an emission or add a [[luminaire]]", case.display());
     }
     if let Some(photons) = job.photons {
+        if !world.openings.is_empty() {
+            bail!(
+                "{} has [[window]] openings, which light tracing (--forward) does not emit yet: trace backward \
+                 (--camera, or the probes)",
+                case.display()
+            );
+        }
         return forward(case, &scene, &world, &options, job, photons);
     }
     if job.spp == 0 {

@@ -7,7 +7,7 @@
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::Frame;
-use crate::sky::through_window;
+use crate::sky::through_window_cut;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
 use std::f64::consts::PI;
@@ -34,7 +34,9 @@ pub fn incoming(source: &Source, visibility: &Visibility, p: DVec3, ignore: u32)
 }
 
 /// `D_d(p) = E_d(p)/π` per cell of `frame` at `p` (whose receiving side faces
-/// `frame.normal`), ignoring the face `ignore` that `p` lies on.
+/// `frame.normal`), ignoring the face `ignore` that `p` lies on; an opening's pieces are cut
+/// while larger than `opening_eta` times their distance (`crate::sky::ETA` for a reading,
+/// [`OPENING_ETA`](super::OPENING_ETA) where the light is averaged or only guessed).
 pub fn arriving_at(
     sources: &[Source],
     visibility: &Visibility,
@@ -42,6 +44,7 @@ pub fn arriving_at(
     p: DVec3,
     frame: &Frame,
     ignore: u32,
+    opening_eta: f64,
 ) -> Vec<f64> {
     let mut out = vec![0.0; directions.len()];
     for source in sources {
@@ -50,9 +53,8 @@ pub fn arriving_at(
             Light::Parallel { direction, .. } => direction.dot(frame.normal) < 0.0,
             Light::Window { window, sky } => {
                 let sees = |x: DVec3| visibility.closest_hit(p, x - p, ignore).is_none();
-                through_window(sky, window, p, frame.normal, &sees, 0.0, &mut |towards, e, _| {
-                    out[directions.lookup(frame.local(towards))] += e / PI;
-                });
+                let mut arrive = |towards: DVec3, e: f64, _| out[directions.lookup(frame.local(towards))] += e / PI;
+                through_window_cut(opening_eta, sky, window, p, frame.normal, &sees, 0.0, &mut arrive);
                 false
             }
         };

@@ -16,7 +16,7 @@ use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch};
 use crate::kernel::hierarchy::{Hierarchy, Iterated, Operator, Options, iterate, sample_points};
 use crate::kernel::{Footprint, Kernel, Transport};
-use crate::luminaire::{DirectLight, PatchLight, Source, arriving_at, incoming, patch_lights};
+use crate::luminaire::{DirectLight, OPENING_ETA, PatchLight, Source, arriving_at, incoming, patch_lights};
 use crate::material::Block;
 use crate::progress::Progress;
 use crate::scene::Scene;
@@ -155,7 +155,7 @@ fn seed_light(sources: &[Source], roots: &Mesh, visibility: &Visibility, directi
             let mut mean = vec![0.0; k];
             let mut points = 0.0;
             for x in sample_points(patch) {
-                let d = arriving_at(sources, visibility, directions, x, &frame, patch.face);
+                let d = arriving_at(sources, visibility, directions, x, &frame, patch.face, OPENING_ETA);
                 mean.iter_mut().zip(d).for_each(|(m, d)| *m += d);
                 points += 1.0;
             }

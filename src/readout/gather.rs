@@ -19,6 +19,7 @@ use crate::geometry::{ConvexPolygon, Frame, NO_TWIN, Patch};
 use crate::luminaire::arriving_at;
 use crate::model::Model;
 use crate::readout::field::Field;
+use crate::sky::ETA;
 use crate::transfer::contour::point_to_polygon;
 use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::cut_along_shadows;
@@ -46,7 +47,7 @@ pub(super) fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (
     let patch = model.faces.under(&model.mesh, &model.visibility, p, n);
     let frame = patch.map_or_else(|| Frame::around(n), |i| model.mesh.patches[i].frame());
     let ignore = patch.map_or(NO_FACE, |i| model.mesh.patches[i].face);
-    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &frame, ignore);
+    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &frame, ignore, ETA);
     (patch, gather(model, field, p, &frame, ignore), direct)
 }
 
@@ -54,7 +55,7 @@ pub(super) fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (
 /// the surfaces plus direct from the luminaires.
 pub(super) fn arriving(model: &Model, field: &Field, q: DVec3, s: &Patch) -> Vec<f64> {
     let frame = s.frame();
-    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, q, &frame, s.face);
+    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, q, &frame, s.face, ETA);
     sum(&gather(model, field, q, &frame, s.face), &direct)
 }
 

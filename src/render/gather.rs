@@ -15,7 +15,7 @@
 
 use super::solved::Solved;
 use crate::geometry::{Frame, NO_TWIN};
-use crate::luminaire::arriving_at;
+use crate::luminaire::{OPENING_ETA, arriving_at};
 use crate::material::Block;
 use crate::random::Rng;
 use crate::transfer::contour::point_to_polygon;
@@ -86,7 +86,7 @@ fn gather_incident(
             incident[d as usize] += weight * f;
         }
     }
-    let luminaires = arriving_at(&lit.sources, &lit.visibility, &lit.directions, q, frame, face);
+    let luminaires = arriving_at(&lit.sources, &lit.visibility, &lit.directions, q, frame, face, OPENING_ETA);
     incident.iter_mut().zip(luminaires).for_each(|(i, d)| *i += d);
     let shift = rng.next_u64() as usize % rays.max(1);
     let stride = if rays.is_multiple_of(7) { 1 } else { 7 };

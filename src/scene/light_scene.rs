@@ -7,9 +7,12 @@
 //! per group (`crate::study::solve_light_scenes`). A source without `group` is in the group
 //! [`DEFAULT_GROUP`]; a group exists when a source names it. A light scene gives each group
 //! it lights a factor from 0 (off) to 1 (full output), or `true` (1) and `false` (0);
-//! groups it does not name are off. The maintenance factor multiplies every source of the
-//! case (luminaires, parallel light included, and emitting surfaces) before anything else
-//! sees it, so every solve, light scene and Monte Carlo reference uses the maintained output.
+//! groups it does not name are off. The maintenance factor multiplies every electric source
+//! of the case (the `[[luminaire]]`s, parallel light included, and emitting surfaces) before
+//! anything else sees it, so every solve, light scene and Monte Carlo reference uses the
+//! maintained output. Daylight is not electric light: the openings have their own glazing
+//! maintenance factor (`[[window]] maintenance_factor`, `sky.rs`), and the sun of `[sky]`
+//! none (`docs/daylight.md`).
 
 use super::check::{Context, line};
 use super::error::SceneError;
@@ -90,6 +93,8 @@ pub(super) struct Sources<'a> {
     pub luminaire_groups: Vec<Option<Spanned<String>>>,
     pub surfaces: &'a mut [Surface],
     pub luminaires: &'a mut [Luminaire],
+    /// The first `electric` luminaires are the `[[luminaire]]` tables' (the rest daylight).
+    pub electric: usize,
 }
 
 /// Validates `[lighting]`, the `group` keys and the `[[light_scene]]` tables of `path`
@@ -109,11 +114,11 @@ pub(super) fn lighting(
         .map(|(i, s)| light_scene(path, source, (i, s), &scenes[..i], &groups))
         .collect::<Result<_, _>>()?;
     sources.surfaces.iter_mut().for_each(|s| s.emission = s.emission.map(|e| dim(e, maintenance_factor)));
-    for l in sources.luminaires.iter_mut() {
+    for l in sources.luminaires[..sources.electric].iter_mut() {
         match &mut l.kind {
             LuminaireKind::Point(p) => p.multiplier *= maintenance_factor,
             LuminaireKind::Parallel { illuminance, .. } => *illuminance *= maintenance_factor,
-            LuminaireKind::Window { sky, .. } => *sky = sky.scaled(maintenance_factor),
+            LuminaireKind::Window { .. } => {}
         }
     }
     Ok(Lighting { maintenance_factor, groups, scenes })

@@ -2,8 +2,10 @@
 //! that let them in, as written and as validated (`docs/daylight.md`).
 //!
 //! Owns the keys and rules of both tables. Each `[[window]]` becomes a luminaire of kind
-//! `Window` (the sky and ground seen through it); `sun_illuminance` adds the sun as a
-//! parallel luminaire named `"sun"`. The luminance model is `crate::sky`.
+//! `Window` (the sky and ground seen through it, times the window's `maintenance_factor`:
+//! BRE's and CIBSE's glazing maintenance factor, so the daylight factor scales by it while
+//! `E_h` outside does not); `sun_illuminance` adds the sun as a parallel luminaire named
+//! `"sun"`. The luminance model is `crate::sky`.
 
 use super::check::{Context, REL_TOL, show, unique_names};
 use super::error::SceneError;
@@ -43,7 +45,7 @@ pub enum RawSkyType {
 }
 
 /// `[[window]]` as written: a rectangle (parallelogram) opening, glazed when `glass` or
-/// `transmittance` is given.
+/// `transmittance` is given, with a maintenance factor for the dirt on it.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawWindow {
@@ -60,6 +62,8 @@ pub struct RawWindow {
     pub transmittance: Option<f64>,
     pub panes: Option<i64>,
     pub refractive_index: Option<f64>,
+    /// The glazing maintenance factor (dirt), in (0, 1]: the share of the light it keeps.
+    pub maintenance_factor: Option<f64>,
 }
 
 /// `glass = "fresnel"` or `glass = "cie171"`.
@@ -200,7 +204,14 @@ fn window(at: &Context, w: &RawWindow, sky: &Sky) -> Result<Luminaire, SceneErro
     }
     let polygon = ConvexPolygon::quad(origin, origin + u, origin + u + v, origin + v);
     let window = Opening { polygon, glazing: glazing(at, w)? };
-    Ok(Luminaire { name: w.name.clone(), kind: LuminaireKind::Window { window, sky: sky.clone() } })
+    let maintenance = at.positive("maintenance_factor", w.maintenance_factor.unwrap_or(1.0))?;
+    if maintenance > 1.0 {
+        let message = format!("must be greater than 0 and at most 1 (the share of the light kept), got {maintenance}");
+        return Err(at.error("maintenance_factor", message));
+    }
+    // The light through the opening, dirt included: the sky (and ground) seen through it
+    // times the maintenance factor; the unobstructed sky outside (E_h) is unchanged.
+    Ok(Luminaire { name: w.name.clone(), kind: LuminaireKind::Window { window, sky: sky.scaled(maintenance) } })
 }
 
 /// `glass` (`"fresnel"` when `transmittance` is given), and for Fresnel panes

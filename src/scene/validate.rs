@@ -57,6 +57,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
             .collect(),
         surfaces: &mut surfaces,
         luminaires: &mut luminaires,
+        electric: tables.len(),
     };
     let lighting = lighting(path, &source, raw.lighting, &raw.light_scene, sources)?;
     Ok(Scene {

@@ -56,6 +56,22 @@ pub fn through_window(
     least: f64,
     visit: &mut dyn FnMut(DVec3, f64, Component),
 ) -> usize {
+    through_window_cut(ETA, sky, opening, p, n, sees, least, visit)
+}
+
+/// [`through_window`] with the pieces cut for size while their diameter exceeds `eta` (not
+/// [`ETA`]) times their distance: coarser where the light is averaged anyway, over a patch.
+#[allow(clippy::too_many_arguments)]
+pub fn through_window_cut(
+    eta: f64,
+    sky: &Sky,
+    opening: &Opening,
+    p: DVec3,
+    n: DVec3,
+    sees: &dyn Fn(DVec3) -> bool,
+    least: f64,
+    visit: &mut dyn FnMut(DVec3, f64, Component),
+) -> usize {
     let window = &opening.polygon;
     let glazing = opening.glazing.map(|g| (g, window.normal()));
     let size = window.diameter();
@@ -74,7 +90,7 @@ pub fn through_window(
                 let piece = ConvexPolygon::from_slice(&part[..m]);
                 let smallest = 1e-12 * size * size;
                 let mut view =
-                    View { sky, glazing, p, n, sees, least, component, visit: &mut *visit, rays: 0, smallest };
+                    View { sky, glazing, p, n, sees, least, component, visit: &mut *visit, rays: 0, smallest, eta };
                 view.piece(&piece, 0);
                 rays += view.rays;
             }
@@ -97,6 +113,8 @@ struct View<'a, 'v> {
     rays: usize,
     /// Pieces below this area (m²) are empty: a clip that left only an edge.
     smallest: f64,
+    /// A piece is cut while its diameter exceeds `eta` times its distance.
+    eta: f64,
 }
 
 impl View<'_, '_> {
@@ -104,7 +122,7 @@ impl View<'_, '_> {
         if piece.area() <= self.smallest {
             return;
         }
-        if depth < MAX_DEPTH && piece.diameter() > ETA * piece.distance_to(self.p) {
+        if depth < MAX_DEPTH && piece.diameter() > self.eta * piece.distance_to(self.p) {
             piece.split().iter().for_each(|q| self.piece(q, depth + 1));
             return;
         }

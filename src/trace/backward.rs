@@ -10,9 +10,15 @@
 //! `1 − min(β, 0.95)` and divides the survivors' throughput `β` by the survival chance.
 //! `max_order = n` keeps only light reflected at most `n` times: the truncated Neumann sum
 //! `Σ_{m≤n} Kᵐ L0`. Luminaires are gathered exactly at every vertex (`luminaires.rs`);
-//! their light, reflected once in `L0`, is kept at the vertices up to `n`.
+//! their light, reflected once in `L0`, is kept at the vertices up to `n`. So is the sky
+//! through the openings (`openings.rs`): sampled towards an opening at every vertex, and
+//! met by a scattered ray that leaves the scene through one, the two weighted by the
+//! power heuristic (only the first at the last vertex kept).
 
-use super::world::World;
+use super::openings::Openings;
+use super::world::{Cast, World};
+use crate::geometry::Frame;
+use crate::material::MaterialModel;
 use crate::random::Rng;
 use crate::visibility::NO_FACE;
 use glam::DVec3;
@@ -72,7 +78,21 @@ pub fn luminance_along(world: &World, start: Start, rng: &mut Rng, options: &Tra
     let mut scattered = start.drawn;
     for order in 0..=last {
         *rays += 1;
-        let Some(hit) = world.landing(origin, direction, ignore) else { break };
+        let hit = match world.cast(origin, direction, ignore) {
+            Cast::Lands(hit) => hit,
+            Cast::Absorbed => break,
+            Cast::Escapes => {
+                // The sky through an opening lights the last vertex (or the probe); the eye
+                // does not see it directly.
+                if (order > 0 || start.drawn.is_some())
+                    && let Some(seen) = world.openings.seen(origin, direction)
+                {
+                    let weight = scattered.map_or(1.0, |pdf| power_heuristic(pdf, seen.pdf));
+                    total += beta * seen.luminance * weight;
+                }
+                break;
+            }
+        };
         let emitted = mesh.emission[hit.patch];
         if emitted > 0.0 {
             let weight = match scattered {
@@ -90,6 +110,10 @@ pub fn luminance_along(world: &World, start: Start, rng: &mut Rng, options: &Tra
         let out = frame.local(-direction);
         if !material.is_delta() {
             total += beta * world.luminaires.reflected(&world.visibility, material, &frame, hit.point, patch.face, out);
+            if !world.openings.is_empty() {
+                let vertex = Vertex { material, frame: &frame, point: hit.point, face: patch.face, out };
+                total += beta * sky_reflected(world, &vertex, order < last, rng.uniform3(), rays);
+            }
         }
         if order == last {
             break;
@@ -125,6 +149,34 @@ pub fn luminance_along(world: &World, start: Start, rng: &mut Rng, options: &Tra
         ignore = patch.face;
     }
     total
+}
+
+/// A path's vertex: where it is, on what, leaving towards the local `out`.
+struct Vertex<'a> {
+    material: &'a MaterialModel,
+    frame: &'a Frame,
+    point: DVec3,
+    face: u32,
+    out: DVec3,
+}
+
+/// Next-event estimation of the sky through the openings at a vertex: a sampled point of
+/// an opening, its light reflected towards the vertex's `out`, cd/m², weighted by the power
+/// heuristic against the material's own sampling when the path also continues from here
+/// (`weighted`).
+fn sky_reflected(world: &World, at: &Vertex, weighted: bool, u: [f64; 3], rays: &mut u64) -> f64 {
+    let Some(light) = world.openings.sample_towards(at.point, u) else { return 0.0 };
+    let l_in = at.frame.local(light.direction);
+    let rho = at.material.luminance_factor(at.out, l_in);
+    if rho <= 0.0 || light.luminance <= 0.0 {
+        return 0.0;
+    }
+    *rays += 1;
+    if !Openings::clear(&world.visibility, at.point, light.direction, at.face) {
+        return 0.0;
+    }
+    let weight = if weighted { power_heuristic(light.pdf, at.material.pdf(at.out, l_in)) } else { 1.0 };
+    rho * l_in.z.abs() * FRAC_1_PI * light.luminance / light.pdf * weight
 }
 
 /// The power heuristic `p²/(p² + q²)` of the sampling technique with density `p`.

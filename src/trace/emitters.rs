@@ -8,7 +8,7 @@
 //! and for photon emission (a point and a Lambertian direction). Luminaires are sampled
 //! apart, exactly (`luminaires.rs`).
 
-use crate::geometry::{Mesh, Patch};
+use crate::geometry::{ConvexPolygon, Mesh};
 use crate::material::cosine_direction;
 use glam::DVec3;
 use std::f64::consts::PI;
@@ -97,7 +97,7 @@ impl Emitters {
         }
         let (patch, v) = self.pick(u[0]);
         let p = &mesh.patches[patch as usize];
-        let point = point_on(p, v, u[1], u[2]);
+        let point = point_on(&p.polygon, v, u[1], u[2]);
         let to = point - x;
         let distance2 = to.length_squared();
         let direction = to / distance2.sqrt();
@@ -127,17 +127,17 @@ impl Emitters {
         }
         let (patch, v) = self.pick(u[0]);
         let p = &mesh.patches[patch as usize];
-        let origin = point_on(p, v, u[1], u[2]);
+        let origin = point_on(&p.polygon, v, u[1], u[2]);
         let direction = p.frame().world(cosine_direction(u[3], u[4]));
         Some(Departure { origin, direction, face: p.face })
     }
 }
 
-/// A uniform point of `p`: `u0` chooses the fan triangle by area, `u1, u2` the point in it.
-fn point_on(p: &Patch, u0: f64, u1: f64, u2: f64) -> DVec3 {
-    let mut s = u0 * p.area;
+/// A uniform point of `polygon`: `u0` chooses the fan triangle by area, `u1, u2` the point in it.
+pub(super) fn point_on(polygon: &ConvexPolygon, u0: f64, u1: f64, u2: f64) -> DVec3 {
+    let mut s = u0 * polygon.area();
     let mut chosen = None;
-    for tri in p.polygon.triangles() {
+    for tri in polygon.triangles() {
         let area = 0.5 * (tri[1] - tri[0]).cross(tri[2] - tri[0]).length();
         chosen = Some(tri);
         if s < area {

@@ -12,8 +12,9 @@
 //!
 //! The pieces they share: [`world`] (geometry, materials, ray casting), [`emitters`]
 //! (sources sampled by flux), [`luminaires`] (delta lights gathered exactly, photon
-//! sources) and [`statistics`] (means and standard errors). The continuous materials and
-//! their samplers are `crate::material`'s; the random streams `crate::random`'s.
+//! sources), [`openings`] (the sky and the ground through the `[[window]]`s) and
+//! [`statistics`] (means and standard errors). The continuous materials and their
+//! samplers are `crate::material`'s; the random streams `crate::random`'s.
 
 pub mod agreement;
 pub mod backward;
@@ -21,6 +22,7 @@ pub mod camera;
 pub mod emitters;
 pub mod forward;
 pub mod luminaires;
+pub mod openings;
 pub mod probe;
 pub mod statistics;
 pub mod world;
@@ -29,5 +31,6 @@ pub use agreement::{Agreement, agreement};
 pub use backward::{Start, TraceOptions, luminance_along};
 pub use camera::{TracedImage, trace_camera};
 pub use forward::{FieldEstimate, trace_photons};
+pub use openings::Openings;
 pub use probe::{ProbeEstimate, trace_probes};
-pub use world::World;
+pub use world::{Cast, World};

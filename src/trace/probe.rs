@@ -6,9 +6,11 @@
 //! The illuminance combines next-event estimation towards the emitters with
 //! cosine-distributed directions (each continued as a path), weighted by the power
 //! heuristic: `E = π L_in(l)` per cosine direction (density `cosθ/π`); the luminaires'
-//! direct light at the point is added exactly.
+//! direct light at the point is added exactly, and the sky through the openings is
+//! sampled like the emitters (`openings.rs`).
 
 use super::backward::{Start, TraceOptions, luminance_along, power_heuristic};
+use super::openings::Openings;
 use super::statistics::Tally;
 use super::world::World;
 use crate::geometry::Frame;
@@ -16,6 +18,7 @@ use crate::material::cosine_direction;
 use crate::random::Rng;
 use crate::scene::{Probe, ProbeKind};
 use crate::visibility::{NO_FACE, standoff};
+use glam::DVec3;
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_1_PI, PI};
 
@@ -70,6 +73,9 @@ fn read(world: &World, probe: &Probe, index: u64, samples: usize, options: &Trac
                 e += light.luminance * cos / light.pdf * power_heuristic(light.pdf, cos * FRAC_1_PI);
             }
         }
+        if !world.openings.is_empty() {
+            e += through_openings(world, p, n, ignore, rng.uniform3(), &mut rays);
+        }
         let local = cosine_direction(rng.uniform(), rng.uniform());
         let d = frame.world(local);
         let start = Start { origin: p, direction: d, ignore, drawn: Some(local.z * FRAC_1_PI) };
@@ -81,5 +87,20 @@ fn read(world: &World, probe: &Probe, index: u64, samples: usize, options: &Trac
         name: probe.name.clone(),
         luminance: luminance.mean_and_error(n),
         illuminance: illuminance.mean_and_error(n),
+    }
+}
+
+/// Next-event estimation of the sky through the openings on a receiver at `p` facing `n`
+/// (on face `ignore`), weighted against the cosine-distributed directions, lx.
+fn through_openings(world: &World, p: DVec3, n: DVec3, ignore: u32, u: [f64; 3], rays: &mut u64) -> f64 {
+    let Some(light) = world.openings.sample_towards(p, u) else { return 0.0 };
+    let cos = n.dot(light.direction);
+    if cos <= 0.0 || light.luminance <= 0.0 {
+        return 0.0;
+    }
+    *rays += 1;
+    match Openings::clear(&world.visibility, p, light.direction, ignore) {
+        true => light.luminance * cos / light.pdf * power_heuristic(light.pdf, cos * FRAC_1_PI),
+        false => 0.0,
     }
 }

@@ -1,11 +1,13 @@
 //! The scene as the Monte Carlo estimators see it: the patches only as geometry (where a
-//! ray lands, which side it meets), the continuous material of every patch, the emitters,
-//! the luminaires and the ray caster. Nothing here is discretized in direction: `design.md` §4's
+//! ray lands, which side it meets, or whether it leaves the scene), the continuous material
+//! of every patch, the emitters, the luminaires, the openings and the ray caster. Nothing here is discretized in direction: `design.md` §4's
 //! references share no kernel, block or cell with the linear system.
 
 use super::emitters::Emitters;
 use super::luminaires::Luminaires;
+use super::openings::Openings;
 use crate::geometry::Mesh;
+use crate::luminaire::Source;
 use crate::material::MaterialModel;
 use crate::scene::Scene;
 use crate::transfer::exposure::measure_exposure;
@@ -20,12 +22,24 @@ pub struct Landing {
     pub point: DVec3,
 }
 
+/// What a ray meets.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Cast {
+    /// A surface, on its receiving side.
+    Lands(Landing),
+    /// The back of a one-sided surface, which absorbs.
+    Absorbed,
+    /// Nothing: the ray leaves the scene.
+    Escapes,
+}
+
 /// Geometry, materials and emitters of a scene, ready for tracing.
 pub struct World {
     pub mesh: Mesh,
     pub visibility: Visibility,
     pub emitters: Emitters,
     pub luminaires: Luminaires,
+    pub openings: Openings,
     /// The material model of every patch.
     materials: Vec<MaterialModel>,
     faces: Faces,
@@ -46,7 +60,8 @@ impl World {
         let materials = mesh.patches.iter().map(|p| scene.materials[p.material as usize].model.clone()).collect();
         let emitters = Emitters::of(&mesh);
         let luminaires = Luminaires::of(scene, &mesh);
-        World { mesh, visibility, emitters, luminaires, materials, faces }
+        let openings = Openings::of(&scene.luminaires.iter().map(Source::of).collect::<Vec<_>>());
+        World { mesh, visibility, emitters, luminaires, openings, materials, faces }
     }
 
     /// The material of patch `i`.
@@ -63,7 +78,21 @@ impl World {
     /// The first surface along the unit `direction` from `origin`, ignoring face `ignore`;
     /// `None` for a miss and for the back of a one-sided surface (which absorbs).
     pub fn landing(&self, origin: DVec3, direction: DVec3, ignore: u32) -> Option<Landing> {
-        let hit = self.faces.landing(&self.mesh, &self.visibility, origin, direction, ignore)?;
-        Some(Landing { patch: hit.facing?, point: hit.point })
+        match self.cast(origin, direction, ignore) {
+            Cast::Lands(landing) => Some(landing),
+            Cast::Absorbed | Cast::Escapes => None,
+        }
+    }
+
+    /// What the ray along the unit `direction` from `origin` meets first, ignoring face
+    /// `ignore`.
+    pub fn cast(&self, origin: DVec3, direction: DVec3, ignore: u32) -> Cast {
+        let Some(hit) = self.faces.landing(&self.mesh, &self.visibility, origin, direction, ignore) else {
+            return Cast::Escapes;
+        };
+        match hit.facing {
+            Some(patch) => Cast::Lands(Landing { patch, point: hit.point }),
+            None => Cast::Absorbed,
+        }
     }
 }

@@ -95,4 +95,6 @@ fn trace_refuses_bad_requests() {
     let case = std::fs::read_to_string("cases/furnace-box.toml").unwrap().replace("emission = { luminance = 1.0 }", "");
     std::fs::write(&dark, case).unwrap();
     assert!(fails(&["trace", dark.to_str().unwrap(), "-o", d]).contains("emits"));
+    let daylit = fails(&["trace", "cases/daylit-office.toml", "--forward", "--photons", "10", "-o", d]);
+    assert!(daylit.contains("[[window]]") && daylit.contains("--forward"), "{daylit}");
 }

@@ -4,6 +4,7 @@
 
 mod backward;
 mod cli;
+mod daylight;
 mod forward;
 mod furnace;
 mod probe;
