@@ -149,8 +149,14 @@ fn print_hierarchy(assembly: f64, rays: usize, h: &HierarchyRecord) {
         h.refinement.tolerance, h.refinement.smallest, h.roots, h.census.cluster_links, h.census.partial
     );
     for p in &h.history {
+        let balanced = p.balance.map_or(String::new(), |b| {
+            format!(
+                "; balanced to the leaves' closures: correction {:.1e}, {} sweeps, row error {:.0e}",
+                b.max_correction, b.iterations, b.residual
+            )
+        });
         println!(
-            "    pass {}            {:>12.3} s   ({} links refined, {} leaves split along the luminaires' light; {} links, {} leaves, ε {:.2e} cd/m²; solve {:.3} s)",
+            "    pass {}            {:>12.3} s   ({} links refined, {} leaves split along the luminaires' light; {} links, {} leaves, ε {:.2e} cd/m²; solve {:.3} s{balanced})",
             p.pass, p.seconds, p.refined, p.source_splits, p.links, p.leaves, p.epsilon, p.solve_seconds
         );
     }

@@ -15,8 +15,8 @@
 //! ```
 
 use super::cells::{Accumulator, stratified};
-use super::warp::cosine_direction;
 use crate::directions::DirectionSet;
+use crate::geometry::cosine_direction;
 use glam::DVec3;
 use std::f64::consts::{FRAC_1_PI, PI, TAU};
 

@@ -11,7 +11,7 @@
 //! transmittance = 0.3   # optional (default 0); needs `two_sided = true` on its surfaces
 //! ```
 
-use super::warp::cosine_direction;
+use crate::geometry::cosine_direction;
 use glam::DVec3;
 use std::f64::consts::FRAC_1_PI;
 

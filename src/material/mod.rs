@@ -26,11 +26,9 @@ pub mod lambert;
 pub mod mirror;
 pub mod phong;
 mod sample;
-mod warp;
 
 pub use block::Block;
 pub use sample::Sample;
-pub use warp::cosine_direction;
 
 use crate::directions::DirectionSet;
 use glam::DVec3;

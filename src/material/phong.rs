@@ -14,9 +14,9 @@
 //! ```
 
 use super::cells::{Accumulator, mirror, stratified};
-use super::warp::{cone, cosine_direction};
 use crate::directions::DirectionSet;
 use crate::geometry::Frame;
+use crate::geometry::{cone, cosine_direction};
 use glam::DVec3;
 use std::f64::consts::{FRAC_1_PI, PI, TAU};
 

@@ -21,9 +21,9 @@
 //! The rays are stratified with fixed seeds: the same case gives the same warnings.
 
 use crate::geometry::Frame;
+use crate::geometry::cosine_direction;
 use crate::kernel::sent_shares;
 use crate::luminaire::Light;
-use crate::material::cosine_direction;
 use crate::model::{Model, place};
 use crate::random::Rng;
 use crate::readout::energy::EnergyBalance;

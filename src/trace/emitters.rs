@@ -8,8 +8,8 @@
 //! and for photon emission (a point and a Lambertian direction). Luminaires are sampled
 //! apart, exactly (`luminaires.rs`).
 
+use crate::geometry::cosine_direction;
 use crate::geometry::{ConvexPolygon, Mesh};
-use crate::material::cosine_direction;
 use glam::DVec3;
 use std::f64::consts::PI;
 

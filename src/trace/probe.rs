@@ -14,7 +14,7 @@ use super::openings::Openings;
 use super::statistics::Tally;
 use super::world::World;
 use crate::geometry::Frame;
-use crate::material::cosine_direction;
+use crate::geometry::cosine_direction;
 use crate::random::Rng;
 use crate::scene::{Probe, ProbeKind};
 use crate::visibility::{NO_FACE, standoff};

@@ -44,16 +44,29 @@ impl Backs {
         })
     }
 
+    /// True when `x` on `patch` lies outside every solid: some ray of its hemisphere (the
+    /// normal and four at 60°) neither meets a back nor touches `x`.
+    pub fn outside(&self, visibility: &Visibility, patch: &Patch, x: DVec3) -> bool {
+        let (c, s) = TILT;
+        let frame = patch.frame();
+        let tilted = [(s, 0.0), (0.0, s), (-s, 0.0), (0.0, -s)].map(|(a, b)| frame.world(DVec3::new(a, b, c)));
+        !std::iter::once(patch.normal).chain(tilted).all(|d| self.blocked(visibility, patch, x, d))
+    }
+
+    /// True when the first face along the unit `direction` from `x` on `patch` (which lies
+    /// outside every solid) shows it its front, or is two-sided.
+    pub fn meets_a_front(&self, visibility: &Visibility, patch: &Patch, x: DVec3, direction: DVec3) -> bool {
+        visibility
+            .closest_hit(x, direction, patch.face)
+            .is_some_and(|hit| self.normal[hit.face as usize].dot(direction) <= 0.0)
+    }
+
     /// The exposed area of `patch`, m²: its area times the share of its [`POINTS`]
     /// stratified points that lie outside every solid. When all of them lie inside, the
     /// share of the `POINTS²` points of its four quarters: a sliver outside still takes
     /// the luminaires' light that lands on it, rather than losing it.
     pub fn exposed_area(&self, visibility: &Visibility, patch: &Patch) -> f64 {
-        let (c, s) = TILT;
-        let frame = patch.frame();
-        let tilted = [(s, 0.0), (0.0, s), (-s, 0.0), (0.0, -s)].map(|(a, b)| frame.world(DVec3::new(a, b, c)));
-        let outside =
-            |x: &DVec3| !std::iter::once(patch.normal).chain(tilted).all(|d| self.blocked(visibility, patch, *x, d));
+        let outside = |x: &DVec3| self.outside(visibility, patch, *x);
         let open = polygon_points(&patch.polygon).iter().filter(|x| outside(x)).count();
         if open > 0 {
             return patch.area * open as f64 / POINTS as f64;
@@ -62,6 +75,9 @@ impl Backs {
         patch.area * finer as f64 / (POINTS * POINTS) as f64
     }
 }
+
+/// Rays [`Backs::outside`] casts at most.
+pub const OUTSIDE_RAYS: usize = 5;
 
 /// Rays' angle from the normal, besides the normal itself: (cos 60°, sin 60°).
 const TILT: (f64, f64) = (0.5, 0.866_025_403_784_438_6);

@@ -4,6 +4,7 @@
 //! stratified points. The kernel's assembly, the luminaires' direct light, probes and
 //! the final gather all build on it; it knows nothing of materials, kernels or scenes.
 
+pub mod closure;
 pub mod contour;
 pub mod exposure;
 pub mod form_factor;

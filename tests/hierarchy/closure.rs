@@ -8,7 +8,7 @@ use ugo::solve::Method;
 
 #[test]
 fn a_closed_box_closes_on_every_leaf() {
-    let h = hierarchy(&furnace(1.0, 1.0, 1.0, 1.0), 1.0, DirectionSet::single(), options(0.1, 0.1));
+    let mut h = hierarchy(&furnace(1.0, 1.0, 1.0, 1.0), 1.0, DirectionSet::single(), options(0.1, 0.1));
     let op = h.operator();
     let ones = vec![1.0; op.dim()];
     let mut y = vec![0.0; op.dim()];

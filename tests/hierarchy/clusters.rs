@@ -43,7 +43,7 @@ fn cluster_links(h: &Hierarchy) -> usize {
 
 #[test]
 fn cluster_links_agree_with_the_explicit_kernel() {
-    let h = hierarchy(&cloud(3), 10.0, DirectionSet::single(), options(1e-2, 0.25));
+    let mut h = hierarchy(&cloud(3), 10.0, DirectionSet::single(), options(1e-2, 0.25));
     let op = h.operator();
     let leaves = h.leaf_mesh();
     let directions = DirectionSet::single();

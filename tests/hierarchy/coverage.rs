@@ -19,7 +19,7 @@ fn leaves_under(h: &Hierarchy, index: &[u32], id: u32, out: &mut Vec<usize>) {
 
 #[test]
 fn every_facing_leaf_pair_is_covered_once() {
-    let h = hierarchy(&furnace(1.0, 0.5, 1.0, 1.0), 1.0, DirectionSet::single(), options(2e-3, 0.125));
+    let mut h = hierarchy(&furnace(1.0, 0.5, 1.0, 1.0), 1.0, DirectionSet::single(), options(2e-3, 0.125));
     let op = h.operator();
     let mesh = h.leaf_mesh();
     let n = mesh.len();

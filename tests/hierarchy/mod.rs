@@ -9,6 +9,7 @@ mod growth;
 mod model;
 mod plates;
 mod spectrum;
+mod transpose;
 
 use glam::DVec3;
 use ugo::directions::DirectionSet;

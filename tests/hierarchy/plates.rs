@@ -21,7 +21,7 @@ fn point_factor(x: f64, y: f64) -> f64 {
 fn receiver(rho: f64, tolerance: f64) -> (f64, f64, usize) {
     let mut scene = Scene::load(Path::new("cases/parallel-plates.toml")).unwrap();
     scene.materials[0].model = MaterialModel::Lambert { reflectance: rho, transmittance: 0.0 };
-    let h = hierarchy(&scene, 1.0, DirectionSet::single(), options(tolerance, 0.05));
+    let mut h = hierarchy(&scene, 1.0, DirectionSet::single(), options(tolerance, 0.05));
     let op = h.operator();
     let mesh = h.leaf_mesh();
     let l0 = h.emission();

@@ -8,7 +8,7 @@ use ugo::solve::{ArnoldiParams, arnoldi};
 
 #[test]
 fn arnoldi_runs_on_the_hierarchical_operator() {
-    let h = hierarchy(&furnace(1.0, 0.8, 1.0, 1.0), 1.0, DirectionSet::single(), options(1e-2, 0.1));
+    let mut h = hierarchy(&furnace(1.0, 0.8, 1.0, 1.0), 1.0, DirectionSet::single(), options(1e-2, 0.1));
     let op = h.operator();
     let spectrum = arnoldi(&op, &ArnoldiParams::largest(4)).unwrap();
     assert!(spectrum.converged);

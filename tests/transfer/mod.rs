@@ -1,3 +1,4 @@
-//! The transfer toolkit: exposed areas of patches that furniture stands on.
+//! The transfer toolkit: exposed areas of patches that furniture stands on, and closure.
 
+mod closure;
 mod exposure;

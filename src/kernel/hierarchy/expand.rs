@@ -4,7 +4,8 @@
 //! `f` of `p`'s links from `q`, `w f` times the pull weight `ω_b` of every leaf `b` under
 //! `q` (the product of area shares down the tree): in `b`'s cell `m` when `q` is an
 //! element, spread as `μ_m/π` over all `b`'s cells when `q` is a cluster (whose value is
-//! the cell-weighted mean). Every pair of leaves lies under exactly one link, so the
+//! the cell-weighted mean); times `a`'s receiving and `b`'s sending balancing factor
+//! (`balance.rs`). Every pair of leaves lies under exactly one link, so the
 //! expansion has one entry per visible pair and cell pair, like the explicit kernel.
 
 use super::link::ALL_CELLS;
@@ -16,7 +17,7 @@ impl Operator {
     pub fn for_each_in_row(&self, row: usize, mut f: impl FnMut(usize, f64)) {
         let (k, a, d) = (self.k, row / self.k, row % self.k);
         for &(pos, w) in &self.push[self.push_row[a]..self.push_row[a + 1]] {
-            let pos = pos as usize;
+            let (pos, w) = (pos as usize, w * self.receive[a]);
             for e in &self.entries[self.row[pos]..self.row[pos + 1]] {
                 let c = match e.d {
                     ALL_CELLS => w * e.f * self.share[d],
@@ -25,6 +26,7 @@ impl Operator {
                 };
                 let source = e.source as usize;
                 for (b, omega) in self.leaves_under(source) {
+                    let omega = omega * self.send[b];
                     if self.cluster[source] {
                         self.share.iter().enumerate().for_each(|(m, s)| f(b * k + m, c * omega * s));
                     } else {

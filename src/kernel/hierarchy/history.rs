@@ -1,6 +1,8 @@
 //! The refinement history (`design.md` §3b, "Oracle": solve, refine where the current
 //! field says it matters, solve again): one record per pass.
 
+use crate::kernel::BalanceReport;
+
 /// What one refinement pass produced and cost.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Pass {
@@ -17,8 +19,10 @@ pub struct Pass {
     /// Leaf elements split after the pass where the luminaires' light varies over them
     /// ([`super::Hierarchy::split_leaves`]).
     pub source_splits: usize,
-    /// Occlusion rays traced in the pass.
+    /// Occlusion rays traced in the pass (the new leaves' closures included).
     pub rays: usize,
+    /// How balancing the pass's operator to its leaves' closures went (`None`: not balanced).
+    pub balance: Option<BalanceReport>,
     /// The error allowed per link in the pass, cd/m².
     pub epsilon: f64,
     /// Wall time of the pass, s.

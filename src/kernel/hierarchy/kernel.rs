@@ -14,6 +14,7 @@ use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, NO_TWIN, Patch};
 use crate::material::Block;
+use crate::transfer::closure::Closure;
 use crate::transfer::exposure::Backs;
 use crate::transfer::form_factor::Quadrature;
 use crate::visibility::Visibility;
@@ -37,11 +38,20 @@ pub struct Options {
     pub quadrature: Quadrature,
     /// Most refinement passes of [`super::iterate`], the initial linking included. Default 4.
     pub passes: usize,
+    /// Balance the operator to the leaves' closures (`balance.rs`). Default true; off, the
+    /// links' own row and column sums stand.
+    pub balance: bool,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { tolerance: 1e-2, smallest: 0.05, quadrature: Quadrature { eta: 0.25, max_depth: 4 }, passes: 4 }
+        Options {
+            tolerance: 1e-2,
+            smallest: 0.05,
+            quadrature: Quadrature { eta: 0.25, max_depth: 4 },
+            passes: 4,
+            balance: true,
+        }
     }
 }
 
@@ -56,6 +66,9 @@ pub struct Hierarchy {
     blocks: Vec<Block>,
     options: Options,
     oracle: Oracle,
+    /// Each node's closure rays (`transfer::closure`), measured when it is first a leaf of
+    /// an operator; `None` until then.
+    closure: Vec<Option<Closure>>,
     history: Vec<Pass>,
 }
 
@@ -86,6 +99,7 @@ impl Hierarchy {
             blocks,
             options,
             oracle,
+            closure: Vec::new(),
             history: Vec::new(),
         };
         let roots: Vec<u32> = (0..roots.len() as u32).collect();
@@ -229,9 +243,56 @@ impl Hierarchy {
         b
     }
 
-    /// `K` on the current leaves.
-    pub fn operator(&self) -> Operator {
-        Operator::new(&self.tree, &self.links, &self.blocks, &self.directions)
+    /// `K` on the current leaves, balanced to their closures unless `options.balance` is
+    /// off (the rays of new leaves' closures count in the last pass's).
+    pub fn operator(&mut self) -> Operator {
+        let mut operator = Operator::new(&self.tree, &self.links, &self.blocks, &self.directions);
+        if self.options.balance {
+            let leaves = operator.leaves().to_vec();
+            let rays = self.measure_closure(&leaves);
+            let targets = self.closure_targets(&operator, &leaves);
+            let areas: Vec<f64> = leaves.iter().map(|&id| self.tree.node(id).exposed).collect();
+            let report = operator.balance(&targets, &areas);
+            if let Some(last) = self.history.last_mut() {
+                last.rays += rays;
+                last.balance = Some(report);
+            }
+        }
+        operator
+    }
+
+    /// Measures the closure of the `leaves` not yet measured; returns the rays taken.
+    fn measure_closure(&mut self, leaves: &[u32]) -> usize {
+        self.closure.resize(self.tree.len(), None);
+        let (tree, backs, visibility) = (&self.tree, &self.backs, &self.visibility);
+        let todo: Vec<u32> = leaves.iter().copied().filter(|&id| self.closure[id as usize].is_none()).collect();
+        let measured: Vec<(Closure, usize)> = todo
+            .par_iter()
+            .map(|&id| match tree.node(id).patch() {
+                Some(p) if p.exposed > 0.0 => backs.closure(visibility, p),
+                _ => (Closure::default(), 0),
+            })
+            .collect();
+        todo.iter().zip(&measured).for_each(|(&id, &(c, _))| self.closure[id as usize] = Some(c));
+        measured.iter().map(|m| m.1).sum()
+    }
+
+    /// Each leaf's row sum to balance to: its links' own (`G·1`, unbalanced) unless its
+    /// closure rays tell it apart from the closure (all of them met a front and the row is
+    /// not 1, or it lies beyond three standard errors), then the rays' closure.
+    fn closure_targets(&self, operator: &Operator, leaves: &[u32]) -> Vec<f64> {
+        let k = operator.cells();
+        let mut rows = vec![0.0; operator.dim()];
+        operator.arriving(&vec![1.0; operator.dim()], &mut rows);
+        leaves
+            .iter()
+            .zip(rows.chunks(k))
+            .map(|(&id, row)| {
+                let row: f64 = row.iter().sum();
+                let rays = self.closure[id as usize].unwrap_or_default();
+                if rays.cast == 0 || rays.admits(row) { row } else { rays.share() }
+            })
+            .collect()
     }
 
     /// The leaves as a mesh, in unknown order: each leaf (with its twin) its own face,

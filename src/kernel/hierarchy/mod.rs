@@ -9,6 +9,7 @@
 //! passes; `h.operator()` is `K` on the leaves (a `LinOp`), `h.leaf_mesh()` the leaves'
 //! mesh, `h.split_leaves(varies)` splits them along the luminaires' shadows.
 
+mod balance;
 mod census;
 mod cluster;
 mod expand;
@@ -22,6 +23,7 @@ mod oracle;
 mod push;
 mod refine;
 mod sight;
+mod transpose;
 mod tree;
 
 pub use census::Census;

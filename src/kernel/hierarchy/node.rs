@@ -64,6 +64,12 @@ impl Node {
         }
     }
 
+    /// True for an element partly inside a solid (exposed area strictly between 0 and its
+    /// area): it lies across a contact line.
+    pub fn straddles_contact(&self) -> bool {
+        self.patch().is_some() && self.exposed > 0.0 && self.exposed < self.area * (1.0 - 1e-9)
+    }
+
     /// Exposed area of the node's elements projected onto a plane across the unit direction
     /// `u`, counting the elements that face `u`: `A max(0, n·u)` for an element; for a cluster
     /// `Σ_axes |u_a| facing[a, sign u_a]`, exact when its elements are axis-aligned (walls,

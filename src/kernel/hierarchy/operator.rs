@@ -27,8 +27,10 @@ pub(super) struct Entry {
     pub(super) f: f64,
 }
 
-/// Work arrays: `nodes × K` (means, gathered light) and `leaves × K` (arriving light).
+/// Work arrays: `nodes × K` (means, gathered light) and `leaves × K` (sent and arriving
+/// light).
 struct Scratch {
+    sent: Vec<f64>,
     mean: Vec<f64>,
     gathered: Vec<f64>,
     arriving: Vec<f64>,
@@ -48,7 +50,7 @@ pub struct Operator {
     /// parent, and whether the parent is a cluster.
     pub(super) parent: Vec<u32>,
     pub(super) weight: Vec<f64>,
-    into_cluster: Vec<bool>,
+    pub(super) into_cluster: Vec<bool>,
     /// By depth-first position: one past the last position of its subtree, and whether it is
     /// a cluster (for the expansion, `expand.rs`).
     pub(super) subtree_end: Vec<u32>,
@@ -63,6 +65,10 @@ pub struct Operator {
     leaf_block: Vec<u32>,
     /// The leaf on the other side of a two-sided leaf, or [`NONE`].
     leaf_twin: Vec<u32>,
+    /// Each leaf's balancing factors (`balance.rs`): what it receives and what it sends
+    /// are scaled by them; 1 until balanced.
+    pub(super) receive: Vec<f64>,
+    pub(super) send: Vec<f64>,
     scratch: Mutex<Scratch>,
 }
 
@@ -105,7 +111,10 @@ impl Operator {
             blocks: blocks.to_vec(),
             leaf_block,
             leaf_twin,
+            receive: vec![1.0; dim / k],
+            send: vec![1.0; dim / k],
             scratch: Mutex::new(Scratch {
+                sent: vec![0.0; dim],
                 mean: vec![0.0; nodes * k],
                 gathered: vec![0.0; nodes * k],
                 arriving: vec![0.0; dim],
@@ -140,7 +149,7 @@ impl Operator {
     pub fn bytes(&self) -> f64 {
         let nodes = self.parent.len() as f64;
         let per_node = 4.0 + 8.0 + 1.0 + 8.0 + 2.0 * 8.0 * self.k as f64;
-        let per_leaf = 4.0 * 5.0 + 8.0 + 8.0 * self.k as f64;
+        let per_leaf = 4.0 * 5.0 + 3.0 * 8.0 + 2.0 * 8.0 * self.k as f64;
         (self.entries.len() * std::mem::size_of::<Entry>() + self.push.len() * 16) as f64
             + nodes * per_node
             + self.leaves.len() as f64 * per_leaf
@@ -149,8 +158,8 @@ impl Operator {
     /// `y = K x`.
     pub fn apply(&self, x: &[f64], y: &mut [f64]) {
         let mut s = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
-        let Scratch { mean, gathered, arriving } = &mut *s;
-        self.transport(x, mean, gathered, arriving);
+        let Scratch { sent, mean, gathered, arriving } = &mut *s;
+        self.transport(x, sent, mean, gathered, arriving);
         apply_blocks(&self.blocks, &self.leaf_block, &self.leaf_twin, self.k, arriving, y);
     }
 
@@ -158,13 +167,18 @@ impl Operator {
     /// illuminance `E = π Σ_d z_d`, lx).
     pub fn arriving(&self, x: &[f64], z: &mut [f64]) {
         let mut s = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
-        let Scratch { mean, gathered, .. } = &mut *s;
-        self.transport(x, mean, gathered, z);
+        let Scratch { sent, mean, gathered, .. } = &mut *s;
+        self.transport(x, sent, mean, gathered, z);
     }
 
-    /// Pull, gather, push: `arriving` holds every leaf's arriving light afterwards.
-    fn transport(&self, x: &[f64], mean: &mut [f64], gathered: &mut [f64], arriving: &mut [f64]) {
-        self.pull(x, mean);
+    /// Pull, gather, push, each leaf's light scaled by its sending and receiving factors:
+    /// `arriving` holds every leaf's arriving light afterwards.
+    fn transport(&self, x: &[f64], sent: &mut [f64], mean: &mut [f64], gathered: &mut [f64], arriving: &mut [f64]) {
+        let k = self.k;
+        sent.par_chunks_mut(k).zip(x.par_chunks(k)).zip(&self.send).for_each(|((out, x), s)| {
+            out.iter_mut().zip(x).for_each(|(o, x)| *o = s * x);
+        });
+        self.pull(sent, mean);
         self.gather(mean, gathered);
         self.push(gathered, arriving);
     }
@@ -206,13 +220,15 @@ impl Operator {
         });
     }
 
-    /// Every leaf's share of the light gathered at its ancestors, in parallel over leaves.
+    /// Every leaf's share of the light gathered at its ancestors (times its receiving
+    /// factor), in parallel over leaves.
     fn push(&self, gathered: &[f64], arriving: &mut [f64]) {
         let k = self.k;
         arriving.par_chunks_mut(k).enumerate().for_each(|(l, z)| {
             z.fill(0.0);
             for &(pos, w) in &self.push[self.push_row[l]..self.push_row[l + 1]] {
                 let g = &gathered[pos as usize * k..(pos as usize + 1) * k];
+                let w = w * self.receive[l];
                 z.iter_mut().zip(g).for_each(|(z, g)| *z += w * g);
             }
         });

@@ -7,6 +7,13 @@
 //! conservative `A_q/(π d²)` with `d` the distance between the bounding boxes (infinite
 //! when they touch). The larger node is split (the receiver when equal), never an element
 //! whose longest edge is already the smallest element size.
+//!
+//! Before any of that, an element that straddles a contact (partly inside a solid: its
+//! exposed area strictly between 0 and its area, `design.md` §3 "Contacts") is split
+//! whatever the oracle says, down to the smallest size. Its four sample points stand for
+//! its exposed part only on average: when all four lie inside the solid, every link from
+//! them is occluded and would be dropped, and the exposed part would receive (and send)
+//! nothing; when some do, the factors are the whole element's times a visible fraction.
 
 use super::node::{Kind, Node};
 use super::tree::Tree;
@@ -74,6 +81,12 @@ impl Oracle {
 
     pub fn refines(&self, error: f64) -> bool {
         error > self.epsilon
+    }
+
+    /// The end of `(p, q)` to split first because it straddles a contact: an element partly
+    /// inside a solid that can still be split.
+    pub fn at_contact(&self, tree: &Tree, p: u32, q: u32) -> Option<u32> {
+        [p, q].into_iter().find(|&n| tree.node(n).straddles_contact() && tree.can_split(n, self.smallest))
     }
 
     /// The node to split to refine the link `(p, q)`: the cluster of an element–cluster

@@ -109,6 +109,9 @@ fn evaluate(
         // a planar element does not see itself; a cluster's self-link is always split
         return (if a.patch().is_some() { Outcome::Drop } else { Outcome::Split(p) }, 0);
     }
+    if let Some(n) = settings.oracle.at_contact(tree, p, q) {
+        return (Outcome::Split(n), 0);
+    }
     match (a.patch(), b.patch()) {
         (Some(pa), Some(pb)) => elements(tree, brightness[q as usize], settings, binning, (p, pa), (q, pb), blocker),
         _ => clusters(tree, brightness[q as usize], settings, p, q, blocker),

@@ -1,5 +1,5 @@
 //! Warps from uniform numbers to directions about `+z`, shared by the samplers of the
-//! materials and of the Monte Carlo estimators.
+//! materials, the Monte Carlo estimators and the closure's rays (`transfer::closure`).
 
 use glam::DVec3;
 use std::f64::consts::TAU;

@@ -1,0 +1,83 @@
+//! Closure balancing of the hierarchy's `G` (`design.md` §3b, "Balance"): `G' = R G S`
+//! with one receiving factor `r_i` and one sending factor `s_i` per leaf, such that every
+//! leaf's row carries its closure `t_i` (`Σ_{j,m,d} G'[(i,d),(j,m)] = t_i`: the white
+//! furnace holds on every leaf) and every leaf's light lands on the scene's exposed
+//! areas in the same share (`Σ_i A_i Σ_{d,m} G'[(i,d),(j,m)] = A_j t_j`: energy is
+//! conserved). The exact kernel has both properties (reciprocity makes the columns the
+//! rows); the hierarchy's links lose them where a few rays between stand-ins decide a
+//! whole cluster pair's visibility, or a link is dropped as occluded while part of it is
+//! seen. The explicit kernel is balanced the same way (`kernel/balance.rs`, symmetrically:
+//! its exchange areas are reciprocal). Sinkhorn–Knopp by alternating row and column
+//! sweeps (Sinkhorn & Knopp 1967), each one application of `G` and one of `Gᵀ`.
+
+use super::operator::Operator;
+use crate::kernel::BalanceReport;
+
+/// Row and column mismatch at which balancing stops.
+const BALANCED: f64 = 1e-6;
+/// Sweeps before balancing gives up (it reports the mismatch it reached).
+const MAX_SWEEPS: usize = 100;
+/// Largest factor by which a leaf's light may be scaled either way.
+const MOST: f64 = 4.0;
+
+impl Operator {
+    /// Balances the operator to the leaves' closures `targets` (in leaf order) with their
+    /// exposed areas `areas`, m². A leaf with no target, no exposed area, or no light
+    /// arriving or leaving keeps its factors at 1; no factor goes beyond [`MOST`] either
+    /// way (a leaf whose links carry less than a quarter of its closure stays short, and
+    /// the report's residual says by how much). Sweeps stop when no factor changes by
+    /// [`BALANCED`] any more.
+    pub fn balance(&mut self, targets: &[f64], areas: &[f64]) -> BalanceReport {
+        let (n, k) = (self.leaves().len(), self.cells());
+        self.receive = vec![1.0; n];
+        self.send = vec![1.0; n];
+        let (mut receive, mut send) = (vec![1.0; n], vec![1.0; n]);
+        let (mut x, mut z) = (vec![0.0; n * k], vec![0.0; n * k]);
+        let free = |l: usize| targets[l] > 0.0 && areas[l] > 0.0;
+        let mut report = BalanceReport::default();
+        for sweep in 1..=MAX_SWEEPS {
+            x.chunks_mut(k).zip(&send).for_each(|(x, s)| x.fill(*s));
+            self.arriving(&x, &mut z);
+            let rows = sums(&z, k, |_| 1.0);
+            let mut change = rescale(&mut receive, &rows, targets, &free);
+            x.chunks_mut(k).enumerate().for_each(|(l, x)| x.fill(areas[l] * receive[l]));
+            self.leaving(&x, &mut z);
+            let columns = sums(&z, k, |l| 1.0 / areas[l]);
+            change = change.max(rescale(&mut send, &columns, targets, &free));
+            report.iterations = sweep;
+            if change < BALANCED {
+                break;
+            }
+        }
+        // what is left: each row's mismatch once the columns are balanced
+        x.chunks_mut(k).zip(&send).for_each(|(x, s)| x.fill(*s));
+        self.arriving(&x, &mut z);
+        let rows = sums(&z, k, |_| 1.0);
+        let within = |f: f64| f > 1.0 / MOST && f < MOST;
+        report.residual = (0..n)
+            .filter(|&l| free(l) && within(receive[l]) && within(send[l]))
+            .map(|l| (receive[l] * rows[l] / targets[l] - 1.0).abs())
+            .fold(0.0, f64::max);
+        report.max_correction = receive.iter().chain(&send).map(|f| (f - 1.0).abs()).fold(0.0, f64::max);
+        self.receive = receive;
+        self.send = send;
+        report
+    }
+}
+
+/// Each leaf's sum over its cells of `z`, times `scale(leaf)`.
+fn sums(z: &[f64], k: usize, scale: impl Fn(usize) -> f64) -> Vec<f64> {
+    z.chunks(k).enumerate().map(|(l, z)| z.iter().sum::<f64>() * scale(l)).collect()
+}
+
+/// Sets each free leaf's factor to `target / sum` (within [`MOST`]); returns the largest
+/// relative change.
+fn rescale(factors: &mut [f64], sums: &[f64], targets: &[f64], free: &impl Fn(usize) -> bool) -> f64 {
+    let mut change: f64 = 0.0;
+    for (l, f) in factors.iter_mut().enumerate().filter(|(l, _)| free(*l) && sums[*l] > 0.0) {
+        let next = (targets[l] / sums[l]).clamp(1.0 / MOST, MOST);
+        change = change.max((next / *f - 1.0).abs());
+        *f = next;
+    }
+    change
+}
