@@ -5,6 +5,7 @@
 //! pass. Written only for a hierarchical model.
 
 use super::dataset::dataset;
+use crate::kernel::BalanceReport;
 use crate::kernel::hierarchy::Pass;
 use crate::model::HierarchyRecord;
 use ndarray::Array1;
@@ -36,5 +37,12 @@ pub(super) fn write_hierarchy(g: &hdf5::Group, h: &HierarchyRecord) -> hdf5::Res
     dataset(&passes, "epsilon_cd_m2", &column(|p| p.epsilon))?;
     dataset(&passes, "seconds", &column(|p| p.seconds))?;
     dataset(&passes, "solve_seconds", &column(|p| p.solve_seconds))?;
+    // balancing to the leaves' closures (NaN: the pass's operator was not balanced)
+    let balance = |f: fn(&BalanceReport) -> f64| {
+        Array1::from_iter(h.history.iter().map(|p| p.balance.as_ref().map_or(f64::NAN, f)))
+    };
+    dataset(&passes, "balance_correction", &balance(|b| b.max_correction))?;
+    dataset(&passes, "balance_sweeps", &balance(|b| b.iterations as f64))?;
+    dataset(&passes, "balance_row_error", &balance(|b| b.residual))?;
     Ok(())
 }

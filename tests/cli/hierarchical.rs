@@ -23,6 +23,9 @@ fn a_hierarchical_solve_writes_its_passes_and_renders() {
     assert!(luminance.iter().all(|l| (l / 5.0 - 1.0).abs() < 1e-3), "the white furnace on the leaves");
     let links = file.dataset("hierarchy/passes/links").unwrap().read_1d::<f64>().unwrap();
     assert!(!links.is_empty() && links.iter().all(|&n| n > 0.0));
+    let row_error = file.dataset("hierarchy/passes/balance_row_error").unwrap().read_1d::<f64>().unwrap();
+    assert_eq!(row_error.len(), links.len());
+    assert!(row_error.iter().any(|e| e.is_finite() && *e < 1e-3), "the passes were balanced: {row_error:?}");
 
     let o = ugo(&["render", out.to_str().unwrap(), "-o", dir.to_str().unwrap(), "--shading", "smooth"]);
     assert!(o.status.success(), "{}", stderr(&o));
