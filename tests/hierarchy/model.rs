@@ -4,11 +4,9 @@
 //! and CIE 171 5.8 (a point luminaire in a closed cube) against its closed form.
 
 use super::{box_with_block, relative_difference};
-use crate::support::{furnace, lambert, surface};
-use glam::DVec3;
+use crate::support::{furnace, furnace_with_standing_block};
 use std::f64::consts::PI;
 use std::path::Path;
-use ugo::geometry::{Emission, Shape};
 use ugo::kernel::{Explicit, Factored};
 use ugo::model::{Model, ModelOptions};
 use ugo::progress::Silent;
@@ -104,11 +102,7 @@ fn cie_5_8_a_point_source_in_a_closed_cube_through_the_hierarchy() {
 /// or `K`'s spectral radius could pass 1.
 #[test]
 fn balanced_around_an_off_grid_contact_the_furnace_closes_on_every_exposed_leaf() {
-    let mut scene = furnace(1.0, 0.8, 1.0, 0.5);
-    scene.materials.push(lambert("block", 0.8));
-    let block = Shape::Box { min: DVec3::new(0.3, 0.0, 0.35), max: DVec3::new(0.65, 0.3, 0.62), rotate_y_deg: 20.0 };
-    scene.surfaces.push(surface("block", block, 1, false, Some(Emission::Luminance(1.0))));
-    let (scene, model) = hierarchical(scene, 1e-2, 0.125);
+    let (scene, model) = hierarchical(furnace_with_standing_block(0.5), 1e-2, 0.125);
     let record = model.hierarchy.as_ref().expect("a hierarchical model");
     let balance = record.history.iter().filter_map(|p| p.balance).last().expect("balanced");
     let factored = Factored::new(&model.kernel);

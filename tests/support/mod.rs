@@ -52,6 +52,16 @@ pub fn furnace(side: f64, reflectance: f64, luminance: f64, patch_size: f64) -> 
     )
 }
 
+/// The furnace cube (`ρ = 0.8`, emitting 1 cd/m², `patch_size` m patches) with an emitting
+/// block of the same reflectance standing on its floor, rotated 20° off the patches' grid.
+pub fn furnace_with_standing_block(patch_size: f64) -> Scene {
+    let mut scene = furnace(1.0, 0.8, 1.0, patch_size);
+    scene.materials.push(lambert("block", 0.8));
+    let block = Shape::Box { min: DVec3::new(0.3, 0.0, 0.35), max: DVec3::new(0.65, 0.3, 0.62), rotate_y_deg: 20.0 };
+    scene.surfaces.push(surface("block", block, 1, false, Some(Emission::Luminance(1.0))));
+    scene
+}
+
 pub fn build(scene: &Scene) -> Model {
     Model::build(scene, &ModelOptions::of(scene), &ugo::progress::Silent).expect("model fits in memory")
 }

@@ -4,20 +4,16 @@
 //! grid; the receiving plate of two parallel plates admits the closed form `F = 0.19982`
 //! within its binomial error, and not 1.
 
-use crate::support::{furnace, lambert, surface};
-use glam::DVec3;
+use crate::support::furnace_with_standing_block;
 use std::path::Path;
-use ugo::geometry::{Emission, Mesh, Shape};
+use ugo::geometry::Mesh;
 use ugo::scene::Scene;
 use ugo::transfer::exposure::{Backs, measure_exposure};
 use ugo::visibility::Visibility;
 
 #[test]
 fn every_exposed_patch_of_a_closed_room_closes_exactly() {
-    let mut scene = furnace(1.0, 0.8, 1.0, 0.125);
-    scene.materials.push(lambert("block", 0.8));
-    let block = Shape::Box { min: DVec3::new(0.3, 0.0, 0.35), max: DVec3::new(0.65, 0.3, 0.62), rotate_y_deg: 20.0 };
-    scene.surfaces.push(surface("block", block, 1, false, Some(Emission::Luminance(1.0))));
+    let scene = furnace_with_standing_block(0.125);
     let mut mesh = Mesh::build(&scene.surfaces, 0.125);
     let visibility = Visibility::build(&mesh);
     measure_exposure(&mut mesh, &visibility);
