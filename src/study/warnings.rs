@@ -11,12 +11,16 @@
 //!   box, above a ceiling);
 //! * a probe or grid whose normal points into the surface it lies on, or which sees mostly
 //!   the backs of surfaces (it lies behind one);
-//! * negative escaped flux: not light but the kernel's discretization error. The escaped
-//!   flux is exactly `Σ Φ_j (1 − s_j)` over the columns of `G` (`kernel::sent_shares`: the
+//! * negative escaped flux: not light but discretization error. The luminaires' direct
+//!   light landing on the patches beyond their flux (its integration's error) is stated
+//!   apart; the rest is the kernel's, exactly `Σ Φ_j (1 − s_j)` over the columns of `G`
+//!   (`kernel::sent_shares`: the
 //!   share of what a patch sends that the others receive, 1 in a closed scene); the
 //!   columns' range and their deviation from 1 weighted by the solved outgoing flux are
 //!   stated: the bound of the balance's discretization error;
-//! * light escaping through a small opening (`openings.rs`): a missing wall or a gap.
+//! * light escaping through a small opening (`openings.rs`): a missing wall or a gap;
+//! * parallel light (the sun) and a glazed window: the glass's `τ(θ)` and the window's
+//!   maintenance factor apply to the sky and ground it lets in, not to the beam.
 //!
 //! The rays are stratified with fixed seeds: the same case gives the same warnings.
 
@@ -45,6 +49,7 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
     let mut out = Vec::new();
     backs(scene, model, x, energy, &mut out);
     luminaires(scene, model, &mut out);
+    parallel_through_glass(model, &mut out);
     sensors(scene, model, &mut out);
     let shares = || {
         let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
@@ -78,12 +83,25 @@ fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalan
         format!(" (the largest part: {:.5} at {})", shares[c], place(scene, &model.mesh, c, k))
     });
     let share = |f: f64| 100.0 * f / e.emitted;
+    // the luminaires' part: their light landing on the patches beyond their flux
+    let landed: f64 = model.direct.intercepted.iter().sum();
+    let beyond = landed - e.luminaire_emitted.iter().sum::<f64>();
+    let luminaires = if beyond > 1e-9 * e.emitted {
+        format!(
+            " Of it, {:.4} lm is the luminaires' direct light on the patches exceeding their flux (the error of its \
+             integration over the patches); the rest, {:.4} lm, the kernel's.",
+            -beyond,
+            e.escaped + beyond
+        )
+    } else {
+        String::new()
+    };
     format!(
         "the escaped flux is negative ({:.4} lm, {:.3} % of the {:.4} lm emitted): no light enters from outside, so \
-         this is the kernel's discretization error, not a flux. The kernel's columns that send light, the share \
+         this is the discretization error, not a flux.{luminaires} The kernel's columns that send light, the share \
          of the light each patch sends that the others receive (π Σ_i A_i G_ij / (A_j μ)), lie between {low:.5} \
          and {high:.5} where a closed scene has 1{worst}; weighted by the solved outgoing flux, their excess over 1 is {over:.4} lm \
-         (it bounds the negative escape) and their deviation either way {either:.4} lm, {:.3} % of the flux \
+         (it bounds the kernel's part) and their deviation either way {either:.4} lm, {:.3} % of the flux \
          emitted: the energy balance, and readings that depend on it, are uncertain by up to that share; a smaller \
          patch_size lowers it",
         e.escaped,
@@ -91,6 +109,33 @@ fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalan
         e.emitted,
         share(either)
     )
+}
+
+/// Every pair of parallel light (the sun of `[sky]` or a `type = "parallel"` luminaire) and
+/// glazed window it meets at an incidence other than grazing: its beam passes the glass
+/// unattenuated (not modelled), so its direct light through that window is too high.
+fn parallel_through_glass(model: &Model, out: &mut Vec<String>) {
+    for beam in &model.sources {
+        let Light::Parallel { direction, .. } = beam.light else { continue };
+        for window in &model.sources {
+            let Light::Window { window: opening, .. } = &window.light else { continue };
+            let Some(glazing) = opening.glazing else { continue };
+            let cos = direction.dot(opening.polygon.normal()).abs();
+            if cos <= 0.0 {
+                continue;
+            }
+            out.push(format!(
+                "\"{}\" (parallel light) passes the glazed window \"{}\" unattenuated: the glass's transmittance \
+                 (τ = {:.3} at the beam's {:.1}° incidence) and the window's maintenance factor apply to the sky and \
+                 the ground it lets in, not to the beam, so the direct light through it, and all it lights, is too \
+                 high by at least 1/τ; leave the window open or the beam out for a result without this error",
+                beam.name,
+                window.name,
+                glazing.transmittance(cos),
+                cos.acos().to_degrees()
+            ));
+        }
+    }
 }
 
 /// The first surface along `direction` from `origin`: `Some(Some(surface))` for the back

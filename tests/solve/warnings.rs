@@ -145,3 +145,45 @@ fn light_escaping_through_a_small_gap_is_reported_and_an_open_side_is_not() {
     assert!(s.energy.escaped > 0.1 * s.energy.emitted, "{:?}", s.energy);
     assert!(s.warnings.iter().all(|w| !w.contains("opening")), "{:?}", s.warnings);
 }
+
+/// The luminaires' direct light landing on the patches beyond their flux (its integration
+/// error) is a part of a negative escaped flux that the kernel's columns do not bound: it
+/// is stated apart.
+#[test]
+fn a_negative_escape_names_the_luminaires_part_apart_from_the_kernels() {
+    let (scene, mut s) = solved(&room(false, CRATE));
+    s.model.direct.intercepted[0] += 3.0;
+    s.energy.escaped = -5.0;
+    let w = physics_warnings(&scene, &s.model, &s.x, &s.energy);
+    let w = w.iter().find(|w| w.contains("negative")).unwrap_or_else(|| panic!("{w:?}"));
+    let landed: f64 = s.model.direct.intercepted.iter().sum();
+    let beyond = landed - s.energy.luminaire_emitted.iter().sum::<f64>();
+    assert!((beyond - 3.0).abs() < 0.1, "the lamp's own integration error is small: {beyond}");
+    let (lamps, kernel) =
+        (format!("Of it, {:.4} lm is the luminaires'", -beyond), format!("the rest, {:.4} lm", beyond - 5.0));
+    assert!(w.contains(&lamps) && w.contains(&kernel), "{w}");
+}
+
+/// The sun through a glazed window: its beam is not attenuated by the glass (not
+/// modelled), which the warnings say, naming the beam and the window, with `τ` at its
+/// incidence; without the sun, or with the window open, no such warning.
+#[test]
+fn the_sun_through_a_glazed_window_is_warned_of() {
+    let path = std::path::Path::new("cases/daylit-office.toml");
+    let text = std::fs::read_to_string(path).unwrap().replace("patch_size = 0.25", "patch_size = 1.0");
+    let sunny = text.replace("ground_reflectance = 0.2\n", "ground_reflectance = 0.2\nsun_illuminance = 50000.0\n");
+    let glazed = |t: &str| t.replace("edge_v = [0.0, 1.5, 0.0]\n", "edge_v = [0.0, 1.5, 0.0]\ntransmittance = 0.8\n");
+    for (text, expected) in [(glazed(&sunny), true), (sunny.clone(), false), (glazed(&text), false)] {
+        let scene = ugo::scene::Scene::parse(path, text).unwrap();
+        let model =
+            ugo::model::Model::build(&scene, &ugo::model::ModelOptions::of(&scene), &ugo::progress::Silent).unwrap();
+        let x = crate::cie171::solve_model(&model, scene.solver.method);
+        let energy = ugo::readout::energy::EnergyBalance::of(&model, &x, scene.surfaces.len());
+        let w = physics_warnings(&scene, &model, &x, &energy);
+        let glass = w.iter().find(|w| w.contains("unattenuated"));
+        assert_eq!(glass.is_some(), expected, "{w:?}");
+        if let Some(w) = glass {
+            assert!(w.contains("\"sun\"") && w.contains("\"window\"") && w.contains("τ = 0."), "{w}");
+        }
+    }
+}
