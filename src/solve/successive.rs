@@ -161,7 +161,8 @@ fn least_squares(columns: &[&[f64]], b: &[f64]) -> (Vec<f64>, f64) {
             }
         }
         let length = norm(&v);
-        if !(length > DEPENDENT * norm(a)) {
+        // dependent on the basis so far, or not finite: skipped
+        if length.partial_cmp(&(DEPENDENT * norm(a))) != Some(std::cmp::Ordering::Greater) {
             continue;
         }
         let row = q.len();

@@ -17,7 +17,7 @@ use ugo::visibility::Visibility;
 fn compare(scene: Scene, directions: DirectionSet) -> (f64, f64) {
     // the links themselves: balancing to the leaves' closures would hide their differences
     let settings = Options { balance: false, ..options(0.0, 0.25) };
-    let mut h = hierarchy(&scene, 1.0, directions.clone(), settings.clone());
+    let mut h = hierarchy(&scene, 1.0, directions.clone(), settings);
     let op = h.operator();
     let leaves = h.leaf_mesh();
     let visibility = Visibility::build(&leaves);

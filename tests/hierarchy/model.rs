@@ -104,7 +104,7 @@ fn cie_5_8_a_point_source_in_a_closed_cube_through_the_hierarchy() {
 fn balanced_around_an_off_grid_contact_the_furnace_closes_on_every_exposed_leaf() {
     let (scene, model) = hierarchical(furnace_with_standing_block(0.5), 1e-2, 0.125);
     let record = model.hierarchy.as_ref().expect("a hierarchical model");
-    let balance = record.history.iter().filter_map(|p| p.balance).last().expect("balanced");
+    let balance = record.history.iter().rev().find_map(|p| p.balance).expect("balanced");
     let factored = Factored::new(&model.kernel);
     let ones = vec![1.0; factored.dim()];
     let mut k1 = vec![0.0; ones.len()];
