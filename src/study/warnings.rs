@@ -6,7 +6,9 @@
 //!   (by its intensity) is followed to the first surface; what meets a back side is lost
 //!   (a one-sided surface absorbs there), which in a room means a surface facing the wrong
 //!   way. Warned above 2 % of the emitted flux, naming the three surfaces whose backs
-//!   receive most;
+//!   receive most. A ray starts from the patch's centroid, or where that lies inside a
+//!   solid (a patch partly under furniture) from the first of its stratified points outside;
+//!   a patch with none sends no ray;
 //! * a luminaire whose light never reaches a front side, or mostly meets backs (inside a
 //!   box, above a ceiling);
 //! * a probe or grid whose normal points into the surface it lies on, or which sees mostly
@@ -32,6 +34,8 @@ use crate::model::{Model, place};
 use crate::random::Rng;
 use crate::readout::energy::EnergyBalance;
 use crate::scene::Scene;
+use crate::transfer::exposure::Backs;
+use crate::transfer::occlusion::polygon_points;
 use crate::visibility::NO_FACE;
 use glam::DVec3;
 
@@ -161,6 +165,7 @@ fn backs(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, out: &
     let mut lost = vec![0.0; scene.surfaces.len()];
     if total > 0.0 {
         let mut rng = Rng::keyed(4);
+        let solids = Backs::of(mesh);
         let mut cdf = Vec::with_capacity(outgoing.len());
         let mut running = 0.0;
         for f in &outgoing {
@@ -170,8 +175,14 @@ fn backs(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, out: &
         for _ in 0..SURFACE_RAYS {
             let i = cdf.partition_point(|&c| c < rng.uniform() * total).min(cdf.len() - 1);
             let p = &mesh.patches[i];
+            // from the exposed part: a point inside a solid (a patch partly under furniture)
+            // sends nothing, and its rays would meet the solid's inside
+            let outside = |x: &DVec3| solids.outside(&model.visibility, p, *x);
+            let Some(origin) = std::iter::once(p.centroid).chain(polygon_points(&p.polygon)).find(outside) else {
+                continue;
+            };
             let direction = p.frame().world(cosine_direction(rng.uniform(), rng.uniform()));
-            if let Some(Some(surface)) = back_hit(model, p.centroid, direction, p.face) {
+            if let Some(Some(surface)) = back_hit(model, origin, direction, p.face) {
                 lost[surface] += total / SURFACE_RAYS as f64;
             }
         }
