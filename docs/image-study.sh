@@ -19,20 +19,7 @@ peer=${SPP_PEER:-1024}
 csv=docs/img/image-study.csv
 mkdir -p "$out" docs/img
 
-# A copy of a case with the study camera: 64×64 pixels below the lamp's line of sight, so
-# that no pixel sees the lamp and the image measures reflected light only.
-study_case() {
-  cp "cases/$1.toml" "$out/$1.toml"
-  cat >> "$out/$1.toml" <<'TOML'
-
-[[camera]]
-name = "study"
-position = [0.278, 0.2, -0.8]
-look_at = [0.278, 0.2, 0.5592]
-fov_deg = 28
-resolution = [64, 64]
-TOML
-}
+source docs/study-case.sh
 
 # The error beyond the reference's noise of `ugo agree`'s log.
 error_of() { awk '/error beyond noise/ {print $4}' "$1"; }

@@ -19,7 +19,7 @@
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Frame, Mesh, Patch};
-use crate::sky::{Opening, Sky, through_window_cut};
+use crate::sky::{Opening, Sky, through_window};
 use crate::transfer::occlusion::cut_along_shadows;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
@@ -35,7 +35,7 @@ pub const WINDOW_ETA: f64 = 0.25;
 /// Most levels of cutting a patch for an opening.
 pub const WINDOW_DEPTH: u32 = 3;
 /// Seen from a piece of a patch, a piece of an opening is cut while its diameter exceeds
-/// `OPENING_ETA` times its distance (`crate::sky::through_window_cut`; a probe's is
+/// `OPENING_ETA` times its distance (`crate::sky::through_window`; a probe's is
 /// `crate::sky::ETA`).
 pub const OPENING_ETA: f64 = 0.3;
 
@@ -199,7 +199,7 @@ impl Onto<'_> {
         let least = self.least / area;
         let mut arrivals = Vec::new();
         let mut arrive = |towards, e, _| arrivals.push((towards, e * area));
-        self.rays += through_window_cut(OPENING_ETA, sky, window, c, self.patch.normal, &sees, least, &mut arrive);
+        self.rays += through_window(OPENING_ETA, sky, window, c, self.patch.normal, &sees, least, &mut arrive);
         arrivals.into_iter().for_each(|(towards, flux)| self.add(towards, flux));
     }
 

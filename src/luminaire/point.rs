@@ -7,7 +7,7 @@
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::Frame;
-use crate::sky::through_window_cut;
+use crate::sky::through_window;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
 use std::f64::consts::PI;
@@ -54,7 +54,7 @@ pub fn arriving_at(
             Light::Window { window, sky } => {
                 let sees = |x: DVec3| visibility.closest_hit(p, x - p, ignore).is_none();
                 let mut arrive = |towards: DVec3, e: f64, _| out[directions.lookup(frame.local(towards))] += e / PI;
-                through_window_cut(opening_eta, sky, window, p, frame.normal, &sees, 0.0, &mut arrive);
+                through_window(opening_eta, sky, window, p, frame.normal, &sees, 0.0, &mut arrive);
                 false
             }
         };

@@ -15,7 +15,7 @@ use crate::luminaire::Light;
 use crate::model::Model;
 use crate::readout::grid::GridReading;
 use crate::readout::probe::ProbeReading;
-use crate::sky::{Component, Sky, through_window};
+use crate::sky::{Component, ETA, Sky, through_window};
 use crate::visibility::NO_FACE;
 use glam::DVec3;
 
@@ -48,7 +48,7 @@ pub fn sky_and_ground(model: &Model, p: DVec3, n: DVec3) -> (f64, f64) {
     let (mut sky, mut ground) = (0.0, 0.0);
     for source in &model.sources {
         if let Light::Window { window, sky: outside } = &source.light {
-            through_window(outside, window, p, normal, &sees, 0.0, &mut |_, e, component| match component {
+            through_window(ETA, outside, window, p, normal, &sees, 0.0, &mut |_, e, component| match component {
                 Component::Sky => sky += e,
                 Component::Ground => ground += e,
             });

@@ -46,23 +46,11 @@ pub enum Component {
 /// direction towards it, the illuminance it gives on the plane of `p` (lx) and its
 /// component. `sees(x)` says whether the ray from `p` through the point `x` of the
 /// opening leaves the scene; a piece crossed by a shadow edge is cut further only while
-/// its unshadowed illuminance exceeds `least` lx. Returns the rays traced.
-pub fn through_window(
-    sky: &Sky,
-    opening: &Opening,
-    p: DVec3,
-    n: DVec3,
-    sees: &dyn Fn(DVec3) -> bool,
-    least: f64,
-    visit: &mut dyn FnMut(DVec3, f64, Component),
-) -> usize {
-    through_window_cut(ETA, sky, opening, p, n, sees, least, visit)
-}
-
-/// [`through_window`] with the pieces cut for size while their diameter exceeds `eta` (not
-/// [`ETA`]) times their distance: coarser where the light is averaged anyway, over a patch.
+/// its unshadowed illuminance exceeds `least` lx, and every piece is cut for size while its
+/// diameter exceeds `eta` times its distance ([`ETA`] at a point; coarser where the light
+/// is averaged anyway, over a patch). Returns the rays traced.
 #[allow(clippy::too_many_arguments)]
-pub fn through_window_cut(
+pub fn through_window(
     eta: f64,
     sky: &Sky,
     opening: &Opening,

@@ -12,7 +12,8 @@ use glam::DVec3;
 use std::f64::consts::PI;
 use ugo::geometry::ConvexPolygon;
 use ugo::sky::{
-    Brightness, CIE171_GLASS, Component, Distribution, Fresnel, Glazing, Opening, Sky, gauss_legendre, through_window,
+    Brightness, CIE171_GLASS, Component, Distribution, ETA, Fresnel, Glazing, Opening, Sky, gauss_legendre,
+    through_window,
 };
 
 #[test]
@@ -81,7 +82,7 @@ fn a_glazed_opening_weighs_the_sky_by_the_transmittance_direction_by_direction()
 /// The sky through `opening` at `p` facing `n`, lx.
 fn through(sky: &Sky, opening: &Opening, p: DVec3, n: DVec3) -> f64 {
     let mut e = 0.0;
-    through_window(sky, opening, p, n, &|_| true, 0.0, &mut |_, x, c| {
+    through_window(ETA, sky, opening, p, n, &|_| true, 0.0, &mut |_, x, c| {
         assert_eq!(c, Component::Sky);
         e += x;
     });

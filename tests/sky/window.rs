@@ -6,7 +6,7 @@ use super::sun;
 use glam::DVec3;
 use std::f64::consts::PI;
 use ugo::geometry::ConvexPolygon;
-use ugo::sky::{Brightness, Component, Distribution, Opening, Sky, through_window};
+use ugo::sky::{Brightness, Component, Distribution, ETA, Opening, Sky, through_window};
 use ugo::transfer::contour::point_to_polygon;
 
 fn sky(distribution: Distribution, ground: f64) -> Sky {
@@ -17,7 +17,7 @@ fn sky(distribution: Distribution, ground: f64) -> Sky {
 fn components(sky: &Sky, window: &ConvexPolygon, p: DVec3, n: DVec3) -> (f64, f64) {
     let (mut s, mut g) = (0.0, 0.0);
     let opening = Opening { polygon: *window, glazing: None };
-    through_window(sky, &opening, p, n, &|_| true, 0.0, &mut |_, e, c| match c {
+    through_window(ETA, sky, &opening, p, n, &|_| true, 0.0, &mut |_, e, c| match c {
         Component::Sky => s += e,
         Component::Ground => g += e,
     });

@@ -19,7 +19,7 @@ use ugo::model::{Model, ModelOptions};
 use ugo::readout::field::Field;
 use ugo::readout::probe::read_probes;
 use ugo::scene::Scene;
-use ugo::sky::{Fresnel, Glazing, Sky, through_window};
+use ugo::sky::{ETA, Fresnel, Glazing, Sky, through_window};
 use ugo::trace::{TraceOptions, World, trace_probes};
 use ugo::transfer::contour::point_to_polygon;
 use ugo::visibility::NO_FACE;
@@ -117,7 +117,7 @@ fn through_windows(world: &World, scene: &Scene, p: DVec3, n: DVec3) -> f64 {
     let mut e = 0.0;
     for luminaire in &scene.luminaires {
         if let LuminaireKind::Window { window, sky } = &luminaire.kind {
-            through_window(sky, window, p, n, &sees, 0.0, &mut |_, lx, _| e += lx);
+            through_window(ETA, sky, window, p, n, &sees, 0.0, &mut |_, lx, _| e += lx);
         }
     }
     e
