@@ -7,6 +7,7 @@
 mod bases;
 mod kernel;
 mod light_scenes;
+mod near;
 mod openings;
 mod solve;
 mod spectrum;

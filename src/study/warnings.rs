@@ -21,6 +21,8 @@
 //!   columns' range and their deviation from 1 weighted by the solved outgoing flux are
 //!   stated: the bound of the balance's discretization error;
 //! * light escaping through a small opening (`openings.rs`): a missing wall or a gap;
+//! * a probe closer to a patch than a quarter of the patch's size (`near.rs`): it reads
+//!   the patch's mean where it sees mostly its nearest part;
 //! * parallel light (the sun) and a glazed window: the glass's `τ(θ)` and the window's
 //!   maintenance factor apply to the sky and ground it lets in, not to the beam.
 //!
@@ -47,7 +49,6 @@ const SENSOR_RAYS: usize = 256;
 /// Share of the emitted flux lost on backs above which it is reported.
 const BACKS: f64 = 0.02;
 
-/// Every warning of a solved case, one sentence each.
 /// Every warning of the solved field `x` of `model` (of `scene`), with its energy balance.
 pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance) -> Vec<String> {
     let mut out = Vec::new();
@@ -55,6 +56,7 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
     luminaires(scene, model, &mut out);
     parallel_through_glass(model, &mut out);
     sensors(scene, model, &mut out);
+    super::near::near_patches(scene, model, &mut out);
     let shares = || {
         let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
         sent_shares(&model.kernel, &areas)

@@ -187,3 +187,19 @@ fn the_sun_through_a_glazed_window_is_warned_of() {
         }
     }
 }
+
+#[test]
+fn a_probe_closer_to_a_patch_than_a_quarter_of_its_size_is_reported_with_the_patch() {
+    // The west wall's patches are 25 cm squares (35 cm across): 2 cm is within a quarter of
+    // that, 10 cm is not.
+    let probes = "[[probe]]\nname = \"by the wall\"\nposition = [0.02, 0, 0.5]\nnormal = [0, 1, 0]\n\
+                  [[probe]]\nname = \"a little off\"\nposition = [0.1, 0, 0.5]\nnormal = [0, 1, 0]\n";
+    let (_, s) = solved(&room(false, probes));
+    let near: Vec<&String> = s.warnings.iter().filter(|w| w.contains("closer than")).collect();
+    assert_eq!(near.len(), 1, "{:?}", s.warnings);
+    assert!(
+        near[0].contains("probe \"by the wall\" lies 2.00 cm from a patch of \"west\" 35.4 cm across"),
+        "{}",
+        near[0]
+    );
+}
