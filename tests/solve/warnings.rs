@@ -189,11 +189,11 @@ fn the_sun_through_a_glazed_window_is_warned_of() {
 }
 
 #[test]
-fn a_probe_closer_to_a_patch_than_a_quarter_of_its_size_is_reported_with_the_patch() {
-    // The west wall's patches are 25 cm squares (35 cm across): 2 cm is within a quarter of
-    // that, 10 cm is not.
+fn a_probe_in_the_near_field_of_a_patch_is_reported_with_the_patch() {
+    // The west wall's patches are 25 cm squares (35 cm across): 2 cm is within 0.4 of that,
+    // 20 cm is not.
     let probes = "[[probe]]\nname = \"by the wall\"\nposition = [0.02, 0, 0.5]\nnormal = [0, 1, 0]\n\
-                  [[probe]]\nname = \"a little off\"\nposition = [0.1, 0, 0.5]\nnormal = [0, 1, 0]\n";
+                  [[probe]]\nname = \"a little off\"\nposition = [0.2, 0, 0.5]\nnormal = [0, 1, 0]\n";
     let (_, s) = solved(&room(false, probes));
     let near: Vec<&String> = s.warnings.iter().filter(|w| w.contains("closer than")).collect();
     assert_eq!(near.len(), 1, "{:?}", s.warnings);
