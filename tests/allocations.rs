@@ -1,5 +1,5 @@
 //! The hot loops allocate nothing once warm: the kernel's applications (factored,
-//! explicit, reduced to a basis) and the visibility queries. This is its own test binary
+//! explicit, reduced to a basis, hierarchical with its transpose) and the visibility queries. This is its own test binary
 //! (its own process) because it counts every heap allocation through the global
 //! allocator; one test, so nothing else runs beside it. rayon's work-stealing deques
 //! grow and shrink now and then (a handful of allocations per many applications, none
@@ -11,9 +11,9 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use ugo::basis::{Basis, Factorization, Reduced};
 use ugo::directions::DirectionSet;
-use ugo::kernel::{Explicit, Factored};
+use ugo::kernel::{Explicit, Factored, Transport};
 use ugo::model::{Model, ModelOptions};
-use ugo::scene::Scene;
+use ugo::scene::{Assembly, Scene};
 use ugo::solve::LinOp;
 use ugo::visibility::NO_FACE;
 
@@ -82,6 +82,17 @@ fn kernel_applications_and_ray_queries_do_not_allocate() {
     let c = vec![0.5; reduced.dim()];
     let mut z = vec![0.0; reduced.dim()];
     few(allocations(&pool, || reduced.apply(&c, &mut z)), "reduced Φᵀ G Ψ c");
+
+    let mut scene = scene;
+    scene.discretization.assembly = Assembly::hierarchical();
+    let options = ModelOptions { patch_size: 0.25, ..options };
+    let tree = Model::build(&scene, &options, &ugo::progress::Silent).unwrap();
+    let Transport::Hierarchical(op) = &tree.kernel.g else { panic!("not hierarchical") };
+    let hierarchical = Factored::new(&tree.kernel);
+    let m = op.dim();
+    let (u, mut w) = ((0..m).map(|i| 1.0 + (i % 5) as f64).collect::<Vec<f64>>(), vec![0.0; m]);
+    few(allocations(&pool, || hierarchical.apply(&u, &mut w)), "hierarchical K x");
+    few(allocations(&pool, || op.leaving(&u, &mut w)), "hierarchical Gᵀ y");
 
     let v = &model.visibility;
     let (a, b) = (model.mesh.patches[0].centroid, model.mesh.patches[model.mesh.len() / 2].centroid);

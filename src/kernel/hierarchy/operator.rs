@@ -28,11 +28,11 @@ pub(super) struct Entry {
 }
 
 /// Work arrays: `nodes × K` (means, gathered light) and `leaves × K` (sent and arriving
-/// light).
-struct Scratch {
+/// light), shared by `K x` and `Gᵀ y` (`transpose.rs`).
+pub(super) struct Scratch {
     sent: Vec<f64>,
-    mean: Vec<f64>,
-    gathered: Vec<f64>,
+    pub(super) mean: Vec<f64>,
+    pub(super) gathered: Vec<f64>,
     arriving: Vec<f64>,
 }
 
@@ -69,7 +69,7 @@ pub struct Operator {
     /// are scaled by them; 1 until balanced.
     pub(super) receive: Vec<f64>,
     pub(super) send: Vec<f64>,
-    scratch: Mutex<Scratch>,
+    pub(super) scratch: Mutex<Scratch>,
 }
 
 impl Operator {

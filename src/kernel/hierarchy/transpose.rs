@@ -7,14 +7,18 @@
 //! conservation constrains), and `‖K‖₁` without the expansion.
 
 use super::link::ALL_CELLS;
-use super::operator::Operator;
+use super::operator::{Operator, Scratch};
 
 impl Operator {
-    /// `x = Gᵀ y` (both `leaves × K`). Serial: it scatters.
+    /// `x = Gᵀ y` (both `leaves × K`). Serial: it scatters. Nothing is allocated: it works in
+    /// the operator's own arrays.
     pub fn leaving(&self, y: &[f64], x: &mut [f64]) {
         let k = self.k;
         let nodes = self.parent.len();
-        let mut gathered = vec![0.0; nodes * k];
+        let mut scratch = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
+        let Scratch { gathered, mean, .. } = &mut *scratch;
+        gathered.fill(0.0);
+        mean.fill(0.0);
         for (l, z) in y.chunks(k).enumerate() {
             for &(pos, w) in &self.push[self.push_row[l]..self.push_row[l + 1]] {
                 let g = &mut gathered[pos as usize * k..][..k];
@@ -22,7 +26,6 @@ impl Operator {
                 g.iter_mut().zip(z).for_each(|(g, z)| *g += w * z);
             }
         }
-        let mut mean = vec![0.0; nodes * k];
         for (pos, z) in gathered.chunks(k).enumerate() {
             let all: f64 = z.iter().zip(&self.share).map(|(z, s)| z * s).sum();
             for e in &self.entries[self.row[pos]..self.row[pos + 1]] {
