@@ -3,8 +3,8 @@
 //! over the patch (`readout::gather`, `design.md` §5), with the exact factor of each. From a
 //! distance `d` below [`NEAR`] of the patch's size `D` the probe sees mostly the part of
 //! the patch nearest to it, while the value it reads is the patch's mean. Where the light
-//! on the patch varies (at a contact, along a shadow) that is an error of several per cent,
-//! gone only once the patches there are smaller than the distance: the Cornell box's floor probe,
+//! on the patch varies (at a contact, along a shadow) that is an error of several per cent:
+//! the Cornell box's floor probe,
 //! 1 cm in front of a block whose lowest leaves are 2–6 cm across, reads 2.4 % high with
 //! every patch of the uniform 2.5 cm mesh right (forward Monte Carlo), and the hierarchy
 //! at its defaults 2.5 %. Warned, naming the nearest such patch.
