@@ -132,7 +132,7 @@ fn read_from(file: &File) -> Result<StoredKernel, Why> {
     let rays: u64 = g.group("direct")?.attr("rays")?.read_scalar()?;
     let l0 = vector("L0", n * k)?;
     let fingerprint = fingerprint(&g.group("fingerprint")?)?;
-    let direct = DirectLight { arriving, intercepted, rays: rays as usize };
+    let direct = DirectLight { arriving, intercepted, rays: rays as usize, least: Vec::new() };
     let kernel = Kernel { g: Transport::Explicit(g_matrix), directions, blocks, patch_material, twin };
     Ok(StoredKernel { fingerprint, kernel, direct, l0 })
 }

@@ -35,6 +35,10 @@ use glam::DVec3;
 pub struct Source {
     pub name: String,
     pub light: Light,
+    /// The factor a light scene dimmed it by (1 as placed). Its light on the patches is
+    /// cut along shadows as its undimmed light would be (`patch_lights`), so that it is
+    /// exactly this factor times its own.
+    pub dimmed: f64,
 }
 
 /// The closed set of sources.
@@ -74,7 +78,7 @@ impl Source {
             }
             LuminaireKind::Window { window, sky } => Light::Window { window: *window, sky: sky.clone() },
         };
-        Source { name: luminaire.name.clone(), light }
+        Source { name: luminaire.name.clone(), light, dimmed: 1.0 }
     }
 
     /// The same source with every intensity (or the parallel light's illuminance) times
@@ -92,7 +96,7 @@ impl Source {
             }
             Light::Window { window, sky } => Light::Window { window: *window, sky: sky.scaled(factor) },
         };
-        Source { name: self.name.clone(), light }
+        Source { name: self.name.clone(), light, dimmed: self.dimmed * factor }
     }
 
     /// The flux leaving a point source, lm; none for parallel light (an unbounded beam)

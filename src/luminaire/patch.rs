@@ -48,17 +48,26 @@ pub struct DirectLight {
     pub intercepted: Vec<f64>,
     /// Occlusion rays traced.
     pub rays: usize,
+    /// Per patch, the flux (lm) below which a piece crossed by a shadow edge was not cut
+    /// further (`patch_lights`); empty when every edge was cut
+    /// [`SHADOW_DEPTH`](crate::transfer::occlusion::SHADOW_DEPTH) levels deep. The light of
+    /// some of the sources integrated with the same limits is exactly their share of this
+    /// light (each source's pieces are cut on their own).
+    pub least: Vec<f64>,
 }
 
 /// The direct light of `sources` on every patch of `mesh`, binned by `directions`, every
-/// shadow edge cut [`SHADOW_DEPTH`](crate::transfer::occlusion::SHADOW_DEPTH) levels deep.
+/// shadow edge cut down to the flux `least[i]` on patch `i` (every edge
+/// [`SHADOW_DEPTH`](crate::transfer::occlusion::SHADOW_DEPTH) levels deep when `least` is
+/// empty; [`DirectLight::least`] gives the limits another integration used).
 pub fn direct_light(
     sources: &[Source],
     mesh: &Mesh,
     visibility: &Visibility,
     directions: &DirectionSet,
+    least: &[f64],
 ) -> DirectLight {
-    let per_patch = patch_lights(sources, &mesh.patches, visibility, directions, &[]);
+    let per_patch = patch_lights(sources, &mesh.patches, visibility, directions, least);
     let mut light =
         DirectLight { arriving: Vec::with_capacity(mesh.len() * directions.len()), ..DirectLight::none(sources) };
     per_patch.iter().for_each(|p| light.add(p));
@@ -71,12 +80,14 @@ pub struct PatchLight {
     pub arriving: Vec<f64>,
     pub intercepted: Vec<f64>,
     pub rays: usize,
+    /// The flux below which its shadowed pieces were not cut further, lm (0: every edge).
+    pub least: f64,
 }
 
 impl DirectLight {
     /// No patch yet, for `sources`.
     pub fn none(sources: &[Source]) -> DirectLight {
-        DirectLight { arriving: Vec::new(), intercepted: vec![0.0; sources.len()], rays: 0 }
+        DirectLight { arriving: Vec::new(), intercepted: vec![0.0; sources.len()], rays: 0, least: Vec::new() }
     }
 
     /// Appends the light of one more patch.
@@ -84,14 +95,15 @@ impl DirectLight {
         self.arriving.extend_from_slice(&patch.arriving);
         self.intercepted.iter_mut().zip(&patch.intercepted).for_each(|(t, f)| *t += f);
         self.rays += patch.rays;
+        self.least.push(patch.least);
     }
 }
 
 /// The direct light of `sources` on each of `patches` (whose faces are those of
 /// `visibility`), in parallel. A piece of patch `i` crossed by a shadow edge is cut further
-/// only while the flux it would receive unshadowed from one source exceeds `least[i]`, lm
-/// (every piece when `least` is empty); below that its lit fraction is that of its four
-/// points. A patch with no exposed area (inside a solid) takes none: what its pieces
+/// only while the flux it would receive unshadowed from one source, undimmed
+/// (`Source::dimmed`), exceeds `least[i]`, lm (every piece when `least` is empty); below
+/// that its lit fraction is that of its four points. A patch with no exposed area (inside a solid) takes none: what its pieces
 /// would catch through gaps its points miss counts as escaped (`readout::energy`).
 pub fn patch_lights(
     sources: &[Source],
@@ -106,16 +118,17 @@ pub fn patch_lights(
         .enumerate()
         .map(|(i, patch)| {
             let mut out = vec![0.0; k];
-            if patch.exposed <= 0.0 {
-                return PatchLight { arriving: out, intercepted: vec![0.0; sources.len()], rays: 0 };
-            }
             let least = least.get(i).copied().unwrap_or(0.0);
+            if patch.exposed <= 0.0 {
+                return PatchLight { arriving: out, intercepted: vec![0.0; sources.len()], rays: 0, least };
+            }
             let mut onto =
                 Onto { patch, frame: patch.frame(), visibility, directions, least, out: &mut out, flux: 0.0, rays: 0 };
             let intercepted = sources
                 .iter()
                 .map(|source| {
                     onto.flux = 0.0;
+                    onto.least = least * source.dimmed;
                     match &source.light {
                         Light::Point { position, .. } => {
                             if (*position - patch.polygon.vertices()[0]).dot(patch.normal) > 0.0 {
@@ -135,7 +148,7 @@ pub fn patch_lights(
                 .collect();
             let rays = onto.rays;
             out.iter_mut().for_each(|d| *d = patch.per_exposed_area(*d) / PI);
-            PatchLight { arriving: out, intercepted, rays }
+            PatchLight { arriving: out, intercepted, rays, least }
         })
         .collect()
 }
@@ -146,7 +159,8 @@ struct Onto<'a> {
     frame: Frame,
     visibility: &'a Visibility,
     directions: &'a DirectionSet,
-    /// Flux below which a shadowed piece is not cut further, lm.
+    /// Flux below which a shadowed piece is not cut further, lm: the patch's limit times
+    /// the dimming of the source being integrated.
     least: f64,
     out: &'a mut [f64],
     flux: f64,

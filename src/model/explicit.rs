@@ -49,7 +49,7 @@ pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> 
     let kernel_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
-    let direct = direct_light(&sources, &mesh, &visibility, &kernel.directions);
+    let direct = direct_light(&sources, &mesh, &visibility, &kernel.directions, &[]);
     let stats = AssemblyStats {
         mesh_seconds,
         bvh_seconds,

@@ -11,13 +11,13 @@ impl Model {
     /// The source term of the luminaires `luminaires` (indices into `sources`) and the
     /// surfaces `surfaces` (indices into the scene's surfaces) alone, at their output in the
     /// model. The luminaires' direct light is integrated on the model's patches with its ray
-    /// caster, every shadow edge cut six levels deep, so that it is linear in the sources
-    /// (for the hierarchical kernel: on the final leaves, whose light the refinement cached
-    /// with the roots' ray caster and cut only to the oracle's ε, so that the groups' sum
-    /// and the model's own light differ by that cutting: 6.8e-4 in `study::light_scenes`).
+    /// caster, each shadow edge cut as far as the model's own light was
+    /// (`DirectLight::least`: six levels deep for the explicit kernel, down to the oracle's
+    /// `ε` on the hierarchy's leaves), so that the groups' light adds up to the model's.
     pub fn source_term_of(&self, luminaires: &[usize], surfaces: &[usize]) -> SourceTerm {
         let members: Vec<Source> = luminaires.iter().filter_map(|&i| self.sources.get(i).cloned()).collect();
-        let mut direct = direct_light(&members, &self.mesh, &self.visibility, &self.kernel.directions);
+        let mut direct =
+            direct_light(&members, &self.mesh, &self.visibility, &self.kernel.directions, &self.direct.least);
         let mut intercepted = vec![0.0; self.sources.len()];
         for (&i, &flux) in luminaires.iter().zip(&direct.intercepted) {
             intercepted[i] = flux;

@@ -58,7 +58,8 @@ impl Model {
         let kernel = Kernel { g: Transport::Explicit(stored.g), directions, blocks, patch_material, twin };
         let t = Instant::now();
         let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
-        let direct = stored.direct.unwrap_or_else(|| direct_light(&sources, &mesh, &visibility, &kernel.directions));
+        let direct =
+            stored.direct.unwrap_or_else(|| direct_light(&sources, &mesh, &visibility, &kernel.directions, &[]));
         let stats = AssemblyStats {
             mesh_seconds,
             bvh_seconds,

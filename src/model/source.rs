@@ -48,6 +48,7 @@ impl SourceTerm {
                 arriving: zeros(|t| t.direct.arriving.len()),
                 intercepted: zeros(|t| t.direct.intercepted.len()),
                 rays: 0,
+                least: parts.first().map_or_else(Vec::new, |(_, t)| t.direct.least.clone()),
             },
             l0: zeros(|t| t.l0.len()),
         };
