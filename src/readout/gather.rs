@@ -20,7 +20,7 @@ use crate::luminaire::arriving_at;
 use crate::model::Model;
 use crate::readout::field::Field;
 use crate::sky::ETA;
-use crate::transfer::contour::point_to_polygon;
+use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::cut_along_shadows;
 use crate::visibility::NO_FACE;
@@ -95,7 +95,7 @@ pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32
         .enumerate()
         .map(|(j, s)| match s.face == ignore {
             true => 0.0,
-            false => point_to_polygon(p, frame.normal, &s.polygon).max(0.0) * field.brightest(j),
+            false => point_to_patch(p, frame.normal, s).max(0.0) * field.brightest(j),
         })
         .collect();
     let least = SHADOW_CUT * unoccluded.iter().sum::<f64>();

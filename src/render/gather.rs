@@ -18,7 +18,7 @@ use crate::geometry::{Frame, NO_TWIN};
 use crate::luminaire::{OPENING_ETA, arriving_at};
 use crate::material::Block;
 use crate::random::Rng;
-use crate::transfer::contour::point_to_polygon;
+use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::{POINTS, sample_points};
 use glam::DVec3;
@@ -72,7 +72,7 @@ fn gather_incident(
     let binning = Binning::new(&lit.directions);
     for &j in &lit.emitters {
         let s = &lit.mesh.patches[j as usize];
-        if s.face == face || point_to_polygon(q, frame.normal, &s.polygon) <= 0.0 {
+        if s.face == face || point_to_patch(q, frame.normal, s) <= 0.0 {
             continue;
         }
         let seen = sample_points(s).iter().filter(|&&y| lit.visibility.visible(q, y, [face, s.face])).count();

@@ -6,14 +6,25 @@
 //! of the point, so patches partly below the point's horizon are handled exactly. This is
 //! the near-field-exact building block of `design.md` §3.
 
-use crate::geometry::{ConvexPolygon, MAX_CLIPPED};
+use crate::geometry::{ConvexPolygon, MAX_CLIPPED, Patch};
 use glam::DVec3;
 use std::f64::consts::PI;
 
 /// Form factor from the differential area at `x` with unit normal `n` to `polygon`,
 /// seen from its front side; 0 when `x` is behind the polygon's plane.
 pub fn point_to_polygon(x: DVec3, n: DVec3, polygon: &ConvexPolygon) -> f64 {
-    let facing = (x - polygon.vertices()[0]).dot(polygon.normal());
+    facing_polygon(x, n, polygon, polygon.normal())
+}
+
+/// [`point_to_polygon`] to a patch, with the normal it already holds (the hot loops call
+/// it millions of times for the same patch).
+pub fn point_to_patch(x: DVec3, n: DVec3, patch: &Patch) -> f64 {
+    facing_polygon(x, n, &patch.polygon, patch.normal)
+}
+
+/// The factor to `polygon`, whose front faces along `front`.
+fn facing_polygon(x: DVec3, n: DVec3, polygon: &ConvexPolygon, front: DVec3) -> f64 {
+    let facing = (x - polygon.vertices()[0]).dot(front);
     if facing <= 0.0 {
         return 0.0;
     }

@@ -17,7 +17,7 @@
 //! target; scaled to the adaptive total, the cells sum to the whole form factor to
 //! round-off, and only the split between cells rests on the coarser base rule.
 
-use super::contour::point_to_polygon;
+use super::contour::{point_to_patch, point_to_polygon};
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Frame, Patch};
 use glam::DVec3;
@@ -69,9 +69,9 @@ pub fn pair_integral(s: &Patch, t: &Patch, q: &Quadrature) -> PairIntegral {
     let mut adaptive = 0.0;
     let mut base = 0.0;
     for tri in s.polygon.triangles() {
-        let b = three_point(&tri, &mut |x, w| w * point_to_polygon(x, s.normal, &t.polygon));
+        let b = three_point(&tri, &mut |x, w| w * point_to_patch(x, s.normal, t));
         base += b;
-        adaptive += refine(&tri, t, q, 0, Some(b), &mut |x, w| w * point_to_polygon(x, s.normal, &t.polygon));
+        adaptive += refine(&tri, t, q, 0, Some(b), &mut |x, w| w * point_to_patch(x, s.normal, t));
     }
     PairIntegral { adaptive, base }
 }

@@ -21,7 +21,7 @@ use super::link::{Link, axis};
 use super::node::NONE;
 use super::tree::Tree;
 use crate::geometry::Patch;
-use crate::transfer::contour::point_to_polygon;
+use crate::transfer::contour::point_to_patch;
 use crate::transfer::occlusion::polygon_points;
 use rayon::prelude::*;
 
@@ -80,7 +80,7 @@ fn seen(tree: &Tree, links: &[Link], own: &[u32], a: u32, leaf: &Patch) -> f64 {
             let source = tree.node(link.source);
             match source.patch() {
                 Some(q) => {
-                    let f: f64 = points.iter().map(|&x| point_to_polygon(x, leaf.normal, &q.polygon)).sum();
+                    let f: f64 = points.iter().map(|&x| point_to_patch(x, leaf.normal, q)).sum();
                     link.visible * f / points.len() as f64
                 }
                 None if under_cluster => {
