@@ -9,6 +9,7 @@ use std::f64::consts::PI;
 use ugo::directions::DirectionSet;
 use ugo::geometry::{Emission, Shape};
 use ugo::kernel::Factored;
+use ugo::luminaire::direct_light;
 use ugo::material::MaterialModel;
 use ugo::photometry::Distribution;
 use ugo::readout::energy::EnergyBalance;
@@ -159,6 +160,40 @@ fn shadows_are_cast_on_patches_and_at_probes() {
         } else {
             assert!(e[i] > 0.0 && e[i] < exact(x, z), "penumbra patch at ({x}, {z}): {}", e[i]);
         }
+    }
+}
+
+/// A light scene dims a source (`Source::scaled`): its light on the patches, cut along
+/// shadows down to the same limits (`DirectLight::least`), is exactly the factor times its
+/// own, though the dimmed pieces carry less flux against those limits.
+#[test]
+fn a_dimmed_source_is_cut_along_shadows_as_its_own_light() {
+    let floor = rectangle([0.0, 0.0, 0.0], [0.0, 0.0, 2.0], [2.0, 0.0, 0.0]);
+    let blocker = rectangle([0.5, 1.0, 0.0], [0.0, 0.0, 2.0], [0.5, 0.0, 0.0]);
+    let mut s = scene(
+        vec![lambert("grey", 0.5), lambert("black", 0.0)],
+        vec![surface("floor", floor, 0, false, None), surface("blocker", blocker, 1, false, None)],
+        0.25,
+    );
+    s.luminaires.push(point(
+        "lamp",
+        DVec3::new(0.8, 2.0, 1.0),
+        DVec3::NEG_Y,
+        Distribution::Isotropic { intensity: 100.0 },
+    ));
+    // the shadow's edges fall at x = 0.2 and 1.2 m, across the 0.25 m patches
+    let model = build(&s);
+    let light = |sources: &[ugo::luminaire::Source], least: &[f64]| {
+        direct_light(sources, &model.mesh, &model.visibility, &model.kernel.directions, least).arriving
+    };
+    // 0.05 lm: the undimmed penumbra pieces of 0.1 lm are cut further, at 0.3 of it not
+    let least = vec![0.05; model.mesh.len()];
+    let own = light(&model.sources, &least);
+    assert_ne!(own, light(&model.sources, &[]), "the limits change the cutting");
+    let dimmed: Vec<_> = model.sources.iter().map(|s| s.scaled(0.3)).collect();
+    let scaled: Vec<f64> = own.iter().map(|d| 0.3 * d).collect();
+    for (a, b) in light(&dimmed, &least).iter().zip(&scaled) {
+        assert!((a - b).abs() <= 1e-12 * b.abs(), "dimmed {a} against 0.3 × own {b}");
     }
 }
 
