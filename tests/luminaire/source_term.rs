@@ -122,8 +122,9 @@ fn a_mirror_reflects_the_luminaire_into_the_mirror_cell() {
     }
 }
 
-#[test]
-fn shadows_are_cast_on_patches_and_at_probes() {
+/// A 2 × 2 m grey floor in 0.25 m patches, a black 0.5 m strip 1 m above it (x from 0.5 to
+/// 1.0 m) and an isotropic 100 cd lamp 2 m above the floor at x = `lamp_x`, z = 1 m.
+fn shaded_floor(lamp_x: f64) -> Scene {
     let floor = rectangle([0.0, 0.0, 0.0], [0.0, 0.0, 2.0], [2.0, 0.0, 0.0]);
     let blocker = rectangle([0.5, 1.0, 0.0], [0.0, 0.0, 2.0], [0.5, 0.0, 0.0]);
     let mut s = scene(
@@ -133,10 +134,16 @@ fn shadows_are_cast_on_patches_and_at_probes() {
     );
     s.luminaires.push(point(
         "lamp",
-        DVec3::new(0.75, 2.0, 1.0),
+        DVec3::new(lamp_x, 2.0, 1.0),
         DVec3::NEG_Y,
         Distribution::Isotropic { intensity: 100.0 },
     ));
+    s
+}
+
+#[test]
+fn shadows_are_cast_on_patches_and_at_probes() {
+    let mut s = shaded_floor(0.75);
     s.probes.push(Probe::point("shade", DVec3::new(0.75, 0.0, 1.0), DVec3::Y));
     s.probes.push(Probe::point("sun", DVec3::new(1.75, 0.0, 1.0), DVec3::Y));
     let model = build(&s);
@@ -168,19 +175,7 @@ fn shadows_are_cast_on_patches_and_at_probes() {
 /// own, though the dimmed pieces carry less flux against those limits.
 #[test]
 fn a_dimmed_source_is_cut_along_shadows_as_its_own_light() {
-    let floor = rectangle([0.0, 0.0, 0.0], [0.0, 0.0, 2.0], [2.0, 0.0, 0.0]);
-    let blocker = rectangle([0.5, 1.0, 0.0], [0.0, 0.0, 2.0], [0.5, 0.0, 0.0]);
-    let mut s = scene(
-        vec![lambert("grey", 0.5), lambert("black", 0.0)],
-        vec![surface("floor", floor, 0, false, None), surface("blocker", blocker, 1, false, None)],
-        0.25,
-    );
-    s.luminaires.push(point(
-        "lamp",
-        DVec3::new(0.8, 2.0, 1.0),
-        DVec3::NEG_Y,
-        Distribution::Isotropic { intensity: 100.0 },
-    ));
+    let s = shaded_floor(0.8);
     // the shadow's edges fall at x = 0.2 and 1.2 m, across the 0.25 m patches
     let model = build(&s);
     let light = |sources: &[ugo::luminaire::Source], least: &[f64]| {
