@@ -49,7 +49,7 @@ pub struct DirectLight {
     /// Occlusion rays traced.
     pub rays: usize,
     /// Per patch, the flux (lm) below which a piece crossed by a shadow edge was not cut
-    /// further (`patch_lights`); empty when every edge was cut
+    /// further (`patch_lights`); 0, or no entry, where every edge was cut
     /// [`SHADOW_DEPTH`](crate::transfer::occlusion::SHADOW_DEPTH) levels deep. The light of
     /// some of the sources integrated with the same limits is exactly their share of this
     /// light (each source's pieces are cut on their own).
@@ -103,8 +103,9 @@ impl DirectLight {
 /// `visibility`), in parallel. A piece of patch `i` crossed by a shadow edge is cut further
 /// only while the flux it would receive unshadowed from one source, undimmed
 /// (`Source::dimmed`), exceeds `least[i]`, lm (every piece when `least` is empty); below
-/// that its lit fraction is that of its four points. A patch with no exposed area (inside a solid) takes none: what its pieces
-/// would catch through gaps its points miss counts as escaped (`readout::energy`).
+/// that its lit fraction is that of its four points. A patch with no exposed area (inside a
+/// solid) takes none: what its pieces would catch through gaps its points miss counts as
+/// escaped (`readout::energy`).
 pub fn patch_lights(
     sources: &[Source],
     patches: &[Patch],
