@@ -21,8 +21,8 @@
 //!   columns' range and their deviation from 1 weighted by the solved outgoing flux are
 //!   stated: the bound of the balance's discretization error;
 //! * light escaping through a small opening (`openings.rs`): a missing wall or a gap;
-//! * a probe closer to a patch than 0.4 of the patch's size (`near.rs`): it reads
-//!   the patch's mean where it sees mostly its nearest part;
+//! * a probe closer to a patch than `near::NEAR` of the patch's size (`near.rs`): it
+//!   reads the patch's mean where it sees mostly its nearest part;
 //! * parallel light (the sun) and a glazed window: the glass's `τ(θ)` and the window's
 //!   maintenance factor apply to the sky and ground it lets in, not to the beam.
 //!
