@@ -1,6 +1,7 @@
 //! The one random number generator of ugo: SplitMix64 (Steele, Lea & Flood, OOPSLA 2014),
 //! reproducible streams for the Monte Carlo estimators, the renderer's samples, the
-//! memory estimate's pair sample and the benchmarks.
+//! memory estimate's pair sample and the benchmarks; and the stratified point sets the
+//! final gather draws its directions from ([`Stratified`]).
 //!
 //! A stream is keyed by `(seed, index)` (or by one key), so a result depends only on the
 //! seed and the sample count, never on the number of threads or the order in which rayon
@@ -48,6 +49,30 @@ impl Rng {
     #[inline]
     pub fn uniform3(&mut self) -> [f64; 3] {
         [self.uniform(), self.uniform(), self.uniform()]
+    }
+}
+
+/// The `n` points of a Hammersley set in the unit square, `(r/n, φ₂(r))` with `φ₂` the
+/// base-2 radical inverse, shifted together by one random offset modulo 1 (Cranley &
+/// Patterson 1976): each point is uniform, so an estimate over them is unbiased, and every
+/// interval of the square's dyadic grids of area `1/n` holds one point when `n` is a power
+/// of two, so the error falls about as `1/n` rather than `1/√n` on smooth integrands.
+#[derive(Debug, Clone, Copy)]
+pub struct Stratified {
+    n: usize,
+    shift: [f64; 2],
+}
+
+impl Stratified {
+    pub fn new(n: usize, rng: &mut Rng) -> Stratified {
+        Stratified { n: n.max(1), shift: [rng.uniform(), rng.uniform()] }
+    }
+
+    /// Point `r` of the set, `r < n`.
+    #[inline]
+    pub fn point(&self, r: usize) -> [f64; 2] {
+        let radical = (r as u32).reverse_bits() as f64 / 4_294_967_296.0;
+        [(r as f64 / self.n as f64 + self.shift[0]).fract(), (radical + self.shift[1]).fract()]
     }
 }
 

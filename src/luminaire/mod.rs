@@ -23,7 +23,7 @@ mod point;
 pub use aim::frame;
 pub use description::{Luminaire, LuminaireKind, PointLuminaire};
 pub use patch::{DirectLight, OPENING_ETA, PatchLight, direct_light, patch_lights};
-pub use point::{arriving_at, incoming};
+pub use point::{arriving_along, arriving_at, incoming};
 
 use crate::geometry::Frame;
 use crate::photometry::Distribution;

@@ -47,20 +47,35 @@ pub fn arriving_at(
     opening_eta: f64,
 ) -> Vec<f64> {
     let mut out = vec![0.0; directions.len()];
+    let mut arrive = |towards: DVec3, d: f64| out[directions.lookup(frame.local(towards))] += d;
+    arriving_along(sources, visibility, p, frame.normal, ignore, opening_eta, &mut arrive);
+    out
+}
+
+/// [`arriving_at`] direction by direction: `arrive(towards, dE/π)` for each unit direction
+/// `towards` the light comes from onto the side of `p` that `normal` faces.
+pub fn arriving_along(
+    sources: &[Source],
+    visibility: &Visibility,
+    p: DVec3,
+    normal: DVec3,
+    ignore: u32,
+    opening_eta: f64,
+    arrive: &mut dyn FnMut(DVec3, f64),
+) {
     for source in sources {
         let faces = match &source.light {
-            Light::Point { position, .. } => (*position - p).dot(frame.normal) > 0.0,
-            Light::Parallel { direction, .. } => direction.dot(frame.normal) < 0.0,
+            Light::Point { position, .. } => (*position - p).dot(normal) > 0.0,
+            Light::Parallel { direction, .. } => direction.dot(normal) < 0.0,
             Light::Window { window, sky } => {
                 let sees = |x: DVec3| visibility.closest_hit(p, x - p, ignore).is_none();
-                let mut arrive = |towards: DVec3, e: f64, _| out[directions.lookup(frame.local(towards))] += e / PI;
-                through_window(opening_eta, sky, window, p, frame.normal, &sees, 0.0, &mut arrive);
+                let mut piece = |towards: DVec3, e: f64, _| arrive(towards, e / PI);
+                through_window(opening_eta, sky, window, p, normal, &sees, 0.0, &mut piece);
                 false
             }
         };
-        if let Some((towards, normal)) = faces.then(|| incoming(source, visibility, p, ignore)).flatten() {
-            out[directions.lookup(frame.local(towards))] += normal * towards.dot(frame.normal) / PI;
+        if let Some((towards, e)) = faces.then(|| incoming(source, visibility, p, ignore)).flatten() {
+            arrive(towards, e * towards.dot(normal) / PI);
         }
     }
-    out
 }

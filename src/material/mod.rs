@@ -76,6 +76,11 @@ impl MaterialModel {
         Block::new(k, reflect, transmit)
     }
 
+    /// True when light also passes through to the other side of a two-sided surface.
+    pub fn transmits(&self) -> bool {
+        matches!(*self, MaterialModel::Lambert { transmittance, .. } if transmittance > 0.0)
+    }
+
     /// True when the material scatters into a single direction (no next-event estimation).
     pub fn is_delta(&self) -> bool {
         matches!(self, MaterialModel::Mirror { .. })

@@ -1,11 +1,12 @@
 //! Perspective projection of a [`Camera`]: one primary ray per (pixel, sample).
 //!
 //! Central projection through `position`; the image plane at unit distance spans
-//! `2·tan(fov/2)` vertically and `aspect` times that horizontally. Samples are
-//! stratified in both axes (N-rooks: sample `s` sits in column stratum `s` and in a
-//! shuffled row stratum), jittered by a hash of the pixel so images are reproducible.
+//! `2·tan(fov/2)` vertically and `aspect` times that horizontally. A pixel's samples are
+//! a Hammersley set shifted by a hash of the pixel (`random::Stratified`): stratified in
+//! both axes and in every dyadic grid of the pixel, so an edge's coverage is measured
+//! about as well as the sample count allows, and images are reproducible.
 
-use crate::random::Rng;
+use crate::random::{Rng, Stratified};
 use crate::scene::Camera;
 use glam::DVec3;
 
@@ -50,16 +51,8 @@ impl Projection {
 
     /// Direction of sample `s` (of [`Projection::samples`]) of pixel `(px, py)`.
     pub fn sample(&self, px: usize, py: usize, s: usize) -> DVec3 {
-        let n = self.samples as u64;
         let pixel = (py * self.width + px) as u64;
-        let shift = Rng::keyed(pixel).next_u64() % n;
-        let mut jitter = Rng::keyed(pixel ^ ((s as u64 + 1) << 40));
-        let (jx, jy) = (jitter.uniform(), jitter.uniform());
-        // Row strata are a shuffled permutation: a stride coprime to n, then a shift.
-        let stride = if n.is_multiple_of(7) { 1 } else { 7 };
-        let row = (s as u64 * stride + shift) % n;
-        let x = px as f64 + (s as f64 + jx) / n as f64;
-        let y = py as f64 + (row as f64 + jy) / n as f64;
-        self.direction(x, y)
+        let [x, y] = Stratified::new(self.samples, &mut Rng::keyed(pixel)).point(s);
+        self.direction(px as f64 + x, py as f64 + y)
     }
 }

@@ -5,8 +5,9 @@
 //! * `Smooth`: that value interpolated between the corners of the patch, each corner
 //!   holding the area-weighted mean over the patches of the same surface that share it
 //!   (`smooth.rs`);
-//! * `Gather`: one more reflection evaluated at `q` itself, `L(q,k) = Le + Σ_d ρ̄(k,d) I_d(q)`,
-//!   from the solved field and the luminaires' direct light (`gather.rs`, `design.md` §5).
+//! * `Gather`: one more reflection evaluated at `q` itself with the material's own
+//!   luminance factor, from the solved field and the luminaires' direct light (`gather.rs`,
+//!   `design.md` §5).
 
 use super::gather::final_gather;
 use super::smooth::Corners;
@@ -14,7 +15,7 @@ use super::solved::Solved;
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::luminaire::Source;
-use crate::material::Block;
+use crate::material::MaterialModel;
 use crate::random::Rng;
 use glam::DVec3;
 
@@ -38,11 +39,11 @@ pub struct LitScene {
 
 impl LitScene {
     /// A flat-shaded scene. `luminance` holds `mesh.len() · directions.len()` values;
-    /// `blocks[m]` is the material block (for the final gather) of every material index
-    /// `m` the patches use.
-    pub fn new(mesh: Mesh, directions: DirectionSet, luminance: Vec<f64>, blocks: Vec<Block>) -> LitScene {
-        assert!(mesh.patches.iter().all(|p| (p.material as usize) < blocks.len()), "a block for every material");
-        LitScene { solved: Solved::new(mesh, directions, luminance, blocks), shading: Shading::Flat, corners: None }
+    /// `materials[m]` is the material (for the final gather) of every material index `m`
+    /// the patches use.
+    pub fn new(mesh: Mesh, directions: DirectionSet, luminance: Vec<f64>, materials: Vec<MaterialModel>) -> LitScene {
+        assert!(mesh.patches.iter().all(|p| (p.material as usize) < materials.len()), "a material for each index");
+        LitScene { solved: Solved::new(mesh, directions, luminance, materials), shading: Shading::Flat, corners: None }
     }
 
     /// The scene lit also by `sources` (their light is in the stored field; the final

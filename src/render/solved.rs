@@ -1,11 +1,11 @@
 //! A solved scene as rays see it: the patches, a ray caster over their faces, the
-//! luminance each patch sends in each direction cell, the material blocks, the emitters
+//! luminance each patch sends in each direction cell, the materials, the emitters
 //! and the luminaires. Which patch a ray meets, and its stored (flat) value there.
 
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::luminaire::Source;
-use crate::material::Block;
+use crate::material::MaterialModel;
 use crate::visibility::{Faces, NO_FACE, Visibility};
 use glam::DVec3;
 
@@ -16,8 +16,8 @@ pub struct Solved {
     pub luminance: Vec<f64>,
     pub(super) visibility: Visibility,
     faces: Faces,
-    /// Material blocks (by material index) for the final gather.
-    pub(super) blocks: Vec<Block>,
+    /// The materials (by material index), whose luminance factors the final gather applies.
+    pub(super) materials: Vec<MaterialModel>,
     /// Patches with a self-emission, for the gather's direct part.
     pub(super) emitters: Vec<u32>,
     /// The luminaires, whose direct light the gather adds exactly at its point.
@@ -25,13 +25,18 @@ pub struct Solved {
 }
 
 impl Solved {
-    /// `luminance` holds `mesh.len() · directions.len()` values; `blocks[m]` is the
-    /// material block of every material index `m` the patches use (checked by the caller).
-    pub(super) fn new(mesh: Mesh, directions: DirectionSet, luminance: Vec<f64>, blocks: Vec<Block>) -> Solved {
+    /// `luminance` holds `mesh.len() · directions.len()` values; `materials[m]` is the
+    /// material of every material index `m` the patches use (checked by the caller).
+    pub(super) fn new(
+        mesh: Mesh,
+        directions: DirectionSet,
+        luminance: Vec<f64>,
+        materials: Vec<MaterialModel>,
+    ) -> Solved {
         let faces = Faces::of(&mesh);
         let visibility = Visibility::build(&mesh);
         let emitters = (0..mesh.len() as u32).filter(|&i| mesh.emission[i as usize] > 0.0).collect();
-        Solved { mesh, directions, luminance, visibility, faces, blocks, emitters, sources: Vec::new() }
+        Solved { mesh, directions, luminance, visibility, faces, materials, emitters, sources: Vec::new() }
     }
 
     /// The patch first hit along the ray (the one facing back along it) and the point hit.

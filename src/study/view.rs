@@ -1,5 +1,5 @@
 //! A stored solution made ready for rendering: its patches and field with the material
-//! blocks and the luminaires of its stored scene.
+//! models and the luminaires of its stored scene.
 
 use crate::io::StoredSolution;
 use crate::luminaire::Source;
@@ -14,6 +14,6 @@ pub fn lit_scene(stored: StoredSolution) -> LitScene {
 /// [`lit_scene`] with the placed luminaires `sources` (one per luminaire of the stored
 /// scene, dimmed by a light scene) in place of the scene's own.
 pub fn lit_scene_with(stored: StoredSolution, sources: Vec<Source>) -> LitScene {
-    let blocks = stored.scene.materials.iter().map(|m| m.model.block(&stored.directions)).collect();
-    LitScene::new(stored.mesh, stored.directions, stored.luminance, blocks).with_luminaires(sources)
+    let materials = stored.scene.materials.iter().map(|m| m.model.clone()).collect();
+    LitScene::new(stored.mesh, stored.directions, stored.luminance, materials).with_luminaires(sources)
 }

@@ -19,8 +19,9 @@ fn the_final_gather_shows_a_luminaire_lit_floor_exactly() {
     s.luminaires.push(point("lamp", lamp, DVec3::NEG_Y, Distribution::Lambertian { peak: 1000.0 }));
     let model = build(&s);
     let x = solve(&model);
-    let (blocks, sources) = (model.kernel.blocks.clone(), model.sources.clone());
-    let mut lit = LitScene::new(model.mesh, DirectionSet::single(), x, blocks).with_luminaires(sources);
+    let materials = s.materials.iter().map(|m| m.model.clone()).collect();
+    let sources = model.sources.clone();
+    let mut lit = LitScene::new(model.mesh, DirectionSet::single(), x, materials).with_luminaires(sources);
     let camera = Camera {
         name: "down".into(),
         position: DVec3::new(0.0, 0.8, 0.0),

@@ -56,8 +56,8 @@ fn smooth_shading_has_no_seam_at_t_junctions_between_leaves_of_two_levels() {
             .to_string(),
     )
     .expect("valid materials");
-    let blocks = vec![scene.materials[0].model.block(&DirectionSet::single())];
-    let mut lit = LitScene::new(mesh, DirectionSet::single(), luminance, blocks);
+    let materials = vec![scene.materials[0].model.clone()];
+    let mut lit = LitScene::new(mesh, DirectionSet::single(), luminance, materials);
     lit.set_shading(Shading::Smooth);
     // Seen face on from 2 m with a 24° field: the image lies within [0.075, 0.925]² and
     // crosses both junctions' edges.

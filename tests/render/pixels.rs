@@ -35,8 +35,8 @@ fn emitter(two_sided: bool) -> LitScene {
     let scene = Scene::parse(Path::new("lamp.toml"), text).expect("valid scene");
     let mesh = Mesh::build(&scene.surfaces, 0.25);
     let luminance = mesh.emission.clone();
-    let blocks = vec![scene.materials[0].model.block(&DirectionSet::single())];
-    LitScene::new(mesh, DirectionSet::single(), luminance, blocks)
+    let materials = vec![scene.materials[0].model.clone()];
+    LitScene::new(mesh, DirectionSet::single(), luminance, materials)
 }
 
 #[test]
@@ -125,8 +125,8 @@ fn the_final_gather_shows_the_exact_point_luminance_and_smoothing_beats_flat() {
     let scene = Scene::parse(Path::new("lamp.toml"), LAMP_OVER_FLOOR.to_string()).unwrap();
     let model = build(&scene);
     let x = solve(&model);
-    let blocks = model.kernel.blocks.clone();
-    let mut lit = LitScene::new(model.mesh, DirectionSet::single(), x, blocks);
+    let materials = scene.materials.iter().map(|m| m.model.clone()).collect();
+    let mut lit = LitScene::new(model.mesh, DirectionSet::single(), x, materials);
     // Looking straight down at the floor from under the lamp, one sample per pixel.
     let mut camera = camera([0.5, 0.9, 0.7], [0.5, 0.0, 0.7], 70.0, 24);
     (camera.up, camera.samples) = (DVec3::Z, 1);

@@ -9,7 +9,6 @@
 use crate::support::build;
 use glam::DVec3;
 use std::path::Path;
-use ugo::material::Block;
 use ugo::render::{LitScene, render};
 use ugo::scene::{Camera, Scene};
 use ugo::trace::{TraceOptions, World, agreement, trace_camera};
@@ -41,8 +40,8 @@ fn backward_reference_and_deterministic_image_agree_within_the_discretization_er
     let model = build(&scene);
     let x = crate::support::solve(&model);
     let camera = study_camera();
-    let blocks: Vec<Block> = model.kernel.blocks.clone();
-    let lit = LitScene::new(model.mesh.clone(), model.kernel.directions.clone(), x, blocks);
+    let materials = scene.materials.iter().map(|m| m.model.clone()).collect();
+    let lit = LitScene::new(model.mesh.clone(), model.kernel.directions.clone(), x, materials);
     let image = render(&lit, &camera);
     let world = World::new(&scene, model.mesh.clone());
     let traced = trace_camera(&world, &camera, 128, &TraceOptions::default(), &|_| {});
