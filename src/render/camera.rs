@@ -51,8 +51,14 @@ impl Projection {
 
     /// Direction of sample `s` (of [`Projection::samples`]) of pixel `(px, py)`.
     pub fn sample(&self, px: usize, py: usize, s: usize) -> DVec3 {
+        self.point(px, py, s, self.samples)
+    }
+
+    /// Direction of point `s` of a set of `n` in pixel `(px, py)` (with `n` the sample
+    /// count, the samples themselves).
+    pub fn point(&self, px: usize, py: usize, s: usize, n: usize) -> DVec3 {
         let pixel = (py * self.width + px) as u64;
-        let [x, y] = Stratified::new(self.samples, &mut Rng::keyed(pixel)).point(s);
+        let [x, y] = Stratified::new(n, &mut Rng::keyed(pixel)).point(s);
         self.direction(px as f64 + x, py as f64 + y)
     }
 }

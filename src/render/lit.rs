@@ -13,7 +13,7 @@ use super::gather::final_gather;
 use super::smooth::Corners;
 use super::solved::Solved;
 use crate::directions::DirectionSet;
-use crate::geometry::Mesh;
+use crate::geometry::{Mesh, NO_TWIN};
 use crate::luminaire::Source;
 use crate::material::MaterialModel;
 use crate::random::Rng;
@@ -71,9 +71,27 @@ impl LitScene {
     /// for the back of a one-sided surface (unless the direction set covers the sphere,
     /// whose lower cells hold transmitted light).
     pub fn luminance_along(&self, origin: DVec3, direction: DVec3, rays: usize, rng: &mut Rng) -> f64 {
+        match self.solved.hit(origin, direction) {
+            Some((patch, point)) => self.shade(patch, point, -direction, rays, rng),
+            None => 0.0,
+        }
+    }
+
+    /// The patch first hit along a ray and the point hit (see [`LitScene::luminance_along`]).
+    pub(super) fn hit(&self, origin: DVec3, direction: DVec3) -> Option<(usize, DVec3)> {
+        self.solved.hit(origin, direction)
+    }
+
+    /// Which surface and side `patch` belongs to, as one key.
+    pub(super) fn side_of(&self, patch: usize) -> u64 {
+        let p = &self.solved.mesh.patches[patch];
+        let back = p.twin != NO_TWIN && (p.twin as usize) < patch;
+        (p.surface as u64) << 1 | back as u64
+    }
+
+    /// The luminance `patch` sends from its point `point` towards the unit `towards`.
+    pub(super) fn shade(&self, patch: usize, point: DVec3, towards: DVec3, rays: usize, rng: &mut Rng) -> f64 {
         let solved = &self.solved;
-        let Some((patch, point)) = solved.hit(origin, direction) else { return 0.0 };
-        let towards = -direction;
         match self.shading {
             Shading::Flat => solved.flat(patch, towards),
             Shading::Smooth => {

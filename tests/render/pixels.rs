@@ -54,6 +54,24 @@ fn a_directly_seen_emitter_shows_its_luminance_and_a_miss_is_black() {
 }
 
 #[test]
+fn a_gathered_edge_pixel_weighs_each_surface_by_all_the_samples_it_covers() {
+    // 64 samples per pixel, more than the gather's 16 shaded points: the lamp's edges cross
+    // pixels, whose value must be 7 cd/m² times the share of the 64 samples on the lamp,
+    // as flat shading measures it.
+    let mut lit = emitter(false);
+    let mut view = camera([0.13, 0.07, 2.0], [0.13, 0.07, 0.0], 40.0, 16);
+    view.samples = 64;
+    let flat = render(&lit, &view);
+    lit.set_shading(Shading::Gather { rays: 64 });
+    let gathered = render(&lit, &view);
+    let edges = flat.luminance.iter().filter(|&&l| l > 0.0 && l < 7.0).count();
+    assert!(edges >= 8, "the lamp's edges cross pixels: {edges}");
+    for (i, (g, f)) in gathered.luminance.iter().zip(&flat.luminance).enumerate() {
+        assert!((g - f).abs() < 1e-12, "pixel {i}: gathered {g}, flat {f}");
+    }
+}
+
+#[test]
 fn the_back_of_a_one_sided_surface_is_black_and_of_a_two_sided_one_is_lit() {
     let behind = camera([0.0, 0.0, -2.0], [0.0, 0.0, 0.0], 30.0, 8);
     assert!(render(&emitter(false), &behind).luminance.iter().all(|&l| l == 0.0));
