@@ -62,5 +62,6 @@ pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> 
     let l0 = source_term(&kernel.blocks, &mesh, &direct, kernel.cells());
     check_source(scene, &mesh, &direct, &l0, kernel.cells())?;
     let faces = Faces::of(&mesh);
-    Ok(Model { mesh, visibility, faces, kernel, l0, sources, direct, stats, hierarchy: None })
+    let materials = scene.materials.iter().map(|m| m.model.clone()).collect();
+    Ok(Model { mesh, visibility, faces, kernel, materials, l0, sources, direct, stats, hierarchy: None })
 }

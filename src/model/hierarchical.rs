@@ -139,7 +139,8 @@ pub fn build(
     check_transport(scene, &mesh, &g, k)?;
     let kernel = Kernel { g, directions, blocks, patch_material, twin };
     let faces = Faces::of(&mesh);
-    Ok(Model { mesh, visibility, faces, kernel, l0, sources, direct, stats, hierarchy: Some(record) })
+    let materials = scene.materials.iter().map(|m| m.model.clone()).collect();
+    Ok(Model { mesh, visibility, faces, kernel, materials, l0, sources, direct, stats, hierarchy: Some(record) })
 }
 
 /// The luminaires' light on the roots, only to seed the oracle's first guess (each root's

@@ -71,6 +71,7 @@ impl Model {
         };
         let l0 = source_term(&kernel.blocks, &mesh, &direct, kernel.cells());
         let faces = Faces::of(&mesh);
-        Ok(Model { mesh, visibility, faces, kernel, l0, sources, direct, stats, hierarchy: None })
+        let materials = scene.materials.iter().map(|m| m.model.clone()).collect();
+        Ok(Model { mesh, visibility, faces, kernel, materials, l0, sources, direct, stats, hierarchy: None })
     }
 }

@@ -9,6 +9,7 @@ use crate::interrupt::Interrupted;
 use crate::kernel::hierarchy::{Census, Pass};
 use crate::kernel::{BalanceReport, Kernel, OverLimit, Precision, TooLarge};
 use crate::luminaire::{DirectLight, Source};
+use crate::material::MaterialModel;
 use crate::scene::Scene;
 use crate::solve::SolveError;
 use crate::transfer::form_factor::Quadrature;
@@ -85,6 +86,9 @@ pub struct Model {
     /// The patches of each face, for probes and grids.
     pub faces: Faces,
     pub kernel: Kernel,
+    /// The scene's materials by index, whose own luminance factors the readouts of
+    /// glossy surfaces apply (the kernel holds their cell blocks).
+    pub materials: Vec<MaterialModel>,
     /// Source term `L0(i,k)`, flat, `x[i·K + k]`.
     pub l0: Vec<f64>,
     /// The luminaires, placed.

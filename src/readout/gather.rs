@@ -13,12 +13,14 @@
 //! `D_d(p)`; the illuminance is `E = π Σ_d (I_d + D_d)`, of which `π Σ_d D_d` is direct
 //! from the luminaires. The outgoing luminance of a surface point towards `v` is
 //! `L_e + Σ_d ρ̄(k,d) (I_d + D_d)` with `k` the cell of `v` (plus the light transmitted
-//! from the back side of a transmitting surface).
+//! from the back side of a transmitting surface) on a Lambertian surface, whose `ρ̄` is
+//! exact; a glossy surface's is gathered with its own luminance factor (`glossy.rs`).
 
 use crate::geometry::{ConvexPolygon, Frame, NO_TWIN, Patch};
 use crate::luminaire::arriving_at;
 use crate::model::Model;
 use crate::readout::field::Field;
+use crate::readout::glossy::{self, is_diffuse};
 use crate::sky::ETA;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
@@ -64,10 +66,14 @@ pub(super) fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
 }
 
 /// Outgoing luminance of patch `i` at point `q` towards `direction`, from the light
-/// `incident` on it per cell (and, for a transmitter, the light arriving at its back).
+/// `incident` on it per cell (and, for a transmitter, the light arriving at its back); a
+/// glossy surface's by its own luminance factor instead (`glossy.rs`).
 pub(super) fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, incident: &[f64]) -> f64 {
     let kernel = &model.kernel;
     let patch = &model.mesh.patches[i];
+    if !is_diffuse(&model.materials[patch.material as usize]) {
+        return glossy::outgoing(model, field, i, q, direction);
+    }
     let k = kernel.directions.lookup(patch.frame().local(direction));
     let block = &kernel.blocks[kernel.patch_material[i] as usize];
     let mut l = model.mesh.emission[i] + incident.iter().enumerate().map(|(d, e)| block.at(k, d) * e).sum::<f64>();
@@ -135,6 +141,9 @@ pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3) -> f64 {
         .and_then(|hit| {
             let (q, i) = (hit.point, hit.facing?);
             let s = &model.mesh.patches[i];
+            if !is_diffuse(&model.materials[s.material as usize]) {
+                return Some(glossy::outgoing(model, field, i, q, -v));
+            }
             Some(outgoing(model, field, i, q, -v, &arriving(model, field, q, s)))
         })
         .unwrap_or(0.0)

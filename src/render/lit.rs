@@ -6,10 +6,9 @@
 //!   holding the area-weighted mean over the patches of the same surface that share it
 //!   (`smooth.rs`);
 //! * `Gather`: one more reflection evaluated at `q` itself with the material's own
-//!   luminance factor, from the solved field and the luminaires' direct light (`gather.rs`,
-//!   `design.md` §5).
+//!   luminance factor, from the solved field and the luminaires' direct light
+//!   (`crate::readout::final_gather`, `design.md` §5).
 
-use super::gather::final_gather;
 use super::smooth::Corners;
 use super::solved::Solved;
 use crate::directions::DirectionSet;
@@ -17,6 +16,7 @@ use crate::geometry::{Mesh, NO_TWIN};
 use crate::luminaire::Source;
 use crate::material::MaterialModel;
 use crate::random::Rng;
+use crate::readout::final_gather::final_gather;
 use glam::DVec3;
 
 /// How a hit point is shaded.

@@ -6,7 +6,6 @@
 //! patches of one surface) or by a final gather (one more reflection at the hit point).
 
 mod camera;
-mod gather;
 mod image;
 mod lit;
 mod smooth;

@@ -6,6 +6,7 @@ use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::luminaire::Source;
 use crate::material::MaterialModel;
+use crate::readout::final_gather::Surroundings;
 use crate::visibility::{Faces, NO_FACE, Visibility};
 use glam::DVec3;
 
@@ -60,5 +61,31 @@ impl Solved {
     pub(super) fn flat(&self, patch: usize, towards: DVec3) -> f64 {
         let k = self.directions.lookup(self.mesh.patches[patch].frame().local(towards));
         self.luminance[patch * self.directions.len() + k]
+    }
+}
+
+impl Surroundings for Solved {
+    fn mesh(&self) -> &Mesh {
+        &self.mesh
+    }
+
+    fn visibility(&self) -> &Visibility {
+        &self.visibility
+    }
+
+    fn material(&self, patch: usize) -> &MaterialModel {
+        &self.materials[self.mesh.patches[patch].material as usize]
+    }
+
+    fn emitters(&self) -> &[u32] {
+        &self.emitters
+    }
+
+    fn sources(&self) -> &[Source] {
+        &self.sources
+    }
+
+    fn met(&self, q: DVec3, w: DVec3, face: u32) -> Option<(usize, f64)> {
+        self.hit_ignoring(q, w, face).map(|(j, _)| (j, self.flat(j, -w)))
     }
 }

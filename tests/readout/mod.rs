@@ -2,6 +2,7 @@
 //! cylindrical and semi-cylindrical illuminance against closed forms (issue 17, item 7).
 
 mod cylindrical;
+mod glossy;
 mod meter;
 
 use crate::support::{build, solve};
