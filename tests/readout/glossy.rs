@@ -7,6 +7,7 @@
 //! low.
 
 use super::readings;
+use crate::support::over_parallelogram;
 use glam::DVec3;
 use ugo::geometry::Frame;
 use ugo::material::MaterialModel;
@@ -17,20 +18,11 @@ const LAMP: f64 = 1000.0;
 /// `(1/π) ∫ ρ(n, l') LAMP cosθ' dω'` at `q` on the floor (normal +y), seen along the
 /// normal, over the 0.4 m lamp facing down at y = 1 centred above the origin.
 fn quadrature(q: DVec3) -> f64 {
-    let (frame, n) = (Frame::around(DVec3::Y), 400);
+    let frame = Frame::around(DVec3::Y);
     let l = frame.local(DVec3::Y);
-    let piece = 0.4 / n as f64;
-    let mut sum = 0.0;
-    for i in 0..n {
-        for j in 0..n {
-            let y = DVec3::new(-0.2 + (i as f64 + 0.5) * piece, 1.0, -0.2 + (j as f64 + 0.5) * piece);
-            let r = y - q;
-            let w = r.normalize();
-            let solid_angle = piece * piece * w.y / r.length_squared();
-            sum += FLOOR.luminance_factor(l, frame.local(w)) * w.y * solid_angle;
-        }
-    }
-    LAMP * sum / std::f64::consts::PI
+    let reflected = |w: DVec3, solid_angle: f64| FLOOR.luminance_factor(l, frame.local(w)) * w.y * solid_angle;
+    let (o, u, v) = (DVec3::new(-0.2, 1.0, -0.2), DVec3::new(0.4, 0.0, 0.0), DVec3::new(0.0, 0.0, 0.4));
+    LAMP * over_parallelogram(o, u, v, q, 400, reflected) / std::f64::consts::PI
 }
 
 #[test]

@@ -7,7 +7,7 @@
 //! the gather used before (second coordinate `7r + shift mod n`), 4,096 rays scattered by
 //! ±0.8 % from seed to seed, with the shifted Hammersley set by ±0.02 %.
 
-use crate::support::{material, rectangle, scene, surface};
+use crate::support::{material, over_parallelogram, rectangle, scene, surface};
 use glam::DVec3;
 use ugo::directions::DirectionSet;
 use ugo::geometry::{Emission, Frame, Mesh, Shape};
@@ -45,23 +45,20 @@ fn floor_under(other: Shape, emission: Option<Emission>, patch_size: f64) -> Lit
 fn quadrature(q: DVec3, eye: DVec3, origin: DVec3, u: DVec3, v: DVec3, l_source: f64, n: usize) -> f64 {
     let frame = Frame::around(DVec3::Y);
     let l = frame.local((eye - q).normalize());
-    let (normal, area) = (u.cross(v).normalize(), u.cross(v).length() / (n * n) as f64);
-    let mut sum = 0.0;
-    for i in 0..n {
-        for j in 0..n {
-            let y = origin + u * ((i as f64 + 0.5) / n as f64) + v * ((j as f64 + 0.5) / n as f64);
-            let r = y - q;
-            let w = r.normalize();
-            let solid_angle = area * (-w.dot(normal)).max(0.0) / r.length_squared();
-            sum += FLOOR.luminance_factor(l, frame.local(w)) * w.y * solid_angle;
-        }
-    }
-    l_source * sum / std::f64::consts::PI
+    let reflected = |w: DVec3, solid_angle: f64| FLOOR.luminance_factor(l, frame.local(w)) * w.y * solid_angle;
+    l_source * over_parallelogram(origin, u, v, q, n, reflected) / std::f64::consts::PI
 }
 
 fn gathered(lit: &mut LitScene, eye: DVec3, q: DVec3, rays: usize) -> f64 {
     lit.set_shading(Shading::Gather { rays });
     lit.luminance_along(eye, (q - eye).normalize(), rays, &mut Rng::keyed(7))
+}
+
+/// Prints and checks `got` within the relative `bound` of `exact`.
+fn expect_within(what: &str, got: f64, exact: f64, bound: f64) {
+    let error = got / exact - 1.0;
+    eprintln!("{what}: gathered {got:.3} cd/m², quadrature {exact:.3} ({:+.3} %)", 100.0 * error);
+    assert!(error.abs() < bound, "{what}: {got} against {exact}");
 }
 
 #[test]
@@ -74,12 +71,7 @@ fn the_gather_shows_a_lamps_glossy_highlight_as_the_material_makes_it() {
     let mut peak = 0.0;
     for q in [DVec3::ZERO, DVec3::new(-0.08, 0.0, 0.0), DVec3::new(0.0, 0.0, 0.09), DVec3::new(0.1, 0.0, 0.1)] {
         let exact = quadrature(q, eye, origin, u, v, LAMP, 400);
-        let got = gathered(&mut lit, eye, q, 1);
-        eprintln!(
-            "highlight at {q}: gathered {got:.3} cd/m², quadrature {exact:.3} ({:+.3} %)",
-            100.0 * (got / exact - 1.0)
-        );
-        assert!((got / exact - 1.0).abs() < 0.005, "at {q}: {got} against {exact}");
+        expect_within(&format!("highlight at {q}"), gathered(&mut lit, eye, q, 1), exact, 0.005);
         peak = f64::max(peak, exact);
     }
     assert!(peak > 0.3 * LAMP, "the lamp is seen in the floor: {peak}");
@@ -96,11 +88,6 @@ fn the_gather_shows_a_bright_wall_in_a_glossy_floor_through_the_materials_lobe()
     let eye = DVec3::new(-0.6, 0.5, 0.0);
     for q in [DVec3::new(0.0, 0.0, 0.0), DVec3::new(0.3, 0.0, 0.2)] {
         let exact = quadrature(q, eye, origin, u, v, WALL, 800);
-        let got = gathered(&mut lit, eye, q, 4096);
-        eprintln!(
-            "wall in the floor at {q}: gathered {got:.3} cd/m², quadrature {exact:.3} ({:+.3} %)",
-            100.0 * (got / exact - 1.0)
-        );
-        assert!((got / exact - 1.0).abs() < 0.002, "at {q}: {got} against {exact}");
+        expect_within(&format!("wall in the floor at {q}"), gathered(&mut lit, eye, q, 4096), exact, 0.002);
     }
 }

@@ -3,6 +3,7 @@
 //! skies, equal to a brute-force integral over the opening's area written out here.
 
 use super::sun;
+use crate::support::over_parallelogram;
 use glam::DVec3;
 use std::f64::consts::PI;
 use ugo::geometry::ConvexPolygon;
@@ -26,21 +27,7 @@ fn components(sky: &Sky, window: &ConvexPolygon, p: DVec3, n: DVec3) -> (f64, f6
 
 /// `Σ L(l) cos θ cos θ' / r² ΔA` over an `m × m` grid of the parallelogram `o + s u + t v`.
 fn brute_force(sky: &Sky, o: DVec3, u: DVec3, v: DVec3, p: DVec3, n: DVec3, m: usize) -> f64 {
-    let normal = u.cross(v).normalize();
-    let da = u.cross(v).length() / (m * m) as f64;
-    let mut e = 0.0;
-    for i in 0..m {
-        for j in 0..m {
-            let x = o + u * ((i as f64 + 0.5) / m as f64) + v * ((j as f64 + 0.5) / m as f64);
-            let r = x - p;
-            let l = r.normalize();
-            let cos = l.dot(n);
-            if cos > 0.0 {
-                e += sky.luminance(l) * cos * l.dot(normal).abs() / r.length_squared() * da;
-            }
-        }
-    }
-    e
+    over_parallelogram(o, u, v, p, m, |l, solid_angle| sky.luminance(l) * l.dot(n).max(0.0) * solid_angle)
 }
 
 #[test]

@@ -146,3 +146,20 @@ pub fn scratch(name: &str) -> PathBuf {
     std::fs::create_dir_all(&dir).expect("temporary folder");
     dir
 }
+
+/// `Σ f(l, dω)` over the `m × m` midpoint grid of the parallelogram `o + s·u + t·v` seen
+/// from `p`: `l` the unit direction to a piece's centre, `dω` the piece's solid angle.
+pub fn over_parallelogram(o: DVec3, u: DVec3, v: DVec3, p: DVec3, m: usize, f: impl Fn(DVec3, f64) -> f64) -> f64 {
+    let normal = u.cross(v).normalize();
+    let area = u.cross(v).length() / (m * m) as f64;
+    let mut sum = 0.0;
+    for i in 0..m {
+        for j in 0..m {
+            let x = o + u * ((i as f64 + 0.5) / m as f64) + v * ((j as f64 + 0.5) / m as f64);
+            let r = x - p;
+            let l = r.normalize();
+            sum += f(l, area * l.dot(normal).abs() / r.length_squared());
+        }
+    }
+    sum
+}
