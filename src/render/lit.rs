@@ -24,7 +24,8 @@ use glam::DVec3;
 pub enum Shading {
     Flat,
     Smooth,
-    /// A final gather with this many rays per pixel (spread over the pixel's samples).
+    /// A final gather with this many rays per pixel, spread over the pixel's shaded points
+    /// (at most [`super::GATHER_POINTS`]).
     Gather {
         rays: usize,
     },

@@ -12,6 +12,6 @@ mod smooth;
 mod solved;
 
 pub use camera::Projection;
-pub use image::{Image, render};
+pub use image::{GATHER_POINTS, Image, render};
 pub use lit::{LitScene, Shading};
 pub use solved::Solved;
