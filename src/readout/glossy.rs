@@ -2,11 +2,16 @@
 //! direction (Phong, GGX, mirror), `L(q, l) = Le + (1/π) ∫ ρ(l, l') L(q, l') cosθ' dω'`
 //! (`design.md` §5): the final gather of `final_gather.rs` (the render's too) on the solved field,
 //! with the material's own factor at the point, the emitters' and luminaires' light
-//! exact, and [`RAYS`] directions sampled from its lobe on a shifted Hammersley set, the
-//! stream keyed by the point so a reading is reproducible. The cell-averaged factor
-//! `ρ̄(k, d)` of the Lambertian readout would spread a lobe narrower than a direction cell
-//! over the whole cell: the glossy Cornell floor (Phong, exponent 50) read 11.93 cd/m²
-//! from above with it at K = 64, against 13.86 ± 0.19 traced (`docs/hierarchy.md`).
+//! exact, and directions sampled from its lobe on a shifted Hammersley set, the stream
+//! keyed by the point so a reading is reproducible. The cell-averaged factor `ρ̄(k, d)` of
+//! the Lambertian readout would spread a lobe narrower than a direction cell over the whole
+//! cell: the glossy Cornell floor (Phong, exponent 50) read 11.93 cd/m² from above with it
+//! at K = 64, against 14.00 ± 0.04 traced (`docs/hierarchy.md`).
+//!
+//! The same gather gives the light a glossy surface sends towards a point that gathers
+//! (`gather.rs`), piece by piece: the stored cell value of a glossy patch holds its
+//! reflection of a lamp spread over the cell, and the glossy Cornell ceiling, a third of
+//! whose light is the lamp's image in the floor, read 5.2 % low from it.
 
 use crate::geometry::Mesh;
 use crate::luminaire::Source;
@@ -18,9 +23,13 @@ use crate::readout::final_gather::{Surroundings, final_gather};
 use crate::visibility::Visibility;
 use glam::DVec3;
 
-/// Directions sampled per reading. On a wall seen in a glossy floor the gather's error
-/// at 4,096 directions is ±0.02 % (`tests/render/glossy.rs`).
+/// Directions sampled for a probe's own luminance. On a wall seen in a glossy floor the
+/// gather's error at 4,096 directions is ±0.02 % (`tests/render/glossy.rs`).
 pub const RAYS: usize = 16_384;
+
+/// Directions sampled for the light a piece of a glossy surface sends towards a gathering
+/// point (`gather.rs`): one piece is a small part of what the point receives.
+pub const PIECE_RAYS: usize = 256;
 
 /// True when `material` reflects alike in every direction, so that the cell-averaged
 /// readout is exact for it.
@@ -28,10 +37,11 @@ pub fn is_diffuse(material: &MaterialModel) -> bool {
     matches!(material, MaterialModel::Lambert { .. })
 }
 
-/// The outgoing luminance of patch `i` at its point `q` towards the unit `direction`, cd/m².
-pub fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3) -> f64 {
+/// The outgoing luminance of patch `i` at its point `q` towards the unit `direction`,
+/// gathered over `rays` directions, cd/m².
+pub fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, rays: usize) -> f64 {
     let key = q.to_array().iter().fold(direction.x.to_bits(), |h, x| h.rotate_left(17) ^ x.to_bits());
-    final_gather(&ModelSurroundings::new(model, field), i, q, direction, RAYS, &mut Rng::keyed(key))
+    final_gather(&ModelSurroundings::new(model, field), i, q, direction, rays, &mut Rng::keyed(key))
 }
 
 /// A model and its solved field as a final gather reads them.

@@ -25,9 +25,9 @@ fn quadrature(q: DVec3) -> f64 {
     LAMP * over_parallelogram(o, u, v, q, 400, reflected) / std::f64::consts::PI
 }
 
-#[test]
-fn a_probe_on_a_glossy_floor_reads_the_lamps_highlight_by_the_materials_own_factor() {
-    let probes = [[0.0, 0.0], [0.1, 0.0], [0.15, 0.1], [0.3, 0.3]];
+/// The case: the glossy floor (2 × 2 m, patches of 0.1 m) under the black lamp, with point
+/// probes at `(position, normal)`.
+fn lamp_over_glossy_floor(probes: &[([f64; 3], [f64; 3])]) -> String {
     let mut text = String::from(
         "[discretization]\npatch_size = 0.1\n\
          [[material]]\nname = \"glossy\"\ntype = \"phong\"\nreflectance = 0.1\nspecular = 0.8\nexponent = 100\n\
@@ -37,14 +37,53 @@ fn a_probe_on_a_glossy_floor_reads_the_lamps_highlight_by_the_materials_own_fact
          [[surface]]\nname = \"lamp\"\nshape = \"rectangle\"\nmaterial = \"black\"\n\
          origin = [-0.2, 1, -0.2]\nedge_u = [0.4, 0, 0]\nedge_v = [0, 0, 0.4]\nemission = { luminance = 1000 }\n",
     );
-    for (i, [x, z]) in probes.iter().enumerate() {
-        text += &format!("[[probe]]\nname = \"p{i}\"\nposition = [{x}, 0, {z}]\nnormal = [0, 1, 0]\n");
+    for (i, (p, n)) in probes.iter().enumerate() {
+        text += &format!("[[probe]]\nname = \"p{i}\"\nposition = {p:?}\nnormal = {n:?}\n");
     }
-    let readings = readings(&text);
-    for (reading, [x, z]) in readings.iter().zip(probes) {
-        let exact = quadrature(DVec3::new(x, 0.0, z));
+    text
+}
+
+#[test]
+fn a_probe_on_a_glossy_floor_reads_the_lamps_highlight_by_the_materials_own_factor() {
+    let probes = [[0.0, 0.0], [0.1, 0.0], [0.15, 0.1], [0.3, 0.3]].map(|[x, z]| ([x, 0.0, z], [0.0, 1.0, 0.0]));
+    for (reading, (p, _)) in readings(&lamp_over_glossy_floor(&probes)).iter().zip(probes) {
+        let exact = quadrature(DVec3::from_array(p));
         let error = reading.luminance / exact - 1.0;
         eprintln!("{}: {:.3} cd/m², quadrature {exact:.3} ({:+.3} %)", reading.name, reading.luminance, 100.0 * error);
         assert!(error.abs() < 0.005, "{}: {} against {exact}", reading.name, reading.luminance);
     }
+}
+
+#[test]
+fn a_probe_beside_the_lamp_receives_its_image_in_the_glossy_floor() {
+    // Facing down at the lamp's height, 0.3 m beside it: all its light is the floor's
+    // reflection of the lamp, which the floor's single direction cell cannot hold.
+    let probes = [([0.5, 1.0, 0.0], [0.0, -1.0, 0.0]), ([0.45, 1.0, 0.2], [0.0, -1.0, 0.0])];
+    for (reading, (p, _)) in readings(&lamp_over_glossy_floor(&probes)).iter().zip(probes) {
+        let exact = image_illuminance(DVec3::from_array(p), 200, 24);
+        let error = reading.illuminance / exact - 1.0;
+        eprintln!("{}: {:.4} lx, quadrature {exact:.4} ({:+.3} %)", reading.name, reading.illuminance, 100.0 * error);
+        assert!(error.abs() < 0.01, "{}: {} against {exact}", reading.name, reading.illuminance);
+    }
+}
+
+/// The illuminance at `p` (receiver facing down) from the lamp's image in the floor:
+/// `∫_floor L(x → p) cosθ_p cosθ_x / r² dA`, `L(x → p)` the floor's reflection of the lamp,
+/// both integrals by the midpoint rule (`m × m` over the floor, `n × n` over the lamp).
+fn image_illuminance(p: DVec3, m: usize, n: usize) -> f64 {
+    let frame = Frame::around(DVec3::Y);
+    let (o, u, v) = (DVec3::new(-1.0, 0.0, -1.0), DVec3::new(2.0, 0.0, 0.0), DVec3::new(0.0, 0.0, 2.0));
+    let lamp = (DVec3::new(-0.2, 1.0, -0.2), DVec3::new(0.4, 0.0, 0.0), DVec3::new(0.0, 0.0, 0.4));
+    let mut e = 0.0;
+    for i in 0..m {
+        for j in 0..m {
+            let x = o + u * ((i as f64 + 0.5) / m as f64) + v * ((j as f64 + 0.5) / m as f64);
+            let to_p = (p - x).normalize();
+            let l = frame.local(to_p);
+            let reflected = |w: DVec3, solid_angle: f64| FLOOR.luminance_factor(l, frame.local(w)) * w.y * solid_angle;
+            let luminance = LAMP * over_parallelogram(lamp.0, lamp.1, lamp.2, x, n, reflected) / std::f64::consts::PI;
+            e += luminance * to_p.y * to_p.y / (p - x).length_squared() * 4.0 / (m * m) as f64;
+        }
+    }
+    e
 }
