@@ -8,7 +8,7 @@
 //! stratified points of `P_j`; a patch whose points and corners disagree lies on a shadow
 //! edge and is cut into quarters (`transfer::occlusion::cut_along_shadows`), each piece
 //! weighed by its own rays, while the light the piece would send unoccluded exceeds
-//! [`SHADOW_CUT`] of all the point would receive unoccluded). A glossy patch's light
+//! [`SHADOW_CUT`] of all the point would receive unoccluded). A Phong or GGX patch's light
 //! towards `p` is, piece by piece, its final gather at the piece's centroid towards `p`
 //! (`glossy.rs`, [`PIECE_RAYS`] directions) instead of its cell value `L_j(m)`. The luminaires' light
 //! arrives exactly at the point (`crate::luminaire::arriving_at`, one shadow ray each) as
@@ -22,7 +22,7 @@ use crate::geometry::{ConvexPolygon, Frame, NO_TWIN, Patch};
 use crate::luminaire::arriving_at;
 use crate::model::Model;
 use crate::readout::field::Field;
-use crate::readout::glossy::{self, PIECE_RAYS, is_diffuse};
+use crate::readout::glossy::{self, PIECE_RAYS, has_lobe, is_diffuse};
 use crate::sky::ETA;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
@@ -117,7 +117,7 @@ pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32
                 let sees = |y: DVec3| model.visibility.visible(p, y, [ignore, s.face]);
                 let per_area = unoccluded[j] / s.area;
                 let worth = |piece: &ConvexPolygon| per_area * piece.area() > least;
-                let glossy = !is_diffuse(&model.materials[s.material as usize]);
+                let glossy = has_lobe(&model.materials[s.material as usize]);
                 cut_along_shadows(&s.polygon, 0, &sees, &worth, &mut |piece, seen| {
                     bins.clear();
                     binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);

@@ -8,8 +8,8 @@
 //! cell: the glossy Cornell floor (Phong, exponent 50) read 11.93 cd/m² from above with it
 //! at K = 64, against 14.00 ± 0.04 traced (`docs/hierarchy.md`).
 //!
-//! The same gather gives the light a glossy surface sends towards a point that gathers
-//! (`gather.rs`), piece by piece: the stored cell value of a glossy patch holds its
+//! The same gather gives the light a lobed surface sends towards a point that gathers
+//! (`gather.rs`), piece by piece ([`has_lobe`]): the stored cell value of a glossy patch holds its
 //! reflection of a lamp spread over the cell, and the glossy Cornell ceiling, a third of
 //! whose light is the lamp's image in the floor, read 5.2 % low from it.
 
@@ -35,6 +35,14 @@ pub const PIECE_RAYS: usize = 256;
 /// readout is exact for it.
 pub fn is_diffuse(material: &MaterialModel) -> bool {
     matches!(material, MaterialModel::Lambert { .. })
+}
+
+/// True when the light a patch of `material` sends towards a gathering point is gathered
+/// at each piece (`gather.rs`): a lobe, Phong or GGX. A mirror sends an image, which one
+/// point of a piece cannot sample (so the mirror room's floor by the mirror read 131 lx
+/// against 181 ± 1 traced, and 187 from the cell values): its cell values stay.
+pub fn has_lobe(material: &MaterialModel) -> bool {
+    matches!(material, MaterialModel::Phong { .. } | MaterialModel::Ggx { .. })
 }
 
 /// The outgoing luminance of patch `i` at its point `q` towards the unit `direction`,
