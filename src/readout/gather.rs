@@ -10,8 +10,8 @@
 //! weighed by its own rays, while the light the piece would send unoccluded exceeds
 //! [`SHADOW_CUT`] of all the point would receive unoccluded). A Phong or GGX patch's light
 //! towards `p` is, piece by piece, its final gather at the piece's centroid towards `p`
-//! (`glossy.rs`, [`PIECE_RAYS`] directions) instead of its cell value `L_j(m)`. The luminaires' light
-//! arrives exactly at the point (`crate::luminaire::arriving_at`, one shadow ray each) as
+//! (`glossy.rs`, [`PIECE_RAYS`] directions) instead of its cell value `L_j(m)`. The
+//! luminaires' light arrives exactly at the point (`crate::luminaire::arriving_at`, one shadow ray each) as
 //! `D_d(p)`; the illuminance is `E = π Σ_d (I_d + D_d)`, of which `π Σ_d D_d` is direct
 //! from the luminaires. The outgoing luminance of a surface point towards `v` is
 //! `L_e + Σ_d ρ̄(k,d) (I_d + D_d)` with `k` the cell of `v` (plus the light transmitted
@@ -22,7 +22,7 @@ use crate::geometry::{ConvexPolygon, Frame, NO_TWIN, Patch};
 use crate::luminaire::arriving_at;
 use crate::model::Model;
 use crate::readout::field::Field;
-use crate::readout::glossy::{self, PIECE_RAYS, has_lobe, is_diffuse};
+use crate::readout::glossy::{self, ModelSurroundings, PIECE_RAYS, has_lobe, is_diffuse};
 use crate::sky::ETA;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
@@ -74,7 +74,7 @@ pub(super) fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, directi
     let kernel = &model.kernel;
     let patch = &model.mesh.patches[i];
     if !is_diffuse(&model.materials[patch.material as usize]) {
-        return glossy::outgoing(model, field, i, q, direction, glossy::RAYS);
+        return ModelSurroundings::new(model, field).outgoing(i, q, direction, glossy::RAYS);
     }
     let k = kernel.directions.lookup(patch.frame().local(direction));
     let block = &kernel.blocks[kernel.patch_material[i] as usize];
@@ -107,6 +107,7 @@ pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32
         })
         .collect();
     let least = SHADOW_CUT * unoccluded.iter().sum::<f64>();
+    let surroundings = ModelSurroundings::new(model, field);
     patches
         .par_iter()
         .enumerate()
@@ -122,8 +123,7 @@ pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32
                     bins.clear();
                     binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);
                     let c = piece.centroid();
-                    let towards_p =
-                        glossy.then(|| glossy::outgoing(model, field, j, c, (p - c).normalize(), PIECE_RAYS));
+                    let towards_p = glossy.then(|| surroundings.outgoing(j, c, (p - c).normalize(), PIECE_RAYS));
                     for &(d, m, f) in bins.iter() {
                         sum[d as usize] += f * seen * towards_p.unwrap_or_else(|| field.at(j, m as usize));
                     }
@@ -146,7 +146,7 @@ pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3) -> f64 {
             let (q, i) = (hit.point, hit.facing?);
             let s = &model.mesh.patches[i];
             if !is_diffuse(&model.materials[s.material as usize]) {
-                return Some(glossy::outgoing(model, field, i, q, -v, glossy::RAYS));
+                return Some(ModelSurroundings::new(model, field).outgoing(i, q, -v, glossy::RAYS));
             }
             Some(outgoing(model, field, i, q, -v, &arriving(model, field, q, s)))
         })

