@@ -116,6 +116,11 @@ impl Mesh {
         Mesh { patches, emission, faces: faces as usize }
     }
 
+    /// The patches with a self-emission.
+    pub fn emitters(&self) -> Vec<u32> {
+        (0..self.len() as u32).filter(|&i| self.emission[i as usize] > 0.0).collect()
+    }
+
     pub fn len(&self) -> usize {
         self.patches.len()
     }

@@ -54,9 +54,7 @@ pub struct ModelSurroundings<'a> {
 
 impl<'a> ModelSurroundings<'a> {
     pub fn new(model: &'a Model, field: &'a Field) -> ModelSurroundings<'a> {
-        let emission = &model.mesh.emission;
-        let emitters = (0..emission.len() as u32).filter(|&j| emission[j as usize] > 0.0).collect();
-        ModelSurroundings { model, field, emitters }
+        ModelSurroundings { model, field, emitters: model.mesh.emitters() }
     }
 
     /// The outgoing luminance of patch `i` at its point `q` towards the unit `direction`,
@@ -90,13 +88,9 @@ impl Surroundings for ModelSurroundings<'_> {
 
     fn met(&self, q: DVec3, w: DVec3, face: u32) -> Option<(usize, f64)> {
         let model = self.model;
-        let hit = model.faces.landing(&model.mesh, &model.visibility, q, w, face)?;
         let directions = &model.kernel.directions;
-        let j = match hit.facing {
-            Some(j) => j,
-            None if directions.is_sphere() => model.faces.first(hit.face),
-            None => return None,
-        };
+        let sphere = directions.is_sphere();
+        let (j, _) = model.faces.landing_patch(&model.mesh, &model.visibility, q, w, face, sphere)?;
         let k = directions.lookup(model.mesh.patches[j].frame().local(-w));
         Some((j, self.field.at(j, k)))
     }

@@ -36,7 +36,7 @@ impl Solved {
     ) -> Solved {
         let faces = Faces::of(&mesh);
         let visibility = Visibility::build(&mesh);
-        let emitters = (0..mesh.len() as u32).filter(|&i| mesh.emission[i as usize] > 0.0).collect();
+        let emitters = mesh.emitters();
         Solved { mesh, directions, luminance, visibility, faces, materials, emitters, sources: Vec::new() }
     }
 
@@ -48,13 +48,8 @@ impl Solved {
     /// [`Solved::hit`] ignoring face `ignore`. The back of a one-sided surface is a miss,
     /// unless the direction set covers the sphere (its lower cells hold transmitted light).
     pub(super) fn hit_ignoring(&self, origin: DVec3, direction: DVec3, ignore: u32) -> Option<(usize, DVec3)> {
-        let hit = self.faces.landing(&self.mesh, &self.visibility, origin, direction, ignore)?;
-        let patch = match hit.facing {
-            Some(i) => i,
-            None if self.directions.is_sphere() => self.faces.first(hit.face),
-            None => return None,
-        };
-        Some((patch, hit.point))
+        let sphere = self.directions.is_sphere();
+        self.faces.landing_patch(&self.mesh, &self.visibility, origin, direction, ignore, sphere)
     }
 
     /// The stored luminance of `patch` in the cell holding the unit direction `towards`.

@@ -62,6 +62,28 @@ impl Faces {
         Some(Landing { face: hit.face, facing: self.facing(mesh, hit.face, -direction), point })
     }
 
+    /// The patch a ray from `origin` along the unit `direction` lands on (ignoring face
+    /// `ignore`) and the point: the patch facing back along the ray; the back of a
+    /// one-sided face is a miss unless `sphere` (the direction cells cover the sphere,
+    /// whose lower cells hold transmitted light), which gives the face's first patch.
+    pub fn landing_patch(
+        &self,
+        mesh: &Mesh,
+        visibility: &Visibility,
+        origin: DVec3,
+        direction: DVec3,
+        ignore: u32,
+        sphere: bool,
+    ) -> Option<(usize, DVec3)> {
+        let hit = self.landing(mesh, visibility, origin, direction, ignore)?;
+        let patch = match hit.facing {
+            Some(i) => i,
+            None if sphere => self.first(hit.face),
+            None => return None,
+        };
+        Some((patch, hit.point))
+    }
+
     /// The patch that the point `p` lies on, facing the unit `n` (normal within 60°): a
     /// ray from `p + δn` towards `−n` hits its face within `2δ`, `δ` the [`standoff`].
     pub fn under(&self, mesh: &Mesh, visibility: &Visibility, p: DVec3, n: DVec3) -> Option<usize> {
