@@ -56,16 +56,18 @@ impl Rng {
 /// base-2 radical inverse, shifted together by one random offset modulo 1 (Cranley &
 /// Patterson 1976): each point is uniform, so an estimate over them is unbiased, and every
 /// interval of the square's dyadic grids of area `1/n` holds one point when `n` is a power
-/// of two, so the error falls about as `1/n` rather than `1/√n` on smooth integrands.
+/// of two, so the error falls about as `1/n` rather than `1/√n` on smooth integrands. A
+/// third coordinate `φ₃(r)` (base 3, shifted alike) makes it the three-dimensional set, for
+/// a sampler that also chooses among its components.
 #[derive(Debug, Clone, Copy)]
 pub struct Stratified {
     n: usize,
-    shift: [f64; 2],
+    shift: [f64; 3],
 }
 
 impl Stratified {
     pub fn new(n: usize, rng: &mut Rng) -> Stratified {
-        Stratified { n: n.max(1), shift: [rng.uniform(), rng.uniform()] }
+        Stratified { n: n.max(1), shift: rng.uniform3() }
     }
 
     /// Point `r` of the set, `r < n`.
@@ -74,6 +76,24 @@ impl Stratified {
         let radical = (r as u32).reverse_bits() as f64 / 4_294_967_296.0;
         [(r as f64 / self.n as f64 + self.shift[0]).fract(), (radical + self.shift[1]).fract()]
     }
+
+    /// Point `r` of the three-dimensional set, `(r/n, φ₂(r), φ₃(r))` shifted.
+    #[inline]
+    pub fn point3(&self, r: usize) -> [f64; 3] {
+        let [u, v] = self.point(r);
+        [u, v, (ternary_inverse(r) + self.shift[2]).fract()]
+    }
+}
+
+/// `φ₃(r)`: the digits of `r` in base 3 mirrored about the point.
+fn ternary_inverse(mut r: usize) -> f64 {
+    let (mut value, mut scale) = (0.0, 1.0 / 3.0);
+    while r > 0 {
+        value += (r % 3) as f64 * scale;
+        r /= 3;
+        scale /= 3.0;
+    }
+    value
 }
 
 /// SplitMix64's output function (a bijection with full avalanche).

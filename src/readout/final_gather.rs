@@ -12,7 +12,8 @@
 //!   quarters, each with its own factor and points, up to four times. Every luminaire
 //!   gives its exact light at `q` in its exact direction (`luminaire::arriving_along`).
 //! * **indirect**: `rays` directions importance-sampled from `ρ cosθ'` by the material's
-//!   own sampler, from a shifted Hammersley set (`random::Stratified`); each adds its weight times
+//!   own sampler, from a shifted three-dimensional Hammersley set (`random::Stratified`, its
+//!   third coordinate choosing the sampler's component); each adds its weight times
 //!   `(L_j(m) − Le_j)/rays`, `L_j(m)` the stored luminance of the patch it hits in the cell
 //!   pointing back at `q` (its emission was counted above). A mirror's single direction
 //!   takes one ray and the whole `L_j(m)`: its direct part is empty.
@@ -63,7 +64,17 @@ pub fn final_gather(
     let through = material.transmits() && p.twin != NO_TWIN;
     let sides: &[DVec3] = if through { &[frame.normal, -frame.normal] } else { &[frame.normal] };
     let direct: f64 = sides.iter().map(|&n| direct_light(lit, q, n, p.face, &factor)).sum();
-    lit.mesh().emission[patch] + direct + indirect_light(lit, q, &frame, l, material, p.face, rays, rng)
+    lit.mesh().emission[patch] + direct + indirect(lit, patch, q, towards, rays, rng)
+}
+
+/// The indirect part of [`final_gather`] alone: the light of the field's second
+/// reflection onward that `patch` reflects at `q` towards `towards`, over `rays` sampled
+/// directions. Two calls with clones of one stream sample the same directions, so two
+/// readings of the field can be compared ray by ray.
+pub fn indirect(lit: &impl Surroundings, patch: usize, q: DVec3, towards: DVec3, rays: usize, rng: &mut Rng) -> f64 {
+    let p = &lit.mesh().patches[patch];
+    let frame = p.frame();
+    indirect_light(lit, q, &frame, frame.local(towards), lit.material(patch), p.face, rays, rng)
 }
 
 /// The emitters' and luminaires' light arriving at `q` on the side facing `n` (ignoring
@@ -134,8 +145,8 @@ fn indirect_light(
     let points = Stratified::new(rays, rng);
     let mut sum = 0.0;
     for r in 0..rays {
-        let [u, v] = points.point(r);
-        let Some(sample) = material.sample(l, [rng.uniform(), u, v]) else { continue };
+        let [u, v, choice] = points.point3(r);
+        let Some(sample) = material.sample(l, [choice, u, v]) else { continue };
         if let Some((j, luminance)) = lit.met(q, frame.world(sample.direction), face) {
             let counted = if sample.delta { 0.0 } else { lit.mesh().emission[j] };
             sum += sample.weight * (luminance - counted);

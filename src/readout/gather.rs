@@ -1,6 +1,6 @@
-//! The light arriving at an exact point, gathered from the solved field (`design.md` §5),
-//! and what the readouts at points are made of: the illuminance on a receiver, the
-//! outgoing luminance of a surface point, the luminance seen along a ray.
+//! The light arriving at an exact point, gathered from the solved field (`design.md` §5):
+//! the illuminance on a receiver, and the light a surface point reflects
+//! (`luminance.rs`).
 //!
 //! The light arriving at `p` is gathered per direction cell `d` of a frame at `p`:
 //! `I_d(p) = Σ_j Σ_m L_j(m) F_{dA(p)→P_j}^{d,m} V(p, P_j)` (the exact contour-integral form
@@ -13,16 +13,13 @@
 //! (`glossy.rs`, [`PIECE_RAYS`] directions) instead of its cell value `L_j(m)`. The
 //! luminaires' light arrives exactly at the point (`crate::luminaire::arriving_at`, one shadow ray each) as
 //! `D_d(p)`; the illuminance is `E = π Σ_d (I_d + D_d)`, of which `π Σ_d D_d` is direct
-//! from the luminaires. The outgoing luminance of a surface point towards `v` is
-//! `L_e + Σ_d ρ̄(k,d) (I_d + D_d)` with `k` the cell of `v` (plus the light transmitted
-//! from the back side of a transmitting surface) on a Lambertian surface, whose `ρ̄` is
-//! exact; a glossy surface's is gathered with its own luminance factor (`glossy.rs`).
+//! from the luminaires.
 
-use crate::geometry::{ConvexPolygon, Frame, NO_TWIN, Patch};
+use crate::geometry::{ConvexPolygon, Frame, Patch};
 use crate::luminaire::arriving_at;
 use crate::model::Model;
 use crate::readout::field::Field;
-use crate::readout::glossy::{self, ModelSurroundings, PIECE_RAYS, has_lobe, is_diffuse};
+use crate::readout::glossy::{ModelSurroundings, PIECE_RAYS, has_lobe};
 use crate::sky::ETA;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
@@ -58,32 +55,19 @@ pub(super) fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (
 /// All the light arriving at point `q` of patch `s` per cell of its frame: gathered from
 /// the surfaces plus direct from the luminaires.
 pub(super) fn arriving(model: &Model, field: &Field, q: DVec3, s: &Patch) -> Vec<f64> {
+    arriving_within(model, field, q, s, SHADOW_CUT)
+}
+
+/// [`arriving`], with the pieces along shadow edges cut while their light exceeds
+/// `shadow_cut` of all the point would receive unoccluded (as [`SHADOW_CUT`]).
+pub(super) fn arriving_within(model: &Model, field: &Field, q: DVec3, s: &Patch, shadow_cut: f64) -> Vec<f64> {
     let frame = s.frame();
     let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, q, &frame, s.face, ETA);
-    sum(&gather(model, field, q, &frame, s.face), &direct)
+    sum(&per_cell(model, field, q, &frame, s.face, shadow_cut), &direct)
 }
 
 pub(super) fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
     a.iter().zip(b).map(|(x, y)| x + y).collect()
-}
-
-/// Outgoing luminance of patch `i` at point `q` towards `direction`, from the light
-/// `incident` on it per cell (and, for a transmitter, the light arriving at its back); a
-/// glossy surface's by its own luminance factor instead (`glossy.rs`).
-pub(super) fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, incident: &[f64]) -> f64 {
-    let kernel = &model.kernel;
-    let patch = &model.mesh.patches[i];
-    if !is_diffuse(&model.materials[patch.material as usize]) {
-        return ModelSurroundings::new(model, field).outgoing(i, q, direction, glossy::RAYS);
-    }
-    let k = kernel.directions.lookup(patch.frame().local(direction));
-    let block = &kernel.blocks[kernel.patch_material[i] as usize];
-    let mut l = model.mesh.emission[i] + incident.iter().enumerate().map(|(d, e)| block.at(k, d) * e).sum::<f64>();
-    if block.transmits() && patch.twin != NO_TWIN {
-        let through = arriving(model, field, q, &model.mesh.patches[patch.twin as usize]);
-        l += through.iter().enumerate().map(|(d, e)| block.transmit_at(k, d).unwrap_or(0.0) * e).sum::<f64>();
-    }
-    l
 }
 
 /// A piece of a patch crossed by a shadow edge is cut further only while the light it
@@ -94,6 +78,10 @@ pub const SHADOW_CUT: f64 = 1e-4;
 
 /// `I_d(p)`: the light arriving at `p` per cell of `frame`, ignoring face `ignore`.
 pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32) -> Vec<f64> {
+    per_cell(model, field, p, frame, ignore, SHADOW_CUT)
+}
+
+fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, shadow_cut: f64) -> Vec<f64> {
     let directions = &model.kernel.directions;
     let cells = directions.len();
     let binning = Binning::new(directions);
@@ -106,7 +94,7 @@ pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32
             false => point_to_patch(p, frame.normal, s).max(0.0) * field.brightest(j),
         })
         .collect();
-    let least = SHADOW_CUT * unoccluded.iter().sum::<f64>();
+    let least = shadow_cut * unoccluded.iter().sum::<f64>();
     let surroundings = ModelSurroundings::new(model, field);
     patches
         .par_iter()
@@ -133,22 +121,4 @@ pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32
         )
         .map(|(sum, _)| sum)
         .reduce(|| vec![0.0; cells], |a, b| a.iter().zip(&b).map(|(x, y)| x + y).collect())
-}
-
-/// The luminance (cd/m²) seen from `p` along the unit `v`: the outgoing luminance, gathered
-/// as above, of the first surface point the ray meets, towards `p` (0 when it meets none
-/// or the back of a surface).
-pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3) -> f64 {
-    model
-        .faces
-        .landing(&model.mesh, &model.visibility, p, v, NO_FACE)
-        .and_then(|hit| {
-            let (q, i) = (hit.point, hit.facing?);
-            let s = &model.mesh.patches[i];
-            if !is_diffuse(&model.materials[s.material as usize]) {
-                return Some(ModelSurroundings::new(model, field).outgoing(i, q, -v, glossy::RAYS));
-            }
-            Some(outgoing(model, field, i, q, -v, &arriving(model, field, q, s)))
-        })
-        .unwrap_or(0.0)
 }

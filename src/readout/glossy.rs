@@ -60,9 +60,14 @@ impl<'a> ModelSurroundings<'a> {
     /// The outgoing luminance of patch `i` at its point `q` towards the unit `direction`,
     /// gathered over `rays` directions, cd/m².
     pub fn outgoing(&self, i: usize, q: DVec3, direction: DVec3, rays: usize) -> f64 {
-        let key = q.to_array().iter().fold(direction.x.to_bits(), |h, x| h.rotate_left(17) ^ x.to_bits());
-        final_gather(self, i, q, direction, rays, &mut Rng::keyed(key))
+        final_gather(self, i, q, direction, rays, &mut stream(q, direction))
     }
+}
+
+/// The random stream of a gather at `q` towards `direction`: keyed by both, so that a
+/// reading is reproducible.
+pub fn stream(q: DVec3, direction: DVec3) -> Rng {
+    Rng::keyed(q.to_array().iter().fold(direction.x.to_bits(), |h, x| h.rotate_left(17) ^ x.to_bits()))
 }
 
 impl Surroundings for ModelSurroundings<'_> {

@@ -3,7 +3,7 @@
 //!
 //! `L̄ = (1/Ω) ∫_cone L(p, ω) dω`,   `Ω = 2π (1 − cos α)`,   `α = fov/2`,
 //!
-//! where `L(p, ω)` is the luminance seen along `ω` (`gather::seen`: the outgoing
+//! where `L(p, ω)` is the luminance seen along `ω` (`luminance::seen`: the outgoing
 //! luminance, gathered from the solved field, of the first surface point the ray meets).
 //! The cone is cut into [`RINGS`] × [`SECTORS`] cells of equal solid angle (rings equal in
 //! `cos θ`, sectors equal in azimuth) and read along the centre of each, so `L̄` is the
@@ -14,7 +14,7 @@
 use crate::geometry::Frame;
 use crate::model::Model;
 use crate::readout::field::Field;
-use crate::readout::gather::seen;
+use crate::readout::luminance::seen;
 use glam::DVec3;
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -36,6 +36,6 @@ pub fn mean_luminance(model: &Model, field: &Field, p: DVec3, v: DVec3, fov_deg:
         let phi = 2.0 * PI * (sector as f64 + 0.5) / SECTORS as f64;
         frame.world(DVec3::new(sin * phi.cos(), sin * phi.sin(), cos))
     };
-    let total: f64 = (0..RINGS * SECTORS).into_par_iter().map(|cell| seen(model, field, p, direction(cell))).sum();
+    let total: f64 = (0..RINGS * SECTORS).into_par_iter().map(|cell| seen(model, field, p, direction(cell), 1)).sum();
     total / (RINGS * SECTORS) as f64
 }

@@ -11,5 +11,6 @@ pub mod gather;
 pub mod glossy;
 pub mod grid;
 pub mod illuminance;
+pub mod luminance;
 pub mod meter;
 pub mod probe;

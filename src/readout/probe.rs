@@ -5,7 +5,7 @@
 //!   the normal, and a luminance: on a surface (within `1e-4` of the scene's size, facing
 //!   the same way) that surface's outgoing luminance along its normal; in free space what a
 //!   luminance meter at the point aimed along the normal reads, with a vanishing field of
-//!   view (`gather::seen`: the first surface point the normal meets, towards the probe);
+//!   view (`luminance::seen`: the first surface point the normal meets, towards the probe);
 //! * `luminance_meter`: the mean luminance within its field of view (`meter.rs`), and the
 //!   illuminance on a receiver at the point facing the viewing direction;
 //! * `cylindrical`, `semi_cylindrical`: the illuminance of EN 12464-1 and EN 13201-2
@@ -16,7 +16,8 @@
 use crate::model::Model;
 use crate::readout::cylindrical::cylindrical;
 use crate::readout::field::Field;
-use crate::readout::gather::{incident_at, outgoing, plane_illuminance, seen, sum};
+use crate::readout::gather::{incident_at, plane_illuminance, sum};
+use crate::readout::luminance::{RELIT_RAYS, outgoing, seen};
 use crate::readout::meter::mean_luminance;
 use crate::scene::{Probe, ProbeKind};
 use glam::DVec3;
@@ -74,7 +75,7 @@ fn point(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (f64, (f64, f64), 
     let illuminance = PI * (incident.iter().sum::<f64>() + direct.iter().sum::<f64>());
     let luminance = match patch {
         Some(i) => outgoing(model, field, i, p, n, &sum(&incident, &direct)),
-        None => seen(model, field, p, n),
+        None => seen(model, field, p, n, RELIT_RAYS),
     };
     (luminance, (illuminance, PI * direct.iter().sum::<f64>()), patch)
 }

@@ -9,8 +9,11 @@
 use super::readings;
 use crate::support::over_parallelogram;
 use glam::DVec3;
-use ugo::geometry::Frame;
+use std::path::Path;
+use ugo::geometry::{Frame, Mesh};
 use ugo::material::MaterialModel;
+use ugo::scene::Scene;
+use ugo::trace::{TraceOptions, World, trace_probes};
 
 const FLOOR: MaterialModel = MaterialModel::Phong { diffuse: 0.1, specular: 0.8, exponent: 100.0 };
 const LAMP: f64 = 1000.0;
@@ -86,4 +89,32 @@ fn image_illuminance(p: DVec3, m: usize, n: usize) -> f64 {
         }
     }
     e
+}
+
+#[test]
+fn a_glossy_floor_under_a_panel_lit_by_its_image_reads_as_traced() {
+    // A white panel beside the lamp takes nearly all its light from the lamp's image in the
+    // floor. The field's one direction cell spreads the floor's reflection over the
+    // hemisphere, so the panel's stored luminance is wrong; the floor under it, whose lobe
+    // sees the panel, reads it right only where the panel's points are gathered again
+    // (`readout::luminance`, relit).
+    let panel = "[[material]]\nname = \"white\"\ntype = \"lambert\"\nreflectance = 0.8\n\
+                 [[surface]]\nname = \"panel\"\nshape = \"rectangle\"\nmaterial = \"white\"\n\
+                 origin = [0.3, 1, -0.5]\nedge_u = [0.7, 0, 0]\nedge_v = [0, 0, 1]\n";
+    let probes = [([0.65, 0.0, 0.0], [0.0, 1.0, 0.0]), ([0.8, 0.0, 0.3], [0.0, 1.0, 0.0])];
+    let text = lamp_over_glossy_floor(&probes) + panel;
+    let scene = Scene::parse(Path::new("cases/test.toml"), text.clone()).unwrap_or_else(|e| panic!("{e}"));
+    let world = World::new(&scene, Mesh::build(&scene.surfaces, scene.discretization.patch_size));
+    let traced = trace_probes(&world, &scene.probes, 1 << 21, &TraceOptions::default());
+    for (reading, estimate) in readings(&text).iter().zip(&traced) {
+        let (value, sigma) = estimate.luminance;
+        let error = reading.luminance / value - 1.0;
+        eprintln!(
+            "{}: {:.4} cd/m², traced {value:.4} ± {sigma:.4} ({:+.3} %)",
+            reading.name,
+            reading.luminance,
+            100.0 * error
+        );
+        assert!((reading.luminance - value).abs() < 0.01 * value + 3.0 * sigma, "{}: {error}", reading.name);
+    }
 }

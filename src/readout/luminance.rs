@@ -1,0 +1,149 @@
+//! The luminance of a surface point, and the luminance seen along a ray, read from the
+//! solved field (`design.md` §5).
+//!
+//! On a Lambertian surface the outgoing luminance towards `v` is `L_e + Σ_d ρ̄(k,d)
+//! (I_d + D_d)`, `k` the cell of `v` and `I_d + D_d` the light arriving at the point per
+//! cell (`gather.rs`), plus the light transmitted from the back of a transmitting surface:
+//! `ρ̄` is exact there. A glossy surface's luminance is its final gather with its own
+//! luminance factor (`glossy.rs`, [`glossy::RAYS`] directions), **relit**: the stored
+//! luminance of the surfaces its lobe meets is a leaf's cell value, and where those
+//! surfaces take their light from glossy ones it holds their reflections spread over a
+//! cell. So [`RELIT_RAYS`] of the lobe's directions are followed once more, each to the
+//! point it meets, whose own light is gathered there (a Lambertian point as above, a Phong
+//! or GGX point by its final gather), and the final gather is corrected by the mean
+//! difference `w (L_relit − L_stored)` over them (the same directions, sampled from one
+//! stream; a mirror's one direction is relit whole). A relit point's gather cuts along
+//! shadow edges more coarsely ([`RELIT_SHADOW_CUT`]): its errors average over the points.
+//! A luminance meter relits each of its directions once. The glossy Cornell floor seen from
+//! above, whose lobe meets the ceiling and the short block's foot 1 cm away, read 2.7 % low
+//! without it (`docs/hierarchy.md`).
+
+use crate::geometry::{Mesh, NO_TWIN};
+use crate::luminaire::Source;
+use crate::material::MaterialModel;
+use crate::model::Model;
+use crate::readout::field::Field;
+use crate::readout::final_gather::{Surroundings, indirect};
+use crate::readout::gather::{arriving, arriving_within};
+use crate::readout::glossy::{self, ModelSurroundings, PIECE_RAYS, has_lobe, is_diffuse, stream};
+use crate::visibility::{NO_FACE, Visibility};
+use glam::DVec3;
+
+/// Directions of a glossy point's lobe followed to the points they meet and gathered
+/// there again. The glossy Cornell floor read −0.2 % at 32 and −0.7 % at 64, against
+/// +0.6 % and −0.6 % with the lobe's component chosen at random (`docs/hierarchy.md`).
+pub const RELIT_RAYS: usize = 32;
+
+/// A relit point's gather cuts the pieces along shadow edges while their light exceeds
+/// this fraction of all it would receive unoccluded (a probe's own gather: `SHADOW_CUT`,
+/// 10⁻⁴): each of its uncut pieces errs by at most its share, either way, and the relit
+/// points' errors average.
+pub const RELIT_SHADOW_CUT: f64 = 1e-3;
+
+/// Outgoing luminance of patch `i` at point `q` towards `direction`, from the light
+/// `incident` on it per cell (and, for a transmitter, the light arriving at its back); a
+/// glossy surface's by its own luminance factor instead, relit over [`RELIT_RAYS`] directions.
+pub fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, incident: &[f64]) -> f64 {
+    if !is_diffuse(&model.materials[model.mesh.patches[i].material as usize]) {
+        return relit(model, field, i, q, direction, RELIT_RAYS);
+    }
+    lambertian(model, field, i, q, direction, incident)
+}
+
+/// The luminance (cd/m²) seen from `p` along the unit `v`: the outgoing luminance, gathered
+/// as above, of the first surface point the ray meets, towards `p` (0 when it meets none
+/// or the back of a surface); a glossy point relit over `relit` directions.
+pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3, relit_rays: usize) -> f64 {
+    model
+        .faces
+        .landing(&model.mesh, &model.visibility, p, v, NO_FACE)
+        .and_then(|hit| {
+            let (q, i) = (hit.point, hit.facing?);
+            let s = &model.mesh.patches[i];
+            if !is_diffuse(&model.materials[s.material as usize]) {
+                return Some(relit(model, field, i, q, -v, relit_rays));
+            }
+            Some(lambertian(model, field, i, q, -v, &arriving(model, field, q, s)))
+        })
+        .unwrap_or(0.0)
+}
+
+/// The Lambertian outgoing luminance of patch `i` at `q` towards `direction`.
+fn lambertian(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, incident: &[f64]) -> f64 {
+    let kernel = &model.kernel;
+    let patch = &model.mesh.patches[i];
+    let k = kernel.directions.lookup(patch.frame().local(direction));
+    let block = &kernel.blocks[kernel.patch_material[i] as usize];
+    let mut l = model.mesh.emission[i] + incident.iter().enumerate().map(|(d, e)| block.at(k, d) * e).sum::<f64>();
+    if block.transmits() && patch.twin != NO_TWIN {
+        let through = arriving(model, field, q, &model.mesh.patches[patch.twin as usize]);
+        l += through.iter().enumerate().map(|(d, e)| block.transmit_at(k, d).unwrap_or(0.0) * e).sum::<f64>();
+    }
+    l
+}
+
+/// A glossy patch `i`'s luminance at `q` towards `direction`: its final gather, corrected
+/// over `relit_rays` of its directions by the light gathered again where they land.
+fn relit(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, relit_rays: usize) -> f64 {
+    let stored = ModelSurroundings::new(model, field);
+    let gathered = stored.outgoing(i, q, direction, glossy::RAYS);
+    if relit_rays == 0 {
+        return gathered;
+    }
+    let again = Relit { model, field, stored: &stored };
+    let rng = stream(q, direction);
+    let fresh = indirect(&again, i, q, direction, relit_rays, &mut rng.clone());
+    let old = indirect(&stored, i, q, direction, relit_rays, &mut rng.clone());
+    gathered + fresh - old
+}
+
+/// The solved field as a final gather reads it, but with the light of every point a ray
+/// meets gathered at that point: a Lambertian point's from all the light arriving there, a
+/// Phong or GGX point's by its own final gather ([`PIECE_RAYS`] directions); a mirror's,
+/// and the back of a surface, as stored.
+struct Relit<'a> {
+    model: &'a Model,
+    field: &'a Field,
+    stored: &'a ModelSurroundings<'a>,
+}
+
+impl Surroundings for Relit<'_> {
+    fn mesh(&self) -> &Mesh {
+        self.stored.mesh()
+    }
+
+    fn visibility(&self) -> &Visibility {
+        self.stored.visibility()
+    }
+
+    fn material(&self, patch: usize) -> &MaterialModel {
+        self.stored.material(patch)
+    }
+
+    fn emitters(&self) -> &[u32] {
+        self.stored.emitters()
+    }
+
+    fn sources(&self) -> &[Source] {
+        self.stored.sources()
+    }
+
+    fn met(&self, q: DVec3, w: DVec3, face: u32) -> Option<(usize, f64)> {
+        let (model, field) = (self.model, self.field);
+        let sphere = model.kernel.directions.is_sphere();
+        let (j, y) = model.faces.landing_patch(&model.mesh, &model.visibility, q, w, face, sphere)?;
+        let s = &model.mesh.patches[j];
+        let material = self.material(j);
+        if s.normal.dot(w) >= 0.0 {
+            return self.stored.met(q, w, face);
+        }
+        if is_diffuse(material) {
+            let arriving = arriving_within(model, field, y, s, RELIT_SHADOW_CUT);
+            return Some((j, lambertian(model, field, j, y, -w, &arriving)));
+        }
+        if has_lobe(material) {
+            return Some((j, self.stored.outgoing(j, y, -w, PIECE_RAYS)));
+        }
+        self.stored.met(q, w, face)
+    }
+}
