@@ -4,6 +4,7 @@
 //! lighting scheme by: average, minimum, maximum and the uniformity `U0 = E_min/E_avg`.
 
 use crate::model::Model;
+use crate::progress::Progress;
 use crate::readout::field::Field;
 use crate::readout::gather::illuminance_at;
 use crate::scene::Grid;
@@ -29,10 +30,17 @@ pub struct GridStats {
 }
 
 impl GridReading {
-    /// The illuminance at every calculation point of `grid`.
-    pub fn of(grid: &Grid, model: &Model, field: &Field) -> GridReading {
+    /// The illuminance at every calculation point of `grid`, each point told to `progress`.
+    pub fn of(grid: &Grid, model: &Model, field: &Field, progress: &dyn Progress) -> GridReading {
         let points = grid.points();
-        let illuminance = points.iter().map(|&p| illuminance_at(model, field, p, grid.normal)).collect();
+        let illuminance = points
+            .iter()
+            .map(|&p| {
+                let e = illuminance_at(model, field, p, grid.normal);
+                progress.advance(1);
+                e
+            })
+            .collect();
         GridReading { grid: grid.clone(), points, illuminance }
     }
 
@@ -46,7 +54,10 @@ impl GridReading {
     }
 }
 
-/// Reads every grid of a scene from a solved field.
-pub fn read_grids(grids: &[Grid], model: &Model, field: &Field) -> Vec<GridReading> {
-    grids.iter().map(|g| GridReading::of(g, model, field)).collect()
+/// Reads every grid of a scene from a solved field, telling `progress` of each point.
+pub fn read_grids(grids: &[Grid], model: &Model, field: &Field, progress: &dyn Progress) -> Vec<GridReading> {
+    progress.begin("grid points", grids.iter().map(|g| g.points().len() as u64).sum());
+    let readings = grids.iter().map(|g| GridReading::of(g, model, field, progress)).collect();
+    progress.end();
+    readings
 }

@@ -14,6 +14,7 @@
 //! Each reading keeps the part of its illuminance that comes directly from the luminaires.
 
 use crate::model::Model;
+use crate::progress::Progress;
 use crate::readout::cylindrical::cylindrical;
 use crate::readout::field::Field;
 use crate::readout::gather::{incident_at, plane_illuminance, sum};
@@ -42,9 +43,19 @@ pub struct ProbeReading {
     pub patch: Option<usize>,
 }
 
-/// Reads every probe from a solved field.
-pub fn read_probes(probes: &[Probe], model: &Model, field: &Field) -> Vec<ProbeReading> {
-    probes.iter().map(|p| read(p, model, field)).collect()
+/// Reads every probe from a solved field, telling `progress` of each.
+pub fn read_probes(probes: &[Probe], model: &Model, field: &Field, progress: &dyn Progress) -> Vec<ProbeReading> {
+    progress.begin("probes", probes.len() as u64);
+    let readings = probes
+        .iter()
+        .map(|p| {
+            let reading = read(p, model, field);
+            progress.advance(1);
+            reading
+        })
+        .collect();
+    progress.end();
+    readings
 }
 
 fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {

@@ -53,7 +53,7 @@ pub fn solve_light_scenes(
         let parts: Vec<(f64, &SourceTerm)> = light_scene.factors.iter().copied().zip(&terms).collect();
         let relit = model.relight(dimmed(scene, &base, light_scene), SourceTerm::superpose(&parts));
         own.get_or_insert(relit);
-        scenes.push(read_out(scene, model, light_scene, &fields));
+        scenes.push(read_out(scene, model, light_scene, &fields, progress));
     }
     if let Some((sources, term)) = own {
         model.relight(sources, term);
@@ -105,7 +105,13 @@ pub fn dimmed(scene: &Scene, base: &[Source], light_scene: &LightScene) -> Vec<S
 }
 
 /// The light scene's field `Σ_g f_g x_g` and its readouts on `model`, relit by it.
-fn read_out(scene: &Scene, model: &Model, light_scene: &LightScene, groups: &[GroupField]) -> LightSceneField {
+fn read_out(
+    scene: &Scene,
+    model: &Model,
+    light_scene: &LightScene,
+    groups: &[GroupField],
+    progress: &dyn Progress,
+) -> LightSceneField {
     let mut x = vec![0.0; model.l0.len()];
     for (&f, group) in light_scene.factors.iter().zip(groups) {
         x.iter_mut().zip(&group.solve.x).for_each(|(x, g)| *x += f * g);
@@ -120,8 +126,8 @@ fn read_out(scene: &Scene, model: &Model, light_scene: &LightScene, groups: &[Gr
         illuminance: patch_illuminance(&arriving(model, &x), k),
         direct_illuminance: patch_illuminance(&model.direct.arriving, k),
         energy: EnergyBalance::of(model, &x, scene.surfaces.len()),
-        probes: read_probes(&scene.probes, model, &field),
-        grids: read_grids(&scene.grids, model, &field),
+        probes: read_probes(&scene.probes, model, &field, progress),
+        grids: read_grids(&scene.grids, model, &field, progress),
         field,
     }
 }

@@ -175,8 +175,8 @@ pub fn solve_case(
     let field = Field::from_unknowns(&x, k);
     let illuminance = patch_illuminance(&arriving(&model, &x), k);
     let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
-    let probes = read_probes(&scene.probes, &model, &field);
-    let grids = read_grids(&scene.grids, &model, &field);
+    let probes = read_probes(&scene.probes, &model, &field, progress);
+    let grids = read_grids(&scene.grids, &model, &field, progress);
     let daylight = scene.sky.as_ref().map(|sky| read_daylight(&model, sky, &probes, &grids));
     let mut solved = Solved {
         model,

@@ -17,6 +17,7 @@ use glam::DVec3;
 use std::path::Path;
 use ugo::luminaire::{Light, LuminaireKind};
 use ugo::model::{Model, ModelOptions};
+use ugo::progress::Silent;
 use ugo::readout::daylight::sky_and_ground;
 use ugo::readout::field::Field;
 use ugo::readout::probe::read_probes;
@@ -160,7 +161,7 @@ fn check(case: &str, files: &[&str]) -> Vec<String> {
     // The case's own sky (overcast) through the whole solve: the black room's probes read
     // exactly the sky and ground through the openings.
     let x = solve_model(&model, scene.solver.method);
-    let probes = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()));
+    let probes = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()), &Silent);
     for r in &probes {
         let direct = percent(&model, r.position, r.normal);
         assert!((100.0 * r.illuminance / 10_000.0 - direct).abs() < 1e-9, "{case} {}: solved", r.name);

@@ -15,6 +15,7 @@ mod reflection;
 use std::path::Path;
 use ugo::kernel::{Explicit, Factored};
 use ugo::model::{Model, ModelOptions};
+use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::{ProbeReading, read_probes};
 use ugo::scene::Scene;
@@ -36,7 +37,7 @@ pub fn solved(name: &str) -> Solved {
     let scene = Scene::load(&Path::new("cases/cie171").join(format!("{name}.toml"))).unwrap_or_else(|e| panic!("{e}"));
     let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).expect("fits in memory");
     let x = solve_model(&model, scene.solver.method);
-    let probes = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()));
+    let probes = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()), &Silent);
     Solved { scene, model, x, probes }
 }
 

@@ -4,6 +4,7 @@
 use super::{compare, solved};
 use ugo::luminaire::Light;
 use ugo::photometry::Distribution;
+use ugo::progress::Silent;
 use ugo::readout::probe::read_probes;
 
 /// CIE 171:2006 Table 11, lx.
@@ -38,7 +39,7 @@ fn an_analytic_lambertian_source_gives_the_closed_form_exactly() {
     *distribution = Distribution::Lambertian { peak: 1000.0 };
     let exact = |x: f64, z: f64| 1000.0 * 9.0 / (9.0 + x * x + z * z).powi(2);
     let field = ugo::readout::field::Field::from_unknowns(&s.x, 1);
-    for (probe, reading) in s.scene.probes.iter().zip(read_probes(&s.scene.probes, &s.model, &field)) {
+    for (probe, reading) in s.scene.probes.iter().zip(read_probes(&s.scene.probes, &s.model, &field, &Silent)) {
         let e = exact(probe.position.x, probe.position.z);
         assert!((reading.illuminance / e - 1.0).abs() < 1e-12, "{}: {} vs {e}", probe.name, reading.illuminance);
         let file = s.probe(&probe.name).illuminance;

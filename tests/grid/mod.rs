@@ -6,6 +6,7 @@ use crate::support::{build, corner_factor, lambert, rectangle, scene, scratch, s
 use glam::DVec3;
 use std::f64::consts::PI;
 use ugo::geometry::Emission;
+use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::grid::GridReading;
 use ugo::scene::Grid;
@@ -44,7 +45,7 @@ fn check_against_closed_form(floor: bool) {
     let scene = lamp_scene(floor);
     let model = build(&scene);
     let field = Field::from_unknowns(&solve(&model), 1);
-    let reading = GridReading::of(&grid(0.0), &model, &field);
+    let reading = GridReading::of(&grid(0.0), &model, &field, &Silent);
     assert_eq!(reading.points.len(), 20);
     for (p, e) in reading.points.iter().zip(&reading.illuminance) {
         let reference = exact(1000.0, (0.0, 1.0), (0.0, 1.0), 1.0, p.x, p.z);

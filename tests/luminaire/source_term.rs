@@ -12,6 +12,7 @@ use ugo::kernel::Factored;
 use ugo::luminaire::direct_light;
 use ugo::material::MaterialModel;
 use ugo::photometry::Distribution;
+use ugo::progress::Silent;
 use ugo::readout::energy::EnergyBalance;
 use ugo::readout::field::Field;
 use ugo::readout::illuminance::patch_illuminance;
@@ -148,7 +149,7 @@ fn shadows_are_cast_on_patches_and_at_probes() {
     s.probes.push(Probe::point("sun", DVec3::new(1.75, 0.0, 1.0), DVec3::Y));
     let model = build(&s);
     let x = solved(&model);
-    let probes = read_probes(&s.probes, &model, &Field::from_unknowns(&x, 1));
+    let probes = read_probes(&s.probes, &model, &Field::from_unknowns(&x, 1), &Silent);
     assert_eq!(probes[0].direct, 0.0, "behind the blocker");
     let d: f64 = (DVec3::new(1.75, 0.0, 1.0) - DVec3::new(0.75, 2.0, 1.0)).length();
     assert!((probes[1].direct - 100.0 * 2.0 / d.powi(3)).abs() < 1e-9, "I cosθ / r²: {}", probes[1].direct);
@@ -200,7 +201,7 @@ fn a_probe_on_a_lit_floor_reads_rho_e_over_pi() {
     s.probes.push(Probe::point("p", DVec3::new(1.3, 0.0, 0.4), DVec3::Y));
     let model = build(&s);
     let x = solved(&model);
-    let probe = &read_probes(&s.probes, &model, &Field::from_unknowns(&x, 1))[0];
+    let probe = &read_probes(&s.probes, &model, &Field::from_unknowns(&x, 1), &Silent)[0];
     let r = DVec3::new(1.3 - 0.6, -1.2, 0.4 - 0.9);
     let exact = 500.0 * (1.2 / r.length()).powi(2) / r.length_squared();
     assert!(probe.patch.is_some());

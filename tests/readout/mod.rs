@@ -7,6 +7,7 @@ mod meter;
 
 use crate::support::{build, solve};
 use std::path::Path;
+use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::{ProbeReading, read_probes};
 use ugo::scene::Scene;
@@ -19,7 +20,7 @@ fn readings(text: &str) -> Vec<ProbeReading> {
     let black = model.l0.iter().all(|&l| l == 0.0);
     let x = if black { vec![0.0; model.l0.len()] } else { solve(&model) };
     let field = Field::from_unknowns(&x, model.kernel.cells());
-    read_probes(&scene.probes, &model, &field)
+    read_probes(&scene.probes, &model, &field, &Silent)
 }
 
 /// A closed box `[0, side]³` seen from inside, of reflectance `rho`, each face emitting

@@ -7,6 +7,7 @@
 use crate::cie171::solve_model;
 use std::path::Path;
 use ugo::model::{Model, ModelOptions};
+use ugo::progress::Silent;
 use ugo::readout::daylight::{DaylightReadings, read_daylight};
 use ugo::readout::field::Field;
 use ugo::readout::grid::read_grids;
@@ -29,8 +30,8 @@ fn daylight(scene: &Scene) -> DaylightReadings {
     let model = Model::build(scene, &ModelOptions::of(scene), &ugo::progress::Silent).expect("fits");
     let x = solve_model(&model, scene.solver.method);
     let field = Field::from_unknowns(&x, model.kernel.cells());
-    let probes = read_probes(&scene.probes, &model, &field);
-    let grids = read_grids(&scene.grids, &model, &field);
+    let probes = read_probes(&scene.probes, &model, &field, &Silent);
+    let grids = read_grids(&scene.grids, &model, &field, &Silent);
     read_daylight(&model, scene.sky.as_ref().unwrap(), &probes, &grids)
 }
 

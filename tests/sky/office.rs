@@ -9,6 +9,7 @@ use crate::cie171::solve_model;
 use std::f64::consts::PI;
 use std::path::Path;
 use ugo::model::{Model, ModelOptions};
+use ugo::progress::Silent;
 use ugo::readout::daylight::{read_daylight, stats};
 use ugo::readout::field::Field;
 use ugo::readout::grid::read_grids;
@@ -28,8 +29,8 @@ fn the_daylit_office_receives_the_flux_of_its_window_and_its_components_add_up()
 
     let x = solve_model(&model, scene.solver.method);
     let field = Field::from_unknowns(&x, model.kernel.cells());
-    let probes = read_probes(&scene.probes, &model, &field);
-    let grids = read_grids(&scene.grids, &model, &field);
+    let probes = read_probes(&scene.probes, &model, &field, &Silent);
+    let grids = read_grids(&scene.grids, &model, &field, &Silent);
     let d = read_daylight(&model, sky, &probes, &grids);
     for (p, x) in probes.iter().zip(&d.probes) {
         eprintln!(

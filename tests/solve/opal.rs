@@ -19,6 +19,7 @@ use std::f64::consts::PI;
 use std::path::Path;
 use ugo::directions::DirectionSet;
 use ugo::model::Model;
+use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::{ProbeReading, read_probes};
 use ugo::scene::Scene;
@@ -47,7 +48,7 @@ fn opal() -> Scene {
 fn readings(scene: &Scene, model: &Model) -> (Vec<ProbeReading>, Vec<(usize, f64)>) {
     let x = solve(model);
     let k = model.kernel.cells();
-    let probes = read_probes(&scene.probes, model, &Field::from_unknowns(&x, k));
+    let probes = read_probes(&scene.probes, model, &Field::from_unknowns(&x, k), &Silent);
     let p = &model.mesh.patches;
     let top = (0..p.len()).filter(|&i| p[i].surface == 1 && p[i].normal.y > 0.0);
     (probes, top.map(|i| (i, x[i * k])).collect())

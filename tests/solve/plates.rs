@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 use std::path::Path;
 use ugo::kernel::Factored;
 use ugo::model::{Model, ModelOptions};
+use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::read_probes;
 use ugo::scene::Scene;
@@ -31,7 +32,7 @@ fn receiver_illuminance_is_pi_l_f() {
     assert!((mean / exact - 1.0).abs() < 5e-3);
 
     let field = Field::from_unknowns(&x, 1);
-    let probe = &read_probes(&scene.probes, &model, &field)[0];
+    let probe = &read_probes(&scene.probes, &model, &field, &Silent)[0];
     let centre = PI * 1000.0 * 4.0 * corner_factor(0.5, 0.5, 1.0);
     assert!(probe.patch.is_some(), "the probe lies on the receiver");
     assert_eq!(probe.normal, DVec3::new(0.0, 0.0, -1.0));

@@ -10,6 +10,7 @@ use ugo::io::LightSceneField;
 use ugo::kernel::Factored;
 use ugo::luminaire::direct_light;
 use ugo::model::{Model, ModelOptions};
+use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::grid::read_grids;
 use ugo::readout::illuminance::{arriving, patch_illuminance};
@@ -235,11 +236,11 @@ fn on_a_fixed_hierarchy_a_light_scene_equals_the_solve_of_its_dimmed_sources() {
         let field = Field::from_unknowns(&x, k);
         let reference = Readouts {
             illuminance: patch_illuminance(&arriving(model, &x), k),
-            probes: read_probes(&scene.probes, model, &field)
+            probes: read_probes(&scene.probes, model, &field, &Silent)
                 .iter()
                 .flat_map(|p| [p.luminance, p.illuminance, p.direct])
                 .collect(),
-            grid: read_grids(&scene.grids, model, &field)[0].illuminance.clone(),
+            grid: read_grids(&scene.grids, model, &field, &Silent)[0].illuminance.clone(),
             field: x,
         };
         let index = scene.lighting.scenes.iter().position(|l| l.name == light_scene.name).unwrap();

@@ -16,6 +16,7 @@ use std::path::Path;
 use ugo::geometry::{ConvexPolygon, Mesh};
 use ugo::luminaire::LuminaireKind;
 use ugo::model::{Model, ModelOptions};
+use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::read_probes;
 use ugo::scene::Scene;
@@ -146,7 +147,7 @@ fn in_the_daylit_office_the_traced_probes_agree_with_the_solve() {
     scene.discretization.patch_size = 0.5;
     let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).expect("fits");
     let x = solve_model(&model, scene.solver.method);
-    let solved = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()));
+    let solved = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()), &Silent);
     for (probe, (value, error)) in solved.iter().zip(traced(&scene, 0.5, 40_000)) {
         let d = probe.illuminance - value;
         let allowed = 3.0 * error + DISCRETIZATION * value;
