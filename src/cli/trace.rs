@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 use ugo::geometry::Mesh;
 use ugo::io::{EstimateFile, auto_exposure, write_estimate, write_exr_as, write_png};
 use ugo::model::ModelOptions;
-use ugo::scene::Scene;
+use ugo::scene::{ProbeKind, Scene};
 use ugo::trace::{TraceOptions, World, trace_camera, trace_photons, trace_probes};
 
 /// What `ugo trace` was asked for.
@@ -178,7 +178,10 @@ fn probes(scene: &Scene, world: &World, job: &TraceJob) -> Result<()> {
         bail!("--probe-samples must be at least 2 (standard errors need two samples)");
     }
     let start = std::time::Instant::now();
-    let readings = trace_probes(world, &scene.probes, job.probe_samples, &job.options);
+    let sensors = scene.probes.iter().filter(|p| p.kind == ProbeKind::Point).count() as u64;
+    let progress = bar(2 * sensors * job.probe_samples as u64, "probe paths");
+    let readings = trace_probes(world, &scene.probes, job.probe_samples, &job.options, &|n| progress.inc(n));
+    progress.finish_and_clear();
     println!(
         "  probes ({} paths each, {:.2} s)     luminance cd/m²            illuminance lx",
         job.probe_samples,

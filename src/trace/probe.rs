@@ -34,18 +34,40 @@ pub struct ProbeEstimate {
 
 /// Reads every point sensor (`kind = "point"`; the other kinds have no estimator here)
 /// with `samples` paths for each quantity; probe `p`'s streams are keyed by `(seed, 2p)`
-/// and `(seed, 2p + 1)`.
-pub fn trace_probes(world: &World, probes: &[Probe], samples: usize, options: &TraceOptions) -> Vec<ProbeEstimate> {
+/// and `(seed, 2p + 1)`. `progress(paths)` hears of every [`REPORT`] paths done, `2 ×
+/// samples` per point sensor in all.
+pub fn trace_probes(
+    world: &World,
+    probes: &[Probe],
+    samples: usize,
+    options: &TraceOptions,
+    progress: &(dyn Fn(u64) + Sync),
+) -> Vec<ProbeEstimate> {
     let point = |(_, probe): &(usize, &Probe)| probe.kind == ProbeKind::Point;
     probes
         .par_iter()
         .enumerate()
         .filter(point)
-        .map(|(i, probe)| read(world, probe, i as u64, samples, options))
+        .map(|(i, probe)| read(world, probe, i as u64, samples, options, progress))
         .collect()
 }
 
-fn read(world: &World, probe: &Probe, index: u64, samples: usize, options: &TraceOptions) -> ProbeEstimate {
+/// Paths between two reports of progress.
+pub const REPORT: usize = 4096;
+
+fn read(
+    world: &World,
+    probe: &Probe,
+    index: u64,
+    samples: usize,
+    options: &TraceOptions,
+    progress: &(dyn Fn(u64) + Sync),
+) -> ProbeEstimate {
+    let report = |s: usize| {
+        if (s + 1) % REPORT == 0 || s + 1 == samples {
+            progress((s % REPORT + 1) as u64);
+        }
+    };
     let (p, n) = (probe.position, probe.normal);
     let delta = standoff(&world.mesh);
     // The patch under the probe, when it lies on a surface facing the same way.
@@ -54,18 +76,19 @@ fn read(world: &World, probe: &Probe, index: u64, samples: usize, options: &Trac
     let mut rays = 0;
     let mut rng = Rng::stream(options.seed, 2 * index);
     let mut luminance = Tally::default();
-    for _ in 0..samples {
+    for s in 0..samples {
         let l = match under {
             Some(_) => luminance_along(world, Start::eye(p + n * delta, -n), &mut rng, options, &mut rays),
             None => luminance_along(world, Start::eye(p, n), &mut rng, options, &mut rays),
         };
         luminance.add(l);
+        report(s);
     }
     let frame = Frame::around(n);
     let direct = world.luminaires.illuminance(&world.visibility, p, n, ignore);
     let mut rng = Rng::stream(options.seed, 2 * index + 1);
     let mut illuminance = Tally::default();
-    for _ in 0..samples {
+    for s in 0..samples {
         let mut e = direct;
         if let Some(light) = world.emitters.sample_towards(&world.mesh, p, rng.uniform3()) {
             let cos = n.dot(light.direction);
@@ -81,6 +104,7 @@ fn read(world: &World, probe: &Probe, index: u64, samples: usize, options: &Trac
         let start = Start { origin: p, direction: d, ignore, drawn: Some(local.z * FRAC_1_PI) };
         e += PI * luminance_along(world, start, &mut rng, options, &mut rays);
         illuminance.add(e);
+        report(s);
     }
     let n = samples as u64;
     ProbeEstimate {

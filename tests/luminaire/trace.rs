@@ -33,7 +33,7 @@ fn backward_paths_and_probes_gather_luminaires_exactly() {
         1000.0 * (r.y / r.length()).powi(2) / r.length_squared()
     };
     let q = DVec3::new(0.5, 0.0, 0.4);
-    let reading = &trace_probes(&world, &s.probes, 64, &TraceOptions::default())[0];
+    let reading = &trace_probes(&world, &s.probes, 64, &TraceOptions::default(), &|_| {})[0];
     assert!(
         (reading.illuminance.0 / exact(q) - 1.0).abs() < 1e-9 && reading.illuminance.1 < 1e-9 * exact(q),
         "{reading:?}"

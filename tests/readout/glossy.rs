@@ -105,7 +105,7 @@ fn a_glossy_floor_under_a_panel_lit_by_its_image_reads_as_traced() {
     let text = lamp_over_glossy_floor(&probes) + panel;
     let scene = Scene::parse(Path::new("cases/test.toml"), text.clone()).unwrap_or_else(|e| panic!("{e}"));
     let world = World::new(&scene, Mesh::build(&scene.surfaces, scene.discretization.patch_size));
-    let traced = trace_probes(&world, &scene.probes, 1 << 21, &TraceOptions::default());
+    let traced = trace_probes(&world, &scene.probes, 1 << 21, &TraceOptions::default(), &|_| {});
     for (reading, estimate) in readings(&text).iter().zip(&traced) {
         let (value, sigma) = estimate.luminance;
         let error = reading.luminance / value - 1.0;

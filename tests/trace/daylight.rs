@@ -75,7 +75,10 @@ fn brute_force(sky: &Sky, glazing: &Glazing, p: DVec3, n: DVec3, m: usize) -> f6
 
 fn traced(scene: &Scene, patch_size: f64, samples: usize) -> Vec<(f64, f64)> {
     let world = World::new(scene, Mesh::build(&scene.surfaces, patch_size));
-    trace_probes(&world, &scene.probes, samples, &TraceOptions::default()).into_iter().map(|r| r.illuminance).collect()
+    trace_probes(&world, &scene.probes, samples, &TraceOptions::default(), &|_| {})
+        .into_iter()
+        .map(|r| r.illuminance)
+        .collect()
 }
 
 #[test]
@@ -129,7 +132,7 @@ fn behind_masks_outside_the_traced_probes_read_what_the_solve_takes_through_the_
     for case in ["cases/cie171/5.13-overhang-1.0.toml", "cases/cie171/5.14-facing-wall-6.toml"] {
         let scene = Scene::load(Path::new(case)).unwrap();
         let world = World::new(&scene, Mesh::build(&scene.surfaces, 1.0));
-        let traced = trace_probes(&world, &scene.probes, 20_000, &TraceOptions::default());
+        let traced = trace_probes(&world, &scene.probes, 20_000, &TraceOptions::default(), &|_| {});
         for (probe, reading) in scene.probes.iter().zip(traced) {
             let (value, error) = reading.illuminance;
             let expected = through_windows(&world, &scene, probe.position, probe.normal);

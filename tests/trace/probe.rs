@@ -5,6 +5,7 @@
 use crate::solve::opal::{LUMINANCE, TAU, exact_above, factor};
 use std::f64::consts::PI;
 use std::path::Path;
+use std::sync::atomic::{AtomicU64, Ordering};
 use ugo::geometry::Mesh;
 use ugo::scene::Scene;
 use ugo::trace::{TraceOptions, World, trace_probes};
@@ -13,7 +14,10 @@ use ugo::trace::{TraceOptions, World, trace_probes};
 fn probes_read_the_opal_closed_forms() {
     let scene = Scene::load(Path::new("cases/opal-diffuser.toml")).unwrap();
     let world = World::new(&scene, Mesh::build(&scene.surfaces, scene.discretization.patch_size));
-    let r = trace_probes(&world, &scene.probes, 65_536, &TraceOptions::default());
+    let paths = AtomicU64::new(0);
+    let count = |n| _ = paths.fetch_add(n, Ordering::Relaxed);
+    let r = trace_probes(&world, &scene.probes, 65_536, &TraceOptions::default(), &count);
+    assert_eq!(paths.into_inner(), 2 * 65_536 * scene.probes.len() as u64, "progress hears of every path");
     let centre = factor(0.5, 0.5);
     let checks = [
         ("illuminance under the panel", r[0].illuminance, PI * LUMINANCE * centre),
