@@ -64,7 +64,7 @@ fn read(
     progress: &(dyn Fn(u64) + Sync),
 ) -> ProbeEstimate {
     let report = |s: usize| {
-        if (s + 1) % REPORT == 0 || s + 1 == samples {
+        if (s + 1).is_multiple_of(REPORT) || s + 1 == samples {
             progress((s % REPORT + 1) as u64);
         }
     };
