@@ -566,8 +566,8 @@ def hall_lights_and_readings(case):
     case.camera("from the back", (6.0, tier(ROWS)[0] + 1.7, d - 0.6), (6.0, 1.4, 0), 62, (800, 500))
 
 
-def hall_case(name, description, header, seats, materials, hierarchy=None):
-    case = Case(name, description, header, patch_size=0.5, hierarchy=hierarchy)
+def hall_case(name, description, header, seats, materials, patch_size=0.5, hierarchy=None):
+    case = Case(name, description, header, patch_size=patch_size, hierarchy=hierarchy)
     for material, rho in [("floor", 0.25), ("ceiling", 0.75), ("wall", 0.55), ("desk", 0.5), ("wood", 0.35),
                           ("metal", 0.4), ("board", 0.12), ("door", 0.35)] + materials:
         case.material(material, rho)
@@ -593,9 +593,13 @@ HALL_HEADER = [
 
 
 def lecture_hall():
-    header = HALL_HEADER + ["Seats are boxes (pan and back); patch size 0.5 m."]
+    header = HALL_HEADER + [
+        "Seats are boxes (pan and back). Solved with the hierarchical kernel: roots of 1 m, link",
+        "tolerance 3e-2, smallest element 0.25 m (docs/hierarchy.md: every probe within 0.9 %",
+        "of `ugo trace` in 72 s; the explicit kernel at 0.5 m: within 0.5 % in 152 s, 2x the",
+        "memory; `--link-tolerance 1e-2`: within 0.6 % in 107 s)."]
     return hall_case("lecture hall", "Tiered lecture hall, 140 box seats, 32 downlights of 6,000 lm", header,
-                     box_seat, [("seat", 0.15)])
+                     box_seat, [("seat", 0.15)], patch_size=1.0, hierarchy=(3e-2, 0.25))
 
 
 # ----------------------------------------------------------------------------- the meshed seats
