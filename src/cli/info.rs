@@ -58,5 +58,11 @@ fn print_forecast(f: &Forecast, assembly: &str) {
         println!("  non-zeros of G     {:>12.4e}", f.nonzeros);
     }
     println!("  unknowns           {:>12.4e}   ({} cells)", f.unknowns, f.cells);
-    println!("  memory at peak     {:>12}", bytes(f.peak_bytes()));
+    match f.leaves {
+        Some(_) => println!(
+            "  memory before links{:>12}   (the links' memory is checked against the limit after each refinement pass)",
+            bytes(f.peak_bytes())
+        ),
+        None => println!("  memory at peak     {:>12}", bytes(f.peak_bytes())),
+    }
 }

@@ -125,6 +125,7 @@ fn a_model_over_the_memory_limit_is_refused_before_meshing_with_its_estimate() {
     let o = ugo(&["info", case, "--assembly", "hierarchical", "--smallest", "0.001"]);
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(out.contains("leaves at most") && out.contains("2.4000e7"), "{out}");
+    assert!(out.contains("memory before links") && !out.contains("memory at peak"), "{out}");
 }
 
 #[test]
