@@ -47,8 +47,8 @@ pub fn has_lobe(material: &MaterialModel) -> bool {
 
 /// A model and its solved field as a final gather reads them.
 pub struct ModelSurroundings<'a> {
-    model: &'a Model,
-    field: &'a Field,
+    pub model: &'a Model,
+    pub field: &'a Field,
     emitters: Vec<u32>,
 }
 
@@ -61,6 +61,12 @@ impl<'a> ModelSurroundings<'a> {
     /// gathered over `rays` directions, cd/m².
     pub fn outgoing(&self, i: usize, q: DVec3, direction: DVec3, rays: usize) -> f64 {
         final_gather(self, i, q, direction, rays, &mut stream(q, direction))
+    }
+
+    /// Patch `j`'s stored luminance in the cell of `-w` (seen along `w`), cd/m².
+    pub fn stored(&self, j: usize, w: DVec3) -> f64 {
+        let directions = &self.model.kernel.directions;
+        self.field.at(j, directions.lookup(self.model.mesh.patches[j].frame().local(-w)))
     }
 }
 
@@ -93,10 +99,8 @@ impl Surroundings for ModelSurroundings<'_> {
 
     fn met(&self, q: DVec3, w: DVec3, face: u32) -> Option<(usize, f64)> {
         let model = self.model;
-        let directions = &model.kernel.directions;
-        let sphere = directions.is_sphere();
+        let sphere = model.kernel.directions.is_sphere();
         let (j, _) = model.faces.landing_patch(&model.mesh, &model.visibility, q, w, face, sphere)?;
-        let k = directions.lookup(model.mesh.patches[j].frame().local(-w));
-        Some((j, self.field.at(j, k)))
+        Some((j, self.stored(j, w)))
     }
 }

@@ -52,7 +52,7 @@ pub fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVe
 
 /// The luminance (cd/m²) seen from `p` along the unit `v`: the outgoing luminance, gathered
 /// as above, of the first surface point the ray meets, towards `p` (0 when it meets none
-/// or the back of a surface); a glossy point relit over `relit` directions.
+/// or the back of a surface); a glossy point relit over `relit_rays` directions.
 pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3, relit_rays: usize) -> f64 {
     model
         .faces
@@ -90,7 +90,7 @@ fn relit(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, rel
     if relit_rays == 0 {
         return gathered;
     }
-    let again = Relit { model, field, stored: &stored };
+    let again = Relit { stored: &stored };
     let rng = stream(q, direction);
     let fresh = indirect(&again, i, q, direction, relit_rays, &mut rng.clone());
     let old = indirect(&stored, i, q, direction, relit_rays, &mut rng.clone());
@@ -102,8 +102,6 @@ fn relit(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, rel
 /// Phong or GGX point's by its own final gather ([`PIECE_RAYS`] directions); a mirror's,
 /// and the back of a surface, as stored.
 struct Relit<'a> {
-    model: &'a Model,
-    field: &'a Field,
     stored: &'a ModelSurroundings<'a>,
 }
 
@@ -129,21 +127,20 @@ impl Surroundings for Relit<'_> {
     }
 
     fn met(&self, q: DVec3, w: DVec3, face: u32) -> Option<(usize, f64)> {
-        let (model, field) = (self.model, self.field);
+        let (model, field) = (self.stored.model, self.stored.field);
         let sphere = model.kernel.directions.is_sphere();
         let (j, y) = model.faces.landing_patch(&model.mesh, &model.visibility, q, w, face, sphere)?;
         let s = &model.mesh.patches[j];
         let material = self.material(j);
-        if s.normal.dot(w) >= 0.0 {
-            return self.stored.met(q, w, face);
-        }
-        if is_diffuse(material) {
-            let arriving = arriving_within(model, field, y, s, RELIT_SHADOW_CUT);
-            return Some((j, lambertian(model, field, j, y, -w, &arriving)));
-        }
-        if has_lobe(material) {
-            return Some((j, self.stored.outgoing(j, y, -w, PIECE_RAYS)));
-        }
-        self.stored.met(q, w, face)
+        let light = if s.normal.dot(w) >= 0.0 {
+            self.stored.stored(j, w)
+        } else if is_diffuse(material) {
+            lambertian(model, field, j, y, -w, &arriving_within(model, field, y, s, RELIT_SHADOW_CUT))
+        } else if has_lobe(material) {
+            self.stored.outgoing(j, y, -w, PIECE_RAYS)
+        } else {
+            self.stored.stored(j, w)
+        };
+        Some((j, light))
     }
 }
