@@ -596,8 +596,8 @@ def lecture_hall():
     header = HALL_HEADER + [
         "Seats are boxes (pan and back). Solved with the hierarchical kernel: roots of 1 m, link",
         "tolerance 3e-2, smallest element 0.25 m (docs/hierarchy.md: every probe within 0.9 %",
-        "of `ugo trace` in 49 s; the explicit kernel at 0.5 m: within 0.5 % in 152 s, 2x the",
-        "memory; `--link-tolerance 1e-2`: within 0.6 % in 107 s)."]
+        "of `ugo trace` in 37 s; the explicit kernel at 0.5 m: within 0.5 % in 152 s, 2x the",
+        "memory; `--link-tolerance 1e-2`: within 0.6 %)."]
     return hall_case("lecture hall", "Tiered lecture hall, 140 box seats, 32 downlights of 6,000 lm", header,
                      box_seat, [("seat", 0.15)], patch_size=1.0, hierarchy=(3e-2, 0.25))
 

@@ -8,6 +8,7 @@ mod explicit;
 mod growth;
 mod model;
 mod plates;
+mod push;
 mod spectrum;
 mod transpose;
 

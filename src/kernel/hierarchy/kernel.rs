@@ -9,6 +9,7 @@ use super::link::Link;
 use super::node::NONE;
 use super::operator::Operator;
 use super::oracle::Oracle;
+use super::push::SeenCache;
 use super::refine::{Settings, children_pairs, refine, split_node};
 use super::tree::Tree;
 use crate::directions::DirectionSet;
@@ -74,6 +75,8 @@ pub struct Hierarchy {
     /// Each node's closure rays (`transfer::closure`), measured when it is first a leaf of
     /// an operator; `None` until then.
     closure: Vec<Option<Closure>>,
+    /// The push's weights of the last operator (`push.rs`).
+    seen: SeenCache,
     history: Vec<Pass>,
 }
 
@@ -105,6 +108,7 @@ impl Hierarchy {
             options,
             oracle,
             closure: Vec::new(),
+            seen: SeenCache::default(),
             history: Vec::new(),
         };
         let roots: Vec<u32> = (0..roots.len() as u32).collect();
@@ -251,7 +255,7 @@ impl Hierarchy {
     /// `K` on the current leaves, balanced to their closures unless `options.balance` is
     /// off (the rays of new leaves' closures count in the last pass's).
     pub fn operator(&mut self) -> Operator {
-        let mut operator = Operator::new(&self.tree, &self.links, &self.blocks, &self.directions);
+        let mut operator = Operator::new(&self.tree, &self.links, &self.blocks, &self.directions, &mut self.seen);
         if self.options.balance {
             let leaves = operator.leaves().to_vec();
             let rays = self.measure_closure(&leaves);

@@ -34,5 +34,6 @@ pub use link::{ALL_CELLS, Link, Piece};
 pub use node::{Kind, NONE, Node};
 pub use operator::Operator;
 pub use oracle::sample_points;
+pub use push::SeenCache;
 pub use sight::Sight;
 pub use tree::Tree;

@@ -9,7 +9,7 @@
 
 use super::link::{ALL_CELLS, Link};
 use super::node::{Kind, NONE};
-use super::push::push_rows;
+use super::push::{SeenCache, push_rows};
 use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::kernel::blocks::apply_blocks;
@@ -73,8 +73,15 @@ pub struct Operator {
 }
 
 impl Operator {
-    /// The operator of `links` over the leaves of `tree`.
-    pub fn new(tree: &Tree, links: &[Link], blocks: &[Block], directions: &DirectionSet) -> Operator {
+    /// The operator of `links` over the leaves of `tree`; the push's weights are kept in
+    /// `seen` from one build to the next.
+    pub fn new(
+        tree: &Tree,
+        links: &[Link],
+        blocks: &[Block],
+        directions: &DirectionSet,
+        seen: &mut SeenCache,
+    ) -> Operator {
         let k = directions.len();
         let order = tree.preorder();
         let mut position = vec![NONE; tree.len()];
@@ -86,7 +93,7 @@ impl Operator {
         let subtree_end = subtree_ends(&parent);
         let leaves: Vec<u32> = order.iter().copied().filter(|&id| tree.node(id).is_leaf()).collect();
         let leaf_position = leaves.iter().map(|&id| position[id as usize]).collect();
-        let (push_row, push) = push_rows(tree, links, &position, &leaves);
+        let (push_row, push) = push_rows(tree, links, &position, &leaves, seen);
         let (row, entries) = gather_rows(links, &position, order.len());
         let mut leaf_index = vec![NONE; tree.len()];
         leaves.iter().enumerate().for_each(|(l, &id)| leaf_index[id as usize] = l as u32);
