@@ -13,8 +13,12 @@
 use super::operator::Operator;
 use crate::kernel::BalanceReport;
 
-/// Row and column mismatch at which balancing stops.
+/// Change of the factors at which balancing stops.
 const BALANCED: f64 = 1e-6;
+/// Row mismatch (once the columns are balanced) at which balancing stops: a hundredth of
+/// the white furnace's 1e-3, far below what a leaf's closure rays resolve. The lecture
+/// hall's rows reach it in 36 sweeps and creep from 5.9e-5 to 4.9e-5 over the next 60.
+const ROWS_BALANCED: f64 = 1e-4;
 /// Sweeps before balancing gives up (it reports the mismatch it reached).
 const MAX_SWEEPS: usize = 100;
 /// Largest factor by which a leaf's light may be scaled either way.
@@ -26,7 +30,8 @@ impl Operator {
     /// arriving or leaving keeps its factors at 1; no factor goes beyond [`MOST`] either
     /// way (a leaf whose links carry less than a quarter of its closure stays short, and
     /// the report's residual says by how much). Sweeps stop when no factor changes by
-    /// [`BALANCED`] any more.
+    /// [`BALANCED`] any more, or once the columns are balanced and the rows of the leaves
+    /// within those limits match their targets within [`ROWS_BALANCED`].
     pub fn balance(&mut self, targets: &[f64], areas: &[f64]) -> BalanceReport {
         let (n, k) = (self.leaves().len(), self.cells());
         self.receive = vec![1.0; n];
@@ -39,6 +44,9 @@ impl Operator {
             x.chunks_mut(k).zip(&send).for_each(|(x, s)| x.fill(*s));
             self.arriving(&x, &mut z);
             let rows = sums(&z, k, |_| 1.0);
+            if sweep > 1 && row_mismatch(&receive, &send, &rows, targets, &free) < ROWS_BALANCED {
+                break;
+            }
             let mut change = rescale(&mut receive, &rows, targets, &free);
             x.chunks_mut(k).enumerate().for_each(|(l, x)| x.fill(areas[l] * receive[l]));
             self.leaving(&x, &mut z);
@@ -53,16 +61,22 @@ impl Operator {
         x.chunks_mut(k).zip(&send).for_each(|(x, s)| x.fill(*s));
         self.arriving(&x, &mut z);
         let rows = sums(&z, k, |_| 1.0);
-        let within = |f: f64| f > 1.0 / MOST && f < MOST;
-        report.residual = (0..n)
-            .filter(|&l| free(l) && within(receive[l]) && within(send[l]))
-            .map(|l| (receive[l] * rows[l] / targets[l] - 1.0).abs())
-            .fold(0.0, f64::max);
+        report.residual = row_mismatch(&receive, &send, &rows, targets, &free);
         report.max_correction = receive.iter().chain(&send).map(|f| (f - 1.0).abs()).fold(0.0, f64::max);
         self.receive = receive;
         self.send = send;
         report
     }
+}
+
+/// The largest `|r_i · row_i / t_i − 1|` over the free leaves whose factors are within
+/// [`MOST`] (`rows` with the current sending factors).
+fn row_mismatch(receive: &[f64], send: &[f64], rows: &[f64], targets: &[f64], free: &impl Fn(usize) -> bool) -> f64 {
+    let within = |f: f64| f > 1.0 / MOST && f < MOST;
+    (0..rows.len())
+        .filter(|&l| free(l) && within(receive[l]) && within(send[l]))
+        .map(|l| (receive[l] * rows[l] / targets[l] - 1.0).abs())
+        .fold(0.0, f64::max)
 }
 
 /// Each leaf's sum over its cells of `z`, times `scale(leaf)`.
