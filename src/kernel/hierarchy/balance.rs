@@ -15,7 +15,7 @@ use crate::kernel::BalanceReport;
 
 /// Change of the factors at which balancing stops.
 const BALANCED: f64 = 1e-6;
-/// Row mismatch (once the columns are balanced) at which balancing stops: a hundredth of
+/// Row mismatch (once the columns are balanced) at which balancing stops: a tenth of
 /// the white furnace's 1e-3, far below what a leaf's closure rays resolve. The lecture
 /// hall's rows reach it in 36 sweeps and creep from 5.9e-5 to 4.9e-5 over the next 60.
 const ROWS_BALANCED: f64 = 1e-4;
