@@ -48,14 +48,15 @@ fn compare_tables_the_bases_against_the_full_solution() {
 
 #[test]
 fn bad_basis_options_are_refused_clearly() {
+    // A writable output (checked before the work) that the refused solves never write.
+    let dir = scratch("bad-basis");
+    let out = dir.join("x.h5");
     for (args, expected) in [
         (vec!["--basis", "sh"], "--lmax"),
         (vec!["--basis", "svd", "--rank", "0"], "--rank R ≥ 1"),
         (vec!["--basis", "wavelet", "--rank", "2"], "`sh` or `svd`"),
         (vec!["--basis", "sh", "--lmax", "4"], "only 16 cells"),
     ] {
-        // A writable output (checked before the work) that the refused solve never writes.
-        let out = crate::support::scratch("bad-basis").join("x.h5");
         let all =
             [&["solve", "cases/glossy-cornell.toml", "-o", out.to_str().unwrap()][..], &COARSE[..], &args[..]].concat();
         let o = ugo(&all);

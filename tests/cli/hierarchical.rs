@@ -44,7 +44,8 @@ fn the_hierarchys_keys_are_refused_with_the_explicit_kernel() {
 /// smallest element sizes with the fitted exponents, and refuses `--export` (no matrix).
 #[test]
 fn bench_reports_the_hierarchys_links_against_the_leaves() {
-    let json = scratch("bench-hierarchical").join("bench.json");
+    let dir = scratch("bench-hierarchical");
+    let json = dir.join("bench.json");
     let args = ["bench", "--assembly", "hierarchical", "--patch-size", "0.25", "--link-tolerance", "3e-2"];
     let sizes = ["--smallest", "0.1", "--rays", "20000", "--scaling", "0.25,0.15", "--json", json.to_str().unwrap()];
     let o = ugo(&[&args[..], &sizes[..]].concat());

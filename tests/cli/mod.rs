@@ -26,7 +26,8 @@ fn assert_clean_failure(o: &Output) -> String {
 
 #[test]
 fn solve_writes_an_hdf5_file_that_reads_back() {
-    let out = scratch("solve").join("furnace.h5");
+    let dir = scratch("solve");
+    let out = dir.join("furnace.h5");
     let o = ugo(&["solve", "cases/furnace-box.toml", "-o", out.to_str().unwrap()]);
     assert!(o.status.success(), "{}", stderr(&o));
     let summary = String::from_utf8_lossy(&o.stdout);
@@ -66,7 +67,8 @@ fn solve_writes_an_hdf5_file_that_reads_back() {
 
 #[test]
 fn a_misspelled_key_fails_naming_file_table_and_key() {
-    let case = scratch("bad").join("bad.toml");
+    let dir = scratch("bad");
+    let case = dir.join("bad.toml");
     let text = std::fs::read_to_string("cases/furnace-box.toml").unwrap().replace("reflectance", "reflectanse");
     std::fs::write(&case, text).unwrap();
     let err = assert_clean_failure(&ugo(&["solve", case.to_str().unwrap()]));
@@ -87,7 +89,8 @@ fn a_kernel_over_the_memory_limit_is_refused_before_assembly() {
 
 #[test]
 fn a_lossless_closed_room_is_reported_divergent() {
-    let case = scratch("lossless").join("lossless.toml");
+    let dir = scratch("lossless");
+    let case = dir.join("lossless.toml");
     let text =
         std::fs::read_to_string("cases/furnace-box.toml").unwrap().replace("reflectance = 0.8", "reflectance = 1.0");
     std::fs::write(&case, text).unwrap();
@@ -135,7 +138,8 @@ fn every_bundled_case_is_valid_and_estimated() {
 
 #[test]
 fn direction_cells_reach_the_hdf5_file() {
-    let out = scratch("cells").join("furnace16.h5");
+    let dir = scratch("cells");
+    let out = dir.join("furnace16.h5");
     let o = ugo(&[
         "solve",
         "cases/furnace-box.toml",

@@ -6,7 +6,8 @@ use crate::support::{scratch, ugo};
 
 #[test]
 fn compare_writes_its_plot_beside_its_output_and_lists_every_file() {
-    let dir = scratch("beside").join("results");
+    let base = scratch("beside");
+    let dir = base.join("results");
     std::fs::create_dir_all(&dir).unwrap();
     let out = dir.join("x.h5");
     let case = "cases/furnace-box.toml";

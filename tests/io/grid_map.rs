@@ -29,7 +29,8 @@ fn reading(edge_u: DVec3, edge_v: DVec3, normal: DVec3, (i, j): (usize, usize)) 
 
 /// Where the brightest cell is drawn, relative to the plot's centre: (+1 right, +1 up).
 fn bright_quadrant(g: &GridReading, name: &str) -> (f64, f64) {
-    let path = scratch("grid-plans").join(format!("{name}.png"));
+    let dir = scratch("grid-plans");
+    let path = dir.join(format!("{name}.png"));
     write_grid_map(&path, g, &[]).unwrap();
     let plan = GridPlan::of(g, &[]);
     let png = image::open(&path).unwrap().to_rgb8();

@@ -19,7 +19,8 @@ fn every_cie_case_is_valid_and_lists_its_luminaires() {
 
 #[test]
 fn a_solve_with_luminaires_writes_them_to_hdf5() {
-    let out = scratch("luminaires").join("cie52.h5");
+    let dir = scratch("luminaires");
+    let out = dir.join("cie52.h5");
     let o = ugo(&["solve", "cases/cie171/5.2-point-source.toml", "-o", out.to_str().unwrap()]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let summary = String::from_utf8_lossy(&o.stdout);

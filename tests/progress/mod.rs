@@ -22,7 +22,8 @@ fn a_progress_line_names_the_stage_its_share_and_the_time_left() {
 
 #[test]
 fn without_a_terminal_the_solve_prints_progress_lines() {
-    let out = scratch("progress-lines").join("furnace.h5");
+    let dir = scratch("progress-lines");
+    let out = dir.join("furnace.h5");
     let o = std::process::Command::new(env!("CARGO_BIN_EXE_ugo"))
         .args(["solve", "cases/furnace-box.toml", "--patch-size", "0.25", "-o", out.to_str().unwrap()])
         .env("UGO_PROGRESS_SECONDS", "0")

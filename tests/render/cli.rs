@@ -21,7 +21,8 @@ fn read_exr(path: &Path) -> (usize, usize, Vec<f32>) {
 
 #[test]
 fn exr_round_trip_keeps_every_value() {
-    let path = scratch("exr").join("ramp.exr");
+    let dir = scratch("exr");
+    let path = dir.join("ramp.exr");
     let luminance: Vec<f64> = (0..6 * 4).map(|i| (i as f64 * 0.37).powi(3) + 0.125).collect();
     let image = Image { width: 6, height: 4, luminance };
     write_exr(&path, &image).unwrap();

@@ -17,7 +17,8 @@ fn positions_follow_the_linear_and_the_log_scale() {
 #[test]
 fn a_uniform_image_maps_to_one_colour_beside_its_legend() {
     let image = Image { width: 8, height: 6, luminance: vec![5.0; 48] };
-    let path = scratch("false-colour").join("uniform.png");
+    let dir = scratch("false-colour");
+    let path = dir.join("uniform.png");
     write_false_colour(&path, &image, Scale::Linear, "cd/m²").unwrap();
     let png = image::open(&path).unwrap().to_rgb8();
     assert_eq!(png.width(), 8 + LEGEND_WIDTH);

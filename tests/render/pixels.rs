@@ -2,7 +2,7 @@
 //! the back of a one-sided surface is black, a miss is 0 cd/m², and the white furnace
 //! (solved by `ugo solve`) is 5 cd/m² everywhere.
 
-use crate::support::{build, corner_factor, solve};
+use crate::support::{build, corner_factor, scratch, solve};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -81,8 +81,7 @@ fn the_back_of_a_one_sided_surface_is_black_and_of_a_two_sided_one_is_lit() {
 
 #[test]
 fn the_furnace_box_renders_five_candela_per_square_metre_everywhere() {
-    let dir = std::env::temp_dir().join(format!("ugo-render-{}-furnace", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch("furnace");
     let out: PathBuf = dir.join("furnace.h5");
     let o = Command::new(env!("CARGO_BIN_EXE_ugo"))
         .args(["solve", "cases/furnace-box.toml", "-o", out.to_str().unwrap()])
@@ -211,8 +210,7 @@ resolution = [8, 8]
 
 #[test]
 fn files_without_face_records_pair_back_to_back_twins() {
-    let dir = std::env::temp_dir().join(format!("ugo-render-{}-twins", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch("twins");
     let case = dir.join("plate.toml");
     std::fs::write(&case, TWO_SIDED).unwrap();
     let out = dir.join("plate.h5");

@@ -2,7 +2,8 @@
 //! refused, naming the surface and the key (issue 18, item 6); simple concave polygons
 //! are still accepted.
 
-use super::{LAMP, TempDir, assert_error, lit, parse, rejected};
+use super::{LAMP, assert_error, lit, parse, rejected};
+use crate::support::scratch;
 use ugo::geometry::Shape;
 
 /// A `[[surface]]` named `s` (surface #2 after the lamp) with the given shape keys.
@@ -67,7 +68,7 @@ fn a_surface_that_meshes_to_no_patch_is_an_error_naming_it() {
 
 #[test]
 fn obj_vertices_are_read_in_double_precision() {
-    let dir = TempDir::new("obj-f64");
+    let dir = scratch("obj-f64");
     dir.write("model.obj", "v 0.1 0 0\nv 1e39 0 0\nv 0.1 0 1e39\nf 1 2 3\n");
     let text = format!("{}{LAMP}", lit("").split(LAMP).next().unwrap())
         + "\n[[surface]]\nname = \"s\"\nshape = \"mesh\"\nmaterial = \"white\"\nfile = \"model.obj\"\n";

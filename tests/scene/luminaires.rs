@@ -1,7 +1,8 @@
 //! `[[luminaire]]` tables: valid luminaires of every type, and every mistake named by its
 //! table and key; a bad photometric file by its path and line.
 
-use super::{BASE, CASE, TempDir, assert_error, parse, rejected};
+use super::{BASE, CASE, assert_error, parse, rejected};
+use crate::support::scratch;
 use glam::DVec3;
 use std::path::Path;
 use ugo::luminaire::LuminaireKind;
@@ -26,7 +27,7 @@ fn point(scene: &Scene, i: usize) -> &ugo::luminaire::PointLuminaire {
 
 #[test]
 fn luminaires_of_every_type_light_a_scene_without_emitting_surfaces() {
-    let dir = TempDir::new("luminaires");
+    let dir = scratch("luminaires");
     let file = std::fs::read_to_string("tests/data/photometry/c-axial-lambert-2002.ies").unwrap();
     dir.write("down.ies", &file);
     dir.write("quad.ldt", &std::fs::read_to_string("tests/data/photometry/isym4-quadrant.ldt").unwrap());
@@ -79,7 +80,7 @@ illuminance = 50000
     let spot = point(&scene, 2);
     assert_eq!((spot.rotate_deg, spot.multiplier), (30.0, 0.8));
     assert!((spot.aim - DVec3::new(1.0, -1.0, 0.0).normalize()).length() < 1e-15);
-    assert_eq!(spot.file.as_deref(), Some(dir.0.join("down.ies").as_path()), "relative to the case file");
+    assert_eq!(spot.file.as_deref(), Some(dir.join("down.ies").as_path()), "relative to the case file");
     assert!(matches!(&point(&scene, 3).distribution, Distribution::Table(t) if t.description.contains("Isym 4")));
     assert_eq!(point(&scene, 0).aim, DVec3::NEG_Y, "straight down by default");
     let LuminaireKind::Parallel { direction, illuminance } = scene.luminaires[4].kind else { panic!() };
@@ -146,7 +147,7 @@ fn a_missing_or_malformed_photometric_file_names_its_path_and_line() {
     assert_error(&error, LAMP, "file", &["no-such.ies", "cannot read the file"]);
     assert!(error.message().contains(&Path::new(CASE).parent().unwrap().join("no-such.ies").display().to_string()));
 
-    let dir = TempDir::new("bad-ldt");
+    let dir = scratch("bad-ldt");
     let good = std::fs::read_to_string("tests/data/photometry/isym1-axial-isotropic.ldt").unwrap();
     let bad: Vec<&str> = good.lines().map(|l| if l.trim() == "1" { "one" } else { l }).collect();
     dir.write("bad.ldt", &bad.join("\n"));

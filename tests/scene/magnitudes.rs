@@ -2,7 +2,8 @@
 //! at the key that holds them, never left to a solver to report as divergence; values
 //! that are valid but rarely meant are warnings naming the table and the key.
 
-use super::{BASE, LAMP, TempDir, assert_error, lit, parse, rejected};
+use super::{BASE, LAMP, assert_error, lit, parse, rejected};
+use crate::support::scratch;
 
 const LAMP_TABLE: &str = "[[surface]] \"lamp\" (#1)";
 
@@ -44,7 +45,7 @@ fn luminaire_magnitudes_that_would_overflow_are_refused_at_their_key() {
     );
     let sun = "type = \"parallel\"\ndirection = [0, -1, 0]\nilluminance = 1e300";
     assert_error(&rejected(&luminaire(sun)), L, "illuminance", &["out of range"]);
-    let dir = TempDir::new("ies-overflow");
+    let dir = scratch("ies-overflow");
     dir.write("lamp.ies", &std::fs::read_to_string("tests/data/photometry/c-axial-lambert-2002.ies").unwrap());
     let text = luminaire("type = \"ies\"\nposition = [0, 1, 0]\nfile = \"lamp.ies\"\nmultiplier = 1e19");
     let case = dir.write("case.toml", &text);
@@ -81,7 +82,7 @@ fn implausible_values_are_warnings_naming_table_and_key() {
 
 #[test]
 fn a_model_in_millimetres_is_told_the_scale_that_fixes_it() {
-    let dir = TempDir::new("obj-mm");
+    let dir = scratch("obj-mm");
     dir.write("chair.obj", "v 0 0 0\nv 900 0 0\nv 0 900 450\nf 1 2 3\n");
     let text = lit("\n[[surface]]\nname = \"chair\"\nshape = \"mesh\"\nmaterial = \"white\"\nfile = \"chair.obj\"\n");
     let case = dir.write("case.toml", &text);

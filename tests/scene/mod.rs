@@ -16,8 +16,7 @@ mod sky;
 mod valid;
 mod validation_errors;
 
-use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::path::Path;
 use ugo::scene::{Scene, SceneError};
 
 /// The discretization and one material, `white`.
@@ -69,33 +68,5 @@ fn assert_error(error: &SceneError, table: &str, key: &str, fragments: &[&str]) 
     assert_eq!(error.key(), key, "{error}");
     for fragment in fragments {
         assert!(error.message().contains(fragment), "{error:?} lacks {fragment:?}");
-    }
-}
-
-/// A fresh, empty directory under the system temp dir, removed on drop.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    /// Unique per process and call, so that tests running in parallel do not collide.
-    fn new(name: &str) -> TempDir {
-        static COUNT: AtomicUsize = AtomicUsize::new(0);
-        let count = COUNT.fetch_add(1, Ordering::Relaxed);
-        let unique = format!("ugo-test-{}-{count}-{name}", std::process::id());
-        let dir = std::env::temp_dir().join(unique);
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).expect("create temp dir");
-        TempDir(dir)
-    }
-
-    fn write(&self, file: &str, text: &str) -> PathBuf {
-        let path = self.0.join(file);
-        std::fs::write(&path, text).expect("write temp file");
-        path
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
     }
 }

@@ -3,7 +3,8 @@
 //! `materials` table; an unmapped OBJ material, a mapping of a name the file does not use
 //! and a mapping to an unknown material are errors that name them.
 
-use super::{BASE, LAMP, SceneError, TempDir, assert_error};
+use super::{BASE, LAMP, SceneError, assert_error};
+use crate::support::scratch;
 use glam::DVec3;
 use ugo::geometry::{Emission, Shape};
 use ugo::scene::Scene;
@@ -11,7 +12,7 @@ use ugo::scene::Scene;
 /// A case with a second material `oak` and the mesh surface `chair` of `keys`, reading
 /// `obj` as `chair.obj`.
 fn load(obj: &str, keys: &str) -> Result<Scene, SceneError> {
-    let dir = TempDir::new("obj");
+    let dir = scratch("obj");
     dir.write("chair.obj", obj);
     let text = format!(
         "{BASE}[[material]]\nname = \"oak\"\ntype = \"lambert\"\nreflectance = 0.3\n{LAMP}\n[[surface]]\nname = \"chair\"\nshape = \"mesh\"\nmaterial = \"white\"\nfile = \"chair.obj\"\n{keys}\n"

@@ -1,6 +1,7 @@
 //! Valid case files parse into the right runtime values.
 
-use super::{BASE, TempDir, lit, parse};
+use super::{BASE, lit, parse};
+use crate::support::scratch;
 use glam::DVec3;
 use ugo::geometry::{Emission, Shape};
 use ugo::material::MaterialModel;
@@ -91,7 +92,7 @@ normal = [0, 3, 0]
 const OBJ: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3 4\nf 1 2 5\n";
 
 fn every_shape() -> Scene {
-    let dir = TempDir::new("every-shape");
+    let dir = scratch("every-shape");
     dir.write("model.obj", OBJ);
     let case = dir.write("case.toml", EVERY_SHAPE);
     Scene::parse(&case, EVERY_SHAPE.to_string()).expect("valid scene")

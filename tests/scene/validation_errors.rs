@@ -1,7 +1,8 @@
 //! Case files that parse but break a rule of `design.md` §7: each error names the
 //! table and the key.
 
-use super::{BASE, CASE, LAMP, TempDir, assert_error, lit, parse, rejected};
+use super::{BASE, CASE, LAMP, assert_error, lit, parse, rejected};
+use crate::support::scratch;
 use std::path::Path;
 use ugo::scene::Scene;
 
@@ -251,12 +252,12 @@ fn missing_obj_file_names_the_resolved_path() {
 
 #[test]
 fn obj_without_usable_triangles_is_rejected() {
-    let dir = TempDir::new("bad-obj");
+    let dir = scratch("bad-obj");
     dir.write("points.obj", "v 0 0 0\nv 1 0 0\n");
     dir.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
     for (file, fragment) in [("points.obj", "no triangles"), ("flat.obj", "zero area")] {
         let text = surface("mesh", &format!("file = \"{file}\""));
-        let case = dir.0.join("case.toml");
+        let case = dir.join("case.toml");
         let error = Scene::parse(&case, text).expect_err("no usable triangles");
         assert_eq!(error.file(), case);
         assert_eq!((error.table(), error.key()), (S, "file"), "{error}");

@@ -1,7 +1,9 @@
 //! Scenes built in code for the tests (no case file involved).
 
 use glam::DVec3;
-use std::path::PathBuf;
+use std::ops::Deref;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use ugo::directions::DirectionSet;
 use ugo::geometry::{Emission, Shape, Surface};
 use ugo::kernel::Factored;
@@ -140,11 +142,50 @@ pub fn ugo(args: &[&str]) -> std::process::Output {
     std::process::Command::new(env!("CARGO_BIN_EXE_ugo")).args(args).output().expect("ugo runs")
 }
 
-/// A fresh scratch folder for one test, unique to this process.
-pub fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("ugo-test-{}-{name}", std::process::id()));
+/// A scratch folder for one test, `ugo-test-<pid>-<n>-<name>` under the system temp dir.
+///
+/// It owns the folder and everything written into it, and removes them when dropped: keep
+/// it bound to a variable for as long as the folder is used. The process id and a count
+/// of the calls make it unique, so tests running in parallel threads never share one.
+pub struct Scratch(PathBuf);
+
+impl Scratch {
+    /// Writes `text` to `file` in the folder and returns the file's path.
+    pub fn write(&self, file: &str, text: &str) -> PathBuf {
+        let path = self.0.join(file);
+        std::fs::write(&path, text).expect("write scratch file");
+        path
+    }
+}
+
+impl Deref for Scratch {
+    type Target = Path;
+
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl AsRef<Path> for Scratch {
+    fn as_ref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// A fresh, empty scratch folder for one test, removed when the guard is dropped.
+pub fn scratch(name: &str) -> Scratch {
+    static COUNT: AtomicUsize = AtomicUsize::new(0);
+    let count = COUNT.fetch_add(1, Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("ugo-test-{}-{count}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("temporary folder");
-    dir
+    Scratch(dir)
 }
 
 /// `Σ f(l, dω)` over the `m × m` midpoint grid of the parallelogram `o + s·u + t·v` seen
