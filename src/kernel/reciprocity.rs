@@ -7,6 +7,7 @@
 //! exactly `Σ_(j,m) Φ_jm (1 − s_jm)` with `Φ_jm = A_j μ_m x_jm` the outgoing flux
 //! (`readout::energy`): where `s` differs from 1 in a closed scene, the difference is the
 //! discretization error of the balance, and weighted by the solved field it bounds it.
+//! One transposed application `Gᵀ A` gives every column at once.
 
 use super::operator::Kernel;
 use std::f64::consts::PI;
@@ -14,11 +15,9 @@ use std::f64::consts::PI;
 /// `s_jm` for every column `(j, m)`, flat `j·K + m`, of `kernel` over patches of `areas`.
 pub fn sent_shares(kernel: &Kernel, areas: &[f64]) -> Vec<f64> {
     let k = kernel.cells();
-    let mut received = vec![0.0; kernel.g.rows()];
-    for row in 0..received.len() {
-        let area = areas[row / k];
-        kernel.g.for_each_in_row(row, |column, value| received[column] += area * value);
-    }
+    let rows: Vec<f64> = (0..kernel.g.rows()).map(|row| areas[row / k]).collect();
+    let mut received = vec![0.0; rows.len()];
+    kernel.g.leaving(&rows, &mut received);
     let cells = kernel.directions.cells();
     received
         .iter()

@@ -32,6 +32,21 @@ impl Transport {
         }
     }
 
+    /// `x = Gᵀ y`: what each column receives, the rows weighed by `y` (serial: it scatters).
+    /// The hierarchy runs its links backwards (`hierarchy/transpose.rs`) without the
+    /// expansion.
+    pub fn leaving(&self, y: &[f64], x: &mut [f64]) {
+        match self {
+            Transport::Explicit(g) => {
+                x.fill(0.0);
+                for (row, &w) in y.iter().enumerate() {
+                    g.for_each_in_row(row, |column, value| x[column] += w * value);
+                }
+            }
+            Transport::Hierarchical(h) => h.leaving(y, x),
+        }
+    }
+
     /// Entries of row `r` written out (the hierarchy's expansion, `hierarchy/expand.rs`).
     pub fn row_len(&self, r: usize) -> usize {
         match self {

@@ -103,14 +103,19 @@ fn a_negative_escaped_flux_is_explained_and_bounded_by_the_kernels_columns() {
 fn the_escaped_flux_is_the_outgoing_flux_weighted_by_the_columns_shortfall() {
     // escaped = Σ_(j,m) A_j μ_m x_jm (1 − s_jm) + the luminaires' light landing nowhere:
     // the energy balance and the kernel's columns computed apart, on a room where the
-    // columns are not all 1 (the crate) and on one with an opening (no north wall).
+    // columns are not all 1 (the crate) and on one with an opening (no north wall), the
+    // latter with both kernels.
     let open =
         room(false, "").replace("[[surface]]\nname = \"north\"", "[[surface]]\nname = \"north\"\ntwo_sided = false");
     let open = open.replace(
         "origin = [0, 0, 1]\nedge_u = [0, 1, 0]\nedge_v = [1, 0, 0]",
         "origin = [0, 0, 1]\nedge_u = [0, 0.5, 0]\nedge_v = [1, 0, 0]",
     );
-    for text in [room(false, CRATE), open] {
+    // The hierarchy's columns come from its links run backwards (`Gᵀ`, no expansion).
+    let hierarchical =
+        open.replace("patch_size = 0.25\n", "patch_size = 0.5\nmethod = \"hierarchical\"\nsmallest = 0.125\n");
+    assert!(hierarchical.contains("hierarchical"));
+    for text in [room(false, CRATE), open, hierarchical] {
         let (_, s) = solved(&text);
         let (m, e) = (&s.model, &s.energy);
         let areas: Vec<f64> = m.mesh.patches.iter().map(|p| p.exposed).collect();
