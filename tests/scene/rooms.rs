@@ -94,7 +94,7 @@ fn closed_around_luminaires(scene: &Scene) {
 fn the_office_is_furnished_closed_and_lit_from_inside() {
     let scene = furnished("cases/office.toml", 900..1200, 12);
     assert_eq!(scene.discretization.patch_size, 1.0);
-    let hierarchical = ugo::scene::Assembly::Hierarchical { tolerance: 3e-2, smallest: 0.25 };
+    let hierarchical = ugo::scene::Assembly::Hierarchical { tolerance: 1e-2, smallest: 0.15 };
     assert_eq!(scene.discretization.assembly, hierarchical);
     let books = scene.surfaces.iter().filter(|s| s.name.starts_with("bookshelf, book")).count();
     assert!(books >= 24, "{books} books");
