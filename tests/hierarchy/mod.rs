@@ -9,6 +9,7 @@ mod growth;
 mod model;
 mod plates;
 mod push;
+mod rebalance;
 mod spectrum;
 mod transpose;
 

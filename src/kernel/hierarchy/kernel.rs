@@ -77,6 +77,9 @@ pub struct Hierarchy {
     closure: Vec<Option<Closure>>,
     /// The push's weights of the last operator (`push.rs`).
     seen: SeenCache,
+    /// Each node's balancing factors (receiving, sending) when it was last a balanced
+    /// leaf: where the next operator's balancing starts (`balance.rs`).
+    factors: Vec<Option<(f64, f64)>>,
     history: Vec<Pass>,
 }
 
@@ -109,6 +112,7 @@ impl Hierarchy {
             oracle,
             closure: Vec::new(),
             seen: SeenCache::default(),
+            factors: Vec::new(),
             history: Vec::new(),
         };
         let roots: Vec<u32> = (0..roots.len() as u32).collect();
@@ -261,13 +265,33 @@ impl Hierarchy {
             let rays = self.measure_closure(&leaves);
             let targets = self.closure_targets(&operator, &leaves);
             let areas: Vec<f64> = leaves.iter().map(|&id| self.tree.node(id).exposed).collect();
-            let report = operator.balance(&targets, &areas);
+            let start = leaves.iter().map(|&id| self.last_factors(id)).unzip();
+            let report = operator.balance(&targets, &areas, start);
+            self.factors.resize(self.tree.len(), None);
+            for (l, &id) in leaves.iter().enumerate() {
+                self.factors[id as usize] = Some((operator.receive[l], operator.send[l]));
+            }
             if let Some(last) = self.history.last_mut() {
                 last.rays += rays;
                 last.balance = Some(report);
             }
         }
         operator
+    }
+
+    /// The balancing factors node `id` had as a leaf of the last operator, else those of its
+    /// nearest ancestor that was one (a leaf split since), else 1.
+    fn last_factors(&self, id: u32) -> (f64, f64) {
+        let mut at = id;
+        loop {
+            if let Some(&Some(f)) = self.factors.get(at as usize) {
+                return f;
+            }
+            match self.tree.node(at).parent {
+                NONE => return (1.0, 1.0),
+                parent => at = parent,
+            }
+        }
     }
 
     /// Measures the closure of the `leaves` not yet measured; returns the rays taken.
