@@ -98,7 +98,7 @@ fn ternary_inverse(mut r: usize) -> f64 {
 
 /// SplitMix64's output function (a bijection with full avalanche).
 #[inline]
-fn mix(mut z: u64) -> u64 {
+pub fn mix(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
     z ^ (z >> 31)

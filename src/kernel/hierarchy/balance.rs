@@ -41,7 +41,7 @@ impl Operator {
     /// within those limits match their targets within [`ROWS_BALANCED`], or within
     /// [`FURNACE`] with a sweep that bettered them by less than [`STALLED`]. The sweeps start
     /// from the factors `start` (receiving, sending; in leaf order): all 1 for a new
-    /// operator, the last operator's where the leaves are the same.
+    /// operator, else each leaf's (or its nearest ancestor's) in the last operator.
     pub fn balance(&mut self, targets: &[f64], areas: &[f64], start: (Vec<f64>, Vec<f64>)) -> BalanceReport {
         let (n, k) = (self.leaves().len(), self.cells());
         self.receive = vec![1.0; n];

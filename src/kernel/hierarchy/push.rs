@@ -26,6 +26,7 @@ use super::link::{Link, axis};
 use super::node::NONE;
 use super::tree::Tree;
 use crate::geometry::Patch;
+use crate::random::mix;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::occlusion::polygon_points;
 use rayon::prelude::*;
@@ -134,12 +135,8 @@ fn seen(tree: &Tree, links: &[Link], own: &[u32], a: u32, leaf: &Patch) -> f64 {
 fn fingerprint(links: &[Link], own: &[u32]) -> u64 {
     own.iter().fold(0u64, |sum, &l| {
         let link = &links[l as usize];
-        let mut h =
-            u64::from(link.source) ^ link.factor.to_bits().rotate_left(21) ^ link.visible.to_bits().rotate_left(42);
-        // splitmix64's finaliser
-        h = (h ^ (h >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        h = (h ^ (h >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        sum.wrapping_add(h ^ (h >> 31))
+        let h = u64::from(link.source) ^ link.factor.to_bits().rotate_left(21) ^ link.visible.to_bits().rotate_left(42);
+        sum.wrapping_add(mix(h))
     })
 }
 
