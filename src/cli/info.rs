@@ -9,11 +9,16 @@ use std::path::Path;
 use ugo::kernel::{Estimate, Forecast};
 use ugo::luminaire::Source;
 use ugo::model::Model;
+use ugo::scene::Assembly;
 
 pub fn run(case: &Path, d: &Discretize) -> Result<()> {
     let (scene, options) = load(case, d)?;
     let forecast = Model::forecast(&scene, &options);
     print_forecast(&forecast, scene.discretization.assembly.name());
+    // (a choice of the hierarchy is told on stderr as the case loads)
+    if let (Some(automatic), Assembly::Explicit) = (scene.discretization.automatic, scene.discretization.assembly) {
+        println!("  method             not given: {automatic}");
+    }
     forecast.check(options.memory_limit)?;
     let mesh = Model::mesh(&scene, &options);
     let estimate = Estimate::of(&mesh, &options.directions);

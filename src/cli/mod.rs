@@ -22,7 +22,7 @@ use ugo::luminaire::{Light, Source};
 use ugo::model::ModelOptions;
 use ugo::photometry::Distribution;
 use ugo::progress::{line, time_left};
-use ugo::scene::{Assembly, Scene};
+use ugo::scene::{Assembly, Discretization, Scene};
 
 /// Loads a case and applies the command-line overrides: the discretization to the scene
 /// (the one place it is held), the memory limit and precision to the model options.
@@ -40,6 +40,7 @@ pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
     if let Some(directions) = d.directions {
         scene.discretization.directions = directions;
     }
+    choose_again(&mut scene, d);
     scene.discretization.assembly = assembly(scene.discretization.assembly, d)?;
     let mut options = ModelOptions::of(&scene);
     if let Some(precision) = d.precision {
@@ -52,6 +53,24 @@ pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
         options.memory_limit = (gib * (1u64 << 30) as f64) as u64;
     }
     Ok((scene, options))
+}
+
+/// A case without `method`: its kernel chosen again for `--patch-size`, or left to
+/// `--assembly` at the patch size asked for; the choice told when it is the hierarchy.
+fn choose_again(scene: &mut Scene, d: &Discretize) {
+    let Some(automatic) = scene.discretization.automatic else { return };
+    let asked = d.patch_size.unwrap_or(automatic.asked);
+    let directions = scene.discretization.directions;
+    scene.discretization = match d.assembly {
+        Some(_) => Discretization { patch_size: asked, directions, assembly: Assembly::Explicit, automatic: None },
+        None if d.patch_size.is_some() => Discretization::automatic(asked, directions, &scene.surfaces),
+        None => scene.discretization.clone(),
+    };
+    if let (Some(automatic), Assembly::Hierarchical { .. }) =
+        (scene.discretization.automatic, scene.discretization.assembly)
+    {
+        eprintln!("ugo: note: no `method` in [discretization]: {automatic}");
+    }
 }
 
 /// The case's assembly with `--assembly`, `--link-tolerance` and `--smallest` applied.

@@ -26,7 +26,9 @@ pub struct Discretize {
     pub precision: Option<PrecisionArg>,
     /// How the kernel is built: `explicit` (every facing pair of patches) or `hierarchical`
     /// (element trees under patches of `--patch-size`, links where the oracle accepts
-    /// them; docs/hierarchy.md). Default: the case's `method`.
+    /// them; docs/hierarchy.md). Default: the case's `method`; without one, the explicit
+    /// kernel up to 10⁷ facing pairs at the patch size, else the hierarchical one split
+    /// down to it from roots 4 times it.
     #[arg(long, value_enum)]
     pub assembly: Option<AssemblyArg>,
     /// Error allowed per link of the hierarchical kernel, relative to the mean reflected

@@ -169,10 +169,15 @@ impl std::fmt::Display for OverLimit {
         write!(
             f,
             ", the mesh {}, the material blocks (K × K each) {}; estimated before meshing. Ways out: a larger \
-             --patch-size (patches grow as patch_size⁻², the explicit kernel as patch_size⁻⁴), fewer \
-             --directions, --assembly hierarchical, or a higher --memory-limit if the machine has the RAM",
+             --patch-size (patches grow as patch_size⁻², {}), fewer --directions, {}or a higher --memory-limit \
+             if the machine has the RAM",
             gib(e.mesh_bytes),
-            gib(e.block_bytes)
+            gib(e.block_bytes),
+            match e.leaves {
+                None => "the explicit kernel as patch_size⁻⁴",
+                Some(_) => "for the hierarchy: its roots",
+            },
+            if e.leaves.is_none() { "--assembly hierarchical, " } else { "" }
         )
     }
 }

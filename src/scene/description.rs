@@ -47,8 +47,20 @@ pub struct Discretization {
     pub patch_size: f64,
     /// Direction set (default one cell: radiosity).
     pub directions: Scheme,
-    /// How the kernel is built (`method`, default explicit).
+    /// How the kernel is built (`method`; without it, chosen by size: [`Automatic`]).
     pub assembly: Assembly,
+    /// Set when `method` was not given (or is `"auto"`): what the choice was made from.
+    pub automatic: Option<Automatic>,
+}
+
+/// Why the kernel was chosen by size (`scene/automatic.rs`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Automatic {
+    /// The case's `patch_size`, m: the explicit kernel's patches, or the hierarchy's
+    /// smallest elements.
+    pub asked: f64,
+    /// Unordered pairs of facing patches the explicit kernel would have at `asked`.
+    pub facing_pairs: f64,
 }
 
 /// `[discretization] method`: how the kernel `K` is built.
@@ -64,7 +76,7 @@ pub enum Assembly {
 
 impl Assembly {
     /// The names of `method`.
-    pub const NAMES: &'static str = "\"explicit\" or \"hierarchical\"";
+    pub const NAMES: &'static str = "\"explicit\", \"hierarchical\" or \"auto\"";
 
     /// The hierarchical kernel with its default tolerance and smallest element.
     pub fn hierarchical() -> Assembly {

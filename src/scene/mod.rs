@@ -5,6 +5,7 @@
 //! table and the key. Nothing downstream (meshing, kernel, solvers) sees TOML.
 
 mod arrays;
+mod automatic;
 mod check;
 mod description;
 mod error;
@@ -24,7 +25,8 @@ mod sky;
 mod surface;
 mod validate;
 
-pub use description::{Assembly, Camera, Discretization, Material, Scene, SolverSettings};
+pub use automatic::{EXPLICIT_PAIRS, ROOTS};
+pub use description::{Assembly, Automatic, Camera, Discretization, Material, Scene, SolverSettings};
 pub use error::SceneError;
 pub use files::{CaseFile, CaseFiles, regular_file};
 pub use grid::{Grid, MapScale, MapStyle};

@@ -25,7 +25,7 @@ use std::path::Path;
 /// Validates the raw tables of the case file `path` (whose text is `source`).
 pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) -> Result<Scene, SceneError> {
     let (name, description) = scene_info(path, raw.scene);
-    let discretization = discretization(path, raw.discretization)?;
+    let (patch_size, directions, assembly) = discretization(path, raw.discretization)?;
     let solver = solver(path, raw.solver)?;
     if raw.surface.is_empty() {
         return Err(SceneError::new(path, "[[surface]]", "", "the scene has no [[surface]]"));
@@ -60,6 +60,10 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         electric: tables.len(),
     };
     let lighting = lighting(path, &source, raw.lighting, &raw.light_scene, sources)?;
+    let discretization = match assembly {
+        Some(assembly) => Discretization { patch_size, directions, assembly, automatic: None },
+        None => Discretization::automatic(patch_size, directions, &surfaces),
+    };
     Ok(Scene {
         path: path.to_path_buf(),
         source,
@@ -88,7 +92,9 @@ fn scene_info(path: &Path, info: Option<RawSceneInfo>) -> (String, String) {
     (name, info.description.unwrap_or_default())
 }
 
-fn discretization(path: &Path, raw: Option<RawDiscretization>) -> Result<Discretization, SceneError> {
+/// `[discretization]`: the patch size, the direction set and the assembly (`None`: chosen by
+/// size once the surfaces are known, `scene/automatic.rs`).
+fn discretization(path: &Path, raw: Option<RawDiscretization>) -> Result<(f64, Scheme, Option<Assembly>), SceneError> {
     let at = Context::new(path, "[discretization]");
     let raw = raw.ok_or_else(|| at.error("", "the table [discretization] is required"))?;
     let patch_size = at.positive("patch_size", raw.patch_size)?;
@@ -105,22 +111,24 @@ fn discretization(path: &Path, raw: Option<RawDiscretization>) -> Result<Discret
         _ => at.error("directions", format!("unknown direction set \"{name}\"; give {}", Scheme::NAMES)),
     })?;
     let assembly = assembly(&at, &raw, patch_size)?;
-    Ok(Discretization { patch_size, directions, assembly })
+    Ok((patch_size, directions, assembly))
 }
 
-/// `method`, and the hierarchy's `tolerance` and `smallest` (refused with the explicit one).
-fn assembly(at: &Context, raw: &RawDiscretization, patch_size: f64) -> Result<Assembly, SceneError> {
-    let method = raw.method.as_deref().unwrap_or("explicit");
+/// `method`, and the hierarchy's `tolerance` and `smallest` (refused without it); `None`
+/// for `"auto"` or no `method`.
+fn assembly(at: &Context, raw: &RawDiscretization, patch_size: f64) -> Result<Option<Assembly>, SceneError> {
+    let method = raw.method.as_deref().unwrap_or("auto");
     let defaults = crate::kernel::hierarchy::Options::default();
-    match method {
-        "explicit" => {
-            for (key, value) in [("tolerance", raw.tolerance), ("smallest", raw.smallest)] {
-                if value.is_some() {
-                    return Err(at.error(key, "applies only to method = \"hierarchical\""));
-                }
+    if method != "hierarchical" {
+        for (key, value) in [("tolerance", raw.tolerance), ("smallest", raw.smallest)] {
+            if value.is_some() {
+                return Err(at.error(key, "applies only to method = \"hierarchical\""));
             }
-            Ok(Assembly::Explicit)
         }
+    }
+    match method {
+        "auto" => Ok(None),
+        "explicit" => Ok(Some(Assembly::Explicit)),
         "hierarchical" => {
             let tolerance = at.positive("tolerance", raw.tolerance.unwrap_or(defaults.tolerance))?;
             let smallest = at.positive("smallest", raw.smallest.unwrap_or(defaults.smallest))?;
@@ -128,7 +136,7 @@ fn assembly(at: &Context, raw: &RawDiscretization, patch_size: f64) -> Result<As
                 let message = format!("the smallest element ({smallest} m) exceeds patch_size ({patch_size} m)");
                 return Err(at.error("smallest", message));
             }
-            Ok(Assembly::Hierarchical { tolerance, smallest })
+            Ok(Some(Assembly::Hierarchical { tolerance, smallest }))
         }
         other => Err(at.error("method", format!("unknown method \"{other}\"; give {}", Assembly::NAMES))),
     }

@@ -112,11 +112,17 @@ fn a_model_over_the_memory_limit_is_refused_before_meshing_with_its_estimate() {
     let case = "cases/furnace-box.toml";
     for command in ["info", "solve", "bench"] {
         let started = std::time::Instant::now();
-        let err = assert_clean_failure(&ugo(&[command, case, "--patch-size", "1e-12"]));
+        let err = assert_clean_failure(&ugo(&[command, case, "--patch-size", "1e-12", "--assembly", "explicit"]));
         assert!(started.elapsed().as_secs_f64() < 5.0, "{command}: {:?}", started.elapsed());
         for fragment in ["6.000e24 patches", "facing pairs", "estimated before meshing", "--assembly hierarchical"] {
             assert!(err.contains(fragment), "{command}: {err}");
         }
+        // without `method`, the hierarchy is chosen, and its roots (4e-12 m) are refused
+        let err = assert_clean_failure(&ugo(&[command, case, "--patch-size", "1e-12"]));
+        for fragment in ["3.750e23 patches", "roots of the hierarchy", "estimated before meshing"] {
+            assert!(err.contains(fragment), "{command}: {err}");
+        }
+        assert!(!err.contains("--assembly hierarchical"), "{command}: {err}");
     }
     // info prints the forecast before it refuses, and the forecast of a model that fits.
     let o = ugo(&["info", case]);

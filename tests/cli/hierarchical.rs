@@ -1,6 +1,7 @@
 //! `--assembly hierarchical` and `[discretization] method = "hierarchical"` end to end: the
 //! solve, its summary of passes, `/hierarchy` in the HDF5 file and `render` of the leaves;
-//! the hierarchy's keys refused with the explicit kernel.
+//! the hierarchy's keys refused with the explicit kernel; a case without `method` solved by
+//! the kernel its size chooses.
 
 use super::{assert_clean_failure, stderr};
 use crate::support::{scratch, ugo};
@@ -29,6 +30,30 @@ fn a_hierarchical_solve_writes_its_passes_and_renders() {
 
     let o = ugo(&["render", out.to_str().unwrap(), "-o", dir.to_str().unwrap(), "--shading", "smooth"]);
     assert!(o.status.success(), "{}", stderr(&o));
+}
+
+/// Issue 14.8: the furnace cube has no `method`; at 0.025 m its explicit kernel would have
+/// 15 · 40⁴ = 3.8e7 facing pairs, so the hierarchy solves it, told on stderr, and the
+/// uniform mesh stays one option away.
+#[test]
+fn a_case_without_method_is_solved_by_the_kernel_its_size_chooses() {
+    let dir = scratch("automatic");
+    let out = dir.join("furnace.h5");
+    let o = ugo(&["solve", "cases/furnace-box.toml", "--patch-size", "0.025", "-o", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let note = stderr(&o);
+    assert!(note.contains("ugo: note: no `method`") && note.contains("3.840e7 facing pairs"), "{note}");
+    let file = hdf5::File::open(&out).unwrap();
+    let luminance = file.dataset("field/luminance").unwrap().read_dyn::<f64>().unwrap();
+    assert!(file.dataset("hierarchy/leaf_level").is_ok(), "not the hierarchy");
+    assert!(luminance.iter().all(|l| (l / 5.0 - 1.0).abs() < 1e-3), "the white furnace on the leaves");
+
+    // `--assembly explicit`: the uniform mesh at the size asked for, no note
+    let o = ugo(&["info", "cases/furnace-box.toml", "--patch-size", "0.025", "--assembly", "explicit"]);
+    let err = stderr(&o);
+    assert!(o.status.success() && !err.contains("note:"), "{err}");
+    let summary = String::from_utf8_lossy(&o.stdout);
+    assert!(summary.contains("patch size                0.025 m") && summary.contains("9600"), "{summary}");
 }
 
 #[test]

@@ -18,8 +18,10 @@ fn assert_clean_failure(o: &Output) -> String {
     let err = stderr(o);
     assert!(!o.status.success(), "expected a failure");
     assert!(!err.contains("panicked"), "{err}");
-    // Warnings (`ugo: warning: …`) and progress lines may come first; then the one error.
-    let first = err.lines().find(|l| !l.starts_with("ugo: warning:") && !l.starts_with("ugo: progress:")).unwrap_or("");
+    // Warnings (`ugo: warning: …`), notes and progress lines may come first; then the one error.
+    let first =
+        err.lines().find(|l| !["ugo: warning:", "ugo: note:", "ugo: progress:"].iter().any(|p| l.starts_with(p)));
+    let first = first.unwrap_or("");
     assert!(first.starts_with("ugo: error:"), "{err}");
     err
 }

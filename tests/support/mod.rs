@@ -30,6 +30,7 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
             patch_size,
             directions: ugo::directions::Scheme::Cells(1),
             assembly: ugo::scene::Assembly::Explicit,
+            automatic: None,
         },
         solver: SolverSettings::default(),
         materials,
