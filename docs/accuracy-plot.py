@@ -2,8 +2,9 @@
 """Plots docs/img/accuracy-vs-time.csv (written by docs/accuracy-study.sh) as an SVG:
 the largest probe error (%) against the wall time of `ugo solve` (s), log-log, one
 series per kernel (explicit = uniform patches, hierarchical). Standard library only.
+docs/office-accuracy.py plots its CSV with it too, with the scene's name as a third argument.
 
-    python3 docs/accuracy-plot.py docs/img/accuracy-vs-time.csv docs/img/accuracy-vs-time.svg
+    python3 docs/accuracy-plot.py docs/img/accuracy-vs-time.csv docs/img/accuracy-vs-time.svg [SCENE]
 """
 import csv
 import math
@@ -45,7 +46,7 @@ def axes(x, y, xt, yt):
     return out
 
 
-def main(source, target):
+def main(source, target, scene="Cornell box"):
     rows = list(csv.DictReader(open(source)))
     xs = [float(r["wall_s"]) for r in rows]
     ys = [float(r["max_abs_err_pct"]) for r in rows]
@@ -56,7 +57,7 @@ def main(source, target):
     y = scale(y0, y1, H - BOTTOM, TOP)
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-family="sans-serif" font-size="11">',
            '<rect width="100%" height="100%" fill="#fff"/>',
-           f'<text x="{W / 2}" y="22" text-anchor="middle" font-size="14">Cornell box: accuracy against time</text>']
+           f'<text x="{W / 2}" y="22" text-anchor="middle" font-size="14">{scene}: accuracy against time</text>']
     out += axes(x, y, xt, yt)
     for i, (method, colour) in enumerate(COLOURS.items()):
         series = sorted((r for r in rows if r["method"] == method), key=lambda r: float(r["wall_s"]))
@@ -72,4 +73,4 @@ def main(source, target):
 
 
 if __name__ == "__main__":
-    main(*sys.argv[1:3])
+    main(*sys.argv[1:4])

@@ -65,7 +65,7 @@ fn print_forecast(f: &Forecast, assembly: &str) {
     println!("  unknowns           {:>12.4e}   ({} cells)", f.unknowns, f.cells);
     match f.leaves {
         Some(_) => println!(
-            "  memory before links{:>12}   (the links' memory is checked against the limit after each refinement pass)",
+            "  memory before links {:>11}   (the links' memory is checked against the limit after each refinement pass)",
             bytes(f.peak_bytes())
         ),
         None => println!("  memory at peak     {:>12}", bytes(f.peak_bytes())),

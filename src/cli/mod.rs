@@ -253,10 +253,11 @@ impl ugo::progress::Progress for Bars {
 
 /// Bytes as GiB/MiB text.
 pub fn bytes(b: f64) -> String {
-    if b >= (1u64 << 30) as f64 {
-        format!("{:.2} GiB", b / (1u64 << 30) as f64)
-    } else {
-        format!("{:.1} MiB", b / (1u64 << 20) as f64)
+    let gib = b / (1u64 << 30) as f64;
+    match gib {
+        g if g >= 1e4 => format!("{g:.3e} GiB"),
+        g if g >= 1.0 => format!("{g:.2} GiB"),
+        _ => format!("{:.1} MiB", b / (1u64 << 20) as f64),
     }
 }
 
