@@ -7,6 +7,7 @@ mod coverage;
 mod explicit;
 mod growth;
 mod model;
+mod monte_carlo;
 mod plates;
 mod push;
 mod rebalance;
