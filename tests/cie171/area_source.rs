@@ -2,7 +2,7 @@
 //! 4 × 4 × 3 m room (Table 12); the points read the emitter through the exact contour
 //! integral.
 
-use super::{compare, solved};
+use super::{Solved, compare, solved, solved_hierarchically};
 
 /// CIE 171:2006 Table 12, lx: wall A–F, floor G–N.
 const TABLE_12: [(&str, f64); 14] = [
@@ -24,7 +24,16 @@ const TABLE_12: [(&str, f64); 14] = [
 
 #[test]
 fn cie_5_3_area_source_in_a_room() {
-    let s = solved("5.3-area-source");
+    check_5_3(&solved("5.3-area-source"));
+}
+
+/// Issue 14.4: the same through the hierarchy.
+#[test]
+fn cie_5_3_area_source_in_a_room_through_the_hierarchy() {
+    check_5_3(&solved_hierarchically("5.3-area-source"));
+}
+
+fn check_5_3(s: &Solved) {
     let rows: Vec<(&str, f64, f64)> =
         TABLE_12.iter().map(|&(point, reference)| (point, reference, s.probe(point).illuminance)).collect();
     compare("5.3", &rows);

@@ -1,13 +1,22 @@
 //! 5.4, luminous flux conservation: an isotropic 10 000 lm source in a black room; every
 //! lumen lands on a surface, `Φ_surfaces / Φ = 1`.
 
-use super::{compare, solved};
+use super::{Solved, compare, solved, solved_hierarchically};
 use ugo::readout::energy::EnergyBalance;
 use ugo::readout::illuminance::patch_illuminance;
 
 #[test]
 fn cie_5_4_flux_lands_on_the_surfaces() {
-    let s = solved("5.4-flux-conservation");
+    check_5_4(&solved("5.4-flux-conservation"));
+}
+
+/// Issue 14.4: the same through the hierarchy.
+#[test]
+fn cie_5_4_flux_lands_on_the_surfaces_through_the_hierarchy() {
+    check_5_4(&solved_hierarchically("5.4-flux-conservation"));
+}
+
+fn check_5_4(s: &Solved) {
     let flux = s.model.sources[0].flux().expect("a point source");
     let landed = s.model.direct.intercepted[0];
     let areas: f64 = s.model.mesh.patches.iter().map(|p| p.area).sum();

@@ -18,7 +18,7 @@ use ugo::model::{Model, ModelOptions};
 use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::{ProbeReading, read_probes};
-use ugo::scene::Scene;
+use ugo::scene::{Assembly, ROOTS, Scene};
 use ugo::solve::{Method, SolveParams, System, solve};
 
 /// Agreement asked of every analytic point.
@@ -34,7 +34,25 @@ pub struct Solved {
 
 /// Loads `cases/cie171/<name>.toml` and solves it.
 pub fn solved(name: &str) -> Solved {
-    let scene = Scene::load(&Path::new("cases/cie171").join(format!("{name}.toml"))).unwrap_or_else(|e| panic!("{e}"));
+    solved_with(name, |_| ())
+}
+
+/// [`solved`] through the hierarchy a case without `method` would get at its patch size h
+/// (issue 14.4): elements split down to h from roots `ROOTS` h, the default tolerance.
+pub fn solved_hierarchically(name: &str) -> Solved {
+    solved_with(name, |scene| {
+        let h = scene.discretization.patch_size;
+        let tolerance = ugo::kernel::hierarchy::Options::default().tolerance;
+        scene.discretization.assembly = Assembly::Hierarchical { tolerance, smallest: h };
+        scene.discretization.patch_size = ROOTS * h;
+    })
+}
+
+/// Loads `cases/cie171/<name>.toml`, lets `change` alter it, and solves it.
+fn solved_with(name: &str, change: impl Fn(&mut Scene)) -> Solved {
+    let mut scene =
+        Scene::load(&Path::new("cases/cie171").join(format!("{name}.toml"))).unwrap_or_else(|e| panic!("{e}"));
+    change(&mut scene);
     let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).expect("fits in memory");
     let x = solve_model(&model, scene.solver.method);
     let probes = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()), &Silent);

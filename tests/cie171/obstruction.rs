@@ -2,7 +2,7 @@
 //! a black obstruction. `E/(E_v ρ)` in %, the corrected values (the printed Table 19 was
 //! computed with the wrong geometry; references.md).
 
-use super::{compare, solved};
+use super::{Solved, compare, solved, solved_hierarchically};
 use ugo::readout::illuminance::patch_illuminance;
 
 /// Corrected CIE 171:2006 Table 19, E/(E_v ρ) in %: wall A–F, floor G–K.
@@ -22,7 +22,16 @@ const CORRECTED_19: [(&str, f64); 11] = [
 
 #[test]
 fn cie_5_7_reflection_past_an_obstruction() {
-    let s = solved("5.7-obstruction");
+    check_5_7(&solved("5.7-obstruction"));
+}
+
+/// Issue 14.4: the same through the hierarchy.
+#[test]
+fn cie_5_7_reflection_past_an_obstruction_through_the_hierarchy() {
+    check_5_7(&solved_hierarchically("5.7-obstruction"));
+}
+
+fn check_5_7(s: &Solved) {
     let (e_v, rho) = (10_000.0, 0.6);
     let wall = s.scene.surface_index("S2").unwrap() as u32;
     let lit = patch_illuminance(&s.model.direct.arriving, 1);

@@ -1,7 +1,7 @@
 //! 5.2, point light sources: a Lambertian 1000 cd source 3 m above a plane,
 //! `E = I0 h² / d⁴` (Table 11).
 
-use super::{compare, solved};
+use super::{Solved, compare, solved, solved_hierarchically};
 use ugo::luminaire::Light;
 use ugo::photometry::Distribution;
 use ugo::progress::Silent;
@@ -23,7 +23,16 @@ const TABLE_11: [(&str, f64); 10] = [
 
 #[test]
 fn cie_5_2_point_source_over_a_plane() {
-    let s = solved("5.2-point-source");
+    check_5_2(&solved("5.2-point-source"));
+}
+
+/// Issue 14.4: the same through the hierarchy.
+#[test]
+fn cie_5_2_point_source_over_a_plane_through_the_hierarchy() {
+    check_5_2(&solved_hierarchically("5.2-point-source"));
+}
+
+fn check_5_2(s: &Solved) {
     let rows: Vec<(&str, f64, f64)> =
         TABLE_11.iter().map(|&(point, reference)| (point, reference, s.probe(point).illuminance)).collect();
     compare("5.2", &rows);

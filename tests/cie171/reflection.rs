@@ -1,7 +1,7 @@
 //! 5.6, light reflection over diffuse surfaces (scenario 2): a 4 × 4 m floor of ρ = 0.3
 //! under E_hz = 10 000 lx; `E/(E_hz ρ)` in % is the configuration factor (Table 17).
 
-use super::{compare, solved};
+use super::{Solved, compare, solved, solved_hierarchically};
 use ugo::readout::illuminance::patch_illuminance;
 
 /// CIE 171:2006 Table 17 (scenario 2), E/(E_hz ρ) in %: vertical plane B–F, horizontal G–N.
@@ -23,7 +23,16 @@ const TABLE_17: [(&str, f64); 13] = [
 
 #[test]
 fn cie_5_6_configuration_factors_of_a_lit_floor() {
-    let s = solved("5.6-diffuse-reflection");
+    check_5_6(&solved("5.6-diffuse-reflection"));
+}
+
+/// Issue 14.4: the same through the hierarchy.
+#[test]
+fn cie_5_6_configuration_factors_of_a_lit_floor_through_the_hierarchy() {
+    check_5_6(&solved_hierarchically("5.6-diffuse-reflection"));
+}
+
+fn check_5_6(s: &Solved) {
     let (e_hz, rho) = (10_000.0, 0.3);
     let lit = patch_illuminance(&s.model.direct.arriving, 1);
     assert!(
