@@ -46,6 +46,9 @@ fn a_case_without_method_is_solved_by_the_kernel_its_size_chooses() {
     let file = hdf5::File::open(&out).unwrap();
     let luminance = file.dataset("field/luminance").unwrap().read_dyn::<f64>().unwrap();
     assert!(file.dataset("hierarchy/leaf_level").is_ok(), "not the hierarchy");
+    let text = |name: &str| file.attr(name).unwrap().read_scalar::<hdf5::types::VarLenUnicode>().unwrap();
+    assert_eq!(text("assembly").as_str(), "hierarchical");
+    assert!(text("assembly_chosen_by_size").contains("3.840e7 facing pairs"));
     assert!(luminance.iter().all(|l| (l / 5.0 - 1.0).abs() < 1e-3), "the white furnace on the leaves");
 
     // `--assembly explicit`: the uniform mesh at the size asked for, no note
