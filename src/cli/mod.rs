@@ -61,11 +61,14 @@ fn choose_again(scene: &mut Scene, d: &Discretize) {
     let Some(automatic) = scene.discretization.automatic else { return };
     let asked = d.patch_size.unwrap_or(automatic.asked);
     let directions = scene.discretization.directions;
-    scene.discretization = match d.assembly {
-        Some(_) => Discretization { patch_size: asked, directions, assembly: Assembly::Explicit, automatic: None },
-        None if d.patch_size.is_some() => Discretization::automatic(asked, directions, &scene.surfaces),
-        None => scene.discretization.clone(),
-    };
+    if d.assembly.is_some() {
+        let assembly = Assembly::Explicit; // `assembly` below applies `--assembly`
+        scene.discretization = Discretization { patch_size: asked, directions, assembly, automatic: None };
+        return;
+    }
+    if d.patch_size.is_some() {
+        scene.discretization = Discretization::automatic(asked, directions, &scene.surfaces);
+    }
     if let (Some(automatic), Assembly::Hierarchical { .. }) =
         (scene.discretization.automatic, scene.discretization.assembly)
     {

@@ -30,9 +30,15 @@ impl Discretization {
         if facing_pairs <= EXPLICIT_PAIRS {
             return Discretization { patch_size, directions, assembly: Assembly::Explicit, automatic };
         }
+        Discretization { automatic, ..Discretization::hierarchical_down_to(patch_size, directions) }
+    }
+
+    /// The hierarchy chosen above [`EXPLICIT_PAIRS`]: elements split down to `patch_size`
+    /// from roots [`ROOTS`] times it, the default link tolerance.
+    pub fn hierarchical_down_to(patch_size: f64, directions: Scheme) -> Discretization {
         let tolerance = crate::kernel::hierarchy::Options::default().tolerance;
         let assembly = Assembly::Hierarchical { tolerance, smallest: patch_size };
-        Discretization { patch_size: ROOTS * patch_size, directions, assembly, automatic }
+        Discretization { patch_size: ROOTS * patch_size, directions, assembly, automatic: None }
     }
 }
 

@@ -29,9 +29,9 @@ pub enum KernelError {
     )]
     Mismatch { path: PathBuf, changes: Vec<Change> },
     #[error(
-        "the hierarchical kernel (the case's method, chosen by size, or --assembly) is neither saved nor reused: its links join \
-         elements of a tree refined along the solved field and the luminaires' light, which a kernel file \
-         does not hold; use the explicit kernel (--assembly explicit) to save or reuse G"
+        "the hierarchical kernel (the case's method, chosen by size, or --assembly) is neither saved nor \
+         reused: its links join elements of a tree refined along the solved field and the luminaires' light, \
+         which a kernel file does not hold; use the explicit kernel (--assembly explicit) to save or reuse G"
     )]
     Hierarchical,
     #[error(transparent)]

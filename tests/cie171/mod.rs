@@ -18,7 +18,7 @@ use ugo::model::{Model, ModelOptions};
 use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::{ProbeReading, read_probes};
-use ugo::scene::{Assembly, ROOTS, Scene};
+use ugo::scene::{Discretization, Scene};
 use ugo::solve::{Method, SolveParams, System, solve};
 
 /// Agreement asked of every analytic point.
@@ -37,14 +37,12 @@ pub fn solved(name: &str) -> Solved {
     solved_with(name, |_| ())
 }
 
-/// [`solved`] through the hierarchy a case without `method` would get at its patch size h
-/// (issue 14.4): elements split down to h from roots `ROOTS` h, the default tolerance.
+/// [`solved`] through the hierarchy a case without `method` would get at its patch size
+/// above the size rule's threshold (issue 14.4).
 pub fn solved_hierarchically(name: &str) -> Solved {
     solved_with(name, |scene| {
-        let h = scene.discretization.patch_size;
-        let tolerance = ugo::kernel::hierarchy::Options::default().tolerance;
-        scene.discretization.assembly = Assembly::Hierarchical { tolerance, smallest: h };
-        scene.discretization.patch_size = ROOTS * h;
+        let d = &scene.discretization;
+        scene.discretization = Discretization::hierarchical_down_to(d.patch_size, d.directions);
     })
 }
 
