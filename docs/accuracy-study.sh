@@ -28,7 +28,8 @@ if [[ "${REFERENCE:-0}" == 1 ]]; then
   $ugo trace "$out/cornell-probes.toml" --probe-samples 1000000 -o "$out"
 fi
 
-# One run: label, method, patch size, tolerance, smallest, then solve's options. Appends a
+# One run: label, method, patch size (the roots for the hierarchy), tolerance, smallest
+# leaf, then solve's options (its discretization flags). Appends a
 # row to the CSV: the probes' luminances, the largest |error| in %, time, memory, load.
 run() {
   local method=$1 h=$2 tol=$3 smallest=$4
@@ -36,7 +37,7 @@ run() {
   local log="$out/$method-$h-$tol-$smallest.log"
   local load
   load=$(cut -d' ' -f1 /proc/loadavg)
-  /usr/bin/time -f "wall %e s %M KB" $ugo solve "$case" --patch-size "$h" "$@" -o "$out/x.h5" > "$log" 2>&1
+  /usr/bin/time -f "wall %e s %M KB" $ugo solve "$case" "$@" -o "$out/x.h5" > "$log" 2>&1
   awk -v m="$method" -v h="$h" -v t="$tol" -v s="$smallest" -v load="$load" \
       -v rf="$ref_floor" -v rb="$ref_back" -v rc="$ref_ceiling" '
     function abs(x) { return x < 0 ? -x : x }
@@ -54,11 +55,12 @@ echo "method,patch_size_m,link_tolerance,smallest_m,leaves,wall_s,peak_MiB,floor
 sizes="0.1 0.07 0.05 0.035"
 [[ "${FINE:-0}" == 1 ]] && sizes="$sizes 0.025"
 for h in $sizes; do
-  run explicit "$h" - - --assembly explicit
+  run explicit "$h" - - --kernel uniform --patch-size "$h"
 done
 for ts in 1e-2:0.05 3e-3:0.05 1e-3:0.05 3e-3:0.035 1e-3:0.035 1e-3:0.025; do
   tol=${ts%:*} smallest=${ts#*:}
-  run hierarchical 0.25 "$tol" "$smallest" --assembly hierarchical --link-tolerance "$tol" --smallest "$smallest"
+  run hierarchical 0.25 "$tol" "$smallest" --kernel hierarchical --root-size 0.25 --link-tolerance "$tol" \
+    --patch-size "$smallest"
 done
 uptime
 if command -v python3 > /dev/null; then

@@ -26,7 +26,7 @@ measure() { # name, command...: its output to name.log, its timing (not its warn
   grep -v "^ugo: \(warning\|progress\)" "$out/$name.err"
 }
 measure backward $ugo trace "$out/ceiling.toml" --probe-samples 3000 --seed 31 -o "$out"
-measure forward $ugo trace "$out/ceiling.toml" --forward --assembly explicit --patch-size 0.25 --photons 50000000 \
+measure forward $ugo trace "$out/ceiling.toml" --forward --patch-size 0.25 --photons 50000000 \
   --seed 3 -o "$out/forward.h5"
-measure explicit $ugo solve "$out/ceiling.toml" --assembly explicit --patch-size 0.25 -o "$out/explicit.h5"
+measure explicit $ugo solve "$out/ceiling.toml" --kernel uniform --patch-size 0.25 -o "$out/explicit.h5"
 /usr/bin/python3 docs/ceiling-study.py "$out"

@@ -68,17 +68,17 @@ for case in cornell-box glossy-cornell; do
   trace_peer $case
 done
 
-h="--assembly hierarchical --patch-size 0.25"
-run cornell-h-1e-2 cornell-box 2048 $h
-run cornell-h-1e-2-4096 cornell-box 4096 $h
-run cornell-h-3e-3 cornell-box 4096 $h --link-tolerance 3e-3
-run cornell-h-0.035 cornell-box 4096 $h --smallest 0.035
-run cornell-e-0.05 cornell-box 4096 --assembly explicit --patch-size 0.05
-run cornell-e-0.035 cornell-box 4096 --assembly explicit --patch-size 0.035
-run glossy-h-64 glossy-cornell 4096 $h
-run glossy-h-144 glossy-cornell 4096 $h --directions 144
-run glossy-h-256 glossy-cornell 4096 $h --directions 256
-run glossy-e-64 glossy-cornell 4096 --assembly explicit --patch-size 0.055
+h="--kernel hierarchical --root-size 0.25"
+run cornell-h-1e-2 cornell-box 2048 $h --patch-size 0.05
+run cornell-h-1e-2-4096 cornell-box 4096 $h --patch-size 0.05
+run cornell-h-3e-3 cornell-box 4096 $h --patch-size 0.05 --link-tolerance 3e-3
+run cornell-h-0.035 cornell-box 4096 $h --patch-size 0.035
+run cornell-e-0.05 cornell-box 4096 --kernel uniform --patch-size 0.05
+run cornell-e-0.035 cornell-box 4096 --kernel uniform --patch-size 0.035
+run glossy-h-64 glossy-cornell 4096 $h --patch-size 0.05
+run glossy-h-144 glossy-cornell 4096 $h --patch-size 0.05 --directions 144
+run glossy-h-256 glossy-cornell 4096 $h --patch-size 0.05 --directions 256
+run glossy-e-64 glossy-cornell 4096 --kernel uniform --patch-size 0.055
 
 # The Monte Carlo peer of each case: paths per pixel, wall s, CPU s, peak KiB, noise.
 for pair in cornell-box:cornell-h-1e-2 glossy-cornell:glossy-h-64; do

@@ -55,9 +55,12 @@ RUNS = [
 
 def solve(method, h, tolerance, smallest):
     """Runs one solve; returns its log's text (with /usr/bin/time's line last)."""
-    args = [UGO, "solve", CASE, "--assembly", method, "--patch-size", str(h), "-o", f"{OUT}/x.h5"]
+    args = [UGO, "solve", CASE, "-o", f"{OUT}/x.h5"]
     if method == "hierarchical":
-        args += ["--link-tolerance", str(tolerance), "--smallest", str(smallest)]
+        args += ["--kernel", "hierarchical", "--root-size", str(h), "--link-tolerance", str(tolerance),
+                 "--patch-size", str(smallest)]
+    else:
+        args += ["--kernel", "uniform", "--patch-size", str(h)]
     timed = ["/usr/bin/time", "-f", "wall %e s %M KB"] + args
     run = subprocess.run(timed, capture_output=True, text=True, check=True)
     return run.stdout + run.stderr

@@ -246,7 +246,9 @@ fn run(command: Command) -> anyhow::Result<()> {
         Command::Compare { case, methods, output, plot, discretize, stopping, basis, bases, photons, seed, kernel } => {
             let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
             if !bases.is_empty() && kernel.given() {
-                anyhow::bail!("--kernel and --save-kernel do not apply to --bases (each basis assembles its own case)");
+                anyhow::bail!(
+                    "--kernel-file and --save-kernel do not apply to --bases (each basis assembles its own case)"
+                );
             }
             if !bases.is_empty() {
                 let plot = plot.unwrap_or_else(|| {

@@ -10,10 +10,10 @@ use glam::DVec3;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use ugo::basis::{Basis, Factorization, Reduced};
-use ugo::directions::DirectionSet;
+use ugo::directions::Scheme;
 use ugo::kernel::{Explicit, Factored, Transport};
-use ugo::model::{Model, ModelOptions};
-use ugo::scene::{Assembly, Scene};
+use ugo::model::Model;
+use ugo::scene::{Hierarchical, KernelKind, Scene};
 use ugo::solve::LinOp;
 use ugo::visibility::NO_FACE;
 
@@ -60,10 +60,9 @@ fn allocations(pool: &rayon::ThreadPool, work: impl FnMut() + Send) -> usize {
 
 #[test]
 fn kernel_applications_and_ray_queries_do_not_allocate() {
-    let scene = Scene::load(std::path::Path::new("cases/glossy-cornell.toml")).unwrap();
-    let options =
-        ModelOptions { patch_size: 0.15, directions: DirectionSet::hemisphere(16), ..ModelOptions::of(&scene) };
-    let model = Model::build(&scene, &options, &ugo::progress::Silent).unwrap();
+    let mut scene = Scene::load(std::path::Path::new("cases/glossy-cornell.toml")).unwrap();
+    (scene.discretization.patch_size, scene.discretization.directions) = (0.15, Scheme::Cells(16));
+    let model = Model::build(&scene, &ugo::progress::Silent).unwrap();
     let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build().unwrap();
     let n = model.l0.len();
     let x: Vec<f64> = (0..n).map(|i| 1.0 + (i % 7) as f64).collect();
@@ -84,9 +83,9 @@ fn kernel_applications_and_ray_queries_do_not_allocate() {
     few(allocations(&pool, || reduced.apply(&c, &mut z)), "reduced Φᵀ G Ψ c");
 
     let mut scene = scene;
-    scene.discretization.assembly = Assembly::hierarchical();
-    let options = ModelOptions { patch_size: 0.25, ..options };
-    let tree = Model::build(&scene, &options, &ugo::progress::Silent).unwrap();
+    scene.discretization.patch_size = 0.05;
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 0.25, link_tolerance: 1e-2 });
+    let tree = Model::build(&scene, &ugo::progress::Silent).unwrap();
     let Transport::Hierarchical(op) = &tree.kernel.g else { panic!("not hierarchical") };
     let hierarchical = Factored::new(&tree.kernel);
     let m = op.dim();

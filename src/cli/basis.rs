@@ -56,9 +56,9 @@ pub fn study(
                 .ok_or_else(|| anyhow::anyhow!("unknown basis \"{other}\"; use full, sh:L (L ≥ 0) or svd:R (R ≥ 1)")),
         })
         .collect::<Result<_>>()?;
-    let (scene, options) = load(case, d)?;
+    let scene = load(case, d)?;
     super::check_writable(plot)?;
-    let BasisStudy { model, rows } = compare_bases(&scene, &options, &bases, method, params, &Bars::default())?;
+    let BasisStudy { model, rows } = compare_bases(&scene, &bases, method, params, &Bars::default())?;
     let n = model.mesh.len();
     println!(
         "ugo: {} — {} patches, {} cells, {} by {}; errors against the full angular solution",

@@ -9,22 +9,27 @@ use std::path::Path;
 use ugo::kernel::{Estimate, Forecast};
 use ugo::luminaire::Source;
 use ugo::model::Model;
-use ugo::scene::Assembly;
+use ugo::scene::KernelKind;
 
 pub fn run(case: &Path, d: &Discretize) -> Result<()> {
-    let (scene, options) = load(case, d)?;
-    let forecast = Model::forecast(&scene, &options);
-    print_forecast(&forecast, scene.discretization.assembly.name());
+    let scene = load(case, d)?;
+    let d = &scene.discretization;
+    let forecast = Model::forecast(&scene);
+    print_forecast(&forecast, d.kernel.name());
     // (a choice of the hierarchy is told on stderr as the case loads)
-    if let (Some(automatic), Assembly::Explicit) = (scene.discretization.automatic, scene.discretization.assembly) {
-        println!("  method             not given: {automatic}");
+    if let (Some(chosen), KernelKind::Uniform) = (d.chosen_by_size, d.kernel) {
+        println!("  kernel             not given: {chosen}");
     }
-    forecast.check(options.memory_limit)?;
-    let mesh = Model::mesh(&scene, &options);
-    let estimate = Estimate::of(&mesh, &options.directions);
+    forecast.check(d.memory_limit)?;
+    let mesh = Model::starting_mesh(&scene);
+    let directions = d.directions.set();
+    let estimate = Estimate::of(&mesh, &directions);
     let areas = mesh.surface_areas(scene.surfaces.len());
     println!("ugo info: {} ({})", scene.name, case.display());
-    println!("  patch size         {:>12} m", options.patch_size);
+    println!("  patch size         {:>12} m", d.patch_size);
+    if let KernelKind::Hierarchical(h) = d.kernel {
+        println!("  root size          {:>12} m   (link tolerance {:.0e})", h.root_size, h.link_tolerance);
+    }
     println!("  surfaces           {:>12}", scene.surfaces.len());
     for (s, a) in scene.surfaces.iter().zip(&areas) {
         let n = mesh.patches.iter().filter(|p| scene.surfaces[p.surface as usize].name == s.name).count();
@@ -38,7 +43,7 @@ pub fn run(case: &Path, d: &Discretize) -> Result<()> {
         }
     }
     println!("  patches N          {:>12}", estimate.patches);
-    println!("  direction cells K  {:>12}   ({})", estimate.cells, options.directions.name());
+    println!("  direction cells K  {:>12}   ({})", estimate.cells, directions.name());
     println!("  unknowns           {:>12}", estimate.unknowns);
     println!(
         "  facing pairs       {:>12.0}{}",
@@ -48,7 +53,7 @@ pub fn run(case: &Path, d: &Discretize) -> Result<()> {
     println!("  non-zeros of G     {:>12.0}   (upper bound: occlusion removes some)", estimate.nonzeros);
     println!("  kernel memory      {:>12}", bytes(estimate.kernel_bytes));
     println!("  assembly peak      {:>12}", bytes(estimate.assembly_bytes));
-    println!("  memory limit       {:>12}", bytes(options.memory_limit as f64));
+    println!("  memory limit       {:>12}", bytes(d.memory_limit as f64));
     Ok(())
 }
 

@@ -1,4 +1,4 @@
-//! `--save-kernel` and `--kernel FILE.h5` of `solve`, `norms` and `compare` (issue 15,
+//! `--save-kernel` and `--kernel-file FILE.h5` of `solve`, `norms` and `compare` (issue 15,
 //! docs/kernel-file.md): the options, and the summary line of a reused kernel.
 
 use std::path::PathBuf;
@@ -7,7 +7,7 @@ use ugo::study::{self, KernelRecord};
 /// Saving and reusing the assembled kernel.
 #[derive(clap::Args, Clone, Debug)]
 pub struct KernelOptions {
-    /// Store the explicit kernel (G in CSR, the blocks B, the direct light D, L0 and the
+    /// Store the uniform kernel (G in CSR, the blocks B, the direct light D, L0 and the
     /// case's fingerprint) in the output's /kernel group.
     #[arg(long)]
     pub save_kernel: bool,
@@ -15,17 +15,17 @@ pub struct KernelOptions {
     /// for this case (refused naming the part that changed; new reflectances or luminaires
     /// reuse G).
     #[arg(long, value_name = "FILE.h5")]
-    pub kernel: Option<PathBuf>,
+    pub kernel_file: Option<PathBuf>,
 }
 
 impl KernelOptions {
     /// A study job with these options and the defaults otherwise.
     pub fn job(self) -> study::Job {
-        study::Job { kernel: self.kernel, save_kernel: self.save_kernel, ..Default::default() }
+        study::Job { kernel_file: self.kernel_file, save_kernel: self.save_kernel, ..Default::default() }
     }
 
     pub fn given(&self) -> bool {
-        self.save_kernel || self.kernel.is_some()
+        self.save_kernel || self.kernel_file.is_some()
     }
 }
 

@@ -16,88 +16,29 @@ pub mod stop;
 pub mod trace;
 
 use anyhow::{Result, bail};
-use options::{AssemblyArg, Discretize};
+use options::Discretize;
 use std::path::{Path, PathBuf};
 use ugo::luminaire::{Light, Source};
-use ugo::model::ModelOptions;
 use ugo::photometry::Distribution;
 use ugo::progress::{line, time_left};
-use ugo::scene::{Assembly, Discretization, Scene};
+use ugo::scene::{KernelKind, Scene};
 
-/// Loads a case and applies the command-line overrides: the discretization to the scene
-/// (the one place it is held), the memory limit and precision to the model options.
-pub fn load(case: &Path, d: &Discretize) -> Result<(Scene, ModelOptions)> {
+/// Loads a case with the command line's discretization flags resolved into it (the one
+/// record of its discretization), telling its old spellings and a kernel chosen by size.
+pub fn load(case: &Path, d: &Discretize) -> Result<Scene> {
     let mut scene = Scene::load(case)?;
     for warning in scene.warnings() {
         eprintln!("ugo: warning: {warning}");
     }
-    if let Some(h) = d.patch_size {
-        if !(h.is_finite() && h > 0.0) {
-            bail!("--patch-size must be a positive length in metres, got {h}");
-        }
-        scene.discretization.patch_size = h;
+    for old in &scene.old_spelling {
+        eprintln!("ugo: note: {old}");
     }
-    if let Some(directions) = d.directions {
-        scene.discretization.directions = directions;
+    scene.discretize(&d.asked())?;
+    let discretization = &scene.discretization;
+    if let (Some(chosen), KernelKind::Hierarchical(_)) = (discretization.chosen_by_size, discretization.kernel) {
+        eprintln!("ugo: note: no `kernel` in [discretization]: {chosen}");
     }
-    choose_again(&mut scene, d);
-    scene.discretization.assembly = assembly(scene.discretization.assembly, d)?;
-    let mut options = ModelOptions::of(&scene);
-    if let Some(precision) = d.precision {
-        options.precision = precision.into();
-    }
-    if let Some(gib) = d.memory_limit {
-        if !(gib.is_finite() && gib > 0.0) {
-            bail!("--memory-limit must be a positive number of GiB, got {gib}");
-        }
-        options.memory_limit = (gib * (1u64 << 30) as f64) as u64;
-    }
-    Ok((scene, options))
-}
-
-/// A case without `method`: its kernel chosen again for `--patch-size`, or left to
-/// `--assembly` at the patch size asked for; the choice told when it is the hierarchy.
-fn choose_again(scene: &mut Scene, d: &Discretize) {
-    let Some(automatic) = scene.discretization.automatic else { return };
-    let asked = d.patch_size.unwrap_or(automatic.asked);
-    let directions = scene.discretization.directions;
-    if d.assembly.is_some() {
-        let assembly = Assembly::Explicit; // `assembly` below applies `--assembly`
-        scene.discretization = Discretization { patch_size: asked, directions, assembly, automatic: None };
-        return;
-    }
-    if d.patch_size.is_some() {
-        scene.discretization = Discretization::automatic(asked, directions, &scene.surfaces);
-    }
-    if let (Some(automatic), Assembly::Hierarchical { .. }) =
-        (scene.discretization.automatic, scene.discretization.assembly)
-    {
-        eprintln!("ugo: note: no `method` in [discretization]: {automatic}");
-    }
-}
-
-/// The case's assembly with `--assembly`, `--link-tolerance` and `--smallest` applied.
-fn assembly(case: Assembly, d: &Discretize) -> Result<Assembly> {
-    let base = match (d.assembly, case) {
-        (Some(AssemblyArg::Explicit), _) => Assembly::Explicit,
-        (Some(AssemblyArg::Hierarchical), Assembly::Explicit) => Assembly::hierarchical(),
-        (_, case) => case,
-    };
-    let Assembly::Hierarchical { tolerance, smallest } = base else {
-        if d.link_tolerance.is_some() || d.smallest.is_some() {
-            bail!("--link-tolerance and --smallest apply only to the hierarchical kernel (--assembly hierarchical)");
-        }
-        return Ok(base);
-    };
-    let positive = |value: Option<f64>, default: f64, flag: &str| match value {
-        Some(v) if !(v.is_finite() && v > 0.0) => bail!("{flag} must be a positive number, got {v}"),
-        Some(v) => Ok(v),
-        None => Ok(default),
-    };
-    Ok(Assembly::Hierarchical {
-        tolerance: positive(d.link_tolerance, tolerance, "--link-tolerance")?,
-        smallest: positive(d.smallest, smallest, "--smallest (m)")?,
-    })
+    Ok(scene)
 }
 
 /// Refuses, before any work, an output file that could not be written: a folder of that

@@ -5,12 +5,15 @@
 use ugo::directions::Scheme;
 use ugo::io::Scale;
 use ugo::kernel::Precision;
+use ugo::scene::{Asked, Given, KernelAsked, KernelKind};
 use ugo::solve::Method;
 
-/// Options that override the case file's `[discretization]`.
+/// Options that override the case file's `[discretization]`, key by key; checked with the
+/// case's keys by the same rules (`Scene::discretize`).
 #[derive(clap::Args, Clone, Debug)]
 pub struct Discretize {
-    /// Target patch edge length, m (default: the case's `patch_size`).
+    /// Edge of the finest patches, m: every patch of the uniform kernel, the leaves the
+    /// hierarchical one splits down to (default: the case's `patch_size`).
     #[arg(long, allow_negative_numbers = true)]
     pub patch_size: Option<f64>,
     /// Largest kernel memory allowed, GiB (default: half the machine's RAM).
@@ -24,28 +27,43 @@ pub struct Discretize {
     /// (f32 values and u32 indices, 8 bytes; products still accumulate in f64).
     #[arg(long, value_enum)]
     pub precision: Option<PrecisionArg>,
-    /// How the kernel is built: `explicit` (every facing pair of patches) or `hierarchical`
-    /// (element trees under patches of `--patch-size`, links where the oracle accepts
-    /// them; docs/hierarchy.md). Default: the case's `method`; without one, the explicit
-    /// kernel up to 10⁷ facing pairs at the patch size, else the hierarchical one split
-    /// down to it from roots 4 times it.
-    #[arg(long, value_enum)]
-    pub assembly: Option<AssemblyArg>,
+    /// How the transport is built: `uniform` (every facing pair of patches), `hierarchical`
+    /// (element trees from roots of `--root-size` down to `--patch-size`, links where the
+    /// oracle accepts them; docs/hierarchy.md) or `auto`. Default: the case's `kernel`;
+    /// without one, the uniform kernel up to 10⁷ facing pairs at the patch size, else the
+    /// hierarchical one with its defaults. A saved kernel is `--kernel-file`.
+    #[arg(long, value_parser = kernel)]
+    pub kernel: Option<KernelAsked>,
+    /// Edge of the hierarchical kernel's roots, m (default: the case's `root_size`, else 4
+    /// times the patch size).
+    #[arg(long, allow_negative_numbers = true)]
+    pub root_size: Option<f64>,
     /// Error allowed per link of the hierarchical kernel, relative to the mean reflected
-    /// luminance (default: the case's `tolerance`, else 1e-2).
-    #[arg(long)]
+    /// luminance (default: the case's `link_tolerance`, else 1e-2).
+    #[arg(long, allow_negative_numbers = true)]
     pub link_tolerance: Option<f64>,
-    /// Smallest element edge of the hierarchical kernel, m (default: the case's `smallest`,
-    /// else 0.05).
-    #[arg(long)]
-    pub smallest: Option<f64>,
 }
 
-/// `--assembly`.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum AssemblyArg {
-    Explicit,
-    Hierarchical,
+impl Discretize {
+    /// What the flags ask of the discretization.
+    pub fn asked(&self) -> Asked {
+        Asked {
+            patch_size: self.patch_size.map(Given::flag("--patch-size")),
+            root_size: self.root_size.map(Given::flag("--root-size")),
+            link_tolerance: self.link_tolerance.map(Given::flag("--link-tolerance")),
+            kernel: self.kernel.map(Given::flag("--kernel")),
+            directions: self.directions,
+            precision: self.precision.map(Precision::from),
+            memory_limit: self.memory_limit.map(Given::flag("--memory-limit")),
+        }
+    }
+}
+
+/// `--kernel`.
+fn kernel(name: &str) -> Result<KernelAsked, String> {
+    KernelAsked::parse(name).ok_or_else(|| {
+        format!("--kernel must be {}, got \"{name}\" (a saved kernel is read with --kernel-file)", KernelKind::NAMES)
+    })
 }
 
 /// Options that override the case file's `[solver]` stopping rule.

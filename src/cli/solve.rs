@@ -40,7 +40,7 @@ impl Job {
 }
 
 pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
-    let (scene, options) = load(case, d)?;
+    let scene = load(case, d)?;
     let strict = job.stopping.strict;
     if strict && let Some(first) = scene.warnings().first() {
         bail!("--strict: the case's warning is an error: {first}");
@@ -48,7 +48,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let params = SolveParams {
         tolerance: job.stopping.tolerance.unwrap_or(scene.solver.tolerance),
         max_iterations: job.stopping.max_iterations.unwrap_or(scene.solver.max_iterations),
-        memory_limit: options.memory_limit,
+        memory_limit: scene.discretization.memory_limit,
         ..SolveParams::default()
     };
     if !(params.tolerance > 0.0 && params.tolerance < 1.0) {
@@ -67,8 +67,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     }
     let study = study::Job { params, ..job.run };
     let outputs: Vec<&Path> = std::iter::once(output.as_path()).chain(job.plot.as_deref()).collect();
-    let mut s =
-        solve_case(&scene, &options, &study, &Bars::default()).map_err(|e| super::stop::not_written(e, &outputs))?;
+    let mut s = solve_case(&scene, &study, &Bars::default()).map_err(|e| super::stop::not_written(e, &outputs))?;
     for (method, e) in &s.failures {
         eprintln!("ugo: {} failed: {e}", method.name());
     }
@@ -145,8 +144,13 @@ fn print_hierarchy(assembly: f64, rays: usize, h: &HierarchyRecord) {
     let leaves = h.census.leaf_level.len();
     let links: usize = h.census.element_links.iter().sum::<usize>() + h.census.cluster_links;
     println!(
-        "  assembly           {assembly:>12.3} s   (hierarchical, tolerance {:.0e}, smallest {} m: {} roots → {leaves} leaves, {links} links ({} with clusters, {} partly visible), {rays} occlusion rays)",
-        h.refinement.tolerance, h.refinement.smallest, h.roots, h.census.cluster_links, h.census.partial
+        "  assembly           {assembly:>12.3} s   (hierarchical, link tolerance {:.0e}, roots {} m, leaves down to {} m: {} roots → {leaves} leaves, {links} links ({} with clusters, {} partly visible), {rays} occlusion rays)",
+        h.parameters.link_tolerance,
+        h.parameters.root_size,
+        h.patch_size,
+        h.roots,
+        h.census.cluster_links,
+        h.census.partial
     );
     for p in &h.history {
         let balanced = p.balance.map_or(String::new(), |b| {

@@ -9,9 +9,9 @@ use super::render::chosen;
 use super::{bar, check_writable, load, sibling};
 use anyhow::{Result, bail};
 use std::path::{Path, PathBuf};
+use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
 use ugo::io::{EstimateFile, auto_exposure, write_estimate, write_exr_as, write_png};
-use ugo::model::ModelOptions;
 use ugo::scene::{ProbeKind, Scene};
 use ugo::trace::{TraceOptions, World, trace_camera, trace_photons, trace_probes};
 
@@ -28,19 +28,22 @@ pub struct TraceJob {
 }
 
 pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
-    let (scene, options) = load(case, d)?;
-    let f = ugo::model::Model::forecast(&scene, &options);
+    let scene = load(case, d)?;
+    // the tracers bin into the uniform mesh at the patch size, whatever the kernel
+    let (h, limit) = (scene.discretization.patch_size, scene.discretization.memory_limit);
+    let directions = scene.discretization.directions.set();
+    let f = ugo::kernel::Forecast::uniform(&scene.surfaces, scene.materials.len(), h, &directions);
     let need = f.mesh_bytes + f.vector_bytes;
-    if need.is_nan() || need > options.memory_limit as f64 {
+    if need.is_nan() || need > limit as f64 {
         bail!(
             "the mesh would need {} for {:.3e} patches (estimated before meshing), over the limit of {}: \
              a larger --patch-size, or a higher --memory-limit if the machine has the RAM",
             super::bytes(f.mesh_bytes + f.vector_bytes),
             f.patches,
-            super::bytes(options.memory_limit as f64)
+            super::bytes(limit as f64)
         );
     }
-    let mesh = Mesh::build(&scene.surfaces, options.patch_size);
+    let mesh = Mesh::build(&scene.surfaces, h);
     let world = World::new(&scene, mesh);
     // Surfaces and luminaires both emit: the tracers start paths on the one and gather
     // (or, forward, start photons at) the other.
@@ -56,7 +59,7 @@ pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
                 case.display()
             );
         }
-        return forward(case, &scene, &world, &options, job, photons);
+        return forward(case, &scene, &world, &directions, job, photons);
     }
     if job.spp == 0 {
         bail!("--spp must be at least 1");
@@ -78,7 +81,7 @@ fn forward(
     case: &Path,
     scene: &Scene,
     world: &World,
-    options: &ModelOptions,
+    directions: &DirectionSet,
     job: &TraceJob,
     photons: u64,
 ) -> Result<()> {
@@ -90,12 +93,12 @@ fn forward(
     let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}-forward.h5")));
     check_writable(&output)?;
     let progress = bar(photons, "photons");
-    let estimate = trace_photons(world, &options.directions, photons, &job.options, &|n| progress.inc(n));
+    let estimate = trace_photons(world, directions, photons, &job.options, &|n| progress.inc(n));
     progress.finish_and_clear();
     let file = EstimateFile {
         scene,
         mesh: &world.mesh,
-        directions: &options.directions,
+        directions,
         estimate: &estimate,
         options: &job.options,
         emitted: world.emitters.flux() + world.luminaires.flux(),
@@ -109,12 +112,7 @@ fn forward(
         .map(|(l, e)| e / l)
         .collect();
     println!("ugo trace --forward: {} ({}), seed {}, {order}", scene.name, case.display(), job.options.seed);
-    println!(
-        "  patches N × cells K  {} × {} ({})",
-        world.mesh.len(),
-        options.directions.len(),
-        options.directions.name()
-    );
+    println!("  patches N × cells K  {} × {} ({})", world.mesh.len(), directions.len(), directions.name());
     println!("  photons              {photons}");
     throughput(photons, estimate.rays, estimate.seconds, "photons");
     println!("  emitted flux         {:.6e} lm", world.emitters.flux() + world.luminaires.flux());

@@ -333,9 +333,9 @@ fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
     let st = &s.model.stats;
     write_identity(file, s.info.method, s.scene, &s.model.kernel.directions)?;
     let d = &s.scene.discretization;
-    text_attr(file, "assembly", d.assembly.name())?;
-    if let Some(automatic) = d.automatic {
-        text_attr(file, "assembly_chosen_by_size", &automatic.to_string())?;
+    text_attr(file, "kernel", d.kernel.name())?;
+    if let Some(chosen) = d.chosen_by_size {
+        text_attr(file, "kernel_chosen_by_size", &chosen.to_string())?;
     }
     let numbers: [(&str, f64); 18] = [
         ("tolerance", s.params.tolerance),

@@ -16,8 +16,9 @@ pub(super) fn write_hierarchy(g: &hdf5::Group, h: &HierarchyRecord) -> hdf5::Res
     dataset(g, "leaf_root", &Array1::from(c.leaf_root.clone()))?;
     dataset(g, "element_links", &Array1::from(c.element_links.iter().map(|&n| n as u64).collect::<Vec<_>>()))?;
     let attributes = [
-        ("tolerance", h.refinement.tolerance),
-        ("smallest_m", h.refinement.smallest),
+        ("link_tolerance", h.parameters.link_tolerance),
+        ("root_size_m", h.parameters.root_size),
+        ("patch_size_m", h.patch_size),
         ("roots", h.roots as f64),
         ("cluster_links", c.cluster_links as f64),
         ("clear_links", c.clear as f64),

@@ -13,8 +13,8 @@
 //! transient bytes are [`super::memory::Estimate`]'s; the mesh, the solver's vectors and
 //! the materials' `K × K` blocks are added.
 //!
-//! For the hierarchical kernel only the roots (elements of `patch_size`) and the most leaves
-//! (the uniform mesh at `smallest / 2`: a leaf splits while longer than `smallest`) are known
+//! For the hierarchical kernel only the roots (elements of `root_size`) and the most leaves
+//! (the uniform mesh at `patch_size / 2`: a leaf splits while longer than `patch_size`) are known
 //! before refinement; its links are checked
 //! against the limit after each pass.
 
@@ -37,9 +37,9 @@ const GIB: f64 = (1u64 << 30) as f64;
 /// The cost of a model, forecast from its surfaces.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Forecast {
-    /// Patches of the uniform mesh at `patch_size` (the hierarchy's roots).
+    /// Patches of the uniform mesh at `patch_size` (the hierarchy's roots at `root_size`).
     pub patches: f64,
-    /// The most leaves of the hierarchy (its uniform mesh at `smallest / 2`); `None` when explicit.
+    /// The most leaves of the hierarchy (its uniform mesh at `patch_size / 2`); `None` when uniform.
     pub leaves: Option<f64>,
     pub cells: usize,
     pub unknowns: f64,
@@ -61,9 +61,9 @@ pub struct Forecast {
 }
 
 impl Forecast {
-    /// The explicit kernel of `surfaces` (with `materials` materials) meshed at
+    /// The uniform kernel of `surfaces` (with `materials` materials) meshed at
     /// `patch_size` with `directions`.
-    pub fn explicit(surfaces: &[Surface], materials: usize, patch_size: f64, directions: &DirectionSet) -> Forecast {
+    pub fn uniform(surfaces: &[Surface], materials: usize, patch_size: f64, directions: &DirectionSet) -> Forecast {
         let cells = directions.len();
         let (coarse, weights) = coarse(surfaces, patch_size);
         let patches: f64 = weights.iter().sum();
@@ -92,25 +92,25 @@ impl Forecast {
         }
     }
 
-    /// The hierarchical kernel: roots at `patch_size`, leaves split while their longest edge
-    /// exceeds `smallest`, so no leaf is smaller than half of it: at most the uniform mesh
-    /// at `smallest / 2`.
+    /// The hierarchical kernel: roots at `root_size`, leaves split while their longest edge
+    /// exceeds `patch_size`, so no leaf is smaller than half of it: at most the uniform mesh
+    /// at `patch_size / 2`.
     pub fn hierarchical(
         surfaces: &[Surface],
         materials: usize,
+        root_size: f64,
         patch_size: f64,
-        smallest: f64,
         directions: &DirectionSet,
     ) -> Forecast {
         let cells = directions.len();
         let count = |h: f64| -> f64 {
             surfaces.iter().map(|s| element_count(&s.shape, h) * if s.two_sided { 2.0 } else { 1.0 }).sum()
         };
-        let patches = count(patch_size);
+        let patches = count(root_size);
         let unknowns = patches * cells as f64;
         Forecast {
             patches,
-            leaves: Some(count(smallest / 2.0)),
+            leaves: Some(count(patch_size / 2.0)),
             cells,
             unknowns,
             facing_pairs: 0.0,
@@ -169,15 +169,14 @@ impl std::fmt::Display for OverLimit {
         write!(
             f,
             ", the mesh {}, the material blocks (K × K each) {}; estimated before meshing. Ways out: a larger \
-             --patch-size (patches grow as patch_size⁻², {}), fewer --directions, {}or a higher --memory-limit \
-             if the machine has the RAM",
+             {}, fewer --directions, {}or a higher --memory-limit if the machine has the RAM",
             gib(e.mesh_bytes),
             gib(e.block_bytes),
             match e.leaves {
-                None => "the explicit kernel as patch_size⁻⁴",
-                Some(_) => "for the hierarchy: its roots",
+                None => "--patch-size (patches grow as patch_size⁻², the uniform kernel as patch_size⁻⁴)",
+                Some(_) => "--root-size (the hierarchy's roots grow as root_size⁻²)",
             },
-            if e.leaves.is_none() { "--assembly hierarchical, " } else { "" }
+            if e.leaves.is_none() { "--kernel hierarchical, " } else { "" }
         )
     }
 }

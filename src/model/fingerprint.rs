@@ -10,10 +10,10 @@
 //! `L0`. Probes, grids, cameras, the solver and the surfaces' own emission (`L_e`, taken
 //! from the case every time) are not part of the kernel.
 
-use super::system::ModelOptions;
 use crate::geometry::{Shape, Surface};
 use crate::luminaire::Source;
-use crate::scene::{Assembly, Scene};
+use crate::scene::{Discretization, KernelKind, Scene};
+use crate::transfer::form_factor::Quadrature;
 use crate::transfer::occlusion::{POINTS, SHADOW_DEPTH};
 use crate::visibility::VisibilityOptions;
 use std::fmt::Write;
@@ -125,9 +125,9 @@ pub struct Fingerprint {
 }
 
 impl Fingerprint {
-    /// The fingerprint of the kernel of `scene` discretized with `options`.
-    pub fn of(scene: &Scene, options: &ModelOptions) -> Fingerprint {
-        let hierarchical = matches!(scene.discretization.assembly, Assembly::Hierarchical { .. });
+    /// The fingerprint of the kernel of `scene` as discretized.
+    pub fn of(scene: &Scene) -> Fingerprint {
+        let hierarchical = matches!(scene.discretization.kernel, KernelKind::Hierarchical(_));
         let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
         let stamps = Part::ALL
             .into_iter()
@@ -144,9 +144,9 @@ impl Fingerprint {
                     }
                     Part::Materials => {
                         let _ = write!(h, "none");
-                        "none (the explicit G depends on no material)".to_string()
+                        "none (the uniform G depends on no material)".to_string()
                     }
-                    Part::Discretization => discretization(scene, options, &mut h),
+                    Part::Discretization => discretization(&scene.discretization, &mut h),
                     Part::Visibility => {
                         let text = format!(
                             "{:?}, {POINTS} occlusion points per patch, shadow depth {SHADOW_DEPTH}",
@@ -211,15 +211,20 @@ fn geometry(surfaces: &[Surface], h: &mut Fnv) -> String {
     format!("{} surfaces", surfaces.len())
 }
 
-fn discretization(scene: &Scene, options: &ModelOptions, h: &mut Fnv) -> String {
+fn discretization(d: &Discretization, h: &mut Fnv) -> String {
+    let kernel = match d.kernel {
+        // the name that kernel files have stored for the uniform kernel from the start
+        KernelKind::Uniform => "Explicit".to_string(),
+        KernelKind::Hierarchical(hierarchical) => format!("{hierarchical:?}"),
+    };
+    let quadrature = Quadrature::default();
     let text = format!(
-        "patch_size {:?} m, directions {}, method {:?}, G in {}, quadrature eta {:?} depth {}",
-        options.patch_size,
-        options.directions.name(),
-        scene.discretization.assembly,
-        options.precision.name(),
-        options.quadrature.eta,
-        options.quadrature.max_depth
+        "patch_size {:?} m, directions {}, method {kernel}, G in {}, quadrature eta {:?} depth {}",
+        d.patch_size,
+        d.directions.set().name(),
+        d.precision.name(),
+        quadrature.eta,
+        quadrature.max_depth
     );
     let _ = write!(h, "{text}");
     text

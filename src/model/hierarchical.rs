@@ -1,4 +1,4 @@
-//! The hierarchical model (`design.md` §3b): roots meshed at `patch_size`, the luminaires'
+//! The hierarchical model (`design.md` §3b): roots meshed at `root_size`, the luminaires'
 //! direct light on them (at a few points of each) as the first source term, then passes of refinement iterated with
 //! a solve (`kernel::hierarchy::iterate`). Before every solve the leaves are split where
 //! the luminaires' light varies over them by more than the error allowed (their shadow
@@ -11,7 +11,7 @@
 
 use super::range::{check_blocks, check_source, check_transport};
 use super::source::source_term;
-use super::system::{AssemblyStats, HierarchyRecord, Model, ModelError, ModelOptions, Refinement};
+use super::system::{AssemblyStats, HierarchyRecord, Model, ModelError};
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch};
 use crate::kernel::hierarchy::{Hierarchy, Iterated, Operator, Options, iterate, sample_points};
@@ -19,7 +19,7 @@ use crate::kernel::{Footprint, Kernel, Transport};
 use crate::luminaire::{DirectLight, OPENING_ETA, PatchLight, Source, arriving_at, incoming, patch_lights};
 use crate::material::Block;
 use crate::progress::Progress;
-use crate::scene::Scene;
+use crate::scene::{Hierarchical, Scene};
 use crate::solve::{Method, SolveParams, System, solve};
 use crate::visibility::{Faces, Visibility};
 use rayon::prelude::*;
@@ -65,15 +65,12 @@ fn worth_cutting(h: &Hierarchy, id: u32) -> f64 {
     }
 }
 
-pub fn build(
-    scene: &Scene,
-    options: &ModelOptions,
-    refinement: Refinement,
-    progress: &dyn Progress,
-) -> Result<Model, ModelError> {
+/// Links the roots, refines with the solve, and returns the model on the final leaves.
+pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -> Result<Model, ModelError> {
     let t = Instant::now();
-    let roots = Mesh::build(&scene.surfaces, options.patch_size);
-    let directions = options.directions.clone();
+    let d = &scene.discretization;
+    let roots = Mesh::build(&scene.surfaces, parameters.root_size);
+    let directions = d.directions.set();
     let k = directions.len();
     let blocks: Vec<Block> = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
     check_blocks(scene, &blocks, k)?;
@@ -88,7 +85,7 @@ pub fn build(
     let mut light_seconds = 0.0;
     let t = Instant::now();
     let hierarchy_options =
-        Options { tolerance: refinement.tolerance, smallest: refinement.smallest, ..Options::default() };
+        Options { tolerance: parameters.link_tolerance, smallest: d.patch_size, ..Options::default() };
     // The passes grow in cost as the links multiply: counted, with no time left forecast.
     progress.begin("refinement", 0);
     let mut h = Hierarchy::new(&roots, directions.clone(), blocks.clone(), hierarchy_options, &root_l0);
@@ -107,7 +104,7 @@ pub fn build(
     let mut solver = |op: &Operator, b: &[f64], scale: f64| -> Result<Vec<f64>, ModelError> {
         let (what, bytes, nonzeros, patches, cells) =
             ("hierarchical kernel", op.bytes(), op.pieces() as f64, op.dim() / k, k);
-        Footprint { what, bytes, nonzeros, patches, cells }.check(options.memory_limit)?;
+        Footprint { what, bytes, nonzeros, patches, cells }.check(d.memory_limit)?;
         let params = SolveParams { tolerance: (REFINEMENT_RESIDUAL * scale).min(0.5), ..SolveParams::default() };
         let system = System { operator: op, explicit: None, areas: &[], l0: b };
         let (x, _) = solve(Method::Gmres { restart: 30 }, &system, &params, &mut |_, _| {})?;
@@ -132,7 +129,8 @@ pub fn build(
         rays: history.iter().map(|p| p.rays).sum::<usize>() + root_light.rays + direct.rays,
         balance: None,
     };
-    let record = HierarchyRecord { refinement, roots: roots.len(), history, census: h.census() };
+    let record =
+        HierarchyRecord { parameters, patch_size: d.patch_size, roots: roots.len(), history, census: h.census() };
     let patch_material = mesh.patches.iter().map(|p| p.material).collect();
     let twin = mesh.patches.iter().map(|p| p.twin).collect();
     let g = Transport::Hierarchical(Box::new(operator));

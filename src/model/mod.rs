@@ -10,7 +10,6 @@
 //! A saved explicit `G` is reused instead of assembled (`reuse.rs`) when the case's
 //! fingerprint (`fingerprint.rs`) matches the one stored with it.
 
-mod explicit;
 mod fingerprint;
 mod group;
 mod hierarchical;
@@ -18,46 +17,51 @@ mod range;
 mod reuse;
 mod source;
 mod system;
+mod uniform;
 
 pub use fingerprint::{Change, Fingerprint, KERNEL_FORMAT, Part, Stamp};
 pub use range::{OutOfRange, check_transport, locate, place};
 pub use reuse::{NotThisMesh, StoredParts};
 pub use source::SourceTerm;
-pub use system::{AssemblyStats, HierarchyRecord, Model, ModelError, ModelOptions, Refinement};
+pub use system::{AssemblyStats, HierarchyRecord, Model, ModelError};
 
 use crate::geometry::Mesh;
 use crate::kernel::Forecast;
 use crate::progress::Progress;
-use crate::scene::{Assembly, Scene};
+use crate::scene::{KernelKind, Scene};
 use source::source_term;
 
 impl Model {
-    /// Meshes the scene only (for estimates).
-    pub fn mesh(scene: &Scene, options: &ModelOptions) -> Mesh {
-        Mesh::build(&scene.surfaces, options.patch_size)
+    /// The mesh the kernel starts from, for estimates: the uniform kernel's patches, or the
+    /// hierarchy's roots.
+    pub fn starting_mesh(scene: &Scene) -> Mesh {
+        let d = &scene.discretization;
+        match d.kernel {
+            KernelKind::Uniform => Mesh::build(&scene.surfaces, d.patch_size),
+            KernelKind::Hierarchical(h) => Mesh::build(&scene.surfaces, h.root_size),
+        }
     }
 
     /// What the model of `scene` will cost, from its surfaces, before meshing.
-    pub fn forecast(scene: &Scene, options: &ModelOptions) -> Forecast {
-        let (surfaces, materials) = (&scene.surfaces, scene.materials.len());
-        match scene.discretization.assembly {
-            Assembly::Explicit => Forecast::explicit(surfaces, materials, options.patch_size, &options.directions),
-            Assembly::Hierarchical { smallest, .. } => {
-                Forecast::hierarchical(surfaces, materials, options.patch_size, smallest, &options.directions)
+    pub fn forecast(scene: &Scene) -> Forecast {
+        let (surfaces, materials, d) = (&scene.surfaces, scene.materials.len(), &scene.discretization);
+        let directions = d.directions.set();
+        match d.kernel {
+            KernelKind::Uniform => Forecast::uniform(surfaces, materials, d.patch_size, &directions),
+            KernelKind::Hierarchical(h) => {
+                Forecast::hierarchical(surfaces, materials, h.root_size, d.patch_size, &directions)
             }
         }
     }
 
-    /// Builds the full model with the scene's assembly (`[discretization] method`), after
+    /// Builds the full model with the scene's kernel (`[discretization] kernel`), after
     /// its forecast is checked against the memory limit; `progress` hears of the pair
     /// evaluations, or of the hierarchy's refinement passes.
-    pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> Result<Model, ModelError> {
-        Model::forecast(scene, options).check(options.memory_limit)?;
-        match scene.discretization.assembly {
-            Assembly::Explicit => explicit::build(scene, options, progress),
-            Assembly::Hierarchical { tolerance, smallest } => {
-                hierarchical::build(scene, options, Refinement { tolerance, smallest }, progress)
-            }
+    pub fn build(scene: &Scene, progress: &dyn Progress) -> Result<Model, ModelError> {
+        Model::forecast(scene).check(scene.discretization.memory_limit)?;
+        match scene.discretization.kernel {
+            KernelKind::Uniform => uniform::build(scene, progress),
+            KernelKind::Hierarchical(h) => hierarchical::build(scene, h, progress),
         }
     }
 

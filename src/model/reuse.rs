@@ -4,7 +4,7 @@
 //! they changed, rebuilt from the case, and `L0 = L_e + B·D` (`design.md` §2, §3).
 
 use super::source::source_term;
-use super::system::{AssemblyStats, Model, ModelOptions};
+use super::system::{AssemblyStats, Model};
 use crate::geometry::Mesh;
 use crate::kernel::{Kernel, Transport, TransportMatrix};
 use crate::luminaire::{DirectLight, Source, direct_light};
@@ -39,10 +39,10 @@ pub struct NotThisMesh {
 
 impl Model {
     /// The explicit model of `scene` around the stored parts: nothing is assembled.
-    pub fn with_kernel(scene: &Scene, options: &ModelOptions, stored: StoredParts) -> Result<Model, NotThisMesh> {
+    pub fn with_kernel(scene: &Scene, stored: StoredParts) -> Result<Model, NotThisMesh> {
         let t = Instant::now();
-        let mesh = Mesh::build(&scene.surfaces, options.patch_size);
-        let directions = options.directions.clone();
+        let mesh = Mesh::build(&scene.surfaces, scene.discretization.patch_size);
+        let directions = scene.discretization.directions.set();
         let (rows, patches, cells) = (stored.g.rows(), mesh.len(), directions.len());
         if rows != patches * cells {
             return Err(NotThisMesh { rows, patches, cells });

@@ -3,45 +3,16 @@
 //! assembly cost, and why none was built.
 
 use super::range::OutOfRange;
-use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::interrupt::Interrupted;
 use crate::kernel::hierarchy::{Census, Pass};
-use crate::kernel::{BalanceReport, Kernel, OverLimit, Precision, TooLarge};
+use crate::kernel::{BalanceReport, Kernel, OverLimit, TooLarge};
 use crate::luminaire::{DirectLight, Source};
 use crate::material::MaterialModel;
-use crate::scene::Scene;
+use crate::scene::Hierarchical;
 use crate::solve::SolveError;
-use crate::transfer::form_factor::Quadrature;
 use crate::visibility::{Faces, Visibility};
 use thiserror::Error;
-
-/// How a scene is discretized.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ModelOptions {
-    /// Target patch edge length, m (the hierarchy's roots).
-    pub patch_size: f64,
-    /// Direction cells of every patch.
-    pub directions: DirectionSet,
-    /// Largest kernel memory allowed, bytes.
-    pub memory_limit: u64,
-    pub quadrature: Quadrature,
-    /// Precision of the stored `G`.
-    pub precision: Precision,
-}
-
-impl ModelOptions {
-    /// The scene's own discretization with the default limits.
-    pub fn of(scene: &Scene) -> ModelOptions {
-        ModelOptions {
-            patch_size: scene.discretization.patch_size,
-            directions: scene.discretization.directions.set(),
-            memory_limit: crate::kernel::memory::default_limit(),
-            quadrature: Quadrature::default(),
-            precision: Precision::Double,
-        }
-    }
-}
 
 /// Why no model was built.
 #[derive(Debug, Error)]
@@ -100,19 +71,13 @@ pub struct Model {
     pub hierarchy: Option<HierarchyRecord>,
 }
 
-/// The hierarchy's two parameters (`[discretization] tolerance` and `smallest`).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Refinement {
-    /// Error allowed per link relative to the mean reflected luminance (dimensionless).
-    pub tolerance: f64,
-    /// Smallest element edge, m.
-    pub smallest: f64,
-}
-
 /// What the hierarchical kernel made.
 #[derive(Debug, Clone, PartialEq)]
 pub struct HierarchyRecord {
-    pub refinement: Refinement,
+    /// Its roots and link tolerance.
+    pub parameters: Hierarchical,
+    /// The edge its leaves could split down to, m.
+    pub patch_size: f64,
     /// Root elements (patches of the roots' mesh).
     pub roots: usize,
     /// One record per refinement pass.

@@ -1,10 +1,11 @@
 //! The runtime scene: what a validated case file says, in plain types (`design.md` §7).
 
+use super::discretization::{Asked, Discretization};
+use super::discretization_keys::OldSpelling;
 use super::files::CaseFile;
 use super::grid::Grid;
 use super::light_scene::Lighting;
 use super::probe::Probe;
-use crate::directions::Scheme;
 use crate::geometry::Surface;
 use crate::luminaire::Luminaire;
 use crate::material::MaterialModel;
@@ -22,7 +23,13 @@ pub struct Scene {
     pub source: String,
     pub name: String,
     pub description: String,
+    /// What `[discretization]` asks for, kept so that the command line's flags can be
+    /// resolved with it (`Scene::discretize`).
+    pub asked: Asked,
+    /// `[discretization]` resolved: the one record of how the case is discretized.
     pub discretization: Discretization,
+    /// The `[discretization]` keys read in their old spelling, to be told.
+    pub old_spelling: Vec<OldSpelling>,
     pub solver: SolverSettings,
     pub materials: Vec<Material>,
     pub surfaces: Vec<Surface>,
@@ -37,59 +44,6 @@ pub struct Scene {
     pub lighting: Lighting,
     /// Every file the case names (OBJ, photometric), as read.
     pub files: Vec<CaseFile>,
-}
-
-/// `[discretization]`: how finely surfaces are meshed.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Discretization {
-    /// Target edge length of the patches, m; for the hierarchical kernel, of its roots
-    /// (the largest elements).
-    pub patch_size: f64,
-    /// Direction set (default one cell: radiosity).
-    pub directions: Scheme,
-    /// How the kernel is built (`method`; without it, chosen by size: [`Automatic`]).
-    pub assembly: Assembly,
-    /// Set when `method` was not given (or is `"auto"`): what the choice was made from.
-    pub automatic: Option<Automatic>,
-}
-
-/// Why the kernel was chosen by size (`scene/automatic.rs`).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Automatic {
-    /// The case's `patch_size`, m: the explicit kernel's patches, or the hierarchy's
-    /// smallest elements.
-    pub asked: f64,
-    /// Unordered pairs of facing patches the explicit kernel would have at `asked`.
-    pub facing_pairs: f64,
-}
-
-/// `[discretization] method`: how the kernel `K` is built.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Assembly {
-    /// Every facing pair of patches gets its entry (`design.md` §3).
-    Explicit,
-    /// Element trees over patches of `patch_size`, links where the oracle accepts them
-    /// (`design.md` §3b): `tolerance` is the error allowed per link relative to the mean
-    /// reflected luminance, `smallest` the smallest element edge, m.
-    Hierarchical { tolerance: f64, smallest: f64 },
-}
-
-impl Assembly {
-    /// The names of `method`.
-    pub const NAMES: &'static str = "\"explicit\", \"hierarchical\" or \"auto\"";
-
-    /// The hierarchical kernel with its default tolerance and smallest element.
-    pub fn hierarchical() -> Assembly {
-        let defaults = crate::kernel::hierarchy::Options::default();
-        Assembly::Hierarchical { tolerance: defaults.tolerance, smallest: defaults.smallest }
-    }
-
-    pub fn name(&self) -> &'static str {
-        match self {
-            Assembly::Explicit => "explicit",
-            Assembly::Hierarchical { .. } => "hierarchical",
-        }
-    }
 }
 
 /// `[solver]`: the method and its stopping rule.

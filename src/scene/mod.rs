@@ -8,6 +8,8 @@ mod arrays;
 mod automatic;
 mod check;
 mod description;
+mod discretization;
+mod discretization_keys;
 mod error;
 mod files;
 mod grid;
@@ -25,8 +27,12 @@ mod sky;
 mod surface;
 mod validate;
 
-pub use automatic::{EXPLICIT_PAIRS, ROOTS};
-pub use description::{Assembly, Automatic, Camera, Discretization, Material, Scene, SolverSettings};
+pub use automatic::{UNIFORM_PAIRS, by_size};
+pub use description::{Camera, Material, Scene, SolverSettings};
+pub use discretization::{
+    Asked, ChosenBySize, Discretization, Given, Hierarchical, KernelAsked, KernelKind, Origin, ROOTS,
+};
+pub use discretization_keys::OldSpelling;
 pub use error::SceneError;
 pub use files::{CaseFile, CaseFiles, regular_file};
 pub use grid::{Grid, MapScale, MapStyle};
@@ -79,6 +85,21 @@ impl Scene {
     /// them (`ugo: warning: …`) and goes on.
     pub fn warnings(&self) -> Vec<SceneError> {
         plausible::warnings(self)
+    }
+
+    /// The case's discretization with the command line's `flags` in place of its keys,
+    /// checked by the same rules (the kernel chosen by size again if it was left to it).
+    pub fn discretize(&mut self, flags: &Asked) -> Result<(), SceneError> {
+        let asked = self.asked.overridden_by(flags);
+        let (surfaces, before) = (&self.surfaces, &self.discretization);
+        // the pairs forecast depends on the patch size only: a choice made at it stands
+        let choose = |h, directions| match before.chosen_by_size {
+            Some(chosen) if chosen.patch_size == h => (before.kernel, chosen),
+            _ => by_size(h, directions, surfaces),
+        };
+        self.discretization = asked.resolve(&self.path, choose)?;
+        self.asked = asked;
+        Ok(())
     }
 
     /// Looks a surface up by name.

@@ -49,6 +49,11 @@ pub struct RawSceneInfo {
 pub struct RawDiscretization {
     pub patch_size: f64,
     pub directions: Option<RawDirections>,
+    pub kernel: Option<String>,
+    pub root_size: Option<f64>,
+    pub link_tolerance: Option<f64>,
+    /// The old spelling: `method` for `kernel`; with `method = "hierarchical"`,
+    /// `patch_size` the roots, `smallest` the finest leaves, `tolerance` the links'.
     pub method: Option<String>,
     pub tolerance: Option<f64>,
     pub smallest: Option<f64>,

@@ -6,8 +6,10 @@
 //! `luminaire.rs`, `probe.rs`). Each failure is a [`SceneError`] naming the table
 //! (`[[surface]] "floor" (#3)`) and the key.
 
+use super::automatic::by_size;
 use super::check::{Context, REL_TOL, show, unique_names};
-use super::description::{Assembly, Camera, Discretization, Scene, SolverSettings};
+use super::description::{Camera, Scene, SolverSettings};
+use super::discretization_keys;
 use super::error::SceneError;
 use super::files::CaseFiles;
 use super::grid::grids;
@@ -15,17 +17,16 @@ use super::light_scene::{Sources, lighting};
 use super::luminaire::luminaires;
 use super::material::materials;
 use super::probe::probes;
-use super::schema::{RawCamera, RawDirections, RawDiscretization, RawScene, RawSceneInfo, RawSolver};
+use super::schema::{RawCamera, RawScene, RawSceneInfo, RawSolver};
 use super::sky::daylight;
 use super::surface::{emits, surfaces};
-use crate::directions::Scheme;
 use crate::solve::Method;
 use std::path::Path;
 
 /// Validates the raw tables of the case file `path` (whose text is `source`).
 pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) -> Result<Scene, SceneError> {
     let (name, description) = scene_info(path, raw.scene);
-    let (patch_size, directions, assembly) = discretization(path, raw.discretization)?;
+    let (asked, old_spelling) = discretization_keys::asked(path, raw.discretization)?;
     let solver = solver(path, raw.solver)?;
     if raw.surface.is_empty() {
         return Err(SceneError::new(path, "[[surface]]", "", "the scene has no [[surface]]"));
@@ -60,16 +61,15 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         electric: tables.len(),
     };
     let lighting = lighting(path, &source, raw.lighting, &raw.light_scene, sources)?;
-    let discretization = match assembly {
-        Some(assembly) => Discretization { patch_size, directions, assembly, automatic: None },
-        None => Discretization::automatic(patch_size, directions, &surfaces),
-    };
+    let discretization = asked.resolve(path, |h, directions| by_size(h, directions, &surfaces))?;
     Ok(Scene {
         path: path.to_path_buf(),
         source,
         name,
         description,
+        asked,
         discretization,
+        old_spelling,
         solver,
         materials,
         surfaces,
@@ -90,56 +90,6 @@ fn scene_info(path: &Path, info: Option<RawSceneInfo>) -> (String, String) {
     let stem = || path.file_stem().map(|s| s.to_string_lossy().into_owned());
     let name = info.name.or_else(stem).unwrap_or_default();
     (name, info.description.unwrap_or_default())
-}
-
-/// `[discretization]`: the patch size, the direction set and the assembly (`None`: chosen by
-/// size once the surfaces are known, `scene/automatic.rs`).
-fn discretization(path: &Path, raw: Option<RawDiscretization>) -> Result<(f64, Scheme, Option<Assembly>), SceneError> {
-    let at = Context::new(path, "[discretization]");
-    let raw = raw.ok_or_else(|| at.error("", "the table [discretization] is required"))?;
-    let patch_size = at.positive("patch_size", raw.patch_size)?;
-    let name = match &raw.directions {
-        None => "1".to_string(),
-        Some(RawDirections::Count(k)) => k.to_string(),
-        Some(RawDirections::Name(name)) => name.clone(),
-    };
-    let directions = Scheme::parse(&name).ok_or_else(|| match name.parse::<u128>() {
-        Ok(k) if k > Scheme::MAX_CELLS as u128 => at.error(
-            "directions",
-            format!("out of range: at most {} cells (cell indices are 16-bit), got {k}", Scheme::MAX_CELLS),
-        ),
-        _ => at.error("directions", format!("unknown direction set \"{name}\"; give {}", Scheme::NAMES)),
-    })?;
-    let assembly = assembly(&at, &raw, patch_size)?;
-    Ok((patch_size, directions, assembly))
-}
-
-/// `method`, and the hierarchy's `tolerance` and `smallest` (refused without it); `None`
-/// for `"auto"` or no `method`.
-fn assembly(at: &Context, raw: &RawDiscretization, patch_size: f64) -> Result<Option<Assembly>, SceneError> {
-    let method = raw.method.as_deref().unwrap_or("auto");
-    let defaults = crate::kernel::hierarchy::Options::default();
-    if method != "hierarchical" {
-        for (key, value) in [("tolerance", raw.tolerance), ("smallest", raw.smallest)] {
-            if value.is_some() {
-                return Err(at.error(key, "applies only to method = \"hierarchical\""));
-            }
-        }
-    }
-    match method {
-        "auto" => Ok(None),
-        "explicit" => Ok(Some(Assembly::Explicit)),
-        "hierarchical" => {
-            let tolerance = at.positive("tolerance", raw.tolerance.unwrap_or(defaults.tolerance))?;
-            let smallest = at.positive("smallest", raw.smallest.unwrap_or(defaults.smallest))?;
-            if smallest > patch_size {
-                let message = format!("the smallest element ({smallest} m) exceeds patch_size ({patch_size} m)");
-                return Err(at.error("smallest", message));
-            }
-            Ok(Some(Assembly::Hierarchical { tolerance, smallest }))
-        }
-        other => Err(at.error("method", format!("unknown method \"{other}\"; give {}", Assembly::NAMES))),
-    }
 }
 
 fn solver(path: &Path, raw: Option<RawSolver>) -> Result<SolverSettings, SceneError> {

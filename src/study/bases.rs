@@ -6,7 +6,7 @@
 use super::solve::StudyError;
 use crate::basis::{Basis, Factorization, Reduced};
 use crate::kernel::Factored;
-use crate::model::{Model, ModelOptions};
+use crate::model::Model;
 use crate::progress::Progress;
 use crate::scene::Scene;
 use crate::solve::{Method, SolveParams, System, relative_residual, solve};
@@ -37,14 +37,13 @@ pub struct BasisStudy {
 /// Solves `scene` with `method` in the full basis and in each of `bases`.
 pub fn compare_bases(
     scene: &Scene,
-    options: &ModelOptions,
     bases: &[Option<Basis>],
     method: Method,
     params: SolveParams,
     progress: &dyn Progress,
 ) -> Result<BasisStudy, StudyError> {
-    let params = SolveParams { memory_limit: options.memory_limit, ..params };
-    let model = Model::build(scene, options, progress)?;
+    let params = SolveParams { memory_limit: scene.discretization.memory_limit, ..params };
+    let model = Model::build(scene, progress)?;
     let factored = Factored::new(&model.kernel);
     let start = Instant::now();
     let system = System::of(&model.kernel, &factored, None, &[], &model.l0);

@@ -1,5 +1,5 @@
 //! The kernel of a solve, assembled or reused (issue 15, `docs/kernel-file.md`): with
-//! `--kernel FILE.h5` the explicit `G` of an earlier `--save-kernel` is read instead of
+//! `--kernel-file FILE.h5` the uniform `G` of an earlier `--save-kernel` is read instead of
 //! assembled when the case's fingerprint matches the stored one; a change of a part that
 //! `G` depends on (geometry, discretization, visibility, version, the materials of a
 //! hierarchical kernel) is refused naming it; a change of the reflectances or the
@@ -9,9 +9,9 @@
 
 use crate::io::{IoError, StoredKernel, read_kernel};
 use crate::kernel::Transport;
-use crate::model::{Change, Fingerprint, Model, ModelError, ModelOptions, NotThisMesh, Part, StoredParts};
+use crate::model::{Change, Fingerprint, Model, ModelError, NotThisMesh, Part, StoredParts};
 use crate::progress::Progress;
-use crate::scene::{Assembly, Scene};
+use crate::scene::{KernelKind, Scene};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use thiserror::Error;
@@ -29,9 +29,9 @@ pub enum KernelError {
     )]
     Mismatch { path: PathBuf, changes: Vec<Change> },
     #[error(
-        "the hierarchical kernel (the case's method, chosen by size, or --assembly) is neither saved nor \
+        "the hierarchical kernel (the case's kernel, chosen by size, or --kernel) is neither saved nor \
          reused: its links join elements of a tree refined along the solved field and the luminaires' light, \
-         which a kernel file does not hold; use the explicit kernel (--assembly explicit) to save or reuse G"
+         which a kernel file does not hold; use the uniform kernel (--kernel uniform) to save or reuse G"
     )]
     Hierarchical,
     #[error(transparent)]
@@ -63,20 +63,19 @@ pub struct Loaded {
 /// fingerprint to store when `save`. Refuses the hierarchical kernel in either case.
 pub fn model_with_kernel(
     scene: &Scene,
-    options: &ModelOptions,
     kernel: Option<&Path>,
     save: bool,
     progress: &dyn Progress,
 ) -> Result<(Model, KernelRecord), KernelError> {
-    if (save || kernel.is_some()) && matches!(scene.discretization.assembly, Assembly::Hierarchical { .. }) {
+    if (save || kernel.is_some()) && matches!(scene.discretization.kernel, KernelKind::Hierarchical(_)) {
         return Err(KernelError::Hierarchical);
     }
-    let fingerprint = (save || kernel.is_some()).then(|| Fingerprint::of(scene, options));
+    let fingerprint = (save || kernel.is_some()).then(|| Fingerprint::of(scene));
     let Some(path) = kernel else {
-        let model = Model::build(scene, options, progress)?;
+        let model = Model::build(scene, progress)?;
         return Ok((model, KernelRecord { save: fingerprint, loaded: None }));
     };
-    let ours = fingerprint.clone().unwrap_or_else(|| Fingerprint::of(scene, options));
+    let ours = fingerprint.clone().unwrap_or_else(|| Fingerprint::of(scene));
     let t = Instant::now();
     let stored = read_kernel(path)?;
     let seconds = t.elapsed().as_secs_f64();
@@ -94,7 +93,7 @@ pub fn model_with_kernel(
         direct: (!changed(Part::Luminaires)).then_some(direct),
         read_seconds: seconds,
     };
-    let model = Model::with_kernel(scene, options, parts)?;
+    let model = Model::with_kernel(scene, parts)?;
     let loaded = Loaded { path: path.to_path_buf(), rebuilt, seconds };
     Ok((model, KernelRecord { save: save.then_some(ours), loaded: Some(loaded) }))
 }

@@ -8,7 +8,7 @@ use super::kernel::{KernelError, KernelRecord, model_with_kernel};
 use crate::basis::{Basis, BasisError, Factorization, Reduced};
 use crate::io::Run;
 use crate::kernel::{Explicit, Factored, TooLarge};
-use crate::model::{Model, ModelError, ModelOptions};
+use crate::model::{Model, ModelError};
 use crate::progress::Progress;
 use crate::readout::daylight::{DaylightReadings, read_daylight};
 use crate::readout::energy::EnergyBalance;
@@ -43,8 +43,8 @@ pub struct Job {
     pub photons: Option<u64>,
     /// Seed of that reference.
     pub seed: u64,
-    /// Reuse the explicit `G` saved in this file (`--kernel`, `super::kernel`).
-    pub kernel: Option<PathBuf>,
+    /// Reuse the uniform `G` saved in this file (`--kernel-file`, `super::kernel`).
+    pub kernel_file: Option<PathBuf>,
     /// Keep the kernel's fingerprint so that the output saves it (`--save-kernel`).
     pub save_kernel: bool,
 }
@@ -61,7 +61,7 @@ impl Default for Job {
             basis: None,
             photons: None,
             seed: 1,
-            kernel: None,
+            kernel_file: None,
             save_kernel: false,
         }
     }
@@ -128,22 +128,17 @@ pub struct MonteCarlo {
 
 /// Builds the model of `scene` and solves it as `job` asks; `progress` hears of the
 /// assembly, each method's iterations and the photons.
-pub fn solve_case(
-    scene: &Scene,
-    options: &ModelOptions,
-    job: &Job,
-    progress: &dyn Progress,
-) -> Result<Solved, StudyError> {
+pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<Solved, StudyError> {
     let methods = if job.methods.is_empty() { vec![scene.solver.method] } else { job.methods.clone() };
-    let (model, kernel) = model_with_kernel(scene, options, job.kernel.as_deref(), job.save_kernel, progress)?;
+    let (model, kernel) = model_with_kernel(scene, job.kernel_file.as_deref(), job.save_kernel, progress)?;
     let factors =
         job.basis.map(|b| Factorization::new(b, &model.kernel.blocks, &model.kernel.directions)).transpose()?;
     let reduced = factors.as_ref().map(|f| Reduced::new(&model.kernel, f));
     let needs_explicit = job.norms || methods.iter().any(Method::needs_explicit);
     let explicit = match (&reduced, needs_explicit) {
         (_, false) => None,
-        (Some(r), true) => Some(Explicit(r.explicit(options.memory_limit)?)),
-        (None, true) => Some(Explicit(model.kernel.explicit(options.memory_limit)?)),
+        (Some(r), true) => Some(Explicit(r.explicit(scene.discretization.memory_limit)?)),
+        (None, true) => Some(Explicit(model.kernel.explicit(scene.discretization.memory_limit)?)),
     };
     let factored = Factored::new(&model.kernel);
     let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();

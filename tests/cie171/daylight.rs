@@ -16,7 +16,7 @@ use super::{TOLERANCE, solve_model};
 use glam::DVec3;
 use std::path::Path;
 use ugo::luminaire::{Light, LuminaireKind};
-use ugo::model::{Model, ModelOptions};
+use ugo::model::Model;
 use ugo::progress::Silent;
 use ugo::readout::daylight::sky_and_ground;
 use ugo::readout::field::Field;
@@ -157,7 +157,7 @@ fn load(case: &str) -> Scene {
 fn check(case: &str, files: &[&str]) -> Vec<String> {
     let listed = deviations();
     let scene = load(case);
-    let mut model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).expect("fits");
+    let mut model = Model::build(&scene, &ugo::progress::Silent).expect("fits");
     // The case's own sky (overcast) through the whole solve: the black room's probes read
     // exactly the sky and ground through the openings.
     let x = solve_model(&model, scene.solver.method);

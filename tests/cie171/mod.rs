@@ -14,11 +14,11 @@ mod reflection;
 
 use std::path::Path;
 use ugo::kernel::{Explicit, Factored};
-use ugo::model::{Model, ModelOptions};
+use ugo::model::Model;
 use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::{ProbeReading, read_probes};
-use ugo::scene::{Discretization, Scene};
+use ugo::scene::{Hierarchical, KernelKind, Scene};
 use ugo::solve::{Method, SolveParams, System, solve};
 
 /// Agreement asked of every analytic point.
@@ -37,12 +37,11 @@ pub fn solved(name: &str) -> Solved {
     solved_with(name, |_| ())
 }
 
-/// [`solved`] through the hierarchy a case without `method` would get at its patch size
+/// [`solved`] through the hierarchy a case without `kernel` would get at its patch size
 /// above the size rule's threshold (issue 14.4).
 pub fn solved_hierarchically(name: &str) -> Solved {
     solved_with(name, |scene| {
-        let d = &scene.discretization;
-        scene.discretization = Discretization::hierarchical_down_to(d.patch_size, d.directions);
+        scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical::over(scene.discretization.patch_size));
     })
 }
 
@@ -51,7 +50,7 @@ fn solved_with(name: &str, change: impl Fn(&mut Scene)) -> Solved {
     let mut scene =
         Scene::load(&Path::new("cases/cie171").join(format!("{name}.toml"))).unwrap_or_else(|e| panic!("{e}"));
     change(&mut scene);
-    let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).expect("fits in memory");
+    let model = Model::build(&scene, &ugo::progress::Silent).expect("fits in memory");
     let x = solve_model(&model, scene.solver.method);
     let probes = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()), &Silent);
     Solved { scene, model, x, probes }

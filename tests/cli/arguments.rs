@@ -11,9 +11,9 @@ fn negative_numbers_are_refused_by_the_rule_of_their_option() {
     let err = assert_clean_failure(&ugo(&["solve", case, "--tolerance", "-1"]));
     assert!(err.contains("--tolerance must lie in (0, 1), got -1"), "{err}");
     let err = assert_clean_failure(&ugo(&["solve", case, "--patch-size", "-0.1"]));
-    assert!(err.contains("--patch-size must be a positive length"), "{err}");
+    assert!(err.contains("--patch-size must be a length in metres greater than 0, got -0.1"), "{err}");
     let err = assert_clean_failure(&ugo(&["info", case, "--memory-limit", "-2"]));
-    assert!(err.contains("--memory-limit must be a positive number"), "{err}");
+    assert!(err.contains("--memory-limit must be a number of GiB greater than 0, got -2"), "{err}");
     // Unsigned options: clap's message names the option instead of "unexpected argument".
     let o = ugo(&["solve", case, "--max-iterations", "-1"]);
     assert!(!o.status.success());
@@ -112,17 +112,17 @@ fn a_model_over_the_memory_limit_is_refused_before_meshing_with_its_estimate() {
     let case = "cases/furnace-box.toml";
     for command in ["info", "solve", "bench"] {
         let started = std::time::Instant::now();
-        let err = assert_clean_failure(&ugo(&[command, case, "--patch-size", "1e-12", "--assembly", "explicit"]));
+        let err = assert_clean_failure(&ugo(&[command, case, "--patch-size", "1e-12", "--kernel", "uniform"]));
         assert!(started.elapsed().as_secs_f64() < 5.0, "{command}: {:?}", started.elapsed());
-        for fragment in ["6.000e24 patches", "facing pairs", "estimated before meshing", "--assembly hierarchical"] {
+        for fragment in ["6.000e24 patches", "facing pairs", "estimated before meshing", "--kernel hierarchical"] {
             assert!(err.contains(fragment), "{command}: {err}");
         }
-        // without `method`, the hierarchy is chosen, and its roots (4e-12 m) are refused
+        // without `kernel`, the hierarchy is chosen, and its roots (4e-12 m) are refused
         let err = assert_clean_failure(&ugo(&[command, case, "--patch-size", "1e-12"]));
         for fragment in ["3.750e23 patches", "roots of the hierarchy", "estimated before meshing"] {
             assert!(err.contains(fragment), "{command}: {err}");
         }
-        assert!(!err.contains("--assembly hierarchical"), "{command}: {err}");
+        assert!(!err.contains("--kernel hierarchical") && err.contains("--root-size"), "{command}: {err}");
     }
     // the forecast before the refusal, in figures that fit its column
     let o = ugo(&["info", case, "--patch-size", "1e-12"]);
@@ -132,7 +132,7 @@ fn a_model_over_the_memory_limit_is_refused_before_meshing_with_its_estimate() {
     let o = ugo(&["info", case]);
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(out.contains("before meshing") && out.contains("memory at peak"), "{out}");
-    let o = ugo(&["info", case, "--assembly", "hierarchical", "--smallest", "0.001"]);
+    let o = ugo(&["info", case, "--kernel", "hierarchical", "--root-size", "0.1", "--patch-size", "0.001"]);
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(out.contains("leaves at most") && out.contains("2.4000e7"), "{out}");
     assert!(out.contains("memory before links") && !out.contains("memory at peak"), "{out}");

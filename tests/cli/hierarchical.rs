@@ -1,7 +1,7 @@
-//! `--assembly hierarchical` and `[discretization] method = "hierarchical"` end to end: the
+//! `--kernel hierarchical` and `[discretization] kernel = "hierarchical"` end to end: the
 //! solve, its summary of passes, `/hierarchy` in the HDF5 file and `render` of the leaves;
-//! the hierarchy's keys refused with the explicit kernel; a case without `method` solved by
-//! the kernel its size chooses.
+//! the hierarchy's flags refused with the uniform kernel and checked as its keys are; a
+//! case without `kernel` solved by the kernel its size chooses.
 
 use super::{assert_clean_failure, stderr};
 use crate::support::{scratch, ugo};
@@ -10,8 +10,8 @@ use crate::support::{scratch, ugo};
 fn a_hierarchical_solve_writes_its_passes_and_renders() {
     let dir = scratch("hierarchical");
     let out = dir.join("furnace.h5");
-    let args = ["solve", "cases/furnace-box.toml", "--assembly", "hierarchical", "--patch-size", "0.5"];
-    let o = ugo(&[&args[..], &["--smallest", "0.1", "-o", out.to_str().unwrap()]].concat());
+    let args = ["solve", "cases/furnace-box.toml", "--kernel", "hierarchical", "--root-size", "0.5"];
+    let o = ugo(&[&args[..], &["--patch-size", "0.1", "-o", out.to_str().unwrap()]].concat());
     assert!(o.status.success(), "{}", stderr(&o));
     let summary = String::from_utf8_lossy(&o.stdout);
     assert!(summary.contains("hierarchical") && summary.contains("pass 0"), "{summary}");
@@ -32,27 +32,27 @@ fn a_hierarchical_solve_writes_its_passes_and_renders() {
     assert!(o.status.success(), "{}", stderr(&o));
 }
 
-/// Issue 14.8: the furnace cube has no `method`; at 0.025 m its explicit kernel would have
+/// Issue 14.8: the furnace cube has no `kernel`; at 0.025 m its uniform kernel would have
 /// 15 · 40⁴ = 3.8e7 facing pairs, so the hierarchy solves it, told on stderr, and the
 /// uniform mesh stays one option away.
 #[test]
-fn a_case_without_method_is_solved_by_the_kernel_its_size_chooses() {
+fn a_case_without_kernel_is_solved_by_the_kernel_its_size_chooses() {
     let dir = scratch("automatic");
     let out = dir.join("furnace.h5");
     let o = ugo(&["solve", "cases/furnace-box.toml", "--patch-size", "0.025", "-o", out.to_str().unwrap()]);
     assert!(o.status.success(), "{}", stderr(&o));
     let note = stderr(&o);
-    assert!(note.contains("ugo: note: no `method`") && note.contains("3.840e7 facing pairs"), "{note}");
+    assert!(note.contains("ugo: note: no `kernel`") && note.contains("3.840e7 facing pairs"), "{note}");
     let file = hdf5::File::open(&out).unwrap();
     let luminance = file.dataset("field/luminance").unwrap().read_dyn::<f64>().unwrap();
     assert!(file.dataset("hierarchy/leaf_level").is_ok(), "not the hierarchy");
     let text = |name: &str| file.attr(name).unwrap().read_scalar::<hdf5::types::VarLenUnicode>().unwrap();
-    assert_eq!(text("assembly").as_str(), "hierarchical");
-    assert!(text("assembly_chosen_by_size").contains("3.840e7 facing pairs"));
+    assert_eq!(text("kernel").as_str(), "hierarchical");
+    assert!(text("kernel_chosen_by_size").contains("3.840e7 facing pairs"));
     assert!(luminance.iter().all(|l| (l / 5.0 - 1.0).abs() < 1e-3), "the white furnace on the leaves");
 
-    // `--assembly explicit`: the uniform mesh at the size asked for, no note
-    let o = ugo(&["info", "cases/furnace-box.toml", "--patch-size", "0.025", "--assembly", "explicit"]);
+    // `--kernel uniform`: the uniform mesh at the size asked for, no note
+    let o = ugo(&["info", "cases/furnace-box.toml", "--patch-size", "0.025", "--kernel", "uniform"]);
     let err = stderr(&o);
     assert!(o.status.success() && !err.contains("note:"), "{err}");
     let summary = String::from_utf8_lossy(&o.stdout);
@@ -60,22 +60,56 @@ fn a_case_without_method_is_solved_by_the_kernel_its_size_chooses() {
 }
 
 #[test]
-fn the_hierarchys_keys_are_refused_with_the_explicit_kernel() {
-    let o = ugo(&["solve", "cases/furnace-box.toml", "--smallest", "0.1"]);
+fn the_hierarchys_flags_are_refused_with_the_uniform_kernel_and_checked_as_its_keys() {
+    let o = ugo(&["solve", "cases/furnace-box.toml", "--root-size", "1"]);
     let err = assert_clean_failure(&o);
-    assert!(err.contains("--assembly hierarchical"), "{err}");
-    let o = ugo(&["solve", "cases/furnace-box.toml", "--assembly", "hierarchical", "--link-tolerance", "-1"]);
-    assert_clean_failure(&o);
+    assert!(err.contains("--root-size applies only to the hierarchical kernel"), "{err}");
+    assert!(err.contains("--kernel hierarchical"), "{err}");
+    let hierarchical = ["solve", "cases/furnace-box.toml", "--kernel", "hierarchical"];
+    let err = assert_clean_failure(&ugo(&[&hierarchical[..], &["--link-tolerance", "-1"]].concat()));
+    assert!(err.contains("--link-tolerance must be a number greater than 0, got -1"), "{err}");
+    // the rule of `root_size` in a case file, for the flag: roots no smaller than the leaves
+    let err = assert_clean_failure(&ugo(&[&hierarchical[..], &["--root-size", "0.05"]].concat()));
+    assert!(err.contains("--root-size (0.05 m) must not be smaller than patch_size (0.1 m)"), "{err}");
+    let err = assert_clean_failure(&ugo(&["solve", "cases/furnace-box.toml", "--kernel", "cases/x.h5"]));
+    assert!(err.contains("--kernel-file"), "{err}");
+    // `--kernel uniform` on a hierarchical case sets its `root_size` and `link_tolerance` aside
+    let o = ugo(&["info", "cases/office.toml", "--kernel", "uniform", "--patch-size", "1"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("uniform kernel"));
 }
 
-/// Issue 14.6: `ugo bench --assembly hierarchical` reports leaves, links and time over
-/// smallest element sizes with the fitted exponents, and refuses `--export` (no matrix).
+/// The spelling before issue 33 still reads, told on stderr, to the same discretization.
+#[test]
+fn the_old_spelling_is_read_with_a_note() {
+    let dir = scratch("old-spelling");
+    let case = dir.join("office.toml");
+    let text = std::fs::read_to_string("cases/office.toml").unwrap().replace(
+        "patch_size = 0.15\nkernel = \"hierarchical\"\nroot_size = 1\nlink_tolerance = 0.01",
+        "patch_size = 1\nmethod = \"hierarchical\"\ntolerance = 0.01\nsmallest = 0.15",
+    );
+    assert!(text.contains("smallest = 0.15"), "the office's [discretization] changed");
+    std::fs::write(&case, text).unwrap();
+    std::fs::copy("cases/office-downlight.ies", dir.join("office-downlight.ies")).unwrap();
+    let (old, new) = (ugo(&["info", case.to_str().unwrap()]), ugo(&["info", "cases/office.toml"]));
+    assert!(old.status.success(), "{}", stderr(&old));
+    let err = stderr(&old);
+    assert!(err.contains("ugo: note:") && err.contains("`smallest = 0.15` is the old spelling"), "{err}");
+    let figures = |o: &std::process::Output| {
+        let out = String::from_utf8_lossy(&o.stdout).into_owned();
+        out.lines().filter(|l| !l.starts_with("ugo info:")).collect::<Vec<_>>().join("\n")
+    };
+    assert_eq!(figures(&old), figures(&new));
+}
+
+/// Issue 14.6: `ugo bench --kernel hierarchical` reports leaves, links and time over leaf
+/// sizes with the fitted exponents, and refuses `--export` (no matrix).
 #[test]
 fn bench_reports_the_hierarchys_links_against_the_leaves() {
     let dir = scratch("bench-hierarchical");
     let json = dir.join("bench.json");
-    let args = ["bench", "--assembly", "hierarchical", "--patch-size", "0.25", "--link-tolerance", "3e-2"];
-    let sizes = ["--smallest", "0.1", "--rays", "20000", "--scaling", "0.25,0.15", "--json", json.to_str().unwrap()];
+    let args = ["bench", "--kernel", "hierarchical", "--root-size", "0.25", "--link-tolerance", "3e-2"];
+    let sizes = ["--patch-size", "0.1", "--rays", "20000", "--scaling", "0.25,0.15", "--json", json.to_str().unwrap()];
     let o = ugo(&[&args[..], &sizes[..]].concat());
     assert!(o.status.success(), "{}", stderr(&o));
     let report: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();

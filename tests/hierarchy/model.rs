@@ -8,15 +8,18 @@ use crate::support::{furnace, furnace_with_standing_block};
 use std::f64::consts::PI;
 use std::path::Path;
 use ugo::kernel::{Explicit, Factored};
-use ugo::model::{Model, ModelOptions};
+use ugo::model::Model;
 use ugo::progress::Silent;
 use ugo::readout::energy::EnergyBalance;
-use ugo::scene::{Assembly, Scene};
+use ugo::scene::{Hierarchical, KernelKind, Scene};
 use ugo::solve::{LinOp, Method, SolveParams, System, solve};
 
-fn hierarchical(mut scene: Scene, tolerance: f64, smallest: f64) -> (Scene, Model) {
-    scene.discretization.assembly = Assembly::Hierarchical { tolerance, smallest };
-    let model = Model::build(&scene, &ModelOptions::of(&scene), &Silent).expect("fits in memory");
+/// `scene` with roots at its patch size and leaves down to `patch_size`.
+fn hierarchical(mut scene: Scene, link_tolerance: f64, patch_size: f64) -> (Scene, Model) {
+    let root_size = scene.discretization.patch_size;
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size, link_tolerance });
+    scene.discretization.patch_size = patch_size;
+    let model = Model::build(&scene, &Silent).expect("fits in memory");
     (scene, model)
 }
 

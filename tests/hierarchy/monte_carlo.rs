@@ -12,7 +12,7 @@ use ugo::geometry::Mesh;
 use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::read_probes;
-use ugo::scene::{Assembly, Scene};
+use ugo::scene::{Hierarchical, KernelKind, Scene};
 use ugo::trace::{TraceOptions, World, trace_probes};
 
 /// Paths per probe, as for the reference of docs/performance.md: standard errors of
@@ -23,12 +23,13 @@ const PATHS: usize = 1_000_000;
 /// its traced estimate, within `allowed(probe name)` of it plus 3 standard errors.
 fn agrees_with_monte_carlo(case: &str, allowed: impl Fn(&str) -> f64) {
     let mut scene = Scene::load(Path::new(case)).unwrap_or_else(|e| panic!("{e}"));
-    scene.discretization.patch_size = 0.25;
-    scene.discretization.assembly = Assembly::hierarchical();
+    // roots of 0.25 m, leaves down to 0.05 m, links to 1e-2
+    scene.discretization.patch_size = 0.05;
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 0.25, link_tolerance: 1e-2 });
     let model = build(&scene);
     let x = solve(&model);
     let solved = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()), &Silent);
-    let world = World::new(&scene, Mesh::build(&scene.surfaces, scene.discretization.patch_size));
+    let world = World::new(&scene, Mesh::build(&scene.surfaces, 0.25));
     let traced = trace_probes(&world, &scene.probes, PATHS, &TraceOptions::default(), &|_| {});
     assert_eq!(solved.len(), traced.len());
     for (probe, estimate) in solved.iter().zip(&traced) {

@@ -131,18 +131,18 @@ fn a_reloaded_kernel_is_not_assembled_and_gives_the_identical_solution() {
     let case = room(&dir, "room.toml", str::to_string);
     let (saved, again) = (dir.join("saved.h5"), dir.join("again.h5"));
     run(&["solve", s(&case), "--save-kernel", "-o", s(&saved)]);
-    let o = run(&["solve", s(&case), "--kernel", s(&saved), "-o", s(&again)]);
+    let o = run(&["solve", s(&case), "--kernel-file", s(&saved), "-o", s(&again)]);
     assert!(stdout(&o).contains("not assembled"), "{}", stdout(&o));
     assert_eq!(luminance(&saved), luminance(&again), "the reloaded kernel's solution");
     // In single precision too: G is stored as it is held.
     let (single, single_again) = (dir.join("single.h5"), dir.join("single-again.h5"));
     run(&["solve", s(&case), "--precision", "f32", "--save-kernel", "-o", s(&single)]);
-    run(&["solve", s(&case), "--precision", "f32", "--kernel", s(&single), "-o", s(&single_again)]);
+    run(&["solve", s(&case), "--precision", "f32", "--kernel-file", s(&single), "-o", s(&single_again)]);
     assert_eq!(luminance(&single), luminance(&single_again));
     // norms and compare take the kernel too.
-    let o = run(&["norms", s(&case), "--kernel", s(&saved), "-o", s(&dir.join("norms.h5"))]);
+    let o = run(&["norms", s(&case), "--kernel-file", s(&saved), "-o", s(&dir.join("norms.h5"))]);
     assert!(stdout(&o).contains("ρ(K)") && stdout(&o).contains("not assembled"), "{}", stdout(&o));
-    let compare = ["compare", s(&case), "--kernel", s(&saved), "--methods", "gmres,direct"];
+    let compare = ["compare", s(&case), "--kernel-file", s(&saved), "--methods", "gmres,direct"];
     let o = run(&[&compare[..], &["-o", s(&dir.join("c.h5")), "--plot", s(&dir.join("c.png"))]].concat());
     assert!(stdout(&o).contains("not assembled"), "{}", stdout(&o));
 }
@@ -155,7 +155,7 @@ fn a_changed_geometry_discretization_or_precision_is_refused_naming_the_part() {
     run(&["solve", s(&case), "--save-kernel", "-o", s(&saved)]);
     let out = dir.join("refused.h5");
     let refused = |case: &Path, extra: &[&str]| {
-        failure(&ugo(&[&["solve", s(case), "--kernel", s(&saved), "-o", s(&out)], extra].concat()))
+        failure(&ugo(&[&["solve", s(case), "--kernel-file", s(&saved), "-o", s(&out)], extra].concat()))
     };
     let err = refused(&case, &["--patch-size", "0.25"]);
     assert!(err.contains("discretization (patch_size 0.5 m in the file, patch_size 0.25 m in the case)"), "{err}");
@@ -166,10 +166,10 @@ fn a_changed_geometry_discretization_or_precision_is_refused_naming_the_part() {
     let moved = room(&dir, "moved.toml", |t| t.replace("origin = [0.5, 1.0, 0.5]", "origin = [0.5, 1.1, 0.5]"));
     let err = refused(&moved, &[]);
     assert!(err.contains("geometry") && !err.contains("discretization"), "{err}");
-    let hierarchical = refused(&case, &["--assembly", "hierarchical"]);
+    let hierarchical = refused(&case, &["--kernel", "hierarchical"]);
     assert!(hierarchical.contains("hierarchical") && hierarchical.contains("neither saved nor reused"));
-    let err = failure(&ugo(&["solve", "cases/furnace-box.toml", "--assembly", "hierarchical", "--save-kernel"]));
-    assert!(err.contains("use the explicit kernel"), "{err}");
+    let err = failure(&ugo(&["solve", "cases/furnace-box.toml", "--kernel", "hierarchical", "--save-kernel"]));
+    assert!(err.contains("use the uniform kernel"), "{err}");
     assert!(!out.exists());
 }
 
@@ -187,7 +187,7 @@ fn a_changed_reflectance_or_luminaire_reuses_g_and_equals_a_fresh_solve() {
     for (name, edit, part) in edits {
         let changed = room(&dir, name, edit);
         let (reused, fresh) = (dir.join(format!("{name}-reused.h5")), dir.join(format!("{name}-fresh.h5")));
-        let o = run(&["solve", s(&changed), "--kernel", s(&saved), "-o", s(&reused)]);
+        let o = run(&["solve", s(&changed), "--kernel-file", s(&saved), "-o", s(&reused)]);
         assert!(stdout(&o).contains(&format!("{part} (")) && stdout(&o).contains("G reused"), "{}", stdout(&o));
         run(&["solve", s(&changed), "-o", s(&fresh)]);
         let (a, b) = (luminance(&reused), luminance(&fresh));

@@ -5,11 +5,11 @@
 use crate::support::{build, furnace};
 use glam::DVec3;
 use std::time::Instant;
-use ugo::directions::DirectionSet;
+use ugo::directions::{DirectionSet, Scheme};
 use ugo::geometry::{Mesh, Shape, element_count, tessellate};
 use ugo::kernel::{Estimate, Forecast};
-use ugo::model::{Model, ModelError, ModelOptions};
-use ugo::scene::Assembly;
+use ugo::model::{Model, ModelError};
+use ugo::scene::{Hierarchical, KernelKind};
 
 #[test]
 fn element_counts_equal_the_tessellation_of_every_shape() {
@@ -41,17 +41,16 @@ fn element_counts_equal_the_tessellation_of_every_shape() {
 #[test]
 fn the_forecast_of_a_closed_box_counts_its_facing_pairs_exactly() {
     let scene = furnace(1.0, 0.5, 1.0, 0.1);
-    let options = ModelOptions::of(&scene);
-    let f = Model::forecast(&scene, &options);
+    let f = Model::forecast(&scene);
     let mesh = Mesh::build(&scene.surfaces, 0.1);
-    let counted = Estimate::of(&mesh, &options.directions);
+    let counted = Estimate::of(&mesh, &scene.discretization.directions.set());
     assert_eq!(f.patches, 600.0);
     assert_eq!(f.facing_pairs, counted.facing_pairs);
     assert_eq!(f.nonzeros, counted.nonzeros);
     assert!(f.peak_bytes() >= counted.peak_bytes());
     // K = 16 spreads each pair over cells: within a factor of two of the mesh's estimate.
     let k16 = DirectionSet::hemisphere(16);
-    let f = Forecast::explicit(&scene.surfaces, 1, 0.1, &k16);
+    let f = Forecast::uniform(&scene.surfaces, 1, 0.1, &k16);
     let counted = Estimate::of(&mesh, &k16);
     assert!((f.nonzeros / counted.nonzeros - 1.0).abs() < 0.5, "{} against {}", f.nonzeros, counted.nonzeros);
     build(&scene);
@@ -62,12 +61,12 @@ fn tiny_patch_sizes_are_refused_before_meshing_with_the_estimate() {
     for h in [1e-4, 1e-6, 1e-12, 1e-300, 5e-324] {
         let scene = furnace(1.0, 0.5, 1.0, h);
         let started = Instant::now();
-        let result = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent);
+        let result = Model::build(&scene, &ugo::progress::Silent);
         let Err(ModelError::OverLimit(e)) = result else { panic!("patch_size {h}: not refused before meshing") };
         assert!(started.elapsed().as_secs_f64() < 1.0, "patch_size {h}: {:?}", started.elapsed());
         let message = e.to_string();
         for fragment in
-            ["patches", "facing pairs", "non-zeros", "GiB", "--patch-size", "--memory-limit", "--assembly hierarchical"]
+            ["patches", "facing pairs", "non-zeros", "GiB", "--patch-size", "--memory-limit", "--kernel hierarchical"]
         {
             assert!(message.contains(fragment), "{message} lacks {fragment}");
         }
@@ -80,10 +79,12 @@ fn the_material_blocks_count_in_the_forecast() {
     // One patch per face, but 65535 cells: each material's K × K block is 34 GB.
     let scene = furnace(1.0, 0.5, 1.0, 2.0);
     let k = DirectionSet::hemisphere(65535);
-    let f = Forecast::explicit(&scene.surfaces, 1, 2.0, &k);
+    let f = Forecast::uniform(&scene.surfaces, 1, 2.0, &k);
     assert_eq!(f.block_bytes, 65535.0 * 65535.0 * 8.0);
-    let options = ModelOptions { directions: k, memory_limit: 16 << 30, ..ModelOptions::of(&scene) };
-    let Err(ModelError::OverLimit(e)) = Model::build(&scene, &options, &ugo::progress::Silent) else {
+    let mut scene = scene;
+    scene.discretization.directions = Scheme::Cells(65535);
+    scene.discretization.memory_limit = 16 << 30;
+    let Err(ModelError::OverLimit(e)) = Model::build(&scene, &ugo::progress::Silent) else {
         panic!("65535 cells accepted under 16 GiB")
     };
     assert!(e.to_string().contains("material blocks"), "{e}");
@@ -91,14 +92,14 @@ fn the_material_blocks_count_in_the_forecast() {
 
 #[test]
 fn the_hierarchy_forecasts_its_roots_and_its_most_leaves() {
-    let mut scene = furnace(1.0, 0.5, 1.0, 0.25);
-    scene.discretization.assembly = Assembly::Hierarchical { tolerance: 0.1, smallest: 0.01 };
-    let f = Model::forecast(&scene, &ModelOptions::of(&scene));
+    let mut scene = furnace(1.0, 0.5, 1.0, 0.01);
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 0.25, link_tolerance: 0.1 });
+    let f = Model::forecast(&scene);
     assert_eq!(f.patches, 6.0 * 16.0);
-    assert_eq!(f.leaves, Some(6.0 * 200.0 * 200.0), "the uniform mesh at smallest / 2");
+    assert_eq!(f.leaves, Some(6.0 * 200.0 * 200.0), "the uniform mesh at patch_size / 2");
     assert_eq!(f.nonzeros, 0.0);
-    scene.discretization.patch_size = 1e-9;
-    let Err(ModelError::OverLimit(e)) = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent) else {
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 1e-9, link_tolerance: 0.1 });
+    let Err(ModelError::OverLimit(e)) = Model::build(&scene, &ugo::progress::Silent) else {
         panic!("a hierarchy of 6e18 roots accepted")
     };
     assert!(e.to_string().contains("roots of the hierarchy"), "{e}");

@@ -4,12 +4,13 @@
 use crate::support::{furnace, solve};
 use std::path::Path;
 use ugo::kernel::Precision;
-use ugo::model::{Model, ModelOptions};
+use ugo::model::Model;
 use ugo::scene::Scene;
 
 fn model(scene: &Scene, patch_size: f64, precision: Precision) -> Model {
-    let options = ModelOptions { patch_size, precision, ..ModelOptions::of(scene) };
-    Model::build(scene, &options, &ugo::progress::Silent).unwrap()
+    let mut scene = scene.clone();
+    (scene.discretization.patch_size, scene.discretization.precision) = (patch_size, precision);
+    Model::build(&scene, &ugo::progress::Silent).unwrap()
 }
 
 #[test]

@@ -8,12 +8,12 @@ use glam::DVec3;
 use ugo::kernel::{Precision, Transport, TransportMatrix};
 use ugo::luminaire::{Luminaire, LuminaireKind, PointLuminaire};
 use ugo::material::MaterialModel;
-use ugo::model::{Model, ModelError, ModelOptions, check_transport};
+use ugo::model::{Model, ModelError, check_transport};
 use ugo::photometry::Distribution;
-use ugo::scene::{Assembly, Scene};
+use ugo::scene::{Hierarchical, KernelKind, Scene};
 
 fn refused(scene: &Scene) -> String {
-    match Model::build(scene, &ModelOptions::of(scene), &ugo::progress::Silent) {
+    match Model::build(scene, &ugo::progress::Silent) {
         Ok(_) => panic!("a model with values out of range was built"),
         Err(e) => {
             assert!(matches!(e, ModelError::OutOfRange(_)), "{e}");
@@ -26,7 +26,9 @@ fn refused(scene: &Scene) -> String {
 }
 
 fn hierarchical(mut scene: Scene) -> Scene {
-    scene.discretization.assembly = Assembly::Hierarchical { tolerance: 1e-2, smallest: 0.25 };
+    let root_size = scene.discretization.patch_size;
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size, link_tolerance: 1e-2 });
+    scene.discretization.patch_size = 0.25;
     scene
 }
 

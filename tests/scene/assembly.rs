@@ -1,10 +1,11 @@
-//! `[discretization] method`, `tolerance` and `smallest`: the hierarchical kernel chosen in
-//! a case file, its defaults, and its keys refused where they do not apply; without
-//! `method`, the kernel chosen by the explicit one's facing pairs.
+//! `[discretization] kernel`, `root_size` and `link_tolerance`: the hierarchical kernel chosen
+//! in a case file, its defaults, and its keys refused where they do not apply; without
+//! `kernel`, the kernel chosen by the uniform one's facing pairs; the old spelling (`method`,
+//! `tolerance`, `smallest`, `patch_size` for the roots) read as the new one with a note.
 
 use super::{BASE, LAMP, assert_error, parse, rejected};
 use std::path::Path;
-use ugo::scene::{Assembly, Automatic, EXPLICIT_PAIRS, ROOTS, Scene};
+use ugo::scene::{ChosenBySize, Hierarchical, KernelKind, ROOTS, Scene, UNIFORM_PAIRS};
 
 fn with(keys: &str) -> String {
     format!("{}{LAMP}", BASE.replace("patch_size = 0.1", &format!("patch_size = 0.1\n{keys}")))
@@ -17,63 +18,90 @@ fn cube(h: f64, keys: &str) -> Scene {
     Scene::parse(Path::new("cases/furnace-box.toml"), text).unwrap()
 }
 
-/// Facing pairs of the cube's explicit kernel at `h`: each of its 15 pairs of faces pairs
+/// Facing pairs of the cube's uniform kernel at `h`: each of its 15 pairs of faces pairs
 /// every patch of one face with every patch of the other, `(1/h)²` patches a face.
 fn cube_pairs(h: f64) -> f64 {
     15.0 * (1.0 / h).round().powi(4)
 }
 
+fn hierarchical(root_size: f64, link_tolerance: f64) -> KernelKind {
+    KernelKind::Hierarchical(Hierarchical { root_size, link_tolerance })
+}
+
 #[test]
-fn without_method_the_kernel_is_chosen_by_the_explicit_ones_facing_pairs() {
-    // 15 · 25⁴ = 5.9e6 pairs: explicit, as asked
+fn without_kernel_it_is_chosen_by_the_uniform_ones_facing_pairs() {
+    // 15 · 25⁴ = 5.9e6 pairs: uniform, as asked
     let (h, small) = (0.04, cube(0.04, ""));
     let d = &small.discretization;
-    assert!(cube_pairs(h) < EXPLICIT_PAIRS);
-    assert_eq!((d.assembly, d.patch_size), (Assembly::Explicit, h));
-    let pairs = d.automatic.unwrap().facing_pairs;
+    assert!(cube_pairs(h) < UNIFORM_PAIRS);
+    assert_eq!((d.kernel, d.patch_size), (KernelKind::Uniform, h));
+    let pairs = d.chosen_by_size.unwrap().facing_pairs;
     assert!((pairs / cube_pairs(h) - 1.0).abs() < 1e-9, "{pairs} pairs");
-    assert_eq!(cube(h, "method = \"auto\"").discretization, *d);
+    assert_eq!(cube(h, "kernel = \"auto\"").discretization, *d);
 
-    // 15 · 50⁴ = 9.4e7 pairs: the hierarchy, split down to the size asked from roots ROOTS times it
+    // 15 · 50⁴ = 9.4e7 pairs: the hierarchy, leaves down to the size asked, roots ROOTS times it
     let (h, large) = (0.02, cube(0.02, ""));
     let d = &large.discretization;
-    assert!(cube_pairs(h) > EXPLICIT_PAIRS);
-    let tolerance = ugo::kernel::hierarchy::Options::default().tolerance;
-    assert_eq!(d.assembly, Assembly::Hierarchical { tolerance, smallest: h });
-    assert!((d.patch_size - ROOTS * h).abs() < 1e-12);
-    let Some(Automatic { asked, facing_pairs }) = d.automatic else { panic!("not chosen") };
-    assert_eq!(asked, h);
+    assert!(cube_pairs(h) > UNIFORM_PAIRS);
+    assert_eq!(d.kernel, hierarchical(ROOTS * h, 1e-2));
+    assert_eq!(d.patch_size, h);
+    let Some(ChosenBySize { patch_size, facing_pairs }) = d.chosen_by_size else { panic!("not chosen") };
+    assert_eq!(patch_size, h);
     assert!((facing_pairs / cube_pairs(h) - 1.0).abs() < 1e-9, "{facing_pairs} pairs");
-    assert!(d.automatic.unwrap().to_string().contains("--assembly explicit"));
+    assert!(d.chosen_by_size.unwrap().to_string().contains("--kernel uniform"));
 
-    // a method given is kept, whatever the size
-    let given = cube(h, "method = \"explicit\"").discretization;
-    assert_eq!((given.assembly, given.patch_size, given.automatic), (Assembly::Explicit, h, None));
+    // a kernel given is kept, whatever the size
+    let given = cube(h, "kernel = \"uniform\"").discretization;
+    assert_eq!((given.kernel, given.patch_size, given.chosen_by_size), (KernelKind::Uniform, h, None));
 }
 
 #[test]
 fn the_hierarchical_kernel_takes_its_defaults_and_its_keys() {
-    let scene = parse(&with("method = \"hierarchical\"")).unwrap();
-    assert_eq!(scene.discretization.assembly, Assembly::hierarchical());
-    let scene = parse(&with("method = \"hierarchical\"\ntolerance = 3e-3\nsmallest = 0.02")).unwrap();
-    assert_eq!(scene.discretization.assembly, Assembly::Hierarchical { tolerance: 3e-3, smallest: 0.02 });
+    let scene = parse(&with("kernel = \"hierarchical\"")).unwrap();
+    assert_eq!(scene.discretization.kernel, hierarchical(0.4, 1e-2), "roots 4 times the patch size");
+    assert_eq!(scene.discretization.patch_size, 0.1);
+    let scene = parse(&with("kernel = \"hierarchical\"\nlink_tolerance = 3e-3\nroot_size = 0.5")).unwrap();
+    assert_eq!(scene.discretization.kernel, hierarchical(0.5, 3e-3));
+    assert!(scene.old_spelling.is_empty());
 }
 
 #[test]
-fn its_keys_are_refused_with_the_explicit_kernel_or_out_of_range() {
-    assert_error(&rejected(&with("tolerance = 1e-2")), "[discretization]", "tolerance", &["hierarchical"]);
-    assert_error(
-        &rejected(&with("method = \"hierarchical\"\nsmallest = 0.5")),
-        "[discretization]",
-        "smallest",
-        &["exceeds patch_size"],
-    );
-    assert_error(&rejected(&with("method = \"hierarchical\"\ntolerance = -1")), "[discretization]", "tolerance", &[]);
-    assert_error(
-        &rejected(&with("method = \"auto\"\nsmallest = 0.05")),
-        "[discretization]",
-        "smallest",
-        &["hierarchical"],
-    );
-    assert_error(&rejected(&with("method = \"radiosity\"")), "[discretization]", "method", &["hierarchical", "auto"]);
+fn its_keys_are_refused_with_the_uniform_kernel_or_out_of_range() {
+    let refused = |keys: &str, key: &str, fragments: &[&str]| {
+        assert_error(&rejected(&with(keys)), "[discretization]", key, fragments);
+    };
+    refused("link_tolerance = 1e-2", "link_tolerance", &["hierarchical"]);
+    refused("kernel = \"uniform\"\nroot_size = 1", "root_size", &["hierarchical"]);
+    refused("kernel = \"hierarchical\"\nroot_size = 0.05", "root_size", &["smaller than patch_size"]);
+    refused("kernel = \"hierarchical\"\nlink_tolerance = -1", "link_tolerance", &["greater than 0"]);
+    refused("kernel = \"hierarchical\"\nlink_tolerance = 1", "link_tolerance", &["below 1"]);
+    refused("kernel = \"radiosity\"", "kernel", &["hierarchical", "auto"]);
+    // the old keys with the new spelling, and the two spellings of one key
+    refused("kernel = \"hierarchical\"\nsmallest = 0.05", "smallest", &["patch_size"]);
+    refused("kernel = \"hierarchical\"\ntolerance = 0.05", "tolerance", &["link_tolerance"]);
+    refused("kernel = \"uniform\"\nmethod = \"explicit\"", "method", &["kernel"]);
+}
+
+#[test]
+fn the_old_spelling_is_read_as_the_new_one_with_a_note() {
+    // `patch_size` was the roots, `smallest` (default 0.05 m) the finest leaves
+    let scene = parse(&with("method = \"hierarchical\"\ntolerance = 3e-3\nsmallest = 0.02")).unwrap();
+    assert_eq!(scene.discretization.kernel, hierarchical(0.1, 3e-3));
+    assert_eq!(scene.discretization.patch_size, 0.02);
+    let notes: Vec<String> = scene.old_spelling.iter().map(|n| n.to_string()).collect();
+    assert!(notes.iter().any(|n| n.contains("`root_size = 0.1`")), "{notes:?}");
+    assert!(notes.iter().any(|n| n.contains("`link_tolerance = 0.003`")), "{notes:?}");
+    let scene = parse(&with("method = \"hierarchical\"")).unwrap();
+    assert_eq!((scene.discretization.kernel, scene.discretization.patch_size), (hierarchical(0.1, 1e-2), 0.05));
+    let scene = parse(&with("method = \"explicit\"")).unwrap();
+    assert_eq!((scene.discretization.kernel, scene.discretization.patch_size), (KernelKind::Uniform, 0.1));
+    assert_eq!(scene.old_spelling.len(), 1);
+    // its own rules stand, naming its own keys
+    let refused = |keys: &str, key: &str, fragments: &[&str]| {
+        assert_error(&rejected(&with(keys)), "[discretization]", key, fragments);
+    };
+    refused("method = \"hierarchical\"\nsmallest = 0.5", "smallest", &["exceeds patch_size"]);
+    refused("method = \"hierarchical\"\ntolerance = -1", "tolerance", &[]);
+    refused("method = \"auto\"\nsmallest = 0.05", "smallest", &["hierarchical"]);
+    refused("method = \"radiosity\"", "method", &["hierarchical", "auto"]);
 }

@@ -93,9 +93,9 @@ fn closed_around_luminaires(scene: &Scene) {
 #[test]
 fn the_office_is_furnished_closed_and_lit_from_inside() {
     let scene = furnished("cases/office.toml", 900..1200, 12);
-    assert_eq!(scene.discretization.patch_size, 1.0);
-    let hierarchical = ugo::scene::Assembly::Hierarchical { tolerance: 1e-2, smallest: 0.15 };
-    assert_eq!(scene.discretization.assembly, hierarchical);
+    assert_eq!(scene.discretization.patch_size, 0.15);
+    let hierarchical = ugo::scene::Hierarchical { root_size: 1.0, link_tolerance: 1e-2 };
+    assert_eq!(scene.discretization.kernel, ugo::scene::KernelKind::Hierarchical(hierarchical));
     let books = scene.surfaces.iter().filter(|s| s.name.starts_with("bookshelf, book")).count();
     assert!(books >= 24, "{books} books");
     let turned =

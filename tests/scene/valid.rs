@@ -104,8 +104,8 @@ fn header_tables_are_read() {
     assert_eq!(scene.name, "Every shape");
     assert_eq!(scene.description, "one surface of each shape");
     assert_eq!(scene.source, EVERY_SHAPE);
-    // no `method`: the kernel is chosen by size, from the patch size as read
-    assert_eq!(scene.discretization.automatic.map(|a| a.asked), Some(0.05));
+    // no `kernel`: the kernel is chosen by size, from the patch size as read
+    assert_eq!(scene.discretization.chosen_by_size.map(|a| a.patch_size), Some(0.05));
     assert_eq!(scene.solver.tolerance, 1e-6);
     assert_eq!(scene.solver.max_iterations, 500);
     let reflectances: Vec<_> = scene.materials.iter().map(|m| (&m.name[..], &m.model)).collect();

@@ -6,7 +6,7 @@
 
 use crate::cie171::solve_model;
 use std::path::Path;
-use ugo::model::{Model, ModelOptions};
+use ugo::model::Model;
 use ugo::progress::Silent;
 use ugo::readout::daylight::{DaylightReadings, read_daylight};
 use ugo::readout::field::Field;
@@ -27,7 +27,7 @@ fn office(edits: &[(&str, &str)]) -> Result<Scene, String> {
 }
 
 fn daylight(scene: &Scene) -> DaylightReadings {
-    let model = Model::build(scene, &ModelOptions::of(scene), &ugo::progress::Silent).expect("fits");
+    let model = Model::build(scene, &ugo::progress::Silent).expect("fits");
     let x = solve_model(&model, scene.solver.method);
     let field = Field::from_unknowns(&x, model.kernel.cells());
     let probes = read_probes(&scene.probes, &model, &field, &Silent);

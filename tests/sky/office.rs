@@ -8,7 +8,7 @@
 use crate::cie171::solve_model;
 use std::f64::consts::PI;
 use std::path::Path;
-use ugo::model::{Model, ModelOptions};
+use ugo::model::Model;
 use ugo::progress::Silent;
 use ugo::readout::daylight::{read_daylight, stats};
 use ugo::readout::field::Field;
@@ -19,7 +19,7 @@ use ugo::scene::Scene;
 #[test]
 fn the_daylit_office_receives_the_flux_of_its_window_and_its_components_add_up() {
     let scene = Scene::load(Path::new("cases/daylit-office.toml")).unwrap_or_else(|e| panic!("{e}"));
-    let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).expect("fits");
+    let model = Model::build(&scene, &ugo::progress::Silent).expect("fits");
     let sky = scene.sky.as_ref().expect("a sky");
     let outside = sky.zenith_luminance * (PI / 6.0 + 4.0 / 9.0) + PI / 2.0 * sky.ground_luminance();
     let expected = 3.0 * 1.5 * outside;

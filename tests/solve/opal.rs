@@ -22,7 +22,7 @@ use ugo::model::Model;
 use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::{ProbeReading, read_probes};
-use ugo::scene::{Assembly, Scene};
+use ugo::scene::{Hierarchical, KernelKind, Scene};
 
 pub const LUMINANCE: f64 = 1000.0;
 pub const TAU: f64 = 0.5;
@@ -80,8 +80,8 @@ fn opal_panel_and_probe_match_the_thin_transmitter_closed_form() {
 #[test]
 fn through_the_hierarchy_too() {
     let mut scene = opal();
-    scene.discretization.assembly = Assembly::Hierarchical { tolerance: 1e-3, smallest: 0.05 };
-    scene.discretization.patch_size = 0.2;
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 0.2, link_tolerance: 1e-3 });
+    scene.discretization.patch_size = 0.05;
     matches_the_closed_form(&scene, 1e-5);
 }
 
@@ -97,7 +97,7 @@ fn matches_the_closed_form(scene: &Scene, patch_bound: f64) {
     let error = above.illuminance / exact - 1.0;
     eprintln!(
         "opal, {}: E above {:.4} lx (exact {exact:.4}, {error:.2e}), top patches within {patches:.1e}",
-        scene.discretization.assembly.name(),
+        scene.discretization.kernel.name(),
         above.illuminance
     );
     assert!(error.abs() < 5e-4, "illuminance above the panel: {error}");

@@ -5,7 +5,7 @@ use glam::DVec3;
 use std::f64::consts::PI;
 use std::path::Path;
 use ugo::kernel::Factored;
-use ugo::model::{Model, ModelOptions};
+use ugo::model::Model;
 use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::read_probes;
@@ -15,7 +15,7 @@ use ugo::solve::{SolveParams, successive_approximation};
 #[test]
 fn receiver_illuminance_is_pi_l_f() {
     let scene = Scene::load(Path::new("cases/parallel-plates.toml")).unwrap();
-    let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).unwrap();
+    let model = Model::build(&scene, &ugo::progress::Silent).unwrap();
     let params = SolveParams { tolerance: 1e-10, max_iterations: 100, ..SolveParams::default() };
     let (x, _) = successive_approximation(&Factored::new(&model.kernel), &model.l0, &params, &mut |_, _| {}).unwrap();
     let mut gx = vec![0.0; x.len()];

@@ -6,7 +6,7 @@ use crate::support::{build, furnace};
 use nalgebra::DMatrix;
 use std::path::Path;
 use ugo::kernel::{Explicit, Factored};
-use ugo::model::{Model, ModelOptions};
+use ugo::model::Model;
 use ugo::random::Rng;
 use ugo::scene::Scene;
 use ugo::solve::norms::Norms;
@@ -53,8 +53,9 @@ fn assert_matches(spectrum: &Spectrum, dense: &[(f64, f64)], tolerance: f64) {
 
 fn cornell(patch_size: f64) -> Model {
     let scene = Scene::load(Path::new("cases/cornell-box.toml")).unwrap();
-    let options = ModelOptions { patch_size, ..ModelOptions::of(&scene) };
-    Model::build(&scene, &options, &ugo::progress::Silent).unwrap()
+    let mut scene = scene;
+    scene.discretization.patch_size = patch_size;
+    Model::build(&scene, &ugo::progress::Silent).unwrap()
 }
 
 #[test]

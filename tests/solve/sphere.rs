@@ -5,17 +5,17 @@
 use std::f64::consts::PI;
 use std::path::Path;
 use ugo::kernel::Factored;
-use ugo::model::{Model, ModelOptions};
-use ugo::scene::{Assembly, Scene};
+use ugo::model::Model;
+use ugo::scene::{Hierarchical, KernelKind, Scene};
 use ugo::solve::{SolveParams, successive_approximation};
 
 /// The bulb's form factor seen from the wall and the wall's worst relative departure from
-/// `E_ind`, with the case's `assembly` replaced by `assembly` (patch size `patch_size`).
-fn sphere(assembly: Assembly, patch_size: f64) -> (f64, f64) {
+/// `E_ind`, with the case's kernel replaced by `kernel` (patch size `patch_size`).
+fn sphere(kernel: KernelKind, patch_size: f64) -> (f64, f64) {
     let mut scene = Scene::load(Path::new("cases/integrating-sphere.toml")).unwrap();
-    scene.discretization.assembly = assembly;
+    scene.discretization.kernel = kernel;
     scene.discretization.patch_size = patch_size;
-    let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).unwrap();
+    let model = Model::build(&scene, &ugo::progress::Silent).unwrap();
     let params = SolveParams { tolerance: 1e-10, max_iterations: 1000, ..SolveParams::default() };
     let (x, _) = successive_approximation(&Factored::new(&model.kernel), &model.l0, &params, &mut |_, _| {}).unwrap();
     let transport = |v: &[f64]| {
@@ -35,7 +35,7 @@ fn sphere(assembly: Assembly, patch_size: f64) -> (f64, f64) {
     let worst = wall.iter().map(|&i| (PI * (total[i] - direct[i]) / expected - 1.0).abs()).fold(0.0, f64::max);
     eprintln!(
         "sphere, {}: {} wall patches, A = {area:.4} m², f = {f:.5}, E_ind = {expected:.3} lx, worst {worst:.2e}",
-        assembly.name(),
+        kernel.name(),
         wall.len()
     );
     (f, worst)
@@ -43,14 +43,14 @@ fn sphere(assembly: Assembly, patch_size: f64) -> (f64, f64) {
 
 #[test]
 fn indirect_illuminance_on_the_wall_is_uniform_and_as_predicted() {
-    let (f, worst) = sphere(Assembly::Explicit, 0.1);
+    let (f, worst) = sphere(KernelKind::Uniform, 0.1);
     assert!((f / 0.0025 - 1.0).abs() < 0.2, "bulb form factor {f}");
     assert!(worst < 1e-2, "indirect illuminance varies by {worst}");
 }
 
 #[test]
 fn through_the_hierarchy_too() {
-    let (f, worst) = sphere(Assembly::Hierarchical { tolerance: 1e-2, smallest: 0.1 }, 0.4);
+    let (f, worst) = sphere(KernelKind::Hierarchical(Hierarchical { root_size: 0.4, link_tolerance: 1e-2 }), 0.1);
     assert!((f / 0.0025 - 1.0).abs() < 0.2, "bulb form factor {f}");
     assert!(worst < 1e-2, "indirect illuminance varies by {worst}");
 }

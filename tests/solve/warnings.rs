@@ -4,7 +4,6 @@
 
 use std::path::Path;
 use ugo::kernel::sent_shares;
-use ugo::model::ModelOptions;
 use ugo::scene::Scene;
 use ugo::study::{Job, Solved, physics_warnings, solve_case};
 
@@ -31,7 +30,7 @@ fn room(floor_flipped: bool, extra: &str) -> String {
 
 fn solved(text: &str) -> (Scene, Solved) {
     let scene = Scene::parse(Path::new("cases/test.toml"), text.to_string()).unwrap_or_else(|e| panic!("{e}"));
-    let s = solve_case(&scene, &ModelOptions::of(&scene), &Job::default(), &ugo::progress::Silent).unwrap();
+    let s = solve_case(&scene, &Job::default(), &ugo::progress::Silent).unwrap();
     (scene, s)
 }
 
@@ -113,7 +112,7 @@ fn the_escaped_flux_is_the_outgoing_flux_weighted_by_the_columns_shortfall() {
     );
     // The hierarchy's columns come from its links run backwards (`Gᵀ`, no expansion).
     let hierarchical =
-        open.replace("patch_size = 0.25\n", "patch_size = 0.5\nmethod = \"hierarchical\"\nsmallest = 0.125\n");
+        open.replace("patch_size = 0.25\n", "patch_size = 0.125\nkernel = \"hierarchical\"\nroot_size = 0.5\n");
     assert!(hierarchical.contains("hierarchical"));
     for text in [room(false, CRATE), open, hierarchical] {
         let (_, s) = solved(&text);
@@ -180,8 +179,7 @@ fn the_sun_through_a_glazed_window_is_warned_of() {
     let glazed = |t: &str| t.replace("edge_v = [0.0, 1.5, 0.0]\n", "edge_v = [0.0, 1.5, 0.0]\ntransmittance = 0.8\n");
     for (text, expected) in [(glazed(&sunny), true), (sunny.clone(), false), (glazed(&text), false)] {
         let scene = ugo::scene::Scene::parse(path, text).unwrap();
-        let model =
-            ugo::model::Model::build(&scene, &ugo::model::ModelOptions::of(&scene), &ugo::progress::Silent).unwrap();
+        let model = ugo::model::Model::build(&scene, &ugo::progress::Silent).unwrap();
         let x = crate::cie171::solve_model(&model, scene.solver.method);
         let energy = ugo::readout::energy::EnergyBalance::of(&model, &x, scene.surfaces.len());
         let w = physics_warnings(&scene, &model, &x, &energy);

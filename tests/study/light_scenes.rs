@@ -9,7 +9,7 @@ use std::path::Path;
 use ugo::io::LightSceneField;
 use ugo::kernel::Factored;
 use ugo::luminaire::direct_light;
-use ugo::model::{Model, ModelOptions};
+use ugo::model::Model;
 use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::grid::read_grids;
@@ -22,11 +22,10 @@ use ugo::study::{GroupSolves, Job, Solved, dimmed, solve_case, solve_light_scene
 /// A grey room with a ceiling panel (group "panel"), a bulb (group "left") and a
 /// Lambertian downlight (no group: "default"), a probe and a grid; maintenance factor 0.8.
 /// `{A}`, `{B}` and `{PANEL}` are the bulb's and the downlight's multiplier and the panel's
-/// flux, `{METHOD}` the discretization's method keys.
+/// flux, `{DISCRETIZATION}` the discretization's keys ([`UNIFORM`] or [`HIERARCHICAL`]).
 const ROOM: &str = r#"
 [discretization]
-patch_size = 0.5
-{METHOD}
+{DISCRETIZATION}
 
 [solver]
 method = "gmres"
@@ -106,12 +105,13 @@ name = "bulb-only"
 groups = { left = true, panel = false }
 "#;
 
-const HIERARCHICAL: &str = "method = \"hierarchical\"\ntolerance = 0.05\nsmallest = 0.25";
+const UNIFORM: &str = "patch_size = 0.5";
+const HIERARCHICAL: &str = "patch_size = 0.25\nkernel = \"hierarchical\"\nlink_tolerance = 0.05\nroot_size = 0.5";
 
 /// The room with the bulb, the downlight and the panel at these outputs.
-fn room(method: &str, a: f64, b: f64, panel: f64) -> Scene {
+fn room(discretization: &str, a: f64, b: f64, panel: f64) -> Scene {
     let text = ROOM
-        .replace("{METHOD}", method)
+        .replace("{DISCRETIZATION}", discretization)
         .replace("{A}", &a.to_string())
         .replace("{B}", &b.to_string())
         .replace("{PANEL}", &panel.to_string());
@@ -124,7 +124,7 @@ fn job() -> Job {
 }
 
 fn solved(scene: &Scene) -> Solved {
-    solve_case(scene, &ModelOptions::of(scene), &job(), &ugo::progress::Silent).expect("the room solves")
+    solve_case(scene, &job(), &ugo::progress::Silent).expect("the room solves")
 }
 
 /// `max |a − b| / max |b|`.
@@ -171,7 +171,7 @@ impl Readouts {
 
 #[test]
 fn a_light_scene_equals_a_full_solve_with_its_sources_dimmed() {
-    let scene = room("", 1.0, 1.0, 500.0);
+    let scene = room(UNIFORM, 1.0, 1.0, 500.0);
     let mut s = solved(&scene);
     let how = GroupSolves { method: Method::Gmres { restart: 30 }, params: job().params, warm: true };
     let light = solve_light_scenes(&scene, &mut s.model, &s.x, &how, &ugo::progress::Silent).unwrap();
@@ -181,7 +181,7 @@ fn a_light_scene_equals_a_full_solve_with_its_sources_dimmed() {
     // The model is given back lit by the case's own sources.
     assert_eq!(s.model.l0, solved(&scene).model.l0);
 
-    let dimmed = solved(&room("", 0.3, 0.6, 250.0));
+    let dimmed = solved(&room(UNIFORM, 0.3, 0.6, 250.0));
     let reference = Readouts {
         field: dimmed.x.clone(),
         illuminance: dimmed.illuminance.clone(),
@@ -194,7 +194,7 @@ fn a_light_scene_equals_a_full_solve_with_its_sources_dimmed() {
 
     // Off is a source left out: the downlight removed (with the light scenes that name its
     // group), the panel dark.
-    let text = ROOM.replace("{METHOD}", "").replace("{A}", "1").replace("{PANEL}", "0");
+    let text = ROOM.replace("{DISCRETIZATION}", UNIFORM).replace("{A}", "1").replace("{PANEL}", "0");
     let (cut, probes, scenes) = (
         text.find("[[luminaire]]\nname = \"downlight\"").unwrap(),
         text.find("[[probe]]").unwrap(),
@@ -254,7 +254,7 @@ fn on_a_fixed_hierarchy_a_light_scene_equals_the_solve_of_its_dimmed_sources() {
 #[test]
 fn the_groups_of_a_hierarchical_case_are_solved_on_its_one_hierarchy() {
     let scene = room(HIERARCHICAL, 1.0, 1.0, 500.0);
-    let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).unwrap();
+    let model = Model::build(&scene, &ugo::progress::Silent).unwrap();
     let g = &scene.lighting.groups;
     let terms: Vec<_> = g.iter().map(|g| model.source_term_of(&g.luminaires, &g.surfaces)).collect();
     assert!(terms.iter().all(|t| t.l0.len() == model.l0.len() && t.emission.len() == model.mesh.len()));

@@ -4,12 +4,12 @@ use glam::DVec3;
 use std::ops::Deref;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
-use ugo::directions::DirectionSet;
+use ugo::directions::{DirectionSet, Scheme};
 use ugo::geometry::{Emission, Shape, Surface};
 use ugo::kernel::Factored;
 use ugo::material::MaterialModel;
-use ugo::model::{Model, ModelOptions};
-use ugo::scene::{Discretization, Material, Scene, SolverSettings};
+use ugo::model::Model;
+use ugo::scene::{Asked, Discretization, Given, Material, Scene, SolverSettings};
 use ugo::solve::{SolveParams, successive_approximation};
 
 pub fn lambert(name: &str, reflectance: f64) -> Material {
@@ -26,12 +26,9 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         source: String::new(),
         name: "test".into(),
         description: String::new(),
-        discretization: Discretization {
-            patch_size,
-            directions: ugo::directions::Scheme::Cells(1),
-            assembly: ugo::scene::Assembly::Explicit,
-            automatic: None,
-        },
+        asked: Asked { patch_size: Some(Given::key("patch_size")(patch_size)), ..Asked::default() },
+        discretization: Discretization::uniform(patch_size),
+        old_spelling: Vec::new(),
         solver: SolverSettings::default(),
         materials,
         surfaces,
@@ -66,13 +63,17 @@ pub fn furnace_with_standing_block(patch_size: f64) -> Scene {
 }
 
 pub fn build(scene: &Scene) -> Model {
-    Model::build(scene, &ModelOptions::of(scene), &ugo::progress::Silent).expect("model fits in memory")
+    Model::build(scene, &ugo::progress::Silent).expect("model fits in memory")
 }
 
-/// The model of `scene` with another direction set.
+/// The model of `scene` with another direction set (one of the schemes a case can name).
 pub fn build_with(scene: &Scene, directions: DirectionSet) -> Model {
-    let options = ModelOptions { directions, ..ModelOptions::of(scene) };
-    Model::build(scene, &options, &ugo::progress::Silent).expect("model fits in memory")
+    let scheme = Scheme::parse(&directions.name()).expect("a set a case can name");
+    let mut scene = scene.clone();
+    scene.discretization.directions = scheme;
+    let model = Model::build(&scene, &ugo::progress::Silent).expect("model fits in memory");
+    assert_eq!(model.kernel.directions.name(), directions.name());
+    model
 }
 
 /// A closed cube of `material`, every face emitting `luminance`.

@@ -15,7 +15,7 @@ use glam::DVec3;
 use std::path::Path;
 use ugo::geometry::{ConvexPolygon, Mesh};
 use ugo::luminaire::LuminaireKind;
-use ugo::model::{Model, ModelOptions};
+use ugo::model::Model;
 use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::read_probes;
@@ -148,7 +148,7 @@ fn behind_masks_outside_the_traced_probes_read_what_the_solve_takes_through_the_
 fn in_the_daylit_office_the_traced_probes_agree_with_the_solve() {
     let mut scene = office(&[]);
     scene.discretization.patch_size = 0.5;
-    let model = Model::build(&scene, &ModelOptions::of(&scene), &ugo::progress::Silent).expect("fits");
+    let model = Model::build(&scene, &ugo::progress::Silent).expect("fits");
     let x = solve_model(&model, scene.solver.method);
     let solved = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()), &Silent);
     for (probe, (value, error)) in solved.iter().zip(traced(&scene, 0.5, 40_000)) {

@@ -10,7 +10,7 @@ use glam::DVec3;
 use ugo::geometry::{Emission, Mesh, Shape};
 use ugo::model::Model;
 use ugo::readout::energy::EnergyBalance;
-use ugo::scene::{Assembly, Scene};
+use ugo::scene::{Hierarchical, KernelKind, Scene};
 use ugo::transfer::exposure::measure_exposure;
 use ugo::visibility::Visibility;
 
@@ -69,14 +69,15 @@ fn furnace_errors(scene: &Scene, model: &Model, x: &[f64]) -> (f64, f64) {
 }
 
 /// The furnace's errors with the block standing against two walls (`lo = 0`) or floating
-/// `lo` m above the floor, through the explicit kernel (`patch` m patches) or the
+/// `lo` m above the floor, through the uniform kernel (`patch` m patches) or the
 /// hierarchical one (roots `patch`, leaves down to 0.125 m). The block's edges are on the
 /// patches' grid, so every patch is exposed or hidden (a patch that straddles a contact
 /// line is `design.md` §3's "Contacts" error).
-fn furnace_with_block(lo: f64, assembly: Option<Assembly>, patch: f64) -> (f64, f64) {
+fn furnace_with_block(lo: f64, link_tolerance: Option<f64>, patch: f64) -> (f64, f64) {
     let mut scene = with_block([0.0, lo, 0.0], [0.5, 0.25 + lo, 0.375], patch);
-    if let Some(assembly) = assembly {
-        scene.discretization.assembly = assembly;
+    if let Some(link_tolerance) = link_tolerance {
+        scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: patch, link_tolerance });
+        scene.discretization.patch_size = 0.125;
     }
     let model = build(&scene);
     let errors = furnace_errors(&scene, &model, &solve(&model));
@@ -95,10 +96,9 @@ fn furnace_with_block(lo: f64, assembly: Option<Assembly>, patch: f64) -> (f64, 
 /// hidden: the explicit kernel's worst error against 5 is measured in `docs/hierarchy.md`.
 #[test]
 fn the_white_furnace_holds_around_a_block_standing_on_the_floor() {
-    let hierarchical = Some(Assembly::Hierarchical { tolerance: 1e-3, smallest: 0.125 });
-    for (assembly, patch) in [(None, 0.125), (hierarchical, 0.5)] {
+    for (link_tolerance, patch) in [(None, 0.125), (Some(1e-3), 0.5)] {
         let (standing, floating) =
-            (furnace_with_block(0.0, assembly, patch), furnace_with_block(0.125, assembly, patch));
+            (furnace_with_block(0.0, link_tolerance, patch), furnace_with_block(0.125, link_tolerance, patch));
         assert!(standing.0 <= floating.0 && standing.0 < 1e-2, "worst error {standing:?} against {floating:?}");
         assert!(standing.1 <= floating.1 && standing.1 < 3e-3, "balance {standing:?} against {floating:?}");
     }

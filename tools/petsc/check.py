@@ -97,7 +97,7 @@ def cornell(ugo, work):
     mine, theirs = os.path.join(work, "ugo.h5"), os.path.join(work, "petsc.h5")
     report = os.path.join(work, "petsc.json")
     run(ugo, "solve", *CORNELL, "--method", "gmres:5", "--tolerance", "1e-12", "--save-kernel", "-o", mine)
-    run(ugo, "norms", *CORNELL, "--kernel", mine, "-o", os.path.join(work, "norms.h5"))
+    run(ugo, "norms", *CORNELL, "--kernel-file", mine, "-o", os.path.join(work, "norms.h5"))
     said = petsc(mine, "-o", theirs, "--methods", "gmres:5,bicgstab,direct", "--tolerance", "1e-12",
                  "--eigenvalues", "3", "--mode", "1", "--singular", "--report", report)
     print(said, end="")

@@ -1,5 +1,5 @@
 //! The hierarchical kernel's part of `ugo bench` (issue 14, point 6; `design.md` §3b): the
-//! case built and solved at a sequence of smallest element sizes under the same roots and
+//! case built and solved at a sequence of leaf sizes (`patch_size`) under the same roots and
 //! link tolerance, and per size the leaves N, links, nodes, occlusion rays, time, memory
 //! and links/N², with the growth exponents of links and of time against N fitted by least
 //! squares on the logarithms (the explicit kernel's pairs grow as N²).
@@ -10,17 +10,17 @@ use anyhow::{Result, bail};
 use serde::Serialize;
 use std::time::Instant;
 use ugo::kernel::Factored;
-use ugo::model::{HierarchyRecord, Model, ModelOptions};
+use ugo::model::{HierarchyRecord, Model};
 use ugo::progress::Silent;
-use ugo::scene::{Assembly, Scene};
+use ugo::scene::Scene;
 use ugo::solve::{SolveParams, successive_approximation};
 
-/// One smallest element size of the curve.
+/// One leaf size of the curve.
 #[derive(Debug, Clone, Serialize)]
 pub struct Level {
-    /// Smallest element edge, m.
-    pub smallest: f64,
-    /// Root elements (patches at `--patch-size`).
+    /// The edge the leaves split down to, m.
+    pub patch_size: f64,
+    /// Root elements (patches at `--root-size`).
     pub roots: usize,
     /// Leaf elements N (the unknowns per direction cell).
     pub leaves: usize,
@@ -58,29 +58,36 @@ pub struct Curve {
     pub time_exponent: f64,
 }
 
-/// Builds and solves `scene` hierarchically with `tolerance` and `smallest`.
-pub fn level(scene: &Scene, options: &ModelOptions, tolerance: f64, smallest: f64) -> Result<(Level, Model)> {
+/// Builds and solves the hierarchical `scene` with its leaves down to `patch_size`.
+pub fn level(scene: &Scene, patch_size: f64) -> Result<(Level, Model)> {
     let mut scene = scene.clone();
-    scene.discretization.assembly = Assembly::Hierarchical { tolerance, smallest };
+    scene.discretization.patch_size = patch_size;
     let peak = Peak::start();
     let t = Instant::now();
-    let model = Model::build(&scene, options, &Silent)?;
+    let model = Model::build(&scene, &Silent)?;
     let refinement_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let params = SolveParams { tolerance: 1e-8, max_iterations: 10_000, ..SolveParams::default() };
     successive_approximation(&Factored::new(&model.kernel), &model.l0, &params, &mut |_, _| {})?;
     let solve_seconds = t.elapsed().as_secs_f64();
     let Some(record) = &model.hierarchy else { bail!("the model was not built hierarchically") };
-    let level = counts(record, &model, smallest, refinement_seconds, solve_seconds, peak.bytes());
+    let level = counts(record, &model, patch_size, refinement_seconds, solve_seconds, peak.bytes());
     Ok((level, model))
 }
 
 /// The level's counts from the hierarchy's record and the model.
-fn counts(record: &HierarchyRecord, model: &Model, smallest: f64, build: f64, solve: f64, peak: Option<f64>) -> Level {
+fn counts(
+    record: &HierarchyRecord,
+    model: &Model,
+    patch_size: f64,
+    build: f64,
+    solve: f64,
+    peak: Option<f64>,
+) -> Level {
     let leaves = model.mesh.len();
     let links = model.stats.pairs;
     Level {
-        smallest,
+        patch_size,
         roots: record.roots,
         leaves,
         links,
@@ -97,18 +104,18 @@ fn counts(record: &HierarchyRecord, model: &Model, smallest: f64, build: f64, so
     }
 }
 
-/// The case's own level `own` with one more for every smallest size in `sizes` (default:
-/// 4, 2.8, 2 and 1.4 times the case's), sorted by N, printed, with the exponents.
-pub fn curve(scene: &Scene, options: &ModelOptions, tolerance: f64, sizes: &[f64], own: Level) -> Result<Curve> {
+/// The case's own level `own` with one more for every leaf size in `sizes` (default: 4,
+/// 2.8, 2 and 1.4 times the case's), sorted by N, printed, with the exponents.
+pub fn curve(scene: &Scene, tolerance: f64, sizes: &[f64], own: Level) -> Result<Curve> {
     let sizes: Vec<f64> =
-        if sizes.is_empty() { [4.0, 2.8, 2.0, 1.4].map(|f| f * own.smallest).to_vec() } else { sizes.to_vec() };
+        if sizes.is_empty() { [4.0, 2.8, 2.0, 1.4].map(|f| f * own.patch_size).to_vec() } else { sizes.to_vec() };
     let mut levels = vec![own];
     for s in sizes {
         if !(s.is_finite() && s > 0.0) {
-            bail!("--scaling takes positive smallest element sizes in metres with --assembly hierarchical, got {s}");
+            bail!("--scaling takes positive leaf sizes in metres with --kernel hierarchical, got {s}");
         }
-        if levels.iter().all(|l| l.smallest != s) {
-            levels.push(level(scene, options, tolerance, s)?.0);
+        if levels.iter().all(|l| l.patch_size != s) {
+            levels.push(level(scene, s)?.0);
         }
     }
     levels.sort_by_key(|l| l.leaves);
@@ -126,8 +133,8 @@ fn print(c: &Curve, tolerance: f64) {
         c.links_exponent, c.time_exponent
     );
     println!(
-        "    {:>9} {:>6} {:>8} {:>10} {:>9} {:>9} {:>11} {:>7} {:>8} {:>8} {:>8} {:>9}",
-        "smallest",
+        "    {:>10} {:>6} {:>8} {:>10} {:>9} {:>9} {:>11} {:>7} {:>8} {:>8} {:>8} {:>9}",
+        "patch size",
         "roots",
         "leaves N",
         "links",
@@ -145,7 +152,7 @@ fn print(c: &Curve, tolerance: f64) {
         let peak = l.peak_bytes.map_or("-".into(), |b| format!("{:.0}", mib(b)));
         println!(
             "    {:>9.4} {:>6} {:>8} {:>10} {:>9.2e} {:>9} {:>11} {:>7} {:>8.2} {:>8.3} {:>8.1} {:>9}",
-            l.smallest,
+            l.patch_size,
             l.roots,
             l.leaves,
             l.links,

@@ -5,8 +5,8 @@
 //! a STREAM-like triad measured in the same run, the time per application of the
 //! factored operator, and assemble-and-solve time and peak memory over several patch
 //! sizes with the fitted growth exponent. `--export DIR` writes the same rays and matrix
-//! for the peers (Embree, scipy). With `--assembly hierarchical` it measures the rays, the
-//! operator's application and the hierarchy's curve over smallest element sizes instead:
+//! for the peers (Embree, scipy). With `--kernel hierarchical` it measures the rays, the
+//! operator's application and the hierarchy's curve over leaf sizes (`--patch-size`) instead:
 //! leaves, links, rays and time against N with their fitted exponents (`hierarchy.rs`).
 
 mod bandwidth;
@@ -22,8 +22,8 @@ use anyhow::{Context, Result, bail};
 use serde_json::json;
 use std::path::PathBuf;
 use ugo::kernel::Factored;
-use ugo::model::{Model, ModelOptions};
-use ugo::scene::{Assembly, Scene};
+use ugo::model::Model;
+use ugo::scene::{Hierarchical, KernelKind, Scene};
 use ugo::visibility::Visibility;
 
 /// What `ugo bench` measures.
@@ -41,8 +41,8 @@ pub struct BenchOptions {
     #[arg(long)]
     layouts: bool,
     /// Patch sizes of the scaling curve, m (default: 2.5, 2, 1.5 and 1.25 times the case's);
-    /// with `--assembly hierarchical`, smallest element sizes under roots of `--patch-size`
-    /// (default: 4, 2.8, 2 and 1.4 times the case's `smallest`).
+    /// with `--kernel hierarchical`, the leaves' patch sizes under the same roots (default:
+    /// 4, 2.8, 2 and 1.4 times the case's).
     #[arg(long, value_delimiter = ',')]
     scaling: Vec<f64>,
     /// Also time dense LU (faer against nalgebra) at these sizes.
@@ -60,23 +60,23 @@ pub fn run(o: &BenchOptions) -> Result<()> {
     for &n in &o.lu {
         layouts::dense_lu(n);
     }
-    let (scene, options) = load(&o.case, &o.discretize)?;
+    let scene = load(&o.case, &o.discretize)?;
     // Refused before meshing, from the surfaces, like `solve` (`kernel::forecast`).
-    Model::forecast(&scene, &options).check(options.memory_limit)?;
+    Model::forecast(&scene).check(scene.discretization.memory_limit)?;
     if let Some(json) = &o.json {
         super::check_writable(json)?;
     }
-    if let Assembly::Hierarchical { tolerance, smallest } = scene.discretization.assembly {
-        return run_hierarchical(o, &scene, &options, (tolerance, smallest));
+    if let KernelKind::Hierarchical(h) = scene.discretization.kernel {
+        return run_hierarchical(o, &scene, h);
     }
     let threads = rayon::current_num_threads();
     println!("ugo bench: {} ({} threads)", scene.name, threads);
-    let (mesh, visibility, segments, rays) = occlusion(o, &scene, &options)?;
+    let (mesh, visibility, segments, rays) = occlusion(o, &scene, scene.discretization.patch_size)?;
 
     let triad = bandwidth::triad();
     println!("  memory bandwidth      {:>12.2} GB/s     (STREAM-like triad, 3 × 256 MiB)", triad / 1e9);
 
-    let (full, model) = scaling::step(&scene, &options, options.patch_size)?;
+    let (full, model) = scaling::step(&scene, scene.discretization.patch_size)?;
     let pairs_rate = full.pairs as f64 / model.stats.kernel_seconds;
     println!(
         "  assembly              {:>12.3e} pairs/s  ({} facing pairs, {} occlusion rays in {:.2} s: {:.3e} rays/s)",
@@ -89,14 +89,14 @@ pub fn run(o: &BenchOptions) -> Result<()> {
     let g = &model.kernel.g;
     let (spmv, traffic, factored) = product_figures(&model, triad);
 
-    let one = scaling::assembly_with_threads(&scene, &options, 1)?;
+    let one = scaling::assembly_with_threads(&scene, 1)?;
     let all = full.assembly_seconds;
     println!(
         "  assembly speed-up     {:>12.2}×        (1 → {threads} threads, the whole model build: {one:.2} s → {all:.2} s)",
         one / all
     );
 
-    let (steps, exponent) = scaling_curve(&scene, &options, &o.scaling, full)?;
+    let (steps, exponent) = scaling_curve(&scene, &o.scaling, full)?;
     let report = json!({
         "case": scene.name,
         "threads": threads,
@@ -126,21 +126,20 @@ pub fn run(o: &BenchOptions) -> Result<()> {
     Ok(())
 }
 
-/// `ugo bench --assembly hierarchical`: the occlusion rays, the operator's application
-/// and the hierarchy's curve over smallest element sizes (`--scaling`); the figures of a
+/// `ugo bench --kernel hierarchical`: the occlusion rays on the roots, the operator's
+/// application and the hierarchy's curve over leaf sizes (`--scaling`); the figures of a
 /// stored matrix (its sparse product against the triad, `--export`) do not apply.
-/// `refinement` is the case's (link tolerance, smallest element size).
-fn run_hierarchical(o: &BenchOptions, scene: &Scene, options: &ModelOptions, refinement: (f64, f64)) -> Result<()> {
-    let (tolerance, smallest) = refinement;
+fn run_hierarchical(o: &BenchOptions, scene: &Scene, h: Hierarchical) -> Result<()> {
+    let tolerance = h.link_tolerance;
     if o.export.is_some() {
         bail!(
-            "--export writes the stored matrix G for the peers; the hierarchical kernel stores none (use --assembly explicit)"
+            "--export writes the stored matrix G for the peers; the hierarchical kernel stores none (use --kernel uniform)"
         );
     }
     let threads = rayon::current_num_threads();
-    println!("ugo bench: {} ({} threads, hierarchical kernel, roots of {} m)", scene.name, threads, options.patch_size);
-    let rays = occlusion(o, scene, options)?.3;
-    let (own, model) = hierarchy::level(scene, options, tolerance, smallest)?;
+    println!("ugo bench: {} ({} threads, hierarchical kernel, roots of {} m)", scene.name, threads, h.root_size);
+    let rays = occlusion(o, scene, h.root_size)?.3;
+    let (own, model) = hierarchy::level(scene, scene.discretization.patch_size)?;
     println!("  sparse product G x    skipped: the hierarchy stores no matrix (links applied by pull, gather, push)");
     let factored = bandwidth::apply_seconds(&Factored::new(&model.kernel));
     println!(
@@ -150,12 +149,12 @@ fn run_hierarchical(o: &BenchOptions, scene: &Scene, options: &ModelOptions, ref
         model.stats.pairs,
         model.kernel.g.bytes() / (1u64 << 20) as f64
     );
-    let curve = hierarchy::curve(scene, options, tolerance, &o.scaling, own)?;
+    let curve = hierarchy::curve(scene, tolerance, &o.scaling, own)?;
     let report = json!({
         "case": scene.name,
         "threads": threads,
         "assembly": "hierarchical",
-        "patch_size": options.patch_size,
+        "root_size": h.root_size,
         "link_tolerance": tolerance,
         "occlusion_rays_per_second": rays,
         "factored_apply_seconds": factored,
@@ -167,14 +166,14 @@ fn run_hierarchical(o: &BenchOptions, scene: &Scene, options: &ModelOptions, ref
     write_json(o, &report)
 }
 
-/// The root mesh, its ray caster, `--rays` segments between facing patches and the
-/// occlusion rays per second through them, printed (with every layout for `--layouts`).
+/// The uniform mesh at `size`, its ray caster, `--rays` segments between facing patches and
+/// the occlusion rays per second through them, printed (with every layout for `--layouts`).
 fn occlusion(
     o: &BenchOptions,
     scene: &Scene,
-    options: &ModelOptions,
+    size: f64,
 ) -> Result<(ugo::geometry::Mesh, Visibility, Vec<layouts::Segment>, f64)> {
-    let mesh = Model::mesh(scene, options);
+    let mesh = ugo::geometry::Mesh::build(&scene.surfaces, size);
     let segments = facing_segments(o, &mesh)?;
     let visibility = Visibility::build(&mesh);
     let rays = layouts::rays_per_second(&visibility, &segments).max(layouts::rays_per_second(&visibility, &segments));
@@ -201,17 +200,15 @@ fn write_json(o: &BenchOptions, report: &serde_json::Value) -> Result<()> {
 /// Assembly and solve at several patch sizes (`sizes`, default 2.5, 2, 1.5 and 1.25 times
 /// the case's) beside the case's own `full` step, printed, with the fitted exponent of time
 /// against the number of patches.
-fn scaling_curve(
-    scene: &Scene,
-    options: &ModelOptions,
-    sizes: &[f64],
-    full: scaling::Step,
-) -> Result<(Vec<scaling::Step>, f64)> {
-    let sizes =
-        if sizes.is_empty() { [2.5, 2.0, 1.5, 1.25].map(|f| f * options.patch_size).to_vec() } else { sizes.to_vec() };
+fn scaling_curve(scene: &Scene, sizes: &[f64], full: scaling::Step) -> Result<(Vec<scaling::Step>, f64)> {
+    let sizes = if sizes.is_empty() {
+        [2.5, 2.0, 1.5, 1.25].map(|f| f * scene.discretization.patch_size).to_vec()
+    } else {
+        sizes.to_vec()
+    };
     let mut steps = Vec::new();
     for h in sizes {
-        steps.push(scaling::step(scene, options, h)?.0);
+        steps.push(scaling::step(scene, h)?.0);
     }
     steps.push(full);
     steps.sort_by_key(|s| s.patches);

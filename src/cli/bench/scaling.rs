@@ -7,7 +7,7 @@ use anyhow::Result;
 use serde::Serialize;
 use std::time::Instant;
 use ugo::kernel::Factored;
-use ugo::model::{Model, ModelOptions};
+use ugo::model::Model;
 use ugo::progress::Silent;
 use ugo::scene::Scene;
 use ugo::solve::{SolveParams, successive_approximation};
@@ -28,11 +28,12 @@ pub struct Step {
 }
 
 /// Assembles and solves `scene` at `patch_size`.
-pub fn step(scene: &Scene, options: &ModelOptions, patch_size: f64) -> Result<(Step, Model)> {
+pub fn step(scene: &Scene, patch_size: f64) -> Result<(Step, Model)> {
     let peak = Peak::start();
-    let options = ModelOptions { patch_size, ..options.clone() };
+    let mut scene = scene.clone();
+    scene.discretization.patch_size = patch_size;
     let t = Instant::now();
-    let model = Model::build(scene, &options, &Silent)?;
+    let model = Model::build(&scene, &Silent)?;
     let assembly_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let params = SolveParams { tolerance: 1e-8, max_iterations: 10_000, ..SolveParams::default() };
@@ -67,11 +68,11 @@ pub fn slope(xy: impl Iterator<Item = (f64, f64)>) -> f64 {
 }
 
 /// Seconds to build the model of `scene` in a pool of `threads` threads.
-pub fn assembly_with_threads(scene: &Scene, options: &ModelOptions, threads: usize) -> Result<f64> {
+pub fn assembly_with_threads(scene: &Scene, threads: usize) -> Result<f64> {
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build()?;
     pool.install(|| {
         let t = Instant::now();
-        Model::build(scene, options, &Silent)?;
+        Model::build(scene, &Silent)?;
         Ok(t.elapsed().as_secs_f64())
     })
 }

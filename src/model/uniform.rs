@@ -1,24 +1,26 @@
-//! The explicit model (`design.md` §3): the uniform mesh, every facing pair of patches
+//! The uniform model (`design.md` §3): the uniform mesh, every facing pair of patches
 //! integrated and balanced into `G`, the luminaires' direct light on every patch.
 
 use super::range::{check_blocks, check_source, check_transport};
 use super::source::source_term;
-use super::system::{AssemblyStats, Model, ModelError, ModelOptions};
+use super::system::{AssemblyStats, Model, ModelError};
 use crate::geometry::Mesh;
 use crate::kernel::{Assembled, Estimate, Footprint, Kernel, Transport, TransportMatrix, assemble};
 use crate::luminaire::{Source, direct_light};
 use crate::progress::Progress;
 use crate::scene::Scene;
 use crate::transfer::exposure::measure_exposure;
+use crate::transfer::form_factor::Quadrature;
 use crate::visibility::{Faces, Visibility};
 use std::time::Instant;
 
 /// Meshes, checks the kernel's estimate against the memory limit, assembles; checks the
 /// kernel and the source term for values out of range (`super::range`).
-pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> Result<Model, ModelError> {
+pub fn build(scene: &Scene, progress: &dyn Progress) -> Result<Model, ModelError> {
     let t = Instant::now();
-    let mut mesh = Mesh::build(&scene.surfaces, options.patch_size);
-    let directions = options.directions.clone();
+    let d = &scene.discretization;
+    let mut mesh = Mesh::build(&scene.surfaces, d.patch_size);
+    let directions = d.directions.set();
     let estimate = Estimate::of(&mesh, &directions);
     Footprint {
         what: "kernel G",
@@ -27,7 +29,7 @@ pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> 
         patches: estimate.patches,
         cells: estimate.cells,
     }
-    .check(options.memory_limit)?;
+    .check(d.memory_limit)?;
     let mesh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let visibility = Visibility::build(&mesh);
@@ -37,13 +39,13 @@ pub fn build(scene: &Scene, options: &ModelOptions, progress: &dyn Progress) -> 
     let n = mesh.len() as u64;
     progress.begin("assembly", n * n.saturating_sub(1) / 2);
     let Assembled { g, balance, pairs, rays } =
-        assemble(&mesh, &visibility, &directions, &options.quadrature, &|done| progress.advance(done))?;
+        assemble(&mesh, &visibility, &directions, &Quadrature::default(), &|done| progress.advance(done))?;
     progress.end();
     let blocks: Vec<_> = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
     check_blocks(scene, &blocks, directions.len())?;
     let patch_material = mesh.patches.iter().map(|p| p.material).collect();
     let twin = mesh.patches.iter().map(|p| p.twin).collect();
-    let g = Transport::Explicit(TransportMatrix::new(g, options.precision));
+    let g = Transport::Explicit(TransportMatrix::new(g, d.precision));
     check_transport(scene, &mesh, &g, directions.len())?;
     let kernel = Kernel { g, directions, blocks, patch_material, twin };
     let kernel_seconds = t.elapsed().as_secs_f64();
