@@ -1,5 +1,5 @@
 //! Direction sets `{C_k}`: partitions of the hemisphere (or sphere) of directions into
-//! cells (`design.md` §2).
+//! cells (`docs/design.md` §2).
 //!
 //! Every set is made of rings between two polar angles, each ring cut into equal azimuth
 //! sectors starting at `φ = 0`; the upper hemisphere comes first, from the pole down. Each

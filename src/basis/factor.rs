@@ -1,4 +1,4 @@
-//! Low-rank factorizations of the material blocks, `ρ̄ ≈ Ψ Φᵀ` (`design.md` §4, kernel
+//! Low-rank factorizations of the material blocks, `ρ̄ ≈ Ψ Φᵀ` (`docs/design.md` §4, kernel
 //! factorization): with them the outgoing luminance of a patch is `L = L0 + Ψ c`, and
 //! its `M` coefficients `c` obey `c = Φᵀ G (L0 + Ψ c)`, so the kernel
 //! `K(x', x) = Σ_n ψ_n(x) φ_n(x')` becomes a system of `N·M` unknowns (`reduced.rs`).

@@ -1,4 +1,4 @@
-//! Local frames `(t, b, N)`: direction cells are defined in them (`design.md` §2).
+//! Local frames `(t, b, N)`: direction cells are defined in them (`docs/design.md` §2).
 
 use glam::DVec3;
 

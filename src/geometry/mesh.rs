@@ -1,4 +1,4 @@
-//! The patch mesh: every surface of a scene cut into planar patches (`design.md` §2).
+//! The patch mesh: every surface of a scene cut into planar patches (`docs/design.md` §2).
 //!
 //! Owns the per-patch record (centroid, normal, area, local frame, owning surface and
 //! material, emitted luminance) and the rule for `inside` (normals flipped) and
@@ -20,7 +20,7 @@ pub struct Patch {
     pub normal: DVec3,
     pub area: f64,
     /// The part of `area` outside every solid, m²: what the patch's luminance is spread
-    /// over (`design.md` §3, "Contacts"). The area itself until the model measures it
+    /// over (`docs/design.md` §3, "Contacts"). The area itself until the model measures it
     /// (`transfer::exposure`): a patch under a cabinet standing on it, or behind a shelf
     /// against it, sends and receives light only through its exposed part.
     pub exposed: f64,

@@ -1,6 +1,6 @@
 //! Small convex planar polygons (triangles and quads): the shape of every patch.
 //!
-//! Owns the elementary geometry used by meshing (`design.md` §2) and by the form
+//! Owns the elementary geometry used by meshing (`docs/design.md` §2) and by the form
 //! factors (§3): area, normal, centroid, triangle fan, distance from a point, and
 //! clipping against a plane. Vertices are counter-clockwise seen from the front.
 

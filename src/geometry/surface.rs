@@ -1,5 +1,5 @@
 //! What a surface is before meshing: its shape, its material, its sides and its emission
-//! (`design.md` §2, §7 `[[surface]]`). The scene file is validated into these; the mesh
+//! (`docs/design.md` §2, §7 `[[surface]]`). The scene file is validated into these; the mesh
 //! is built from them.
 
 use glam::DVec3;

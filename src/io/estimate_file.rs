@@ -1,5 +1,5 @@
 //! The HDF5 file of a forward Monte Carlo estimate (`ugo trace --forward`): the layout of
-//! a solve (`design.md` §8, `hdf5_file.rs`) so that `ugo render`, `ugo agree` and h5py
+//! a solve (`docs/design.md` §8, `hdf5_file.rs`) so that `ugo render`, `ugo agree` and h5py
 //! read it alike, plus the standard errors.
 //!
 //! `/mesh/…`, `/directions/…` as a solve; `/field/{luminance,emission}` (N×K×1, cd/m²),

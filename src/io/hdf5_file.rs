@@ -1,4 +1,4 @@
-//! The HDF5 file of one solve (`design.md` §8), readable with h5py or h5dump alone.
+//! The HDF5 file of one solve (`docs/design.md` §8), readable with h5py or h5dump alone.
 //!
 //! Layout: `/mesh/{points,normals,areas,surface_id,material_id,vertices,vertex_count,face,
 //! twin,surface_names,material_names}`, `/directions/{vectors,solid_angle,projected}`,

@@ -1,5 +1,5 @@
 //! `/kernel` of the HDF5 dump (issue 15, `docs/kernel-file.md`): the explicit kernel
-//! `K = B·G` and source term `L0 = L_e + B·D` of `design.md` §2–§3, stored so that ugo
+//! `K = B·G` and source term `L0 = L_e + B·D` of `docs/design.md` §2–§3, stored so that ugo
 //! reuses them instead of assembling and other programs read them with h5py and scipy.
 //!
 //! Layout (N patches, K cells, M materials, Q luminaires; vectors flat, `x[i·K + k]`):

@@ -1,4 +1,4 @@
-//! The light scenes of a solve in its HDF5 file (`design.md` §8), and one of them read
+//! The light scenes of a solve in its HDF5 file (`docs/design.md` §8), and one of them read
 //! back for `ugo render --light-scene NAME`.
 //!
 //! `/light_groups/{name (G), luminance (G×N×K×1), emission (G×N), scene_names (S),

@@ -1,4 +1,4 @@
-//! The stored transport matrix `G` of `design.md` §3, in double precision (f64 values,
+//! The stored transport matrix `G` of `docs/design.md` §3, in double precision (f64 values,
 //! `usize` indices: 16 bytes per non-zero) or, with `--precision f32`, in single precision
 //! (f32 values, u32 indices: 8 bytes per non-zero). Assembly and balancing always work in
 //! double precision; the matrix is rounded once when stored. Every product accumulates in

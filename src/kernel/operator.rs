@@ -1,5 +1,5 @@
 //! The kernel as an operator: `K = B·G`, applied factored (`G` then `B`) or formed
-//! explicitly as one sparse matrix (`design.md` §3).
+//! explicitly as one sparse matrix (`docs/design.md` §3).
 //!
 //! Solvers see both through `crate::solve::LinOp`; the factored form never builds the
 //! product, the explicit one is there for norms, direct solves and export.

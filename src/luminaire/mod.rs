@@ -1,5 +1,5 @@
 //! Luminaires in the system: their direct light as the source term of the patches it
-//! reaches (`design.md` §1, §3):
+//! reaches (`docs/design.md` §1, §3):
 //!
 //! `L0(i,k) = L_e(i) + Σ_d ρ̄_i(k,d) D(i,d)`,   `D(i,d) = E_s(i,d)/π`,
 //!

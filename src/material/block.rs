@@ -1,5 +1,5 @@
 //! The `K × K` block of a material: the cell-averaged luminance factor `ρ̄(k,d)` of
-//! `design.md` §3 (`B`), with its optional transmission block, albedo and application.
+//! `docs/design.md` §3 (`B`), with its optional transmission block, albedo and application.
 
 use crate::directions::DirectionSet;
 use std::f64::consts::PI;

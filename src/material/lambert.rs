@@ -1,5 +1,5 @@
 //! Lambert: the ideal diffuse reflector and, on a two-sided surface, diffuse transmitter
-//! (`design.md` §1): `ρ ≡ reflectance` on the incident side, `τ ≡ transmittance` through
+//! (`docs/design.md` §1): `ρ ≡ reflectance` on the incident side, `τ ≡ transmittance` through
 //! the surface, `reflectance + transmittance ≤ 1`. Every cell average is the constant.
 //! Sampled by cosine directions, on the side chosen in proportion to `ρ : τ`.
 //!

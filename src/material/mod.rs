@@ -1,4 +1,4 @@
-//! Materials as cell-averaged luminance factors: the blocks of `B` (`design.md` §1, §3).
+//! Materials as cell-averaged luminance factors: the blocks of `B` (`docs/design.md` §1, §3).
 //!
 //! A block holds, for outgoing cell `k` and incoming cell `d`, the luminance factor
 //! averaged over both cells with the projected-solid-angle measure,
@@ -38,7 +38,7 @@ use std::f64::consts::FRAC_1_PI;
 pub const TYPES: [(&str, &[&str]); 4] =
     [(lambert::TYPE, lambert::KEYS), (phong::TYPE, phong::KEYS), (mirror::TYPE, mirror::KEYS), (ggx::TYPE, ggx::KEYS)];
 
-/// The closed set of material models, as luminance factors `ρ = π f_r` (`design.md` §1).
+/// The closed set of material models, as luminance factors `ρ = π f_r` (`docs/design.md` §1).
 #[derive(Debug, Clone, PartialEq)]
 pub enum MaterialModel {
     /// Ideal diffuse reflector and (on a two-sided surface) diffuse transmitter:

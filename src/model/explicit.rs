@@ -1,4 +1,4 @@
-//! The explicit model (`design.md` §3): the uniform mesh, every facing pair of patches
+//! The explicit model (`docs/design.md` §3): the uniform mesh, every facing pair of patches
 //! integrated and balanced into `G`, the luminaires' direct light on every patch.
 
 use super::range::{check_blocks, check_source, check_transport};

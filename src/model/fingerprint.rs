@@ -1,5 +1,5 @@
 //! The fingerprint of a kernel (issue 15, `docs/kernel-file.md`): what `G`, the blocks `B`
-//! and the luminaires' direct light `D` of `K = B·G`, `L0 = L_e + B·D` (`design.md` §3) are
+//! and the luminaires' direct light `D` of `K = B·G`, `L0 = L_e + B·D` (`docs/design.md` §3) are
 //! computed from, in named parts, so that a saved kernel is reused only for the case it was
 //! assembled for and a refusal names the part that changed.
 //!

@@ -1,7 +1,7 @@
 //! The explicit model around a stored `G` (issue 15, `docs/kernel-file.md`): the mesh and
 //! its ray caster rebuilt from the case (cheap), `G` as read from a kernel file instead of
 //! assembled, the blocks `B` and the luminaires' direct light `D` as stored or, when only
-//! they changed, rebuilt from the case, and `L0 = L_e + B·D` (`design.md` §2, §3).
+//! they changed, rebuilt from the case, and `L0 = L_e + B·D` (`docs/design.md` §2, §3).
 
 use super::source::source_term;
 use super::system::{AssemblyStats, Model, ModelOptions};

@@ -1,4 +1,4 @@
-//! The source term `L0 = L_e + B·D` (`design.md` §2): the surfaces' own emission plus the
+//! The source term `L0 = L_e + B·D` (`docs/design.md` §2): the surfaces' own emission plus the
 //! luminaires' direct light reflected once, on the patches of any mesh; and the source
 //! term of some of the emitters alone ([`SourceTerm`]), linear in them.
 

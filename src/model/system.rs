@@ -1,4 +1,4 @@
-//! The discretized system `x = L0 + K x` of a scene (`design.md` §6): the model's parts
+//! The discretized system `x = L0 + K x` of a scene (`docs/design.md` §6): the model's parts
 //! (mesh, ray caster, kernel, source term, luminaires), how it is discretized, what its
 //! assembly cost, and why none was built.
 

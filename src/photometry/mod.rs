@@ -3,7 +3,7 @@
 //! (`docs/photometry.md`).
 //!
 //! A luminaire's direct light is the source term of the patches it reaches,
-//! `L0(i,k) = (1/π) ρ̄_i(k, d_s) E_s(i)` (`design.md` §1, §3; built in `luminaire`); this
+//! `L0(i,k) = (1/π) ρ̄_i(k, d_s) E_s(i)` (`docs/design.md` §1, §3; built in `luminaire`); this
 //! module owns only the distributions: the closed set [`Distribution`], the table
 //! [`IntensityDistribution`] with its interpolation and exact flux, the goniometric systems
 //! A, B and C ([`System`]), the symmetries files imply, tilt factors, and the two file

@@ -1,5 +1,5 @@
 //! The luminance field `L(r_i, l_k)`: an `N × K × C` array over patches, direction
-//! cells and colour channels (`design.md` §2; photometric `C = 1`).
+//! cells and colour channels (`docs/design.md` §2; photometric `C = 1`).
 //!
 //! Unknowns are point-major, `x[i·K + k]`; this module owns the conversion between the
 //! solver's flat vector and the array.

@@ -1,6 +1,6 @@
 //! The final gather: one more reflection evaluated at the hit point `q` itself with the
 //! material's own luminance factor, `L(q, l) = Le + (1/π) ∫ ρ(l, l') L(q, l') cosθ' dω'`
-//! (`design.md` §5), the incoming `L` read from the solved field. The reflection seen is
+//! (`docs/design.md` §5), the incoming `L` read from the solved field. The reflection seen is
 //! then as sharp as the material: a glossy lobe is not averaged over direction cells.
 //!
 //! The incoming light is split in two:

@@ -1,6 +1,6 @@
 //! Illuminance calculation grids (`[[grid]]`): the illuminance `E = π Σ_d I_d` (lx) at
 //! the centre of every grid cell, gathered from the solved field exactly as a probe's
-//! (`probe.rs`, `design.md` §5), and the statistics lighting designers judge a
+//! (`probe.rs`, `docs/design.md` §5), and the statistics lighting designers judge a
 //! lighting scheme by: average, minimum, maximum and the uniformity `U0 = E_min/E_avg`.
 
 use crate::model::Model;

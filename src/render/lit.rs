@@ -7,7 +7,7 @@
 //!   (`smooth.rs`);
 //! * `Gather`: one more reflection evaluated at `q` itself with the material's own
 //!   luminance factor, from the solved field and the luminaires' direct light
-//!   (`crate::readout::final_gather`, `design.md` §5).
+//!   (`crate::readout::final_gather`, `docs/design.md` §5).
 
 use super::smooth::Corners;
 use super::solved::Solved;

@@ -1,5 +1,5 @@
 //! `[discretization]` without `method` (or `method = "auto"`): the kernel chosen by its size
-//! (issue 14, point 8; `design.md` §3 and §3b).
+//! (issue 14, point 8; `docs/design.md` §3 and §3b).
 //!
 //! The explicit kernel while its forecast stays at most [`EXPLICIT_PAIRS`] facing pairs of
 //! patches: there it is the reference, every solver and norm works on it (`direct`, exact

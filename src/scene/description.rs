@@ -1,4 +1,4 @@
-//! The runtime scene: what a validated case file says, in plain types (`design.md` §7).
+//! The runtime scene: what a validated case file says, in plain types (`docs/design.md` §7).
 
 use super::files::CaseFile;
 use super::grid::Grid;
@@ -66,10 +66,10 @@ pub struct Automatic {
 /// `[discretization] method`: how the kernel `K` is built.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Assembly {
-    /// Every facing pair of patches gets its entry (`design.md` §3).
+    /// Every facing pair of patches gets its entry (`docs/design.md` §3).
     Explicit,
     /// Element trees over patches of `patch_size`, links where the oracle accepts them
-    /// (`design.md` §3b): `tolerance` is the error allowed per link relative to the mean
+    /// (`docs/design.md` §3b): `tolerance` is the error allowed per link relative to the mean
     /// reflected luminance, `smallest` the smallest element edge, m.
     Hierarchical { tolerance: f64, smallest: f64 },
 }
@@ -109,7 +109,7 @@ impl Default for SolverSettings {
     }
 }
 
-/// `[[material]]`: a named luminance-factor model (`design.md` §1).
+/// `[[material]]`: a named luminance-factor model (`docs/design.md` §1).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Material {
     pub name: String,

@@ -1,4 +1,4 @@
-//! The sky as a boundary condition of the global illumination equation (`design.md` §1,
+//! The sky as a boundary condition of the global illumination equation (`docs/design.md` §1,
 //! `docs/daylight.md`): luminance arriving from a direction `l` that leaves the scene is the
 //! sky's `L_sky(l)` above the horizon and the ground's below it.
 //!

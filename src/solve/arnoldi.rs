@@ -1,4 +1,4 @@
-//! The eigenvalues of largest magnitude of `K` and their eigenvectors (`design.md` §4, the
+//! The eigenvalues of largest magnitude of `K` and their eigenvectors (`docs/design.md` §4, the
 //! spectrum that sets every iteration's rate), by thick-restart Arnoldi, matrix-free
 //! through [`LinOp`] so that it runs on the factored and the hierarchical kernel alike.
 //!

@@ -1,4 +1,4 @@
-//! The one operator trait every solver takes (`design.md` §4): `y = A x` on a flat vector.
+//! The one operator trait every solver takes (`docs/design.md` §4): `y = A x` on a flat vector.
 //! The solvers own it (as in faer); the kernel's operators are adapted here, so the kernel
 //! floor knows nothing of solvers.
 

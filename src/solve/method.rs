@@ -6,7 +6,7 @@ use super::range::OutOfRange;
 use super::{bicgstab, direct, direct_sparse, gauss_seidel, gmres, southwell, successive_approximation};
 use crate::kernel::{Explicit, Factored, Kernel};
 
-/// A method of `design.md` §4.
+/// A method of `docs/design.md` §4.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Method {
     /// Successive approximation (reflection orders).

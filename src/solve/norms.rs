@@ -1,4 +1,4 @@
-//! Norms of the kernel and of `I − K` (`design.md` §4): `‖K‖₁`, `‖K‖∞`, `‖K‖_F` exactly
+//! Norms of the kernel and of `I − K` (`docs/design.md` §4): `‖K‖₁`, `‖K‖∞`, `‖K‖_F` exactly
 //! from the explicit matrix; `‖K‖₂` by power iteration on `KᵀK`; the spectral radius
 //! `ρ(K)` (the Perron root, `K ≥ 0`) by power iteration on `K + I` (the shift keeps the
 //! Perron root strictly dominant even when `K` is periodic, as between two plates), each

@@ -1,4 +1,4 @@
-//! The one shape of every solver (`design.md` §4): the stopping rule in, what the solve
+//! The one shape of every solver (`docs/design.md` §4): the stopping rule in, what the solve
 //! did or why it failed out, and the vector helpers the methods share.
 
 use super::range::OutOfRange;

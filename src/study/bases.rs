@@ -1,4 +1,4 @@
-//! The study of angular bases (`design.md` §4, kernel factorization): one case solved in
+//! The study of angular bases (`docs/design.md` §4, kernel factorization): one case solved in
 //! the full cell basis and in several factored bases (hemispherical harmonics, truncated
 //! SVD), each with its error against the full angular solution, its unknowns, the memory
 //! of its assembled operator, its time and its residual in the full system.

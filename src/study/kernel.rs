@@ -3,7 +3,7 @@
 //! assembled when the case's fingerprint matches the stored one; a change of a part that
 //! `G` depends on (geometry, discretization, visibility, version, the materials of a
 //! hierarchical kernel) is refused naming it; a change of the reflectances or the
-//! luminaires only rebuilds `B`, `D` and `L0` around the stored `G` (`design.md` §3).
+//! luminaires only rebuilds `B`, `D` and `L0` around the stored `G` (`docs/design.md` §3).
 //! The hierarchical kernel is neither saved nor reused (its links live on a tree of
 //! elements refined along the solved field; the reason is in the docs).
 

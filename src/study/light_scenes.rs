@@ -1,4 +1,4 @@
-//! Light scenes by superposition (`design.md` §1: `L = (I − K)⁻¹ L0` is linear in the
+//! Light scenes by superposition (`docs/design.md` §1: `L = (I − K)⁻¹ L0` is linear in the
 //! sources). Each group of sources (`[[luminaire]]` and `[[surface]]` `group` keys) is solved
 //! alone against the case's one kernel, every solve started from the solutions already
 //! known (`solve::Projection`, the case's own field first); every `[[light_scene]]` is then

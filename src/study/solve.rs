@@ -1,4 +1,4 @@
-//! The solve of a case (`design.md` §4, §6), as `ugo solve`, `norms` and `compare` run it:
+//! The solve of a case (`docs/design.md` §4, §6), as `ugo solve`, `norms` and `compare` run it:
 //! the model, every method asked for on `x = L0 + K x` (in the full cell basis or a
 //! factored angular one), the reference run, and every readout of its field: patch
 //! illuminance, energy balance, probes, grids, reflection orders, norms, the leading

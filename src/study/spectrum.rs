@@ -1,4 +1,4 @@
-//! What the leading eigenvalues of `K` predict about convergence (`design.md` §4), against
+//! What the leading eigenvalues of `K` predict about convergence (`docs/design.md` §4), against
 //! what the runs measured: successive approximation contracts the error by `|λ₁| = ρ(K)`
 //! per product with `K`; GMRES on `I − K`, once its first steps have removed the isolated
 //! Perron eigenvalue `1 − λ₁`, by about `|λ₂|`, so the gap `|λ₂/λ₁|` is its gain per

@@ -1,4 +1,4 @@
-//! Backward ray tracing (`design.md` §4): Monte Carlo path tracing from the eye with the
+//! Backward ray tracing (`docs/design.md` §4): Monte Carlo path tracing from the eye with the
 //! continuous materials, an unbiased estimate of `L = Σ_n Kⁿ L0` along a ray with no
 //! discretization at all.
 //!

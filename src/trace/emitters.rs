@@ -1,4 +1,4 @@
-//! The light sources of the estimators: the source term `L0` of `design.md` §1 as things
+//! The light sources of the estimators: the source term `L0` of `docs/design.md` §1 as things
 //! to sample. Every emitting patch is an area emitter of Lambertian luminance `L0`
 //! (cd/m², from `mesh.emission`, which already turned a surface's flux into luminance)
 //! and flux `Φ = π L0 A` (lm).

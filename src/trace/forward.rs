@@ -1,4 +1,4 @@
-//! Forward ray tracing (`design.md` §4): Monte Carlo light tracing from the emitters into
+//! Forward ray tracing (`docs/design.md` §4): Monte Carlo light tracing from the emitters into
 //! the `(patch, direction cell)` bins, a view-independent estimate of the discrete field.
 //!
 //! Photons leave the emitters chosen by flux, each carrying `Φ/P` lm, from a uniform

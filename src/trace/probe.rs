@@ -1,4 +1,4 @@
-//! Backward estimates of the `[[probe]]` readings (`design.md` §7), with the meaning of
+//! Backward estimates of the `[[probe]]` readings (`docs/design.md` §7), with the meaning of
 //! `crate::readout::probe`: the luminance (cd/m²) a meter at the point aimed along the normal reads
 //! (on a surface: that surface's outgoing luminance along its normal), and the illuminance
 //! (lx) on a receiver at the point facing the normal, `E = ∫ L_in cosθ dω`.

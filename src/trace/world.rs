@@ -1,7 +1,8 @@
 //! The scene as the Monte Carlo estimators see it: the patches only as geometry (where a
 //! ray lands, which side it meets, or whether it leaves the scene), the continuous material
-//! of every patch, the emitters, the luminaires, the openings and the ray caster. Nothing here is discretized in direction: `design.md` §4's
-//! references share no kernel, block or cell with the linear system.
+//! of every patch, the emitters, the luminaires, the openings and the ray caster. Nothing
+//! here is discretized in direction: the references of `docs/design.md` §4 share no
+//! kernel, block or cell with the linear system.
 
 use super::emitters::Emitters;
 use super::luminaires::Luminaires;

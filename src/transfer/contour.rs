@@ -4,7 +4,7 @@
 //! vectors to the vertices and `γ_i` the angle between consecutive ones (`references.md`,
 //! configuration factors item 6). The polygon is first clipped to the half-space in front
 //! of the point, so patches partly below the point's horizon are handled exactly. This is
-//! the near-field-exact building block of `design.md` §3.
+//! the near-field-exact building block of `docs/design.md` §3.
 
 use crate::geometry::{ConvexPolygon, MAX_CLIPPED, Patch};
 use glam::DVec3;

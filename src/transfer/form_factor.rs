@@ -1,4 +1,4 @@
-//! Patch-to-patch form factors without occlusion (`design.md` §3), whole or split by
+//! Patch-to-patch form factors without occlusion (`docs/design.md` §3), whole or split by
 //! direction cells (`F_ij^{d,m}`).
 //!
 //! `A_s F_st = ∫_{A_s} F_{dA(x)→P_t} dA(x)`: the inner integral is exact (Lambert's

@@ -1,5 +1,5 @@
 //! Visibility fractions `V_ij` between two patches: the mean of the pupil function `Θ`
-//! over segments joining stratified points of the two patches (`design.md` §3).
+//! over segments joining stratified points of the two patches (`docs/design.md` §3).
 //!
 //! The same points serve both directions, so `V_ij = V_ji` and occlusion keeps the
 //! kernel reciprocal. Four segments (point `k` to point `k` of the other patch) are tested

@@ -1,4 +1,4 @@
-//! Visibility: the pupil function `Θ(r, r')` of `design.md` §1 and closest hits, through `obvhs`.
+//! Visibility: the pupil function `Θ(r, r')` of `docs/design.md` §1 and closest hits, through `obvhs`.
 //!
 //! Owns the only conversion of the scene to `f32` (obvhs works in `Vec3A`), the
 //! triangle → face map (and, in `faces.rs`, the face → patch map), and the

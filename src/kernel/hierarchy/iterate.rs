@@ -1,4 +1,4 @@
-//! Refinement iterated with the solve (`design.md` §3b, "Oracle": solve, refine where the
+//! Refinement iterated with the solve (`docs/design.md` §3b, "Oracle": solve, refine where the
 //! current field says it matters, solve again). The source term and the solver are the
 //! caller's (the kernel knows neither luminaires nor methods): `source` gives `L0` on the
 //! current leaves (and may split leaves first, e.g. along the luminaires' shadows), `solve`

@@ -1,4 +1,4 @@
-//! The hierarchical kernel (`design.md` §3b): the trees, the links that the oracle accepted,
+//! The hierarchical kernel (`docs/design.md` §3b): the trees, the links that the oracle accepted,
 //! and the passes that made them. `new` links from one self-link of the top cluster, with
 //! an ambient first guess of the field for brightness; `refine` refines again with a solved
 //! field; `operator` applies `K` on the current leaves; `leaf_mesh` and `source` give the

@@ -1,4 +1,4 @@
-//! Links (`design.md` §3b, "Links"): a receiver node `p` gathers `F_pq x̄_q` from a source
+//! Links (`docs/design.md` §3b, "Links"): a receiver node `p` gathers `F_pq x̄_q` from a source
 //! node `q`. Between two elements `F_pq = (1/A_p) ∫_p F_{dA→q} dA` by the exact contour
 //! integral and adaptive quadrature (`form_factor::pair_integral`), times the visible
 //! fraction; for `K > 1` split by cells `(d, m)` like `G[(i,d),(j,m)]`: the mean of the

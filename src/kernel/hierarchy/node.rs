@@ -1,4 +1,4 @@
-//! One node of the hierarchy (`design.md` §3b, "Element trees" and "Clusters"): a cluster
+//! One node of the hierarchy (`docs/design.md` §3b, "Element trees" and "Clusters"): a cluster
 //! of input elements or a planar element of one surface, with what the oracle and the
 //! operator need to know about it (area, bounding box, largest albedo, emission).
 

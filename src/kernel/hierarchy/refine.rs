@@ -1,4 +1,4 @@
-//! Refinement of links (`design.md` §3b, "Links" and "Oracle"): candidate pairs of nodes are
+//! Refinement of links (`docs/design.md` §3b, "Links" and "Oracle"): candidate pairs of nodes are
 //! evaluated in parallel (dropped when they cannot exchange light, kept as links when the
 //! oracle accepts them, or marked for a split), the marked nodes are split, and their
 //! children's pairs are the next round's candidates, until no candidate is left. A candidate

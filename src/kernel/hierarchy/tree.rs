@@ -1,4 +1,4 @@
-//! The element trees and the cluster tree above them, in one arena (`design.md` §3b,
+//! The element trees and the cluster tree above them, in one arena (`docs/design.md` §3b,
 //! "Element trees"): every input element (a patch of the coarse mesh) is a root; an element
 //! splits lazily into the 4 pieces of `ConvexPolygon::split` (quads by their edges,
 //! triangles by their edge midpoints), the two sides of a two-sided element together.
