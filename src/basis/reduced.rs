@@ -22,6 +22,7 @@ pub struct Reduced<'a> {
 }
 
 impl<'a> Reduced<'a> {
+    /// The reduced operator of `kernel` in the basis of `factors`.
     pub fn new(kernel: &'a Kernel, factors: &'a Factorization) -> Self {
         let cells = kernel.g.rows();
         Reduced { kernel, factors, scratch: Mutex::new((vec![0.0; cells], vec![0.0; cells])) }

@@ -5,8 +5,11 @@ use glam::DVec3;
 /// A right-handed orthonormal frame with `normal` as its z axis.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Frame {
+    /// First tangent, the local x axis.
     pub tangent: DVec3,
+    /// Second tangent, the local y axis (`normal × tangent`).
     pub bitangent: DVec3,
+    /// Unit normal, the local z axis.
     pub normal: DVec3,
 }
 

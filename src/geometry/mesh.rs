@@ -14,10 +14,13 @@ use std::f64::consts::PI;
 /// One planar patch `P_i`.
 #[derive(Debug, Clone, Copy)]
 pub struct Patch {
+    /// The patch's polygon, m.
     pub polygon: ConvexPolygon,
+    /// Centroid, m.
     pub centroid: DVec3,
     /// Unit normal of the reflecting side.
     pub normal: DVec3,
+    /// Area, m².
     pub area: f64,
     /// The part of `area` outside every solid, m²: what the patch's luminance is spread
     /// over (`docs/design.md` §3, "Contacts"). The area itself until the model measures it
@@ -26,6 +29,7 @@ pub struct Patch {
     pub exposed: f64,
     /// Local frame `(tangent, bitangent, normal)`, right-handed.
     pub tangent: DVec3,
+    /// Second tangent, `normal × tangent`.
     pub bitangent: DVec3,
     /// Index of the owning [`Surface`].
     pub surface: u32,
@@ -76,6 +80,7 @@ impl Patch {
 /// All patches of a scene with their emitted luminance.
 #[derive(Debug, Clone)]
 pub struct Mesh {
+    /// Every patch, in mesh order (the unknowns' order).
     pub patches: Vec<Patch>,
     /// Emitted (Lambertian) luminance of each patch, cd/m².
     pub emission: Vec<f64>,
@@ -121,10 +126,12 @@ impl Mesh {
         (0..self.len() as u32).filter(|&i| self.emission[i as usize] > 0.0).collect()
     }
 
+    /// Number of patches.
     pub fn len(&self) -> usize {
         self.patches.len()
     }
 
+    /// True when there are no patches.
     pub fn is_empty(&self) -> bool {
         self.patches.is_empty()
     }

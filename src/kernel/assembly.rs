@@ -24,6 +24,7 @@ use sprs::CsMat;
 pub struct Assembled {
     /// `G`, `N·K × N·K`.
     pub g: CsMat<f64>,
+    /// How balancing moved the exchange areas.
     pub balance: BalanceReport,
     /// Unordered patch pairs that face each other and were integrated.
     pub pairs: usize,

@@ -18,6 +18,7 @@ impl Block {
         Block { k, reflect, transmit }
     }
 
+    /// The number of cells `K` (the block is `K × K`).
     pub fn size(&self) -> usize {
         self.k
     }
@@ -32,6 +33,7 @@ impl Block {
         self.transmit.as_ref().map(|t| t[k * self.k + d])
     }
 
+    /// True when the material transmits (the block has `τ̄`).
     pub fn transmits(&self) -> bool {
         self.transmit.is_some()
     }

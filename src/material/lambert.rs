@@ -17,6 +17,7 @@ use std::f64::consts::FRAC_1_PI;
 
 /// The `type` that selects this model and the keys it takes.
 pub const TYPE: &str = "lambert";
+/// The keys of `[[material]]` it takes besides `name` and `type`.
 pub const KEYS: &[&str] = &["reflectance", "transmittance"];
 
 /// `ρ` for `l'` on the incident side (`l'.z > 0`), `τ` through the surface.

@@ -35,9 +35,15 @@ use std::path::Path;
 #[derive(Debug, Clone, PartialEq)]
 pub enum Distribution {
     /// The same intensity, cd, in every direction; flux `4πI`.
-    Isotropic { intensity: f64 },
+    Isotropic {
+        /// Intensity, cd.
+        intensity: f64,
+    },
     /// `I(γ) = I0 cosγ` below the luminaire's horizontal, 0 above; flux `π I0`.
-    Lambertian { peak: f64 },
+    Lambertian {
+        /// `I0`, the intensity along the aim, cd.
+        peak: f64,
+    },
     /// A table read from a photometric file.
     Table(Box<IntensityDistribution>),
 }

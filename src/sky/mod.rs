@@ -38,6 +38,7 @@ use std::f64::consts::PI;
 /// A sky of known luminance: distribution, sun, scale and ground.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Sky {
+    /// The relative luminance distribution (a CIE sky).
     pub distribution: Distribution,
     /// Unit world direction towards the sun (it may be below the horizon).
     pub sun: DVec3,

@@ -7,7 +7,9 @@ use crate::kernel::{Explicit, Factored};
 
 /// A square linear operator `y = A x`.
 pub trait LinOp: Sync {
+    /// Number of unknowns (rows and columns of `A`).
     fn dim(&self) -> usize;
+    /// `y = A x`; `x` and `y` have length [`LinOp::dim`].
     fn apply(&self, x: &[f64], y: &mut [f64]);
 }
 

@@ -40,6 +40,7 @@ pub struct Projection {
 /// One solve of [`Projection::solve`].
 #[derive(Debug, Clone)]
 pub struct Successive {
+    /// The solution `x = (I − K)⁻¹ b`.
     pub x: Vec<f64>,
     /// The correction's solve; its residuals are relative to `‖b‖`.
     pub info: SolveInfo,

@@ -21,7 +21,9 @@ pub const DIRECTIONS: usize = STRATA * STRATA;
 /// The rays of one patch's closure: how many were cast and how many met a front.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Closure {
+    /// Rays cast.
     pub cast: u32,
+    /// Rays that met the front of a surface.
     pub covered: u32,
 }
 

@@ -26,6 +26,7 @@ pub struct Backs {
 }
 
 impl Backs {
+    /// The backs of the faces of `mesh` and its contact distance.
     pub fn of(mesh: &Mesh) -> Backs {
         let mut normal = vec![DVec3::ZERO; mesh.faces];
         for p in mesh.patches.iter().filter(|p| p.twin == NO_TWIN) {

@@ -59,7 +59,9 @@ pub fn visible_fraction(
 /// A visibility fraction and the rays it took.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct VisibleFraction {
+    /// The visible fraction, 0 to 1.
     pub fraction: f64,
+    /// Rays cast.
     pub rays: usize,
 }
 
@@ -69,8 +71,11 @@ pub struct VisibleFraction {
 /// that is not `uniform` is cut further by the callers (probes, luminaires).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PieceVisibility {
+    /// Stratified points that see.
     pub seen: usize,
+    /// True when the points and the corners all agree.
     pub uniform: bool,
+    /// Rays cast.
     pub rays: usize,
 }
 

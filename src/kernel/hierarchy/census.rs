@@ -18,6 +18,7 @@ pub struct Census {
     pub cluster_links: usize,
     /// Links by visibility: every tested segment free, or some blocked.
     pub clear: usize,
+    /// Links with some tested segment blocked.
     pub partial: usize,
 }
 

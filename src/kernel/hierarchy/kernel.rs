@@ -382,22 +382,27 @@ impl Hierarchy {
         out
     }
 
+    /// The element trees and the cluster tree above them.
     pub fn tree(&self) -> &Tree {
         &self.tree
     }
 
+    /// The links the oracle accepted.
     pub fn links(&self) -> &[Link] {
         &self.links
     }
 
+    /// One record per refinement pass.
     pub fn history(&self) -> &[Pass] {
         &self.history
     }
 
+    /// The options the hierarchy was built with.
     pub fn options(&self) -> &Options {
         &self.options
     }
 
+    /// The direction cells of every leaf.
     pub fn directions(&self) -> &DirectionSet {
         &self.directions
     }

@@ -139,10 +139,12 @@ impl Operator {
         &self.leaves
     }
 
+    /// Number of links gathered.
     pub fn links(&self) -> usize {
         self.links
     }
 
+    /// Direction cells per leaf, `K`.
     pub fn cells(&self) -> usize {
         self.k
     }

@@ -79,6 +79,7 @@ impl Oracle {
         if bound.is_finite() { albedo * bound * brightness } else { f64::INFINITY }
     }
 
+    /// True when a link with the estimated `error` must be refined (above `epsilon`).
     pub fn refines(&self, error: f64) -> bool {
         error > self.epsilon
     }

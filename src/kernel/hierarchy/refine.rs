@@ -21,11 +21,15 @@ use rayon::prelude::*;
 
 /// What stays fixed during refinement.
 pub struct Settings<'a> {
+    /// The ray caster over the roots' faces.
     pub visibility: &'a Visibility,
     /// The backs of the roots' faces, for the exposed area of new elements.
     pub backs: &'a Backs,
+    /// The refinement rule.
     pub oracle: Oracle,
+    /// The quadrature of element factors.
     pub quadrature: &'a Quadrature,
+    /// The direction cells factors are split by.
     pub directions: &'a DirectionSet,
 }
 
