@@ -17,6 +17,8 @@
 //!
 //! The command line (`src/main.rs`, `src/cli/`) stands on top and only calls the library.
 
+#![warn(missing_docs)]
+
 pub mod basis;
 pub mod directions;
 pub mod geometry;

@@ -21,10 +21,15 @@ use std::path::Path;
 
 /// Everything a forward run produced.
 pub struct EstimateFile<'a> {
+    /// The case traced.
     pub scene: &'a Scene,
+    /// The patches of the bins.
     pub mesh: &'a Mesh,
+    /// The direction cells of the bins.
     pub directions: &'a DirectionSet,
+    /// The estimate of the field and its standard errors.
     pub estimate: &'a FieldEstimate,
+    /// The options of the run (photons, seed, …).
     pub options: &'a TraceOptions,
     /// Total emitted flux, lm.
     pub emitted: f64,

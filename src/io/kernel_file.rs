@@ -28,9 +28,11 @@ use std::path::Path;
 
 /// A kernel as read from `/kernel`.
 pub struct StoredKernel {
+    /// The fingerprint of the case that saved it.
     pub fingerprint: Fingerprint,
     /// `G` (explicit), the direction set, the blocks, each patch's material and twin.
     pub kernel: Kernel,
+    /// The luminaires' direct light `D` as the saving solve had it.
     pub direct: DirectLight,
     /// `L0 = L_e + B·D` as the saving solve had it.
     pub l0: Vec<f64>,

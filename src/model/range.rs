@@ -25,6 +25,7 @@ pub struct OutOfRange {
     pub quantity: String,
     /// Where: patch, surface and cell, material, or luminaire.
     pub place: String,
+    /// The value.
     pub value: f64,
 }
 

@@ -16,6 +16,7 @@ use thiserror::Error;
 
 /// What a kernel file supplies to the model.
 pub struct StoredParts {
+    /// The stored transport `G`.
     pub g: TransportMatrix,
     /// The stored blocks, or `None` to build them from the case.
     pub blocks: Option<Vec<Block>>,
@@ -32,8 +33,11 @@ pub struct StoredParts {
     patches * cells
 )]
 pub struct NotThisMesh {
+    /// Rows of the stored `G`.
     pub rows: usize,
+    /// Patches of the case's mesh.
     pub patches: usize,
+    /// Direction cells per patch of the case.
     pub cells: usize,
 }
 

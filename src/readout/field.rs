@@ -9,6 +9,7 @@ use ndarray::Array3;
 /// Luminance of every patch in every direction cell, cd/m².
 #[derive(Debug, Clone, PartialEq)]
 pub struct Field {
+    /// `N × K × C` (patch, cell, channel; `C = 1`), cd/m².
     pub luminance: Array3<f64>,
 }
 
@@ -20,10 +21,12 @@ impl Field {
         Field { luminance }
     }
 
+    /// Number of patches, `N`.
     pub fn patches(&self) -> usize {
         self.luminance.shape()[0]
     }
 
+    /// Direction cells per patch, `K`.
     pub fn cells(&self) -> usize {
         self.luminance.shape()[1]
     }

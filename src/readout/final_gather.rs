@@ -36,11 +36,15 @@ use glam::DVec3;
 /// rendering (`crate::render::Solved`) is one; the readouts of glossy surfaces read a
 /// model's field through another (`glossy.rs`).
 pub trait Surroundings {
+    /// The patches whose stored luminance is read.
     fn mesh(&self) -> &Mesh;
+    /// The ray caster over their faces.
     fn visibility(&self) -> &Visibility;
+    /// The material model of `patch`.
     fn material(&self, patch: usize) -> &MaterialModel;
     /// The patches with a self-emission.
     fn emitters(&self) -> &[u32];
+    /// The luminaires, whose direct light is added exactly.
     fn sources(&self) -> &[Source];
     /// The patch first met from `q` along the unit `w` (ignoring face `face`) and its
     /// stored luminance towards `q`, cd/m².

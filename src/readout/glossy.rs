@@ -47,12 +47,15 @@ pub fn has_lobe(material: &MaterialModel) -> bool {
 
 /// A model and its solved field as a final gather reads them.
 pub struct ModelSurroundings<'a> {
+    /// The model: mesh, visibility, materials, luminaires.
     pub model: &'a Model,
+    /// The solved field on its patches.
     pub field: &'a Field,
     emitters: Vec<u32>,
 }
 
 impl<'a> ModelSurroundings<'a> {
+    /// The surroundings of `model` lit by `field`.
     pub fn new(model: &'a Model, field: &'a Field) -> ModelSurroundings<'a> {
         ModelSurroundings { model, field, emitters: model.mesh.emitters() }
     }

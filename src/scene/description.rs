@@ -20,14 +20,23 @@ pub struct Scene {
     pub path: PathBuf,
     /// The case file's text, stored verbatim in every output file.
     pub source: String,
+    /// `[scene] name` (default: the case file's stem).
     pub name: String,
+    /// `[scene] description` (default empty).
     pub description: String,
+    /// `[discretization]`: patch size, direction cells, kernel.
     pub discretization: Discretization,
+    /// `[solver]`: method and stopping rule.
     pub solver: SolverSettings,
+    /// The `[[material]]` tables, in file order.
     pub materials: Vec<Material>,
+    /// The `[[surface]]` tables, in file order (an OBJ mesh one surface per material).
     pub surfaces: Vec<Surface>,
+    /// The `[[probe]]` tables, in file order.
     pub probes: Vec<Probe>,
+    /// The `[[camera]]` tables, in file order.
     pub cameras: Vec<Camera>,
+    /// The `[[grid]]` tables, in file order.
     pub grids: Vec<Grid>,
     /// The `[[luminaire]]` tables, then one per `[[window]]`, then the `[sky]`'s sun.
     pub luminaires: Vec<Luminaire>,
@@ -71,7 +80,12 @@ pub enum Assembly {
     /// Element trees over patches of `patch_size`, links where the oracle accepts them
     /// (`docs/design.md` §3b): `tolerance` is the error allowed per link relative to the mean
     /// reflected luminance, `smallest` the smallest element edge, m.
-    Hierarchical { tolerance: f64, smallest: f64 },
+    Hierarchical {
+        /// Error allowed per link relative to the mean reflected luminance.
+        tolerance: f64,
+        /// Smallest element edge, m.
+        smallest: f64,
+    },
 }
 
 impl Assembly {
@@ -84,6 +98,7 @@ impl Assembly {
         Assembly::Hierarchical { tolerance: defaults.tolerance, smallest: defaults.smallest }
     }
 
+    /// `"explicit"` or `"hierarchical"`, as `method` names it.
     pub fn name(&self) -> &'static str {
         match self {
             Assembly::Explicit => "explicit",
@@ -112,15 +127,20 @@ impl Default for SolverSettings {
 /// `[[material]]`: a named luminance-factor model (`docs/design.md` §1).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Material {
+    /// The material's name, unique in the scene.
     pub name: String,
+    /// Its luminance-factor model and parameters.
     pub model: MaterialModel,
 }
 
 /// `[[camera]]`: a pinhole camera for `ugo render`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Camera {
+    /// The camera's name, unique in the scene.
     pub name: String,
+    /// The eye (centre of projection), m.
     pub position: DVec3,
+    /// The point the camera looks at, m.
     pub look_at: DVec3,
     /// Unit vector giving the image's upward direction (not parallel to the view).
     pub up: DVec3,

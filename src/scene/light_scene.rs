@@ -57,6 +57,7 @@ pub struct Lighting {
     pub maintenance_factor: f64,
     /// In order of first use: surfaces in file order, then luminaires.
     pub groups: Vec<LightGroup>,
+    /// The `[[light_scene]]` tables, in file order.
     pub scenes: Vec<LightScene>,
 }
 
@@ -70,6 +71,7 @@ impl Default for Lighting {
 /// Sources dimmed together.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LightGroup {
+    /// The group's name (`group = …` of its sources; [`DEFAULT_GROUP`] for none).
     pub name: String,
     /// Indices into the scene's luminaires.
     pub luminaires: Vec<usize>,

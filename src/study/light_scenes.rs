@@ -26,7 +26,9 @@ use std::path::Path;
 /// How the groups are solved.
 #[derive(Debug, Clone, Copy)]
 pub struct GroupSolves {
+    /// The method of every group's solve.
     pub method: Method,
+    /// Its stopping rule.
     pub params: SolveParams,
     /// Start each solve from the known solutions (else cold, to measure what that saves).
     pub warm: bool,

@@ -20,6 +20,7 @@ const TAIL: f64 = 1e-2;
 /// One run's measured rate and the spectrum's prediction of it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Rate {
+    /// The run's method.
     pub method: Method,
     /// Geometric mean contraction of the residual per product with `K` over the tail of
     /// the history (from the first residual below 1e-2 to the last).

@@ -49,6 +49,7 @@ impl Default for TraceOptions {
 /// Where a path starts.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Start {
+    /// The first ray's origin, m.
     pub origin: DVec3,
     /// Unit direction of the first ray.
     pub direction: DVec3,

@@ -31,7 +31,9 @@ pub struct Incoming {
 /// A photon leaving an emitter.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Departure {
+    /// The point it leaves from, m.
     pub origin: DVec3,
+    /// Its unit direction.
     pub direction: DVec3,
     /// The face it leaves from (ignored by its first ray).
     pub face: u32,
@@ -76,6 +78,7 @@ impl Emitters {
         self.total
     }
 
+    /// True when no patch emits.
     pub fn is_empty(&self) -> bool {
         self.list.is_empty()
     }

@@ -40,14 +40,17 @@ pub struct FieldEstimate {
     pub luminance_error: Vec<f64>,
     /// Incident illuminance of every patch, lx.
     pub illuminance: Vec<f64>,
+    /// Its standard error, lx.
     pub illuminance_error: Vec<f64>,
     /// Total flux leaving the surfaces other than by emission (reflected and transmitted),
     /// lm, and its standard error: one number whose error includes every correlation
     /// between the bins (a photon deposits into many).
     pub scattered: (f64, f64),
+    /// Photons traced.
     pub photons: u64,
     /// Rays cast.
     pub rays: u64,
+    /// Wall time, s.
     pub seconds: f64,
 }
 

@@ -25,6 +25,7 @@ use std::f64::consts::{FRAC_1_PI, PI};
 /// A probe's readings with their standard errors.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ProbeEstimate {
+    /// The probe's name.
     pub name: String,
     /// Luminance and its standard error, cd/m².
     pub luminance: (f64, f64),

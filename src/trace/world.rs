@@ -20,6 +20,7 @@ use glam::DVec3;
 pub struct Landing {
     /// The patch facing the ray (its normal against the ray's direction).
     pub patch: usize,
+    /// The point hit, m.
     pub point: DVec3,
 }
 
@@ -36,10 +37,15 @@ pub enum Cast {
 
 /// Geometry, materials and emitters of a scene, ready for tracing.
 pub struct World {
+    /// The patches, as geometry.
     pub mesh: Mesh,
+    /// The ray caster over their faces.
     pub visibility: Visibility,
+    /// The emitting patches, chosen by flux.
     pub emitters: Emitters,
+    /// The luminaires, sampled exactly.
     pub luminaires: Luminaires,
+    /// The openings through which the sky is seen.
     pub openings: Openings,
     /// The material model of every patch.
     materials: Vec<MaterialModel>,
