@@ -5,7 +5,7 @@
 //! (`docs/references.md`, configuration factors item 6). The polygon is first clipped to
 //! the half-space in front of the point, so patches partly below the point's horizon are
 //! handled exactly. This is the near-field-exact building block of `docs/design.md` §3,
-//! equation (3.10).
+//! equation (3.9).
 
 use crate::geometry::{ConvexPolygon, MAX_CLIPPED, Patch};
 use glam::DVec3;
