@@ -1,5 +1,5 @@
 //! Direction sets `{C_k}`: partitions of the hemisphere (or sphere) of directions into
-//! cells (`design.md` §2).
+//! cells (`docs/design.md` §2).
 //!
 //! Every set is made of rings between two polar angles, each ring cut into equal azimuth
 //! sectors starting at `φ = 0`; the upper hemisphere comes first, from the pole down. Each
@@ -122,14 +122,17 @@ impl DirectionSet {
         &self.name
     }
 
+    /// Number of cells, `K`.
     pub fn len(&self) -> usize {
         self.cells.len()
     }
 
+    /// True when the set has no cells.
     pub fn is_empty(&self) -> bool {
         self.cells.is_empty()
     }
 
+    /// The cells, in index order.
     pub fn cells(&self) -> &[Cell] {
         &self.cells
     }
@@ -235,6 +238,7 @@ impl Scheme {
         }
     }
 
+    /// The direction set the scheme names.
     pub fn set(&self) -> DirectionSet {
         match *self {
             Scheme::Cells(k) => DirectionSet::hemisphere(k),

@@ -1,6 +1,6 @@
 //! `ugo`: a numerical laboratory for the global illumination equation of a 3D scene.
 //!
-//! The modules stand on floors (`design.md` §6): each imports only from its own floor or
+//! The modules stand on floors (`docs/design.md` §6): each imports only from its own floor or
 //! the floors below it, and no two files import each other (`tests/layering/` reads
 //! `src/` and enforces both). From the bottom up:
 //!
@@ -16,6 +16,8 @@
 //! 10. study: [`study`]
 //!
 //! The command line (`src/main.rs`, `src/cli/`) stands on top and only calls the library.
+
+#![warn(missing_docs)]
 
 pub mod basis;
 pub mod directions;

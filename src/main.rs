@@ -1,4 +1,4 @@
-//! The `ugo` command line (`design.md` §6): `solve`, `norms`, `compare`, `render`, `trace`,
+//! The `ugo` command line (`docs/design.md` §6): `solve`, `norms`, `compare`, `render`, `trace`,
 //! `agree`, `info`, `bench`, `export`.
 
 mod cli;

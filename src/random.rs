@@ -33,6 +33,7 @@ impl Rng {
         Rng { state }
     }
 
+    /// The next 64 random bits (SplitMix64).
     #[inline]
     pub fn next_u64(&mut self) -> u64 {
         self.state = self.state.wrapping_add(GOLDEN);
@@ -66,6 +67,7 @@ pub struct Stratified {
 }
 
 impl Stratified {
+    /// The set of `n` points (at least 1), shifted by one offset drawn from `rng`.
     pub fn new(n: usize, rng: &mut Rng) -> Stratified {
         Stratified { n: n.max(1), shift: rng.uniform3() }
     }

@@ -1,4 +1,4 @@
-//! Low-rank factorizations of the material blocks, `ρ̄ ≈ Ψ Φᵀ` (`design.md` §4, kernel
+//! Low-rank factorizations of the material blocks, `ρ̄ ≈ Ψ Φᵀ` (`docs/design.md` §4, kernel
 //! factorization): with them the outgoing luminance of a patch is `L = L0 + Ψ c`, and
 //! its `M` coefficients `c` obey `c = Φᵀ G (L0 + Ψ c)`, so the kernel
 //! `K(x', x) = Σ_n ψ_n(x) φ_n(x')` becomes a system of `N·M` unknowns (`reduced.rs`).
@@ -28,9 +28,15 @@ use thiserror::Error;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Basis {
     /// Hemispherical (or, on a sphere set, spherical) harmonics up to degree `lmax`.
-    Sh { lmax: usize },
+    Sh {
+        /// The highest degree `l`.
+        lmax: usize,
+    },
     /// The truncated SVD of each material block, rank `rank`.
-    Svd { rank: usize },
+    Svd {
+        /// The rank kept.
+        rank: usize,
+    },
 }
 
 impl Basis {
@@ -45,6 +51,7 @@ impl Basis {
         }
     }
 
+    /// The basis as `--basis` names it: `sh:L` or `svd:R`.
     pub fn name(&self) -> String {
         match self {
             Basis::Sh { lmax } => format!("sh:{lmax}"),
@@ -64,16 +71,25 @@ impl Basis {
 /// Why a basis cannot be used on a direction set.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum BasisError {
+    /// The basis has more coefficients per patch than the direction set has cells.
     #[error(
         "{basis} has {m} coefficients per patch but the direction set has only {k} cells; \
          use at most {k} (sh:L needs (L+1)² ≤ K)"
     )]
-    TooLarge { basis: String, m: usize, k: usize },
+    TooLarge {
+        /// The basis, as `--basis` names it.
+        basis: String,
+        /// Its coefficients per patch.
+        m: usize,
+        /// The direction set's cells.
+        k: usize,
+    },
 }
 
 /// `Ψ` and `Φ` of one material, `K × M`, row-major.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MaterialFactor {
+    /// `Ψ`: the basis functions on the cells, `K × M`, row-major.
     pub psi: Vec<f64>,
     /// For light arriving at the patch itself.
     pub front: Vec<f64>,
@@ -84,6 +100,7 @@ pub struct MaterialFactor {
 /// The factorization of every material block of a kernel.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Factorization {
+    /// The basis factored in.
     pub basis: Basis,
     /// Coefficients per patch.
     pub m: usize,
@@ -97,6 +114,8 @@ pub struct Factorization {
 }
 
 impl Factorization {
+    /// Factors every block of `blocks` on `directions` in `basis`; refused when the basis has
+    /// more coefficients than the set has cells.
     pub fn new(basis: Basis, blocks: &[Block], directions: &DirectionSet) -> Result<Factorization, BasisError> {
         let (m, k) = (basis.size(), directions.len());
         if m > k {

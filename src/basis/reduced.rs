@@ -1,6 +1,6 @@
 //! The kernel in a factored angular basis: the system `c = s + K̃ c` for the `N·M`
 //! coefficients of `L = L0 + Ψ c`, with `K̃ = Φᵀ G Ψ` and `s = Φᵀ G L0` (`factor.rs`,
-//! `design.md` §4). Applied matrix-free (expand with `Ψ`, transport with `G`, contract
+//! `docs/design.md` §4). Applied matrix-free (expand with `Ψ`, transport with `G`, contract
 //! with `Φᵀ`) for the iterative methods, or assembled with dense `M × M` blocks per pair
 //! of linked patches for the direct and Gauss–Seidel methods.
 
@@ -22,6 +22,7 @@ pub struct Reduced<'a> {
 }
 
 impl<'a> Reduced<'a> {
+    /// The reduced operator of `kernel` in the basis of `factors`.
     pub fn new(kernel: &'a Kernel, factors: &'a Factorization) -> Self {
         let cells = kernel.g.rows();
         Reduced { kernel, factors, scratch: Mutex::new((vec![0.0; cells], vec![0.0; cells])) }

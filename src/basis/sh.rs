@@ -1,5 +1,5 @@
 //! Real spherical harmonics `Y_n`, `n = l² + l + m`, and the hemispherical harmonics built
-//! from them (`design.md` §4, kernel factorization; conventions of `references.md`).
+//! from them (`docs/design.md` §4, kernel factorization; conventions of `docs/references.md`).
 //!
 //! `Y_l0 = K_l^0 P_l^0(cosθ)`, `Y_lm = √2 K_l^m P_l^m(cosθ) cos(mφ)` and
 //! `Y_l,−m = √2 K_l^m P_l^m(cosθ) sin(mφ)` for `m > 0`, `K_l^m = √((2l+1)(l−m)!/(4π(l+m)!))`,

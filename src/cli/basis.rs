@@ -1,6 +1,6 @@
 //! The angular-basis options (`--basis sh --lmax L`, `--basis svd --rank R`) and
 //! `ugo compare --bases …` (`study::compare_bases`) printed as a table and drawn as a plot
-//! (`design.md` §4).
+//! (`docs/design.md` §4).
 
 use super::options::{BasisArg, Discretize, basis};
 use super::{Bars, bytes, load};

@@ -1,12 +1,15 @@
-//! Local frames `(t, b, N)`: direction cells are defined in them (`design.md` §2).
+//! Local frames `(t, b, N)`: direction cells are defined in them (`docs/design.md` §2).
 
 use glam::DVec3;
 
 /// A right-handed orthonormal frame with `normal` as its z axis.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Frame {
+    /// First tangent, the local x axis.
     pub tangent: DVec3,
+    /// Second tangent, the local y axis (`normal × tangent`).
     pub bitangent: DVec3,
+    /// Unit normal, the local z axis.
     pub normal: DVec3,
 }
 

@@ -1,4 +1,4 @@
-//! The patch mesh: every surface of a scene cut into planar patches (`design.md` §2).
+//! The patch mesh: every surface of a scene cut into planar patches (`docs/design.md` §2).
 //!
 //! Owns the per-patch record (centroid, normal, area, local frame, owning surface and
 //! material, emitted luminance) and the rule for `inside` (normals flipped) and
@@ -14,18 +14,22 @@ use std::f64::consts::PI;
 /// One planar patch `P_i`.
 #[derive(Debug, Clone, Copy)]
 pub struct Patch {
+    /// The patch's polygon, m.
     pub polygon: ConvexPolygon,
+    /// Centroid, m.
     pub centroid: DVec3,
     /// Unit normal of the reflecting side.
     pub normal: DVec3,
+    /// Area, m².
     pub area: f64,
     /// The part of `area` outside every solid, m²: what the patch's luminance is spread
-    /// over (`design.md` §3, "Contacts"). The area itself until the model measures it
+    /// over (`docs/design.md` §3, "Contacts"). The area itself until the model measures it
     /// (`transfer::exposure`): a patch under a cabinet standing on it, or behind a shelf
     /// against it, sends and receives light only through its exposed part.
     pub exposed: f64,
     /// Local frame `(tangent, bitangent, normal)`, right-handed.
     pub tangent: DVec3,
+    /// Second tangent, `normal × tangent`.
     pub bitangent: DVec3,
     /// Index of the owning [`Surface`].
     pub surface: u32,
@@ -76,6 +80,7 @@ impl Patch {
 /// All patches of a scene with their emitted luminance.
 #[derive(Debug, Clone)]
 pub struct Mesh {
+    /// Every patch, in mesh order (the unknowns' order).
     pub patches: Vec<Patch>,
     /// Emitted (Lambertian) luminance of each patch, cd/m².
     pub emission: Vec<f64>,
@@ -121,10 +126,12 @@ impl Mesh {
         (0..self.len() as u32).filter(|&i| self.emission[i as usize] > 0.0).collect()
     }
 
+    /// Number of patches.
     pub fn len(&self) -> usize {
         self.patches.len()
     }
 
+    /// True when there are no patches.
     pub fn is_empty(&self) -> bool {
         self.patches.is_empty()
     }

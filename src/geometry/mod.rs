@@ -1,5 +1,5 @@
 //! Geometry: surfaces as described, convex polygons, tessellation of shapes, and the patch
-//! mesh (`design.md` §2).
+//! mesh (`docs/design.md` §2).
 
 mod frame;
 mod mesh;

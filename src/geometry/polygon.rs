@@ -1,6 +1,6 @@
 //! Small convex planar polygons (triangles and quads): the shape of every patch.
 //!
-//! Owns the elementary geometry used by meshing (`design.md` §2) and by the form
+//! Owns the elementary geometry used by meshing (`docs/design.md` §2) and by the form
 //! factors (§3): area, normal, centroid, triangle fan, distance from a point, and
 //! clipping against a plane. Vertices are counter-clockwise seen from the front.
 
@@ -17,10 +17,12 @@ pub struct ConvexPolygon {
 }
 
 impl ConvexPolygon {
+    /// A triangle from its vertices.
     pub fn triangle(a: DVec3, b: DVec3, c: DVec3) -> Self {
         ConvexPolygon { vertices: [a, b, c, c], len: 3 }
     }
 
+    /// A convex quad from its vertices, in order.
     pub fn quad(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> Self {
         ConvexPolygon { vertices: [a, b, c, d], len: 4 }
     }
@@ -34,6 +36,7 @@ impl ConvexPolygon {
         }
     }
 
+    /// The 3 or 4 vertices, m.
     pub fn vertices(&self) -> &[DVec3] {
         &self.vertices[..self.len as usize]
     }
@@ -55,10 +58,12 @@ impl ConvexPolygon {
         0.5 * s
     }
 
+    /// Area, m².
     pub fn area(&self) -> f64 {
         self.vector_area().length()
     }
 
+    /// Unit normal, by the right-hand rule over the vertex order.
     pub fn normal(&self) -> DVec3 {
         self.vector_area().normalize()
     }

@@ -1,5 +1,5 @@
 //! What a surface is before meshing: its shape, its material, its sides and its emission
-//! (`design.md` §2, §7 `[[surface]]`). The scene file is validated into these; the mesh
+//! (`docs/design.md` §2, §7 `[[surface]]`). The scene file is validated into these; the mesh
 //! is built from them.
 
 use glam::DVec3;
@@ -17,7 +17,9 @@ pub enum Emission {
 /// `[[surface]]`: one named piece of geometry with its material.
 #[derive(Debug, Clone)]
 pub struct Surface {
+    /// The surface's name, unique in the scene.
     pub name: String,
+    /// Its geometry.
     pub shape: Shape,
     /// Index into the scene's materials.
     pub material: usize,
@@ -25,6 +27,7 @@ pub struct Surface {
     pub two_sided: bool,
     /// Normals are flipped (a room seen from inside).
     pub inside: bool,
+    /// Its own Lambertian emission, if it emits.
     pub emission: Option<Emission>,
 }
 
@@ -32,15 +35,49 @@ pub struct Surface {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Shape {
     /// Parallelogram `origin + s·edge_u + t·edge_v`, `s, t ∈ [0,1]`; normal `u × v`.
-    Rectangle { origin: DVec3, edge_u: DVec3, edge_v: DVec3 },
+    Rectangle {
+        /// The corner the edges start from, m.
+        origin: DVec3,
+        /// The first edge, m.
+        edge_u: DVec3,
+        /// The second edge, m.
+        edge_v: DVec3,
+    },
     /// Planar simple polygon, vertices counter-clockwise seen from the front.
-    Polygon { vertices: Vec<DVec3> },
+    Polygon {
+        /// The vertices, m.
+        vertices: Vec<DVec3>,
+    },
     /// Axis-aligned box rotated about the vertical (y) axis through its centre; normals outward.
-    Box { min: DVec3, max: DVec3, rotate_y_deg: f64 },
+    Box {
+        /// The lower corner before rotation, m.
+        min: DVec3,
+        /// The upper corner before rotation, m.
+        max: DVec3,
+        /// The turn about the vertical axis through the centre, degrees.
+        rotate_y_deg: f64,
+    },
     /// Flat disc facing `normal`.
-    Disc { center: DVec3, normal: DVec3, radius: f64 },
+    Disc {
+        /// The centre, m.
+        center: DVec3,
+        /// The unit normal of the front.
+        normal: DVec3,
+        /// The radius, m.
+        radius: f64,
+    },
     /// Sphere with outward normals (tessellated into planar patches).
-    Sphere { center: DVec3, radius: f64 },
+    Sphere {
+        /// The centre, m.
+        center: DVec3,
+        /// The radius, m.
+        radius: f64,
+    },
     /// Triangles loaded from an OBJ file (already scaled and translated), normals by winding.
-    Mesh { file: PathBuf, triangles: Vec<[DVec3; 3]> },
+    Mesh {
+        /// The OBJ file, as named (joined to the case file's folder).
+        file: PathBuf,
+        /// Its triangles in the scene, m.
+        triangles: Vec<[DVec3; 3]>,
+    },
 }

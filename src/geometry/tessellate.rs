@@ -1,6 +1,6 @@
 //! Tessellation of every scene shape into planar convex elements of a target edge length.
 //!
-//! Owns the meshing rule of `design.md` §2: parametric shapes (rectangle, convex quad,
+//! Owns the meshing rule of `docs/design.md` §2: parametric shapes (rectangle, convex quad,
 //! disc, sphere) are cut into a grid of planar quads (triangles where a grid edge
 //! collapses, at poles and centres); polygons are triangulated by ear clipping and, like
 //! OBJ triangles, split into `m²` similar triangles. Elements face the shape's front.

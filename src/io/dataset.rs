@@ -1,5 +1,5 @@
 //! The one way a dataset and a text attribute are written into an HDF5 group
-//! (`design.md` §8), shared by the solution, the forecast estimate, the hierarchy's group,
+//! (`docs/design.md` §8), shared by the solution, the forecast estimate, the hierarchy's group,
 //! the kernel's and the light scenes': numbers, and strings as variable-length UTF-8.
 
 use hdf5::types::VarLenUnicode;

@@ -1,5 +1,5 @@
 //! The HDF5 file of a forward Monte Carlo estimate (`ugo trace --forward`): the layout of
-//! a solve (`design.md` §8, `hdf5_file.rs`) so that `ugo render`, `ugo agree` and h5py
+//! a solve (`docs/design.md` §8, `hdf5_file.rs`) so that `ugo render`, `ugo agree` and h5py
 //! read it alike, plus the standard errors.
 //!
 //! `/mesh/…`, `/directions/…` as a solve; `/field/{luminance,emission}` (N×K×1, cd/m²),
@@ -21,10 +21,15 @@ use std::path::Path;
 
 /// Everything a forward run produced.
 pub struct EstimateFile<'a> {
+    /// The case traced.
     pub scene: &'a Scene,
+    /// The patches of the bins.
     pub mesh: &'a Mesh,
+    /// The direction cells of the bins.
     pub directions: &'a DirectionSet,
+    /// The estimate of the field and its standard errors.
     pub estimate: &'a FieldEstimate,
+    /// The options of the run (photons, seed, …).
     pub options: &'a TraceOptions,
     /// Total emitted flux, lm.
     pub emitted: f64,

@@ -17,6 +17,7 @@ use std::path::Path;
 /// How luminance maps onto the colour scale.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Scale {
+    /// Linear from 0 to the top.
     Linear,
     /// Four decades below the top (or down to the smallest positive pixel).
     Log,

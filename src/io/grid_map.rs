@@ -33,8 +33,11 @@ const BOTTOM: i32 = 64;
 /// The picture of a grid's plan: its frame, where it lies, and the picture's size.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GridPlan {
+    /// The plan's axes.
     pub frame: Frame,
+    /// Where the plan lies in the picture.
     pub layout: Layout,
+    /// The picture's width and height, pixels.
     pub size: (u32, u32),
 }
 

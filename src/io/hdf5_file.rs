@@ -1,4 +1,4 @@
-//! The HDF5 file of one solve (`design.md` §8), readable with h5py or h5dump alone.
+//! The HDF5 file of one solve (`docs/design.md` §8), readable with h5py or h5dump alone.
 //!
 //! Layout: `/mesh/{points,normals,areas,surface_id,material_id,vertices,vertex_count,face,
 //! twin,surface_names,material_names}`, `/directions/{vectors,solid_angle,projected}`,
@@ -46,15 +46,23 @@ use std::path::Path;
 
 /// Everything a solve produced.
 pub struct Solution<'a> {
+    /// The case solved.
     pub scene: &'a Scene,
+    /// Its model: mesh, kernel, source term, luminaires.
     pub model: &'a Model,
+    /// The solved field, cd/m².
     pub field: &'a Field,
     /// Incident illuminance of each patch, lx.
     pub illuminance: &'a [f64],
+    /// The stopping rule of the solve.
     pub params: &'a SolveParams,
+    /// What the reference run did.
     pub info: &'a SolveInfo,
+    /// The energy balance, lm.
     pub energy: &'a EnergyBalance,
+    /// The probes' readings.
     pub probes: &'a [ProbeReading],
+    /// The grids' readings.
     pub grids: &'a [GridReading],
     /// The daylight readouts, under a `[sky]` (`/daylight`, `daylight_group.rs`).
     pub daylight: Option<&'a DaylightReadings>,
@@ -78,6 +86,7 @@ pub struct Solution<'a> {
 
 /// A solve in a factored angular basis: the factors and the coefficients solved for.
 pub struct BasisRecord<'a> {
+    /// The factors `Ψ`, `Φ` of every material.
     pub factors: &'a Factorization,
     /// `c[i·M + n]`; the field is `L0 + Ψ c`.
     pub coefficients: &'a [f64],
@@ -88,7 +97,9 @@ pub struct BasisRecord<'a> {
 /// One method's solve of the system, for comparison.
 #[derive(Debug, Clone)]
 pub struct Run {
+    /// The method run.
     pub method: Method,
+    /// What its solve did.
     pub info: SolveInfo,
     /// Largest relative difference from the reference solution, `max |x − x_ref| / max |x_ref|`.
     pub difference: f64,

@@ -1,4 +1,4 @@
-//! `/hierarchy` of the HDF5 dump (`design.md` §3b, §8): what the hierarchical kernel made.
+//! `/hierarchy` of the HDF5 dump (`docs/design.md` §3b, §8): what the hierarchical kernel made.
 //! `leaf_level` and `leaf_root` give each patch of `/mesh` (a leaf element) its level
 //! (0 = a root) and the root element it lies in; `element_links` counts links between two
 //! elements by the deeper level; `passes/` holds the refinement history, one entry per

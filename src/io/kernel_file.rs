@@ -1,5 +1,5 @@
 //! `/kernel` of the HDF5 dump (issue 15, `docs/kernel-file.md`): the explicit kernel
-//! `K = B·G` and source term `L0 = L_e + B·D` of `design.md` §2–§3, stored so that ugo
+//! `K = B·G` and source term `L0 = L_e + B·D` of `docs/design.md` §2–§3, stored so that ugo
 //! reuses them instead of assembling and other programs read them with h5py and scipy.
 //!
 //! Layout (N patches, K cells, M materials, Q luminaires; vectors flat, `x[i·K + k]`):
@@ -28,9 +28,11 @@ use std::path::Path;
 
 /// A kernel as read from `/kernel`.
 pub struct StoredKernel {
+    /// The fingerprint of the case that saved it.
     pub fingerprint: Fingerprint,
     /// `G` (explicit), the direction set, the blocks, each patch's material and twin.
     pub kernel: Kernel,
+    /// The luminaires' direct light `D` as the saving solve had it.
     pub direct: DirectLight,
     /// `L0 = L_e + B·D` as the saving solve had it.
     pub l0: Vec<f64>,

@@ -1,4 +1,4 @@
-//! The light scenes of a solve in its HDF5 file (`design.md` §8), and one of them read
+//! The light scenes of a solve in its HDF5 file (`docs/design.md` §8), and one of them read
 //! back for `ugo render --light-scene NAME`.
 //!
 //! `/light_groups/{name (G), luminance (G×N×K×1), emission (G×N), scene_names (S),
@@ -29,12 +29,15 @@ use std::path::Path;
 
 /// The light scenes of a case: one field per group, and every light scene's readouts.
 pub struct LightScenes {
+    /// One field per group of sources.
     pub groups: Vec<GroupField>,
+    /// One entry per `[[light_scene]]`.
     pub scenes: Vec<LightSceneField>,
 }
 
 /// One group's field alone, and its solve.
 pub struct GroupField {
+    /// The group's name.
     pub name: String,
     /// The emission of its surfaces per patch, cd/m².
     pub emission: Vec<f64>,
@@ -44,9 +47,11 @@ pub struct GroupField {
 
 /// One light scene: the weighted sum of the groups' fields and its readouts.
 pub struct LightSceneField {
+    /// The light scene's name.
     pub name: String,
     /// One per group.
     pub factors: Vec<f64>,
+    /// Its field, `Σ_g f_g x_g`, cd/m².
     pub field: Field,
     /// The patches' own emission, cd/m².
     pub emission: Vec<f64>,
@@ -54,9 +59,13 @@ pub struct LightSceneField {
     pub source: Vec<f64>,
     /// The patches' illuminance and its part direct from the luminaires, lx.
     pub illuminance: Vec<f64>,
+    /// The part of `illuminance` direct from the luminaires, lx.
     pub direct_illuminance: Vec<f64>,
+    /// Its energy balance, lm.
     pub energy: EnergyBalance,
+    /// Its probe readings.
     pub probes: Vec<ProbeReading>,
+    /// Its grid readings.
     pub grids: Vec<GridReading>,
 }
 

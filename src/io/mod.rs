@@ -1,4 +1,4 @@
-//! Files: the HDF5 dump of a solve (`design.md` §8) written and read back,
+//! Files: the HDF5 dump of a solve (`docs/design.md` §8) written and read back,
 //! the HDF5 file of a forward Monte Carlo estimate, convergence plots, and rendered images
 //! (linear EXR, read back for comparisons; tone-mapped PNG; false colour), the grids'
 //! plans, and the spectrum of `K` with its plot.

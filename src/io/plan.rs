@@ -53,7 +53,9 @@ impl Axis {
 /// The plan's frame of a grid: its rightward and upward axes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Frame {
+    /// The plan's rightward direction.
     pub right: Axis,
+    /// The plan's upward direction.
     pub up: Axis,
     origin: DVec3,
 }

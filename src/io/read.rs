@@ -13,9 +13,11 @@ use std::path::{Path, PathBuf};
 
 /// A solve as stored: the scene, its patches and the luminance of each (patch, cell).
 pub struct StoredSolution {
+    /// The case, parsed again from the stored text (cameras included).
     pub scene: Scene,
     /// The patches rebuilt from `/mesh/vertices` (emission from `/field/emission`).
     pub mesh: Mesh,
+    /// The direction cells of the stored field.
     pub directions: DirectionSet,
     /// Luminance of patch `i` in cell `k` at `i·K + k`, cd/m².
     pub luminance: Vec<f64>,

@@ -1,4 +1,4 @@
-//! `/probes` and `/grids/<name>` (`design.md` §8): the readings of the probes and of one
+//! `/probes` and `/grids/<name>` (`docs/design.md` §8): the readings of the probes and of one
 //! grid written as a group, for the solve and for each of its light scenes.
 
 use super::dataset::{dataset, strings};

@@ -40,7 +40,9 @@ pub(super) fn write_spectrum(g: &hdf5::Group, spectrum: &Spectrum, k: usize) -> 
 pub struct Mode {
     /// 1 for the eigenvalue of largest magnitude.
     pub index: usize,
+    /// Real part of its eigenvalue.
     pub re: f64,
+    /// Imaginary part of its eigenvalue.
     pub im: f64,
     /// The real part of the eigenvector at `i·K + k` (`max |x| = 1`).
     pub vector: Vec<f64>,

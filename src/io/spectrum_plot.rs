@@ -17,9 +17,13 @@ pub struct RateLine {
     pub run: usize,
     /// Dotted rather than dashed (a second prediction for the same run).
     pub dotted: bool,
+    /// The legend's text.
     pub label: String,
+    /// `(a₀, r₀)`: products with `K` and residual where the line starts.
     pub start: (f64, f64),
+    /// Products with `K` where it ends.
     pub end: f64,
+    /// The contraction per product with `K`.
     pub rate: f64,
 }
 

@@ -1,4 +1,4 @@
-//! Assembly of the transport matrix `G` (`design.md` §3): `G[(i,d),(j,m)] = F_ij^{d,m}`
+//! Assembly of the transport matrix `G` (`docs/design.md` §3): `G[(i,d),(j,m)] = F_ij^{d,m}`
 //! with occlusion, exactly reciprocal and closed after balancing.
 //!
 //! Every unordered pair of mutually facing patches is visited once, in parallel over
@@ -24,6 +24,7 @@ use sprs::CsMat;
 pub struct Assembled {
     /// `G`, `N·K × N·K`.
     pub g: CsMat<f64>,
+    /// How balancing moved the exchange areas.
     pub balance: BalanceReport,
     /// Unordered patch pairs that face each other and were integrated.
     pub pairs: usize,

@@ -17,6 +17,7 @@ pub struct BalanceReport {
     pub max_correction: f64,
     /// Largest relative row-sum mismatch left, `max |(D T D 1)_r / target_r − 1|`.
     pub residual: f64,
+    /// Gauss–Seidel sweeps spent.
     pub iterations: usize,
     /// True when every enclosed patch's cells carry exactly their projected solid angle
     /// (balanced by `(patch, cell)`); false when balanced by patch only.

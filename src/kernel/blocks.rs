@@ -1,4 +1,4 @@
-//! The material side of `K = B·G` (`design.md` §3, "B"): `y = B z` over patches of `K`
+//! The material side of `K = B·G` (`docs/design.md` §3, "B"): `y = B z` over patches of `K`
 //! cells, reflection by each patch's block plus transmission of what arrives at its twin.
 //! Shared by the explicit kernel and the hierarchy's leaves.
 

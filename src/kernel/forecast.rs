@@ -41,12 +41,15 @@ pub struct Forecast {
     pub patches: f64,
     /// The most leaves of the hierarchy (its uniform mesh at `patch_size / 2`); `None` when uniform.
     pub leaves: Option<f64>,
+    /// Direction cells per patch.
     pub cells: usize,
+    /// Unknowns of the system, patches (or leaves) × cells.
     pub unknowns: f64,
     /// Unordered pairs of patches facing each other (explicit kernel).
     pub facing_pairs: f64,
     /// Non-zeros of `G` (explicit kernel; 0 for the hierarchy, whose links are not known).
     pub nonzeros: f64,
+    /// Bytes of the patches themselves.
     pub mesh_bytes: f64,
     /// The solver's vectors of the unknowns' length.
     pub vector_bytes: f64,
@@ -141,6 +144,7 @@ impl Forecast {
 /// A model refused before meshing because its forecast exceeds the memory limit.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OverLimit {
+    /// The forecast refused.
     pub forecast: Forecast,
     /// Bytes.
     pub limit: u64,

@@ -1,4 +1,4 @@
-//! The stored transport matrix `G` of `design.md` §3, in double precision (f64 values,
+//! The stored transport matrix `G` of `docs/design.md` §3, in double precision (f64 values,
 //! `usize` indices: 16 bytes per non-zero) or, with `--precision f32`, in single precision
 //! (f32 values, u32 indices: 8 bytes per non-zero). Assembly and balancing always work in
 //! double precision; the matrix is rounded once when stored. Every product accumulates in
@@ -10,8 +10,10 @@ use sprs::{CsMat, CsMatI, SpIndex};
 /// Precision of the stored `G`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Precision {
+    /// `f64` values (the default).
     #[default]
     Double,
+    /// `f32` values with `u32` indices: 8 instead of 16 bytes per non-zero.
     Single,
 }
 
@@ -25,6 +27,7 @@ impl Precision {
         }
     }
 
+    /// `"f64"` or `"f32"`, as `--precision` names it.
     pub fn name(&self) -> &'static str {
         match self {
             Precision::Double => "f64",
@@ -36,7 +39,9 @@ impl Precision {
 /// `G` as stored.
 #[derive(Debug, Clone)]
 pub enum TransportMatrix {
+    /// Stored in double precision.
     Double(CsMat<f64>),
+    /// Stored in single precision, `u32` indices.
     Single(CsMatI<f32, u32>),
 }
 
@@ -54,6 +59,7 @@ impl TransportMatrix {
         TransportMatrix::Single(CsMatI::new(shape, indptr, indices, data))
     }
 
+    /// The precision the values are stored in.
     pub fn precision(&self) -> Precision {
         match self {
             TransportMatrix::Double(_) => Precision::Double,
@@ -61,6 +67,7 @@ impl TransportMatrix {
         }
     }
 
+    /// Number of rows, `N·K`.
     pub fn rows(&self) -> usize {
         match self {
             TransportMatrix::Double(g) => g.rows(),
@@ -68,6 +75,7 @@ impl TransportMatrix {
         }
     }
 
+    /// Number of stored non-zeros.
     pub fn nnz(&self) -> usize {
         match self {
             TransportMatrix::Double(g) => g.nnz(),

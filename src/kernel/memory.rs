@@ -24,8 +24,11 @@ pub(super) const ASSEMBLY_BYTES_PER_PAIR: f64 = BYTES_PER_PAIR_ASSEMBLY as f64;
 /// What the kernel of a mesh will cost.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Estimate {
+    /// Patches of the mesh, `N`.
     pub patches: usize,
+    /// Direction cells per patch, `K`.
     pub cells: usize,
+    /// Unknowns of the system, `N·K`.
     pub unknowns: usize,
     /// Unordered pairs of patches facing each other.
     pub facing_pairs: f64,
@@ -40,6 +43,8 @@ pub struct Estimate {
 }
 
 impl Estimate {
+    /// The estimate for `mesh` with `directions`: facing pairs counted exactly up to 4000 patches,
+    /// sampled beyond.
     pub fn of(mesh: &Mesh, directions: &DirectionSet) -> Estimate {
         let n = mesh.len();
         let cells = directions.len();
@@ -129,23 +134,32 @@ const GIB: f64 = (1u64 << 30) as f64;
      or a higher --memory-limit if the machine has the RAM"
 )]
 pub struct TooLarge {
+    /// What was refused, as the message names it (e.g. "kernel G").
     pub what: &'static str,
     /// GiB.
     pub need: f64,
     /// GiB.
     pub limit: f64,
+    /// Non-zeros it would hold.
     pub nonzeros: f64,
+    /// Patches of the mesh.
     pub patches: usize,
+    /// Direction cells per patch.
     pub cells: usize,
 }
 
 /// What a stored matrix would hold, checked against a memory limit.
 #[derive(Debug, Clone, Copy)]
 pub struct Footprint {
+    /// What the matrix is, as the refusal names it.
     pub what: &'static str,
+    /// Bytes it would take.
     pub bytes: f64,
+    /// Non-zeros it would hold.
     pub nonzeros: f64,
+    /// Patches of the mesh.
     pub patches: usize,
+    /// Direction cells per patch.
     pub cells: usize,
 }
 

@@ -1,7 +1,7 @@
-//! The kernel `K = B·G` of `design.md` §3: balanced assembly of `G` from the transfer
+//! The kernel `K = B·G` of `docs/design.md` §3: balanced assembly of `G` from the transfer
 //! toolkit (`crate::transfer`), its storage, the material blocks `B`, the memory estimate
 //! and its refusal, the operators (factored and explicit) that solvers apply, and the
-//! hierarchical form of the same operator (`hierarchy/`, `design.md` §3b).
+//! hierarchical form of the same operator (`hierarchy/`, `docs/design.md` §3b).
 
 mod assembly;
 mod balance;

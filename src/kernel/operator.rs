@@ -1,5 +1,5 @@
 //! The kernel as an operator: `K = B·G`, applied factored (`G` then `B`) or formed
-//! explicitly as one sparse matrix (`design.md` §3).
+//! explicitly as one sparse matrix (`docs/design.md` §3).
 //!
 //! Solvers see both through `crate::solve::LinOp`; the factored form never builds the
 //! product, the explicit one is there for norms, direct solves and export.
@@ -14,7 +14,9 @@ use sprs::{CsMat, TriMat};
 
 /// `K = B·G`: transport `G` over `(patch, cell)` unknowns and per-material blocks `B`.
 pub struct Kernel {
+    /// The transport `G`, stored or the hierarchy's operator.
     pub g: Transport,
+    /// The direction cells of every patch.
     pub directions: DirectionSet,
     /// One block per material.
     pub blocks: Vec<Block>,
@@ -106,6 +108,7 @@ pub struct Factored<'a> {
 }
 
 impl<'a> Factored<'a> {
+    /// The factored operator of `kernel`.
     pub fn new(kernel: &'a Kernel) -> Self {
         Factored { kernel, scratch: std::sync::Mutex::new(vec![0.0; kernel.g.rows()]) }
     }

@@ -1,4 +1,4 @@
-//! The kernel's closure seen from the sender (`design.md` §3): for every column `(j, m)` of
+//! The kernel's closure seen from the sender (`docs/design.md` §3): for every column `(j, m)` of
 //! `G`, the share of the light it sends that the rows receive,
 //! `s_jm = π Σ_(i,d) A_i G[(i,d),(j,m)] / (A_j μ_m)`.
 //!

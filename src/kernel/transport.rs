@@ -1,4 +1,4 @@
-//! `G` as the kernel applies it (`design.md` §3 and §3b): every facing pair of patches
+//! `G` as the kernel applies it (`docs/design.md` §3 and §3b): every facing pair of patches
 //! stored (the explicit kernel) or the hierarchy's links applied on its leaves by pull,
 //! gather and push. Solvers, readouts and `K = B·G` see one `rows` and one `apply`; what
 //! needs the stored entries asks for them and is told when there are none.
@@ -9,9 +9,9 @@ use sprs::CsMat;
 
 /// The transport operator `G` over `(patch, cell)` unknowns.
 pub enum Transport {
-    /// Assembled pair by pair (`design.md` §3).
+    /// Assembled pair by pair (`docs/design.md` §3).
     Explicit(TransportMatrix),
-    /// Links of the hierarchical kernel between nodes above the leaves (`design.md` §3b).
+    /// Links of the hierarchical kernel between nodes above the leaves (`docs/design.md` §3b).
     Hierarchical(Box<Operator>),
 }
 

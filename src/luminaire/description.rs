@@ -10,7 +10,9 @@ use std::path::PathBuf;
 /// `[[luminaire]]`: a light source outside the unknowns of the system.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Luminaire {
+    /// The luminaire's name, unique in the scene.
     pub name: String,
+    /// What kind of light it is.
     pub kind: LuminaireKind,
 }
 
@@ -20,9 +22,19 @@ pub enum LuminaireKind {
     /// A point source with an intensity distribution, placed and aimed.
     Point(PointLuminaire),
     /// Parallel light (the sun): unit direction of travel and illuminance normal to the beam, lx.
-    Parallel { direction: DVec3, illuminance: f64 },
+    Parallel {
+        /// Unit direction of travel.
+        direction: DVec3,
+        /// Illuminance normal to the beam, lx.
+        illuminance: f64,
+    },
     /// An opening (`[[window]]`): the sky and the ground seen through the polygon.
-    Window { window: Opening, sky: Sky },
+    Window {
+        /// The opening.
+        window: Opening,
+        /// The sky and ground seen through it.
+        sky: Sky,
+    },
 }
 
 /// A photometric point source.
@@ -36,6 +48,7 @@ pub struct PointLuminaire {
     pub rotate_deg: f64,
     /// Maintenance or dimming factor on every intensity.
     pub multiplier: f64,
+    /// The luminous intensity distribution in the luminaire frame, cd.
     pub distribution: Distribution,
     /// The photometric file, when the distribution was read from one.
     pub file: Option<PathBuf>,

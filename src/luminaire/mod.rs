@@ -1,5 +1,5 @@
 //! Luminaires in the system: their direct light as the source term of the patches it
-//! reaches (`design.md` §1, §3):
+//! reaches (`docs/design.md` §1, §3):
 //!
 //! `L0(i,k) = L_e(i) + Σ_d ρ̄_i(k,d) D(i,d)`,   `D(i,d) = E_s(i,d)/π`,
 //!
@@ -33,7 +33,9 @@ use glam::DVec3;
 /// A luminaire placed in the scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Source {
+    /// The luminaire's name.
     pub name: String,
+    /// Its light as placed.
     pub light: Light,
     /// The factor a light scene dimmed it by (1 as placed). Its light on the patches is
     /// cut along shadows as its undimmed light would be (`patch_lights`), so that it is
@@ -45,11 +47,30 @@ pub struct Source {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Light {
     /// Intensity `scale · I(frame.local(w))` towards the world direction `w` from `position`.
-    Point { position: DVec3, frame: Frame, distribution: Distribution, scale: f64 },
+    Point {
+        /// The source's position, m.
+        position: DVec3,
+        /// The luminaire frame, from the aim and the rotation.
+        frame: Frame,
+        /// The intensity distribution in that frame, cd.
+        distribution: Distribution,
+        /// Multiplier times tilt factor.
+        scale: f64,
+    },
     /// Illuminance `illuminance` normal to a beam travelling along `direction`.
-    Parallel { direction: DVec3, illuminance: f64 },
+    Parallel {
+        /// Unit direction of travel.
+        direction: DVec3,
+        /// Illuminance normal to the beam, lx.
+        illuminance: f64,
+    },
     /// The sky and the ground seen through the opening `window` (`crate::sky`).
-    Window { window: Opening, sky: Sky },
+    Window {
+        /// The opening.
+        window: Opening,
+        /// The sky and ground seen through it.
+        sky: Sky,
+    },
 }
 
 impl Source {

@@ -77,8 +77,11 @@ pub fn direct_light(
 /// The direct light on one patch: `D(d)` per cell and the flux of each source, lm.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PatchLight {
+    /// `D(d)` per cell of the patch, in the units of `G x` (`E = π Σ_d D(d)`).
     pub arriving: Vec<f64>,
+    /// Flux of each source that lands on the patch, lm.
     pub intercepted: Vec<f64>,
+    /// Occlusion rays traced.
     pub rays: usize,
     /// The flux below which its shadowed pieces were not cut further, lm (0: every edge).
     pub least: f64,

@@ -1,5 +1,5 @@
 //! The `K × K` block of a material: the cell-averaged luminance factor `ρ̄(k,d)` of
-//! `design.md` §3 (`B`), with its optional transmission block, albedo and application.
+//! `docs/design.md` §3 (`B`), with its optional transmission block, albedo and application.
 
 use crate::directions::DirectionSet;
 use std::f64::consts::PI;
@@ -18,6 +18,7 @@ impl Block {
         Block { k, reflect, transmit }
     }
 
+    /// The number of cells `K` (the block is `K × K`).
     pub fn size(&self) -> usize {
         self.k
     }
@@ -32,6 +33,7 @@ impl Block {
         self.transmit.as_ref().map(|t| t[k * self.k + d])
     }
 
+    /// True when the material transmits (the block has `τ̄`).
     pub fn transmits(&self) -> bool {
         self.transmit.is_some()
     }

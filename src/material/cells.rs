@@ -41,15 +41,18 @@ pub struct Accumulator {
 }
 
 impl Accumulator {
+    /// An empty accumulator for a block of `k × k` cells.
     pub fn new(k: usize) -> Self {
         Accumulator { k, sums: vec![0.0; k * k] }
     }
 
+    /// Adds `weight` to the entry of outgoing cell `out` and incoming cell `d`.
     #[inline]
     pub fn add(&mut self, out: usize, d: usize, weight: f64) {
         self.sums[out * self.k + d] += weight;
     }
 
+    /// The row-major block: every sum divided by `μ_k μ_d` of `directions`.
     pub fn finish(mut self, directions: &DirectionSet) -> Vec<f64> {
         let cells = directions.cells();
         for k in 0..self.k {

@@ -22,6 +22,7 @@ use std::f64::consts::{FRAC_1_PI, PI, TAU};
 
 /// The `type` that selects this model and the keys it takes.
 pub const TYPE: &str = "ggx";
+/// The keys of `[[material]]` it takes besides `name` and `type`.
 pub const KEYS: &[&str] = &["reflectance", "specular", "roughness"];
 
 const STRATA_IN: usize = 12;
@@ -83,6 +84,8 @@ pub fn sample(diffuse: f64, specular: f64, alpha: f64, l: DVec3, u: [f64; 3]) ->
     Some(2.0 * l.dot(h) * h - l)
 }
 
+/// The row-major `K × K` block `ρ̄(k, d)` of GGX with the diffuse part `diffuse`, the
+/// specular weight `specular` and the roughness `alpha` on `directions`.
 pub fn block(diffuse: f64, specular: f64, alpha: f64, directions: &DirectionSet) -> Vec<f64> {
     let k = directions.len();
     let mut acc = Accumulator::new(k);

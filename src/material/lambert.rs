@@ -1,5 +1,5 @@
 //! Lambert: the ideal diffuse reflector and, on a two-sided surface, diffuse transmitter
-//! (`design.md` §1): `ρ ≡ reflectance` on the incident side, `τ ≡ transmittance` through
+//! (`docs/design.md` §1): `ρ ≡ reflectance` on the incident side, `τ ≡ transmittance` through
 //! the surface, `reflectance + transmittance ≤ 1`. Every cell average is the constant.
 //! Sampled by cosine directions, on the side chosen in proportion to `ρ : τ`.
 //!
@@ -17,6 +17,7 @@ use std::f64::consts::FRAC_1_PI;
 
 /// The `type` that selects this model and the keys it takes.
 pub const TYPE: &str = "lambert";
+/// The keys of `[[material]]` it takes besides `name` and `type`.
 pub const KEYS: &[&str] = &["reflectance", "transmittance"];
 
 /// `ρ` for `l'` on the incident side (`l'.z > 0`), `τ` through the surface.

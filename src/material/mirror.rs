@@ -19,11 +19,14 @@ use std::f64::consts::PI;
 
 /// The `type` that selects this model and the keys it takes.
 pub const TYPE: &str = "mirror";
+/// The keys of `[[material]]` it takes besides `name` and `type`.
 pub const KEYS: &[&str] = &["reflectance"];
 
 /// Incoming directions per cell are `STRATA²`.
 const STRATA: usize = 32;
 
+/// The row-major `K × K` block `ρ̄(k, d)` of a mirror of specular reflectance
+/// `reflectance` on `directions`.
 pub fn block(reflectance: f64, directions: &DirectionSet) -> Vec<f64> {
     let mut acc = Accumulator::new(directions.len());
     for d in 0..directions.len() {

@@ -1,4 +1,4 @@
-//! Materials as cell-averaged luminance factors: the blocks of `B` (`design.md` §1, §3).
+//! Materials as cell-averaged luminance factors: the blocks of `B` (`docs/design.md` §1, §3).
 //!
 //! A block holds, for outgoing cell `k` and incoming cell `d`, the luminance factor
 //! averaged over both cells with the projected-solid-angle measure,
@@ -38,23 +38,45 @@ use std::f64::consts::FRAC_1_PI;
 pub const TYPES: [(&str, &[&str]); 4] =
     [(lambert::TYPE, lambert::KEYS), (phong::TYPE, phong::KEYS), (mirror::TYPE, mirror::KEYS), (ggx::TYPE, ggx::KEYS)];
 
-/// The closed set of material models, as luminance factors `ρ = π f_r` (`design.md` §1).
+/// The closed set of material models, as luminance factors `ρ = π f_r` (`docs/design.md` §1).
 #[derive(Debug, Clone, PartialEq)]
 pub enum MaterialModel {
     /// Ideal diffuse reflector and (on a two-sided surface) diffuse transmitter:
     /// `ρ ≡ reflectance` on the incident side, `τ ≡ transmittance` on the other;
     /// `reflectance + transmittance ≤ 1`.
-    Lambert { reflectance: f64, transmittance: f64 },
+    Lambert {
+        /// Reflectance `r`, the luminance factor on the incident side.
+        reflectance: f64,
+        /// Diffuse transmittance `t`, the luminance factor through to the other side.
+        transmittance: f64,
+    },
     /// Normalized modified Phong (Lafortune & Willems 1994):
     /// `ρ = diffuse + specular · (n + 2)/2 · cosⁿα`, `α` between the outgoing direction
     /// and the mirror image of the incoming one; `diffuse + specular ≤ 1`.
-    Phong { diffuse: f64, specular: f64, exponent: f64 },
+    Phong {
+        /// Diffuse part `k_d`.
+        diffuse: f64,
+        /// Specular weight `k_s`.
+        specular: f64,
+        /// Lobe exponent `n`.
+        exponent: f64,
+    },
     /// Ideal specular reflector of reflectance `reflectance`.
-    Mirror { reflectance: f64 },
+    Mirror {
+        /// Specular reflectance `ρ_s`.
+        reflectance: f64,
+    },
     /// GGX (Trowbridge–Reitz) microfacet reflection with the height-correlated Smith
     /// masking-shadowing term and no Fresnel factor, plus a diffuse part:
     /// `ρ = diffuse + specular · π D(h) G₂ / (4 cosθ cosθ')`, width `roughness` (α).
-    Ggx { diffuse: f64, specular: f64, roughness: f64 },
+    Ggx {
+        /// Diffuse part `k_d`.
+        diffuse: f64,
+        /// Specular weight `k_s`.
+        specular: f64,
+        /// GGX width `α`.
+        roughness: f64,
+    },
 }
 
 impl MaterialModel {

@@ -22,6 +22,7 @@ use std::f64::consts::{FRAC_1_PI, PI, TAU};
 
 /// The `type` that selects this model and the keys it takes.
 pub const TYPE: &str = "phong";
+/// The keys of `[[material]]` it takes besides `name` and `type`.
 pub const KEYS: &[&str] = &["reflectance", "specular", "exponent"];
 
 const STRATA_IN: usize = 12;
@@ -62,6 +63,8 @@ pub fn sample(diffuse: f64, specular: f64, exponent: f64, l: DVec3, u: [f64; 3])
     Some(Frame::around(mirror(l)).world(cone(lobe_cos(exponent, u[1]), TAU * u[2])))
 }
 
+/// The row-major `K × K` block `ρ̄(k, d)` of the normalised Phong model with the diffuse
+/// part `diffuse`, the specular weight `specular` and the exponent `exponent` on `directions`.
 pub fn block(diffuse: f64, specular: f64, exponent: f64, directions: &DirectionSet) -> Vec<f64> {
     let k = directions.len();
     let mut acc = Accumulator::new(k);

@@ -1,5 +1,5 @@
 //! The fingerprint of a kernel (issue 15, `docs/kernel-file.md`): what `G`, the blocks `B`
-//! and the luminaires' direct light `D` of `K = B·G`, `L0 = L_e + B·D` (`design.md` §3) are
+//! and the luminaires' direct light `D` of `K = B·G`, `L0 = L_e + B·D` (`docs/design.md` §3) are
 //! computed from, in named parts, so that a saved kernel is reused only for the case it was
 //! assembled for and a refusal names the part that changed.
 //!
@@ -41,6 +41,7 @@ pub enum Part {
 }
 
 impl Part {
+    /// Every part, in the order they are stored and compared.
     pub const ALL: [Part; 7] = [
         Part::Geometry,
         Part::Materials,
@@ -64,6 +65,7 @@ impl Part {
         }
     }
 
+    /// The part of a stored name; `None` if unknown.
     pub fn parse(name: &str) -> Option<Part> {
         Part::ALL.into_iter().find(|p| p.name() == name)
     }
@@ -82,17 +84,22 @@ impl Part {
 /// One part: its hash and a summary for messages.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stamp {
+    /// The part stamped.
     pub part: Part,
+    /// The hash of everything in the part.
     pub hash: u64,
+    /// What the part holds, in words, for messages.
     pub summary: String,
 }
 
 /// A part that differs between a stored fingerprint and a case's.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Change {
+    /// The part that changed.
     pub part: Part,
     /// The stored summary (`None` when the file lacks the part).
     pub stored: Option<String>,
+    /// The case's summary.
     pub case: String,
 }
 
@@ -121,6 +128,7 @@ impl std::fmt::Display for Change {
 /// Everything a kernel depends on, part by part.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Fingerprint {
+    /// One stamp per part, in the order of [`Part::ALL`].
     pub stamps: Vec<Stamp>,
 }
 

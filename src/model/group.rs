@@ -1,4 +1,4 @@
-//! A model lit by some of its emitters (`design.md` §1: the field is linear in `L0`): the
+//! A model lit by some of its emitters (`docs/design.md` §1: the field is linear in `L0`): the
 //! source term of a group of luminaires and emitting surfaces alone, on the model's fixed
 //! mesh and kernel, and the model relit by another set of sources, so that every readout
 //! of a field (probes, grids, energy) reads a light scene as it reads the case's own light.

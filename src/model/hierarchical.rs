@@ -1,4 +1,4 @@
-//! The hierarchical model (`design.md` §3b): roots meshed at `root_size`, the luminaires'
+//! The hierarchical model (`docs/design.md` §3b): roots meshed at `root_size`, the luminaires'
 //! direct light on them (at a few points of each) as the first source term, then passes of refinement iterated with
 //! a solve (`kernel::hierarchy::iterate`). Before every solve the leaves are split where
 //! the luminaires' light varies over them by more than the error allowed (their shadow

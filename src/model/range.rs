@@ -1,6 +1,6 @@
 //! Values out of range caught where they first appear (issue 18, item 2), when the model
 //! is built and before any solve: the surfaces' emission `L_e`, the luminaires' direct
-//! light `D` and the source term `L0 = L_e + B·D` (`design.md` §2), and the kernel
+//! light `D` and the source term `L0 = L_e + B·D` (`docs/design.md` §2), and the kernel
 //! `K = B·G` (§3): every material block `B` and every row of `G`, both kernels' in one
 //! application `G·1` (a row that holds a value not finite sums to one that is not).
 //!
@@ -25,6 +25,7 @@ pub struct OutOfRange {
     pub quantity: String,
     /// Where: patch, surface and cell, material, or luminaire.
     pub place: String,
+    /// The value.
     pub value: f64,
 }
 

@@ -1,7 +1,7 @@
 //! The explicit model around a stored `G` (issue 15, `docs/kernel-file.md`): the mesh and
 //! its ray caster rebuilt from the case (cheap), `G` as read from a kernel file instead of
 //! assembled, the blocks `B` and the luminaires' direct light `D` as stored or, when only
-//! they changed, rebuilt from the case, and `L0 = L_e + B·D` (`design.md` §2, §3).
+//! they changed, rebuilt from the case, and `L0 = L_e + B·D` (`docs/design.md` §2, §3).
 
 use super::source::source_term;
 use super::system::{AssemblyStats, Model};
@@ -16,6 +16,7 @@ use thiserror::Error;
 
 /// What a kernel file supplies to the model.
 pub struct StoredParts {
+    /// The stored transport `G`.
     pub g: TransportMatrix,
     /// The stored blocks, or `None` to build them from the case.
     pub blocks: Option<Vec<Block>>,
@@ -32,8 +33,11 @@ pub struct StoredParts {
     patches * cells
 )]
 pub struct NotThisMesh {
+    /// Rows of the stored `G`.
     pub rows: usize,
+    /// Patches of the case's mesh.
     pub patches: usize,
+    /// Direction cells per patch of the case.
     pub cells: usize,
 }
 

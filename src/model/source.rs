@@ -1,4 +1,4 @@
-//! The source term `L0 = L_e + B·D` (`design.md` §2): the surfaces' own emission plus the
+//! The source term `L0 = L_e + B·D` (`docs/design.md` §2): the surfaces' own emission plus the
 //! luminaires' direct light reflected once, on the patches of any mesh; and the source
 //! term of some of the emitters alone ([`SourceTerm`]), linear in them.
 
@@ -31,8 +31,11 @@ pub fn source_term_with(blocks: &[Block], mesh: &Mesh, emission: &[f64], direct:
 /// luminaire lands (zero for the luminaires not among them), and `L0 = L_e + B·D`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SourceTerm {
+    /// The surfaces' own emission `L_e` per patch, cd/m².
     pub emission: Vec<f64>,
+    /// The luminaires' direct light `D` and the flux each lands.
     pub direct: DirectLight,
+    /// The source term `L0 = L_e + B·D`, `x[i·K + k]`, cd/m².
     pub l0: Vec<f64>,
 }
 

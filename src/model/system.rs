@@ -1,4 +1,4 @@
-//! The discretized system `x = L0 + K x` of a scene (`design.md` §6): the model's parts
+//! The discretized system `x = L0 + K x` of a scene (`docs/design.md` §6): the model's parts
 //! (mesh, ray caster, kernel, source term, luminaires), how it is discretized, what its
 //! assembly cost, and why none was built.
 
@@ -20,6 +20,8 @@ pub enum ModelError {
     /// Refused before meshing, from the surfaces' closed forms.
     #[error(transparent)]
     OverLimit(#[from] OverLimit),
+    /// Refused after meshing: the kernel's estimate (or the hierarchy's operator) over the
+    /// memory limit.
     #[error(transparent)]
     TooLarge(#[from] TooLarge),
     /// A value of the source term or the kernel that no solve can carry.
@@ -36,7 +38,9 @@ pub enum ModelError {
 /// Timings and counts of the assembly.
 #[derive(Debug, Clone)]
 pub struct AssemblyStats {
+    /// Time spent meshing, s.
     pub mesh_seconds: f64,
+    /// Time spent building the ray caster, s.
     pub bvh_seconds: f64,
     /// The kernel: the explicit assembly, or every refinement pass and its solve.
     pub kernel_seconds: f64,
@@ -44,6 +48,7 @@ pub struct AssemblyStats {
     pub light_seconds: f64,
     /// Patch pairs integrated (explicit), or links (hierarchical).
     pub pairs: usize,
+    /// Occlusion rays traced, the luminaires' included.
     pub rays: usize,
     /// How balancing changed the explicit kernel (the hierarchy is not balanced).
     pub balance: Option<BalanceReport>,
@@ -53,9 +58,11 @@ pub struct AssemblyStats {
 pub struct Model {
     /// The unknowns' patches: the uniform mesh, or the hierarchy's leaves.
     pub mesh: Mesh,
+    /// The ray caster over the mesh's faces.
     pub visibility: Visibility,
     /// The patches of each face, for probes and grids.
     pub faces: Faces,
+    /// The kernel `K = B·G`.
     pub kernel: Kernel,
     /// The scene's materials by index, whose own luminance factors the readouts of
     /// glossy surfaces apply (the kernel holds their cell blocks).
@@ -66,6 +73,7 @@ pub struct Model {
     pub sources: Vec<Source>,
     /// Their direct light on every (patch, cell).
     pub direct: DirectLight,
+    /// Timings and counts of the build.
     pub stats: AssemblyStats,
     /// What the hierarchical kernel made; `None` for the explicit one.
     pub hierarchy: Option<HierarchyRecord>,
@@ -82,5 +90,6 @@ pub struct HierarchyRecord {
     pub roots: usize,
     /// One record per refinement pass.
     pub history: Vec<Pass>,
+    /// What the final hierarchy is made of.
     pub census: Census,
 }

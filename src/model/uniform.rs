@@ -1,4 +1,4 @@
-//! The uniform model (`design.md` §3): the uniform mesh, every facing pair of patches
+//! The uniform model (`docs/design.md` §3): the uniform mesh, every facing pair of patches
 //! integrated and balanced into `G`, the luminaires' direct light on every patch.
 
 use super::range::{check_blocks, check_source, check_transport};

@@ -3,7 +3,7 @@
 //! (`docs/photometry.md`).
 //!
 //! A luminaire's direct light is the source term of the patches it reaches,
-//! `L0(i,k) = (1/π) ρ̄_i(k, d_s) E_s(i)` (`design.md` §1, §3; built in `luminaire`); this
+//! `L0(i,k) = (1/π) ρ̄_i(k, d_s) E_s(i)` (`docs/design.md` §1, §3; built in `luminaire`); this
 //! module owns only the distributions: the closed set [`Distribution`], the table
 //! [`IntensityDistribution`] with its interpolation and exact flux, the goniometric systems
 //! A, B and C ([`System`]), the symmetries files imply, tilt factors, and the two file
@@ -35,9 +35,15 @@ use std::path::Path;
 #[derive(Debug, Clone, PartialEq)]
 pub enum Distribution {
     /// The same intensity, cd, in every direction; flux `4πI`.
-    Isotropic { intensity: f64 },
+    Isotropic {
+        /// Intensity, cd.
+        intensity: f64,
+    },
     /// `I(γ) = I0 cosγ` below the luminaire's horizontal, 0 above; flux `π I0`.
-    Lambertian { peak: f64 },
+    Lambertian {
+        /// `I0`, the intensity along the aim, cd.
+        peak: f64,
+    },
     /// A table read from a photometric file.
     Table(Box<IntensityDistribution>),
 }

@@ -24,8 +24,11 @@ use glam::DVec3;
 /// A goniometric system: which pole and which azimuth origin the angles refer to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum System {
+    /// Type A: the pole along the length axis (`−x`).
     A,
+    /// Type B: the pole along the width axis (`y`).
     B,
+    /// Type C: the pole at the nadir (`−z`), the usual one.
     C,
 }
 

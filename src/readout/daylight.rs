@@ -22,17 +22,24 @@ use glam::DVec3;
 /// The daylight at one point, in % of `E_h`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Daylight {
+    /// Sky component SC: the sky seen directly through the openings, %.
     pub sky_component: f64,
+    /// Externally reflected component ERC: the ground seen through the openings, %.
     pub externally_reflected: f64,
+    /// Internally reflected component IRC: the light from the room's surfaces, %.
     pub internally_reflected: f64,
+    /// Daylight factor `DF = E / E_h`, %.
     pub daylight_factor: f64,
 }
 
 /// Statistics of the daylight factor over a grid, %.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DaylightStats {
+    /// Average daylight factor, %.
     pub average: f64,
+    /// Smallest daylight factor, %.
     pub min: f64,
+    /// Largest daylight factor, %.
     pub max: f64,
     /// `DF_min / DF_avg` (0 when the average is 0).
     pub uniformity: f64,

@@ -19,7 +19,10 @@ use std::f64::consts::PI;
 pub struct EnergyBalance {
     /// Surfaces' own emission plus the luminaires' flux.
     pub emitted: f64,
+    /// Flux absorbed by the surfaces.
     pub absorbed: f64,
+    /// Flux no patch receives: what the surfaces send beyond the patches (through openings,
+    /// onto backs of one-sided surfaces) plus the luminaires' light that misses them.
     pub escaped: f64,
     /// `emitted − absorbed − escaped`.
     pub imbalance: f64,
@@ -32,6 +35,8 @@ pub struct EnergyBalance {
 }
 
 impl EnergyBalance {
+    /// The balance of the solution `x` of `model`, with the per-surface fluxes of its
+    /// `surfaces` surfaces.
     pub fn of(model: &Model, x: &[f64], surfaces: usize) -> EnergyBalance {
         let (mesh, kernel) = (&model.mesh, &model.kernel);
         let k = kernel.cells();

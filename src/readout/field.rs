@@ -1,5 +1,5 @@
 //! The luminance field `L(r_i, l_k)`: an `N × K × C` array over patches, direction
-//! cells and colour channels (`design.md` §2; photometric `C = 1`).
+//! cells and colour channels (`docs/design.md` §2; photometric `C = 1`).
 //!
 //! Unknowns are point-major, `x[i·K + k]`; this module owns the conversion between the
 //! solver's flat vector and the array.
@@ -9,6 +9,7 @@ use ndarray::Array3;
 /// Luminance of every patch in every direction cell, cd/m².
 #[derive(Debug, Clone, PartialEq)]
 pub struct Field {
+    /// `N × K × C` (patch, cell, channel; `C = 1`), cd/m².
     pub luminance: Array3<f64>,
 }
 
@@ -20,10 +21,12 @@ impl Field {
         Field { luminance }
     }
 
+    /// Number of patches, `N`.
     pub fn patches(&self) -> usize {
         self.luminance.shape()[0]
     }
 
+    /// Direction cells per patch, `K`.
     pub fn cells(&self) -> usize {
         self.luminance.shape()[1]
     }

@@ -1,6 +1,6 @@
 //! The final gather: one more reflection evaluated at the hit point `q` itself with the
 //! material's own luminance factor, `L(q, l) = Le + (1/π) ∫ ρ(l, l') L(q, l') cosθ' dω'`
-//! (`design.md` §5), the incoming `L` read from the solved field. The reflection seen is
+//! (`docs/design.md` §5), the incoming `L` read from the solved field. The reflection seen is
 //! then as sharp as the material: a glossy lobe is not averaged over direction cells.
 //!
 //! The incoming light is split in two:
@@ -36,11 +36,15 @@ use glam::DVec3;
 /// rendering (`crate::render::Solved`) is one; the readouts of glossy surfaces read a
 /// model's field through another (`glossy.rs`).
 pub trait Surroundings {
+    /// The patches whose stored luminance is read.
     fn mesh(&self) -> &Mesh;
+    /// The ray caster over their faces.
     fn visibility(&self) -> &Visibility;
+    /// The material model of `patch`.
     fn material(&self, patch: usize) -> &MaterialModel;
     /// The patches with a self-emission.
     fn emitters(&self) -> &[u32];
+    /// The luminaires, whose direct light is added exactly.
     fn sources(&self) -> &[Source];
     /// The patch first met from `q` along the unit `w` (ignoring face `face`) and its
     /// stored luminance towards `q`, cd/m².

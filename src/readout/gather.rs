@@ -1,4 +1,4 @@
-//! The light arriving at an exact point, gathered from the solved field (`design.md` §5):
+//! The light arriving at an exact point, gathered from the solved field (`docs/design.md` §5):
 //! the illuminance on a receiver, and the light a surface point reflects
 //! (`luminance.rs`).
 //!

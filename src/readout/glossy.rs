@@ -1,6 +1,6 @@
 //! The outgoing luminance of a point on a surface whose luminance factor varies with
 //! direction (Phong, GGX, mirror), `L(q, l) = Le + (1/π) ∫ ρ(l, l') L(q, l') cosθ' dω'`
-//! (`design.md` §5): the final gather of `final_gather.rs` (the render's too) on the solved
+//! (`docs/design.md` §5): the final gather of `final_gather.rs` (the render's too) on the solved
 //! field, with the material's own factor at the point, the emitters' and luminaires' light
 //! exact, and directions sampled from its lobe on a shifted Hammersley set, the stream
 //! keyed by the point so a reading is reproducible. The cell-averaged factor `ρ̄(k, d)` of
@@ -47,12 +47,15 @@ pub fn has_lobe(material: &MaterialModel) -> bool {
 
 /// A model and its solved field as a final gather reads them.
 pub struct ModelSurroundings<'a> {
+    /// The model: mesh, visibility, materials, luminaires.
     pub model: &'a Model,
+    /// The solved field on its patches.
     pub field: &'a Field,
     emitters: Vec<u32>,
 }
 
 impl<'a> ModelSurroundings<'a> {
+    /// The surroundings of `model` lit by `field`.
     pub fn new(model: &'a Model, field: &'a Field) -> ModelSurroundings<'a> {
         ModelSurroundings { model, field, emitters: model.mesh.emitters() }
     }

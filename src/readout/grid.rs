@@ -1,6 +1,6 @@
 //! Illuminance calculation grids (`[[grid]]`): the illuminance `E = π Σ_d I_d` (lx) at
 //! the centre of every grid cell, gathered from the solved field exactly as a probe's
-//! (`probe.rs`, `design.md` §5), and the statistics lighting designers judge a
+//! (`probe.rs`, `docs/design.md` §5), and the statistics lighting designers judge a
 //! lighting scheme by: average, minimum, maximum and the uniformity `U0 = E_min/E_avg`.
 
 use crate::model::Model;
@@ -13,7 +13,9 @@ use glam::DVec3;
 /// One grid's calculation points and their illuminance, row by row along `edge_u`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GridReading {
+    /// The grid as the case file defines it.
     pub grid: Grid,
+    /// The calculation points, at the centres of the cells, m.
     pub points: Vec<DVec3>,
     /// lx, one value per point.
     pub illuminance: Vec<f64>,
@@ -22,8 +24,11 @@ pub struct GridReading {
 /// Summary of a grid's illuminance, lx (and `u0`, dimensionless).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GridStats {
+    /// Average illuminance `E_avg`, lx.
     pub average: f64,
+    /// Smallest illuminance `E_min`, lx.
     pub min: f64,
+    /// Largest illuminance `E_max`, lx.
     pub max: f64,
     /// Uniformity `E_min / E_avg` (0 when the average is 0).
     pub u0: f64,

@@ -1,4 +1,4 @@
-//! Illuminance of the patches, lx: `E_i = π Σ_d ((G x)(i,d) + D(i,d))` (`design.md` §1,
+//! Illuminance of the patches, lx: `E_i = π Σ_d ((G x)(i,d) + D(i,d))` (`docs/design.md` §1,
 //! §3), the light arriving from the surfaces (`G x`, the transport of the solved field)
 //! plus the luminaires' direct light `D`, both per incoming cell `d` in the units of `G x`.
 //! The one place this sum is formed; probes and grids gather at exact points instead.

@@ -1,5 +1,5 @@
 //! The luminance of a surface point, and the luminance seen along a ray, read from the
-//! solved field (`design.md` §5).
+//! solved field (`docs/design.md` §5).
 //!
 //! On a Lambertian surface the outgoing luminance towards `v` is `L_e + Σ_d ρ̄(k,d)
 //! (I_d + D_d)`, `k` the cell of `v` and `I_d + D_d` the light arriving at the point per

@@ -1,4 +1,4 @@
-//! Readouts of a solved field (`design.md` §5, §7): the field as an `N × K × C` array, the
+//! Readouts of a solved field (`docs/design.md` §5, §7): the field as an `N × K × C` array, the
 //! illuminance of patches and points, probes (point sensors, luminance meters, cylindrical
 //! illuminance), grids and the energy balance in lumens.
 

@@ -27,8 +27,11 @@ use std::f64::consts::PI;
 /// One probe's reading.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ProbeReading {
+    /// The probe's name.
     pub name: String,
+    /// What the probe reads.
     pub kind: ProbeKind,
+    /// Where it reads, m.
     pub position: DVec3,
     /// The probe's direction (`Probe::normal`: normal, viewing direction, axis, or facing).
     pub normal: DVec3,

@@ -13,17 +13,22 @@ use glam::DVec3;
 /// The camera's eye, basis and image size.
 #[derive(Debug, Clone, Copy)]
 pub struct Projection {
+    /// The centre of projection, m.
     pub eye: DVec3,
     forward: DVec3,
     /// Image-plane vectors spanning half the image width and half its height.
     right: DVec3,
     up: DVec3,
+    /// Image width, pixels.
     pub width: usize,
+    /// Image height, pixels.
     pub height: usize,
+    /// Primary rays per pixel.
     pub samples: usize,
 }
 
 impl Projection {
+    /// The projection of a `[[camera]]`.
     pub fn of(camera: &Camera) -> Projection {
         let forward = (camera.look_at - camera.position).normalize();
         let right = forward.cross(camera.up).normalize();

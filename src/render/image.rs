@@ -22,8 +22,11 @@ pub const GATHER_POINTS: usize = 16;
 /// A luminance image, cd/m², row-major from the top-left pixel.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Image {
+    /// Width, pixels.
     pub width: usize,
+    /// Height, pixels.
     pub height: usize,
+    /// One value per pixel, cd/m².
     pub luminance: Vec<f64>,
 }
 

@@ -7,7 +7,7 @@
 //!   (`smooth.rs`);
 //! * `Gather`: one more reflection evaluated at `q` itself with the material's own
 //!   luminance factor, from the solved field and the luminaires' direct light
-//!   (`crate::readout::final_gather`, `design.md` §5).
+//!   (`crate::readout::final_gather`, `docs/design.md` §5).
 
 use super::smooth::Corners;
 use super::solved::Solved;
@@ -22,15 +22,19 @@ use glam::DVec3;
 /// How a hit point is shaded.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Shading {
+    /// The stored luminance of the patch hit, in the cell towards the eye.
     Flat,
+    /// Interpolated over the corners that patches of the same surface share.
     Smooth,
     /// A final gather with this many rays per pixel, spread over the pixel's shaded points
     /// (at most [`super::GATHER_POINTS`]).
     Gather {
+        /// Final-gather rays per pixel.
         rays: usize,
     },
 }
 
+/// A solved scene ready to render: what the rays see and how a hit is shaded.
 pub struct LitScene {
     /// What the rays see.
     pub solved: Solved,
@@ -62,6 +66,7 @@ impl LitScene {
         self.shading = shading;
     }
 
+    /// The current shading.
     pub fn shading(&self) -> Shading {
         self.shading
     }

@@ -36,6 +36,8 @@ type VertexKey = (u32, bool, [i64; 3]);
 const DEEPEST_SPLIT: usize = 16;
 
 impl Corners {
+    /// The corners of every patch of `mesh`, shared between patches of the same surface and
+    /// side (T-junctions of the hierarchy's leaves included).
     pub fn of(mesh: &Mesh) -> Corners {
         let quantum = 1e-7 * mesh.extent().max(f64::MIN_POSITIVE);
         let key = |p: &Patch, i: usize, v: DVec3| -> VertexKey {

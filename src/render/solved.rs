@@ -10,8 +10,12 @@ use crate::readout::final_gather::Surroundings;
 use crate::visibility::{Faces, NO_FACE, Visibility};
 use glam::DVec3;
 
+/// A solved field as rays see it: the mesh, its ray caster, the luminance of every patch
+/// and cell, the materials and the luminaires.
 pub struct Solved {
+    /// The patches the field lives on.
     pub mesh: Mesh,
+    /// The direction cells of every patch.
     pub directions: DirectionSet,
     /// Luminance of patch `i` in cell `k` at `i·K + k`, cd/m².
     pub luminance: Vec<f64>,

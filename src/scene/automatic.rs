@@ -1,5 +1,5 @@
 //! `[discretization]` without `kernel` (or `kernel = "auto"`): the kernel chosen by its size
-//! (`design.md` §3 and §3b).
+//! (`docs/design.md` §3 and §3b).
 //!
 //! The uniform kernel while its forecast stays at most [`UNIFORM_PAIRS`] facing pairs of
 //! patches: there it is the reference, every solver and norm works on it (`direct`, exact

@@ -1,4 +1,4 @@
-//! The runtime scene: what a validated case file says, in plain types (`design.md` §7).
+//! The runtime scene: what a validated case file says, in plain types (`docs/design.md` §7).
 
 use super::discretization::{Asked, Discretization};
 use super::discretization_keys::OldSpelling;
@@ -21,7 +21,9 @@ pub struct Scene {
     pub path: PathBuf,
     /// The case file's text, stored verbatim in every output file.
     pub source: String,
+    /// `[scene] name` (default: the case file's stem).
     pub name: String,
+    /// `[scene] description` (default empty).
     pub description: String,
     /// What `[discretization]` asks for, kept so that the command line's flags can be
     /// resolved with it (`Scene::discretize`).
@@ -30,11 +32,17 @@ pub struct Scene {
     pub discretization: Discretization,
     /// The `[discretization]` keys read in their old spelling, to be told.
     pub old_spelling: Vec<OldSpelling>,
+    /// `[solver]`: method and stopping rule.
     pub solver: SolverSettings,
+    /// The `[[material]]` tables, in file order.
     pub materials: Vec<Material>,
+    /// The `[[surface]]` tables, in file order (an OBJ mesh one surface per material).
     pub surfaces: Vec<Surface>,
+    /// The `[[probe]]` tables, in file order.
     pub probes: Vec<Probe>,
+    /// The `[[camera]]` tables, in file order.
     pub cameras: Vec<Camera>,
+    /// The `[[grid]]` tables, in file order.
     pub grids: Vec<Grid>,
     /// The `[[luminaire]]` tables, then one per `[[window]]`, then the `[sky]`'s sun.
     pub luminaires: Vec<Luminaire>,
@@ -63,18 +71,23 @@ impl Default for SolverSettings {
     }
 }
 
-/// `[[material]]`: a named luminance-factor model (`design.md` §1).
+/// `[[material]]`: a named luminance-factor model (`docs/design.md` §1).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Material {
+    /// The material's name, unique in the scene.
     pub name: String,
+    /// Its luminance-factor model and parameters.
     pub model: MaterialModel,
 }
 
 /// `[[camera]]`: a pinhole camera for `ugo render`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Camera {
+    /// The camera's name, unique in the scene.
     pub name: String,
+    /// The eye (centre of projection), m.
     pub position: DVec3,
+    /// The point the camera looks at, m.
     pub look_at: DVec3,
     /// Unit vector giving the image's upward direction (not parallel to the view).
     pub up: DVec3,

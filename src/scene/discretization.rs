@@ -1,4 +1,4 @@
-//! The one record of how a case is discretized (`design.md` §2, §3, §3b): what the case's
+//! The one record of how a case is discretized (`docs/design.md` §2, §3, §3b): what the case's
 //! `[discretization]` and the command line ask for ([`Asked`]), resolved and checked once,
 //! by the same rules for a key as for a flag, into a [`Discretization`].
 //!
@@ -38,9 +38,9 @@ pub struct Discretization {
 /// `kernel`: how the transport `G` is built.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum KernelKind {
-    /// Every facing pair of patches of `patch_size` gets its entries (`design.md` §3).
+    /// Every facing pair of patches of `patch_size` gets its entries (`docs/design.md` §3).
     Uniform,
-    /// Element trees over roots, links where the oracle accepts them (`design.md` §3b).
+    /// Element trees over roots, links where the oracle accepts them (`docs/design.md` §3b).
     Hierarchical(Hierarchical),
 }
 

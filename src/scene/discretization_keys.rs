@@ -1,4 +1,4 @@
-//! The keys of `[discretization]` read into an [`Asked`] (`design.md` §7), checked later with
+//! The keys of `[discretization]` read into an [`Asked`] (`docs/design.md` §7), checked later with
 //! the command line's flags by the same rules (`discretization.rs`).
 //!
 //! The old spelling is read with a note: `method` for `kernel` (`"explicit"` for

@@ -8,7 +8,9 @@ use std::path::{Path, PathBuf};
 /// One file as read: the path it was named by (joined to the case file's folder), its bytes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CaseFile {
+    /// The path it was named by, joined to the case file's folder.
     pub path: PathBuf,
+    /// Its contents.
     pub bytes: Vec<u8>,
 }
 

@@ -43,8 +43,10 @@ pub struct MapStyle {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum MapScale {
+    /// Linear from 0.
     #[default]
     Linear,
+    /// Logarithmic, four decades.
     Log,
 }
 
@@ -53,12 +55,17 @@ pub enum MapScale {
 /// calculation point at the centre of each.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Grid {
+    /// The grid's name, unique in the scene.
     pub name: String,
+    /// The corner of the parallelogram, m.
     pub origin: DVec3,
+    /// The first edge from `origin`, m.
     pub edge_u: DVec3,
+    /// The second edge from `origin`, m.
     pub edge_v: DVec3,
     /// Unit normal of the receiving side, `±(edge_u × edge_v)`.
     pub normal: DVec3,
+    /// Calculation points along `edge_u` and `edge_v`, `[nu, nv]`.
     pub resolution: [usize; 2],
     /// How its plan is drawn.
     pub map: MapStyle,

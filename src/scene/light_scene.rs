@@ -2,7 +2,7 @@
 //! `[[luminaire]]` and `[[surface]]`) and the maintenance factor (`[lighting]`), as written
 //! and as validated.
 //!
-//! The field is linear in the sources (`design.md` §1: `L = (I − K)⁻¹ L0`, `L0 = L_e + B·D`
+//! The field is linear in the sources (`docs/design.md` §1: `L = (I − K)⁻¹ L0`, `L0 = L_e + B·D`
 //! linear in every emission and intensity), so a light scene is a weighted sum of one field
 //! per group (`crate::study::solve_light_scenes`). A source without `group` is in the group
 //! [`DEFAULT_GROUP`]; a group exists when a source names it. A light scene gives each group
@@ -57,6 +57,7 @@ pub struct Lighting {
     pub maintenance_factor: f64,
     /// In order of first use: surfaces in file order, then luminaires.
     pub groups: Vec<LightGroup>,
+    /// The `[[light_scene]]` tables, in file order.
     pub scenes: Vec<LightScene>,
 }
 
@@ -70,6 +71,7 @@ impl Default for Lighting {
 /// Sources dimmed together.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LightGroup {
+    /// The group's name (`group = …` of its sources; [`DEFAULT_GROUP`] for none).
     pub name: String,
     /// Indices into the scene's luminaires.
     pub luminaires: Vec<usize>,

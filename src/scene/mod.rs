@@ -1,6 +1,6 @@
 //! The scene description: what a case file says, validated, in plain runtime types.
 //!
-//! Owns `design.md` §7. The parser (`schema`) records exactly what the TOML file holds;
+//! Owns `docs/design.md` §7. The parser (`schema`) records exactly what the TOML file holds;
 //! `validate` turns it into a [`Scene`] or a [`SceneError`] that names the file, the
 //! table and the key. Nothing downstream (meshing, kernel, solvers) sees TOML.
 

@@ -31,12 +31,15 @@ pub struct RawProbe {
 /// `[[probe]]`: a point sensor.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Probe {
+    /// The probe's name, unique in the scene.
     pub name: String,
+    /// Where it reads, m.
     pub position: DVec3,
     /// Unit vector: the receiving side of a point sensor, the viewing direction of a
     /// luminance meter, the axis of a cylindrical probe, the direction the curved side of
     /// a semi-cylindrical probe faces (across its axis).
     pub normal: DVec3,
+    /// What it reads.
     pub kind: ProbeKind,
 }
 
@@ -53,12 +56,18 @@ pub enum ProbeKind {
     /// Luminance and illuminance on a receiver facing `normal`.
     Point,
     /// The mean luminance within a cone of full angle `fov_deg` about `normal`.
-    LuminanceMeter { fov_deg: f64 },
+    LuminanceMeter {
+        /// The full angle of the cone, degrees.
+        fov_deg: f64,
+    },
     /// The mean illuminance on a small cylinder about the axis `normal`.
     Cylindrical,
     /// The mean illuminance on the curved side of a small half cylinder about the unit
     /// `axis`, facing `normal` (perpendicular to the axis).
-    SemiCylindrical { axis: DVec3 },
+    SemiCylindrical {
+        /// The unit axis of the half cylinder.
+        axis: DVec3,
+    },
 }
 
 impl ProbeKind {

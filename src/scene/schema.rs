@@ -144,16 +144,23 @@ pub struct RawEmission {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawCamera {
+    /// `name`: the camera's name.
     pub name: String,
+    /// `position`: the eye, m.
     #[serde(deserialize_with = "super::arrays::exact")]
     pub position: [f64; 3],
+    /// `look_at`: the point looked at, m.
     #[serde(deserialize_with = "super::arrays::exact")]
     pub look_at: [f64; 3],
+    /// `up`: the image's upward direction (default `[0, 1, 0]`).
     #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub up: Option<[f64; 3]>,
+    /// `fov_deg`: the vertical field of view, degrees (default 40).
     pub fov_deg: Option<f64>,
+    /// `resolution`: width and height, pixels (default `[512, 512]`).
     #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub resolution: Option<[i64; 2]>,
+    /// `samples`: primary rays per pixel (default 4).
     pub samples: Option<i64>,
 }
 

@@ -1,6 +1,6 @@
 //! Checks the raw tables of a case file and builds the runtime [`Scene`].
 //!
-//! Owns every rule of `design.md` §7 that serde cannot express for the scene as a whole
+//! Owns every rule of `docs/design.md` §7 that serde cannot express for the scene as a whole
 //! and its small tables (`[scene]`, `[discretization]`, `[solver]`, cameras); the
 //! large tables have their own files (`material.rs`, `surface.rs`, `grid.rs`,
 //! `luminaire.rs`, `probe.rs`). Each failure is a [`SceneError`] naming the table

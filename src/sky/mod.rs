@@ -1,4 +1,4 @@
-//! The sky as a boundary condition of the global illumination equation (`design.md` §1,
+//! The sky as a boundary condition of the global illumination equation (`docs/design.md` §1,
 //! `docs/daylight.md`): luminance arriving from a direction `l` that leaves the scene is the
 //! sky's `L_sky(l)` above the horizon and the ground's below it.
 //!
@@ -38,6 +38,7 @@ use std::f64::consts::PI;
 /// A sky of known luminance: distribution, sun, scale and ground.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Sky {
+    /// The relative luminance distribution (a CIE sky).
     pub distribution: Distribution,
     /// Unit world direction towards the sun (it may be below the horizon).
     pub sun: DVec3,

@@ -14,10 +14,15 @@ use std::f64::consts::FRAC_PI_2;
 /// The gradation and indicatrix parameters `a, b, c, d, e` of one standard general sky.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Parameters {
+    /// Gradation parameter `a`.
     pub a: f64,
+    /// Gradation parameter `b`.
     pub b: f64,
+    /// Indicatrix parameter `c`.
     pub c: f64,
+    /// Indicatrix parameter `d`.
     pub d: f64,
+    /// Indicatrix parameter `e`.
     pub e: f64,
 }
 

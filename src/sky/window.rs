@@ -28,6 +28,7 @@ pub const MAX_DEPTH: u32 = 8;
 /// An opening: a parallelogram (or triangle) in the surfaces, glazed or not.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Opening {
+    /// The opening's polygon, m.
     pub polygon: ConvexPolygon,
     /// The glass over it, if any: the outside is seen times `τ(θ)`.
     pub glazing: Option<Glazing>,

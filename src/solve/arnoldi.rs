@@ -1,4 +1,4 @@
-//! The eigenvalues of largest magnitude of `K` and their eigenvectors (`design.md` §4, the
+//! The eigenvalues of largest magnitude of `K` and their eigenvectors (`docs/design.md` §4, the
 //! spectrum that sets every iteration's rate), by thick-restart Arnoldi, matrix-free
 //! through [`LinOp`] so that it runs on the factored and the hierarchical kernel alike.
 //!
@@ -43,7 +43,9 @@ impl ArnoldiParams {
 /// An eigenvalue `λ = re + i·im` and its eigenvector `x = vector_re + i·vector_im`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Eigenpair {
+    /// Real part of the eigenvalue.
     pub re: f64,
+    /// Imaginary part of the eigenvalue.
     pub im: f64,
     /// Real part of the eigenvector, scaled so that `max |x_i| = 1` at a real positive entry.
     pub vector_re: Vec<f64>,
@@ -54,6 +56,7 @@ pub struct Eigenpair {
 }
 
 impl Eigenpair {
+    /// `|λ|`.
     pub fn magnitude(&self) -> f64 {
         self.re.hypot(self.im)
     }
@@ -62,23 +65,40 @@ impl Eigenpair {
 /// The leading part of the spectrum, largest magnitude first.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Spectrum {
+    /// The eigenpairs found, largest magnitude first.
     pub pairs: Vec<Eigenpair>,
+    /// Thick restarts of the Arnoldi basis.
     pub restarts: usize,
     /// Products with `K`.
     pub applications: usize,
     /// Whether every wanted pair met the tolerance.
     pub converged: bool,
+    /// Tolerance on `‖K x − θ x‖` relative to `|θ₁|`.
     pub tolerance: f64,
+    /// Wall time, s.
     pub seconds: f64,
 }
 
 /// Why no spectrum was computed.
 #[derive(Debug, Error, PartialEq)]
 pub enum ArnoldiError {
+    /// More eigenvalues asked for than `K` has, or none.
     #[error("--spectrum N asks for 1 to {dim} eigenvalues (the unknowns of K), got {count}")]
-    Count { count: usize, dim: usize },
+    Count {
+        /// Eigenvalues asked for.
+        count: usize,
+        /// Unknowns of `K`.
+        dim: usize,
+    },
+    /// The dense eigen-decomposition of the Arnoldi matrix failed.
     #[error("the dense eigen-decomposition of the {m}×{m} Arnoldi matrix failed: {why}")]
-    Dense { m: usize, why: String },
+    Dense {
+        /// Size of the Arnoldi matrix.
+        m: usize,
+        /// What failed.
+        why: String,
+    },
+    /// The operator produced a NaN or infinite value.
     #[error("the operator gave a non-finite value: K has NaN or infinite entries")]
     NotFinite,
 }

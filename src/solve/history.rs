@@ -7,6 +7,8 @@ use super::outcome::{SolveError, SolveInfo, norm};
 use super::range::OutOfRange;
 use std::time::Instant;
 
+/// The record of one solve: the relative residual, the kernel applications and the time
+/// of every iterate.
 pub struct History {
     method: &'static str,
     start: Instant,
@@ -54,6 +56,7 @@ impl History {
         Ok(relative_residual)
     }
 
+    /// The last recorded relative residual (NaN before the first).
     pub fn last(&self) -> f64 {
         self.residuals.last().copied().unwrap_or(f64::NAN)
     }
@@ -67,6 +70,7 @@ impl History {
         (h[h.len() - 1] / h[h.len() - 1 - window]).powf(1.0 / window as f64)
     }
 
+    /// The record as the solve's [`SolveInfo`], `iterations` being the iterations it took.
     pub fn finish(self, iterations: usize) -> SolveInfo {
         SolveInfo {
             method: self.method,

@@ -1,4 +1,4 @@
-//! The one operator trait every solver takes (`design.md` §4): `y = A x` on a flat vector.
+//! The one operator trait every solver takes (`docs/design.md` §4): `y = A x` on a flat vector.
 //! The solvers own it (as in faer); the kernel's operators are adapted here, so the kernel
 //! floor knows nothing of solvers.
 
@@ -7,7 +7,9 @@ use crate::kernel::{Explicit, Factored};
 
 /// A square linear operator `y = A x`.
 pub trait LinOp: Sync {
+    /// Number of unknowns (rows and columns of `A`).
     fn dim(&self) -> usize;
+    /// `y = A x`; `x` and `y` have length [`LinOp::dim`].
     fn apply(&self, x: &[f64], y: &mut [f64]);
 }
 

@@ -6,18 +6,21 @@ use super::range::OutOfRange;
 use super::{bicgstab, direct, direct_sparse, gauss_seidel, gmres, southwell, successive_approximation};
 use crate::kernel::{Explicit, Factored, Kernel};
 
-/// A method of `design.md` §4.
+/// A method of `docs/design.md` §4.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Method {
     /// Successive approximation (reflection orders).
     Neumann,
+    /// Gauss–Seidel sweeps on the explicit kernel.
     GaussSeidel,
     /// Progressive refinement, one-cell case only.
     Southwell,
     /// Restarted GMRES(m).
     Gmres {
+        /// Restart length `m`.
         restart: usize,
     },
+    /// BiCGSTAB.
     Bicgstab,
     /// LU of `I − K`: dense up to `direct::DENSE_MAX` unknowns, sparse beyond.
     Direct,
@@ -47,6 +50,7 @@ impl Method {
         format!("{}, gmres:M", names.join(", "))
     }
 
+    /// The method of a name of `--method` (`neumann`, …, `gmres:M`); `None` if unknown.
     pub fn parse(name: &str) -> Option<Method> {
         if let Some((_, method)) = BY_NAME.iter().find(|(n, _)| *n == name) {
             return Some(*method);
@@ -83,6 +87,7 @@ pub struct System<'a> {
     /// The weight of each unknown for Southwell's choice of shooter: the patch areas of a
     /// one-cell (radiosity) system; empty where Southwell does not apply.
     pub areas: &'a [f64],
+    /// The source term `L0`, cd/m².
     pub l0: &'a [f64],
 }
 

@@ -1,4 +1,4 @@
-//! Solvers of `(I − K) x = L0` (`design.md` §4): parameters in, info or a typed error out.
+//! Solvers of `(I − K) x = L0` (`docs/design.md` §4): parameters in, info or a typed error out.
 //!
 //! Every method reports the same relative residual `‖L0 + Kx − x‖₂ / ‖L0‖₂` for every
 //! iterate, the number of kernel applications and the wall time, so methods compare fairly.

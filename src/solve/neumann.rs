@@ -1,5 +1,5 @@
 //! Successive approximation `x_{n+1} = L0 + K x_n`, `x_0 = L0`: the reflection-order
-//! (Neumann) expansion, `x_n = Σ_{m≤n} K^m L0` (`design.md` §4).
+//! (Neumann) expansion, `x_n = Σ_{m≤n} K^m L0` (`docs/design.md` §4).
 //!
 //! Divergence is detected from the residual ratio: for `ρ(K) ≥ 1` it tends to a value
 //! `≥ 1` instead of `ρ(K) < 1`, and the method stops with a clear error rather than loop.

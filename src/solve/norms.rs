@@ -1,4 +1,4 @@
-//! Norms of the kernel and of `I − K` (`design.md` §4): `‖K‖₁`, `‖K‖∞`, `‖K‖_F` exactly
+//! Norms of the kernel and of `I − K` (`docs/design.md` §4): `‖K‖₁`, `‖K‖∞`, `‖K‖_F` exactly
 //! from the explicit matrix; `‖K‖₂` by power iteration on `KᵀK`; the spectral radius
 //! `ρ(K)` (the Perron root, `K ≥ 0`) by power iteration on `K + I` (the shift keeps the
 //! Perron root strictly dominant even when `K` is periodic, as between two plates), each
@@ -13,10 +13,15 @@ use crate::kernel::{Explicit, spmv};
 /// Norms of `K` and what they predict.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Norms {
+    /// `‖K‖₁`, the largest column sum of `|K|`.
     pub one: f64,
+    /// `‖K‖∞`, the largest row sum of `|K|`.
     pub infinity: f64,
+    /// `‖K‖_F`, the square root of the sum of squares.
     pub frobenius: f64,
+    /// `‖K‖₂`, by power iteration on `KᵀK`.
     pub two: PowerEstimate,
+    /// The spectral radius `ρ(K)`, by power iteration on `K + I`.
     pub spectral_radius: PowerEstimate,
     /// `cond∞(I − K)`; NaN when `ρ(K) ≥ 1` or the solve failed.
     pub condition_infinity: f64,
@@ -25,8 +30,11 @@ pub struct Norms {
 /// A value from power iteration and whether its convergence check passed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PowerEstimate {
+    /// The estimated value.
     pub value: f64,
+    /// Power iterations spent.
     pub iterations: usize,
+    /// Whether the relative change per iteration fell below the tolerance.
     pub converged: bool,
 }
 
@@ -35,6 +43,7 @@ const POWER_TOLERANCE: f64 = 1e-12;
 const POWER_MAX: usize = 20_000;
 
 impl Norms {
+    /// Every norm of the explicit kernel `k`, and `cond∞(I − K)` by one GMRES solve.
     pub fn of(k: &Explicit) -> Norms {
         let m = &k.0;
         let n = m.rows();

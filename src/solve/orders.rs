@@ -1,4 +1,4 @@
-//! The reflection-order record (`design.md` §4): the norms of the order terms `K^n L0`
+//! The reflection-order record (`docs/design.md` §4): the norms of the order terms `K^n L0`
 //! and the partial sums `Σ_{m≤n} K^m L0` after chosen orders (the lecture's pictures after
 //! 1, 8 and 64 reflections).
 

@@ -1,4 +1,4 @@
-//! The one shape of every solver (`design.md` §4): the stopping rule in, what the solve
+//! The one shape of every solver (`docs/design.md` §4): the stopping rule in, what the solve
 //! did or why it failed out, and the vector helpers the methods share.
 
 use super::range::OutOfRange;
@@ -34,6 +34,7 @@ impl Default for SolveParams {
 /// What a successful solve did.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SolveInfo {
+    /// The method's name, as printed.
     pub method: &'static str,
     /// Iterations until the returned iterate met the tolerance.
     pub iterations: usize,
@@ -45,10 +46,12 @@ pub struct SolveInfo {
     pub application_history: Vec<usize>,
     /// Seconds since the start when each residual was recorded.
     pub time_history: Vec<f64>,
+    /// Wall time of the solve, s.
     pub seconds: f64,
 }
 
 impl SolveInfo {
+    /// The relative residual of the returned iterate (NaN if none was recorded).
     pub fn residual(&self) -> f64 {
         self.residual_history.last().copied().unwrap_or(f64::NAN)
     }
@@ -57,37 +60,88 @@ impl SolveInfo {
 /// Why a solve failed.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SolveError {
+    /// The source term is zero: nothing to solve.
     #[error("nothing emits light: the source term L0 is zero, so the solution is zero")]
     NoSource,
+    /// Successive approximation stopped converging: `ρ(K) ≥ 1`.
     #[error(
         "successive approximation diverges: the residual stopped shrinking (ratio {ratio:.9} per \
          iteration after {iterations} iterations, residual {residual:.3e}), so the spectral radius \
          of K is at least 1. A closed scene whose reflectances are all 1 has no finite solution; \
          lower a reflectance or open the scene"
     )]
-    Diverges { ratio: f64, iterations: usize, residual: f64 },
+    Diverges {
+        /// Mean residual ratio per iteration.
+        ratio: f64,
+        /// Iterations done.
+        iterations: usize,
+        /// The last relative residual.
+        residual: f64,
+    },
+    /// The iteration limit was reached before the tolerance.
     #[error(
         "no convergence after {iterations} iterations: residual {residual:.3e} (tolerance \
          {tolerance:.1e}), shrinking by {ratio:.6} per iteration; about {needed} more iterations \
          would be needed (raise max_iterations or the tolerance)"
     )]
-    NoConvergence { iterations: usize, residual: f64, tolerance: f64, ratio: f64, needed: f64 },
+    NoConvergence {
+        /// Iterations done.
+        iterations: usize,
+        /// The last relative residual.
+        residual: f64,
+        /// The tolerance asked for.
+        tolerance: f64,
+        /// Mean residual ratio per iteration.
+        ratio: f64,
+        /// Iterations still needed at that ratio.
+        needed: f64,
+    },
+    /// GMRES gained less than 0.1 % over a restart cycle.
     #[error(
         "{method} stagnated: the residual stayed at {residual:.3e} over the last restart cycle \
          ({iterations} iterations); raise the restart length or use the direct solver"
     )]
-    Stagnation { method: &'static str, iterations: usize, residual: f64 },
+    Stagnation {
+        /// The method's name.
+        method: &'static str,
+        /// Iterations done.
+        iterations: usize,
+        /// The relative residual it stayed at.
+        residual: f64,
+    },
+    /// A method broke down: BiCGSTAB's recurrence (a vanishing denominator) or a sparse LU.
     #[error("{method} broke down after {iterations} iterations ({why}); use GMRES or the direct solver")]
-    Breakdown { method: &'static str, iterations: usize, why: &'static str },
+    Breakdown {
+        /// The method's name.
+        method: &'static str,
+        /// Iterations done.
+        iterations: usize,
+        /// What failed.
+        why: &'static str,
+    },
+    /// A direct solver's factors would exceed the memory limit, or its matrix could not be built.
     #[error("{0}")]
     TooLarge(String),
+    /// The solution is over `1e10` times the emission (or the LU met a zero pivot): `I − K`
+    /// is singular.
     #[error(
         "{method} returned a solution {growth:.1e} times larger than the emission: I − K is singular \
          or nearly so (spectral radius ≥ 1, e.g. a closed scene whose reflectances are all 1)"
     )]
-    Singular { method: &'static str, growth: f64 },
+    Singular {
+        /// The method's name.
+        method: &'static str,
+        /// `‖x‖/‖L0‖` (infinite for a zero pivot).
+        growth: f64,
+    },
+    /// The method cannot run on this system.
     #[error("{method} needs {needs}")]
-    Unsupported { method: &'static str, needs: &'static str },
+    Unsupported {
+        /// The method's name.
+        method: &'static str,
+        /// What it needs.
+        needs: &'static str,
+    },
     /// An overflow or NaN in the iterate, or a source term whose norm overflows.
     #[error("{0}")]
     OutOfRange(Box<OutOfRange>),

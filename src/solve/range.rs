@@ -8,6 +8,7 @@ use std::fmt;
 /// Where a solve met a value it cannot carry.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OutOfRange {
+    /// The method's name.
     pub method: &'static str,
     /// The iteration at which it appeared; `None` before the first (the source term).
     pub iteration: Option<usize>,
@@ -18,6 +19,7 @@ pub struct OutOfRange {
     pub size: f64,
     /// The first unknown that is not finite, else the largest in magnitude.
     pub unknown: usize,
+    /// The unknown's value.
     pub value: f64,
     /// The unknown's patch, surface and cell, when the caller knows them.
     pub place: Option<String>,

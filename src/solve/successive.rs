@@ -1,4 +1,4 @@
-//! Successive right-hand sides against one kernel (`design.md` §4): `x_j = (I − K)⁻¹ b_j`
+//! Successive right-hand sides against one kernel (`docs/design.md` §4): `x_j = (I − K)⁻¹ b_j`
 //! for a sequence of sources `b_j` (the groups of a case's light scenes), each solve started
 //! from the best combination of the solutions already known when that combination is
 //! nearly the solution — the projection of Fischer, "Projection techniques for iterative
@@ -40,6 +40,7 @@ pub struct Projection {
 /// One solve of [`Projection::solve`].
 #[derive(Debug, Clone)]
 pub struct Successive {
+    /// The solution `x = (I − K)⁻¹ b`.
     pub x: Vec<f64>,
     /// The correction's solve; its residuals are relative to `‖b‖`.
     pub info: SolveInfo,

@@ -1,4 +1,4 @@
-//! The study of angular bases (`design.md` §4, kernel factorization): one case solved in
+//! The study of angular bases (`docs/design.md` §4, kernel factorization): one case solved in
 //! the full cell basis and in several factored bases (hemispherical harmonics, truncated
 //! SVD), each with its error against the full angular solution, its unknowns, the memory
 //! of its assembled operator, its time and its residual in the full system.
@@ -14,11 +14,15 @@ use std::time::Instant;
 
 /// One line of the study.
 pub struct BasisRow {
+    /// The basis, as `--bases` names it (`full`, `sh:L`, `svd:R`).
     pub name: String,
+    /// Unknowns of the solved system.
     pub unknowns: usize,
     /// Bytes of the assembled operator (the explicit `B·G` or `Φᵀ G Ψ`).
     pub memory: f64,
+    /// Wall time of the solve, s.
     pub seconds: f64,
+    /// Iterations of the solve.
     pub iterations: usize,
     /// Relative L² error of the field.
     pub error: f64,
@@ -30,7 +34,9 @@ pub struct BasisRow {
 
 /// The model of a case and one row per basis (`None`: the full cell basis).
 pub struct BasisStudy {
+    /// The case's model, shared by every row.
     pub model: Model,
+    /// One row per basis, in the order asked.
     pub rows: Vec<BasisRow>,
 }
 

@@ -3,7 +3,7 @@
 //! assembled when the case's fingerprint matches the stored one; a change of a part that
 //! `G` depends on (geometry, discretization, visibility, version, the materials of a
 //! hierarchical kernel) is refused naming it; a change of the reflectances or the
-//! luminaires only rebuilds `B`, `D` and `L0` around the stored `G` (`design.md` §3).
+//! luminaires only rebuilds `B`, `D` and `L0` around the stored `G` (`docs/design.md` §3).
 //! The hierarchical kernel is neither saved nor reused (its links live on a tree of
 //! elements refined along the solved field; the reason is in the docs).
 
@@ -19,23 +19,33 @@ use thiserror::Error;
 /// Why a kernel could not be saved or reused.
 #[derive(Debug, Error)]
 pub enum KernelError {
+    /// The kernel file could not be read or written.
     #[error(transparent)]
     Io(#[from] IoError),
+    /// The stored kernel was made for another case: parts `G` depends on changed.
     #[error(
         "{} was assembled for another case: {} changed; G depends on it, so the kernel is not reused \
          (assemble it again with `ugo solve CASE --save-kernel`)",
         path.display(),
         changes.iter().map(Change::to_string).collect::<Vec<_>>().join(", ")
     )]
-    Mismatch { path: PathBuf, changes: Vec<Change> },
+    Mismatch {
+        /// The kernel file.
+        path: PathBuf,
+        /// The parts that changed.
+        changes: Vec<Change>,
+    },
+    /// The hierarchical kernel is neither saved nor reused.
     #[error(
         "the hierarchical kernel (the case's kernel, chosen by size, or --kernel) is neither saved nor \
          reused: its links join elements of a tree refined along the solved field and the luminaires' light, \
          which a kernel file does not hold; use the uniform kernel (--kernel uniform) to save or reuse G"
     )]
     Hierarchical,
+    /// The stored `G` does not fit the case's mesh.
     #[error(transparent)]
     Mesh(#[from] NotThisMesh),
+    /// The model around the stored kernel could not be built.
     #[error(transparent)]
     Model(#[from] ModelError),
 }
@@ -52,6 +62,7 @@ pub struct KernelRecord {
 /// A kernel read from a file instead of assembled.
 #[derive(Debug, Clone)]
 pub struct Loaded {
+    /// The kernel file.
     pub path: PathBuf,
     /// The parts that changed but only rebuild `B`, `D` or `L0` (`G` reused).
     pub rebuilt: Vec<Change>,

@@ -1,4 +1,4 @@
-//! Light scenes by superposition (`design.md` §1: `L = (I − K)⁻¹ L0` is linear in the
+//! Light scenes by superposition (`docs/design.md` §1: `L = (I − K)⁻¹ L0` is linear in the
 //! sources). Each group of sources (`[[luminaire]]` and `[[surface]]` `group` keys) is solved
 //! alone against the case's one kernel, every solve started from the solutions already
 //! known (`solve::Projection`, the case's own field first); every `[[light_scene]]` is then
@@ -26,7 +26,9 @@ use std::path::Path;
 /// How the groups are solved.
 #[derive(Debug, Clone, Copy)]
 pub struct GroupSolves {
+    /// The method of every group's solve.
     pub method: Method,
+    /// Its stopping rule.
     pub params: SolveParams,
     /// Start each solve from the known solutions (else cold, to measure what that saves).
     pub warm: bool,

@@ -1,4 +1,4 @@
-//! Pipelines that return values (`design.md` §6, the study floor): a stored solution made
+//! Pipelines that return values (`docs/design.md` §6, the study floor): a stored solution made
 //! ready to look at, the solve of a case with every method asked for, its light scenes by
 //! superposition, the study of angular bases, the convergence rates a spectrum predicts,
 //! and the agreement with Monte Carlo references. The command line only parses its

@@ -1,6 +1,6 @@
 //! A probe in the near field of a patch (issue 14; `docs/hierarchy.md`, "The floor probe at
 //! the short block's foot"): a probe's reading gathers every patch's luminance, constant
-//! over the patch (`readout::gather`, `design.md` §5), with the exact factor of each. From a
+//! over the patch (`readout::gather`, `docs/design.md` §5), with the exact factor of each. From a
 //! distance `d` below [`NEAR`] of the patch's size `D` the probe sees mostly the part of
 //! the patch nearest to it, while the value it reads is the patch's mean. Where the light
 //! on the patch varies (at a contact, along a shadow) that is an error of several per cent:

@@ -1,4 +1,4 @@
-//! The solve of a case (`design.md` §4, §6), as `ugo solve`, `norms` and `compare` run it:
+//! The solve of a case (`docs/design.md` §4, §6), as `ugo solve`, `norms` and `compare` run it:
 //! the model, every method asked for on `x = L0 + K x` (in the full cell basis or a
 //! factored angular one), the reference run, and every readout of its field: patch
 //! illuminance, energy balance, probes, grids, reflection orders, norms, the leading
@@ -31,9 +31,11 @@ use thiserror::Error;
 pub struct Job {
     /// Methods to run; empty means the case's `[solver] method`.
     pub methods: Vec<Method>,
+    /// The stopping rule and memory limit of every run.
     pub params: SolveParams,
     /// Reflection orders whose partial sums are recorded (`None`: 1, 8, 64 with `neumann`).
     pub orders: Option<Vec<usize>>,
+    /// Compute the norms of `K` (`ugo norms`, `--norms`).
     pub norms: bool,
     /// The eigenvalues of largest magnitude of `K` to compute, with their eigenvectors.
     pub spectrum: Option<usize>,
@@ -70,25 +72,34 @@ impl Default for Job {
 /// Why a solve gave no field.
 #[derive(Debug, Error)]
 pub enum StudyError {
+    /// The explicit product or a direct solver's factors would exceed the memory limit.
     #[error(transparent)]
     TooLarge(#[from] TooLarge),
+    /// The model could not be built.
     #[error(transparent)]
     Model(#[from] ModelError),
+    /// The kernel file could not be reused.
     #[error(transparent)]
     Kernel(#[from] KernelError),
+    /// The angular basis does not fit the direction set.
     #[error(transparent)]
     Basis(#[from] BasisError),
+    /// A solve failed.
     #[error(transparent)]
     Solve(#[from] SolveError),
+    /// The spectrum could not be computed.
     #[error(transparent)]
     Spectrum(#[from] ArnoldiError),
+    /// Every method asked for failed; each with its error.
     #[error("every method failed: {}", .0.iter().map(|(m, e)| format!("{}: {e}", m.name())).collect::<Vec<_>>().join("; "))]
     EveryMethodFailed(Vec<(Method, SolveError)>),
 }
 
 /// A solved case: the model, every run, the reference field and its readouts.
 pub struct Solved {
+    /// The model solved.
     pub model: Model,
+    /// Every method's run that succeeded.
     pub runs: Vec<Run>,
     /// The run whose field is kept: `direct` if it ran, else the smallest final residual.
     pub reference: usize,
@@ -100,18 +111,25 @@ pub struct Solved {
     pub x: Vec<f64>,
     /// The factored basis of a reduced solve, and the field's residual in the full system.
     pub basis: Option<(Factorization, f64)>,
+    /// The field as an `N × K × C` array, cd/m².
     pub field: Field,
     /// Illuminance of each patch, lx.
     pub illuminance: Vec<f64>,
+    /// The energy balance of the field, lm.
     pub energy: EnergyBalance,
+    /// The probes' readings.
     pub probes: Vec<ProbeReading>,
+    /// The grids' readings.
     pub grids: Vec<GridReading>,
     /// SC, ERC, IRC and DF at the probes and grids, under a `[sky]`.
     pub daylight: Option<DaylightReadings>,
+    /// The reflection orders, when recorded.
     pub orders: Option<OrderRecord>,
+    /// The norms of `K`, when asked for.
     pub norms: Option<Norms>,
     /// The leading eigenpairs of the full `K` (`--spectrum N`).
     pub spectrum: Option<Spectrum>,
+    /// The forward Monte Carlo reference, when asked for.
     pub monte_carlo: Option<MonteCarlo>,
     /// What the solved field says is probably not meant (`super::physics_warnings`).
     pub warnings: Vec<String>,
@@ -121,8 +139,11 @@ pub struct Solved {
 
 /// The forward Monte Carlo estimate of the same discretization, and each run's agreement.
 pub struct MonteCarlo {
+    /// Photons traced.
     pub photons: u64,
+    /// Wall time of the tracing, s.
     pub seconds: f64,
+    /// Each run's agreement with the estimate, in the order of the runs.
     pub agreements: Vec<Agreement>,
 }
 

@@ -1,4 +1,4 @@
-//! What the leading eigenvalues of `K` predict about convergence (`design.md` §4), against
+//! What the leading eigenvalues of `K` predict about convergence (`docs/design.md` §4), against
 //! what the runs measured: successive approximation contracts the error by `|λ₁| = ρ(K)`
 //! per product with `K`; GMRES on `I − K`, once its first steps have removed the isolated
 //! Perron eigenvalue `1 − λ₁`, by about `|λ₂|`, so the gap `|λ₂/λ₁|` is its gain per
@@ -20,6 +20,7 @@ const TAIL: f64 = 1e-2;
 /// One run's measured rate and the spectrum's prediction of it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Rate {
+    /// The run's method.
     pub method: Method,
     /// Geometric mean contraction of the residual per product with `K` over the tail of
     /// the history (from the first residual below 1e-2 to the last).

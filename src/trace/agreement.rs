@@ -17,14 +17,19 @@ pub struct Agreement {
     /// Values skipped because the reference has no sample there (`σ = 0`), and of those
     /// the ones where `x` differs from the reference.
     pub unsampled: usize,
+    /// Of the `unsampled`, those where `x` differs from the reference.
     pub unsampled_different: usize,
+    /// Mean of `z = (x − m)/σ` over the compared values.
     pub mean_z: f64,
+    /// Root mean square of `z`.
     pub rms_z: f64,
+    /// Largest `|z|`.
     pub max_abs_z: f64,
     /// Fraction of the compared values with `|z| > 3`.
     pub beyond_3: f64,
     /// `Σ|x − m| / Σ|m|` and `‖x − m‖₂/‖m‖₂` over every value.
     pub relative_l1: f64,
+    /// `‖x − m‖₂/‖m‖₂` over every value.
     pub relative_l2: f64,
     /// `‖σ‖₂/‖m‖₂`: the reference's noise on the scale of `relative_l2`.
     pub noise_l2: f64,

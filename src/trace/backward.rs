@@ -1,4 +1,4 @@
-//! Backward ray tracing (`design.md` §4): Monte Carlo path tracing from the eye with the
+//! Backward ray tracing (`docs/design.md` §4): Monte Carlo path tracing from the eye with the
 //! continuous materials, an unbiased estimate of `L = Σ_n Kⁿ L0` along a ray with no
 //! discretization at all.
 //!
@@ -49,6 +49,7 @@ impl Default for TraceOptions {
 /// Where a path starts.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Start {
+    /// The first ray's origin, m.
     pub origin: DVec3,
     /// Unit direction of the first ray.
     pub direction: DVec3,

@@ -16,12 +16,15 @@ use std::time::Instant;
 /// A traced image: per-pixel mean luminance and its standard error, cd/m².
 #[derive(Debug, Clone, PartialEq)]
 pub struct TracedImage {
+    /// Per-pixel mean luminance, cd/m².
     pub mean: Image,
+    /// Per-pixel standard error of the mean, cd/m².
     pub standard_error: Image,
     /// Paths (pixel samples) traced.
     pub paths: u64,
     /// Rays cast (scattering and shadow rays).
     pub rays: u64,
+    /// Wall time, s.
     pub seconds: f64,
 }
 

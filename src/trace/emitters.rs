@@ -1,4 +1,4 @@
-//! The light sources of the estimators: the source term `L0` of `design.md` §1 as things
+//! The light sources of the estimators: the source term `L0` of `docs/design.md` §1 as things
 //! to sample. Every emitting patch is an area emitter of Lambertian luminance `L0`
 //! (cd/m², from `mesh.emission`, which already turned a surface's flux into luminance)
 //! and flux `Φ = π L0 A` (lm).
@@ -31,7 +31,9 @@ pub struct Incoming {
 /// A photon leaving an emitter.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Departure {
+    /// The point it leaves from, m.
     pub origin: DVec3,
+    /// Its unit direction.
     pub direction: DVec3,
     /// The face it leaves from (ignored by its first ray).
     pub face: u32,
@@ -76,6 +78,7 @@ impl Emitters {
         self.total
     }
 
+    /// True when no patch emits.
     pub fn is_empty(&self) -> bool {
         self.list.is_empty()
     }

@@ -1,4 +1,4 @@
-//! Forward ray tracing (`design.md` §4): Monte Carlo light tracing from the emitters into
+//! Forward ray tracing (`docs/design.md` §4): Monte Carlo light tracing from the emitters into
 //! the `(patch, direction cell)` bins, a view-independent estimate of the discrete field.
 //!
 //! Photons leave the emitters chosen by flux, each carrying `Φ/P` lm, from a uniform
@@ -40,14 +40,17 @@ pub struct FieldEstimate {
     pub luminance_error: Vec<f64>,
     /// Incident illuminance of every patch, lx.
     pub illuminance: Vec<f64>,
+    /// Its standard error, lx.
     pub illuminance_error: Vec<f64>,
     /// Total flux leaving the surfaces other than by emission (reflected and transmitted),
     /// lm, and its standard error: one number whose error includes every correlation
     /// between the bins (a photon deposits into many).
     pub scattered: (f64, f64),
+    /// Photons traced.
     pub photons: u64,
     /// Rays cast.
     pub rays: u64,
+    /// Wall time, s.
     pub seconds: f64,
 }
 

@@ -34,6 +34,8 @@ pub struct Luminaires {
 }
 
 impl Luminaires {
+    /// The luminaires of `scene` placed, with the bounding sphere of `mesh` where parallel
+    /// light enters.
     pub fn of(scene: &Scene, mesh: &Mesh) -> Luminaires {
         let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
         let (lo, hi) = mesh

@@ -1,4 +1,4 @@
-//! Monte Carlo references for the global illumination equation (`design.md` §4): the
+//! Monte Carlo references for the global illumination equation (`docs/design.md` §4): the
 //! lecture's two directions of ray tracing, both summing the reflection-order expansion
 //! `L = Σ_n Kⁿ L0` with the continuous materials and sharing no discretization with the
 //! linear system.

@@ -55,6 +55,7 @@ impl Openings {
         Openings { list, chance }
     }
 
+    /// True when the scene has no openings.
     pub fn is_empty(&self) -> bool {
         self.list.is_empty()
     }

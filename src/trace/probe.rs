@@ -1,4 +1,4 @@
-//! Backward estimates of the `[[probe]]` readings (`design.md` §7), with the meaning of
+//! Backward estimates of the `[[probe]]` readings (`docs/design.md` §7), with the meaning of
 //! `crate::readout::probe`: the luminance (cd/m²) a meter at the point aimed along the normal reads
 //! (on a surface: that surface's outgoing luminance along its normal), and the illuminance
 //! (lx) on a receiver at the point facing the normal, `E = ∫ L_in cosθ dω`.
@@ -25,6 +25,7 @@ use std::f64::consts::{FRAC_1_PI, PI};
 /// A probe's readings with their standard errors.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ProbeEstimate {
+    /// The probe's name.
     pub name: String,
     /// Luminance and its standard error, cd/m².
     pub luminance: (f64, f64),

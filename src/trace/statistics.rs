@@ -6,11 +6,14 @@
 /// Running sums of one estimated quantity.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Tally {
+    /// `Σ X`.
     pub sum: f64,
+    /// `Σ X²`.
     pub squares: f64,
 }
 
 impl Tally {
+    /// Adds the sample `x`.
     #[inline]
     pub fn add(&mut self, x: f64) {
         self.sum += x;

@@ -1,7 +1,8 @@
 //! The scene as the Monte Carlo estimators see it: the patches only as geometry (where a
 //! ray lands, which side it meets, or whether it leaves the scene), the continuous material
-//! of every patch, the emitters, the luminaires, the openings and the ray caster. Nothing here is discretized in direction: `design.md` §4's
-//! references share no kernel, block or cell with the linear system.
+//! of every patch, the emitters, the luminaires, the openings and the ray caster. Nothing
+//! here is discretized in direction: the references of `docs/design.md` §4 share no
+//! kernel, block or cell with the linear system.
 
 use super::emitters::Emitters;
 use super::luminaires::Luminaires;
@@ -19,6 +20,7 @@ use glam::DVec3;
 pub struct Landing {
     /// The patch facing the ray (its normal against the ray's direction).
     pub patch: usize,
+    /// The point hit, m.
     pub point: DVec3,
 }
 
@@ -35,10 +37,15 @@ pub enum Cast {
 
 /// Geometry, materials and emitters of a scene, ready for tracing.
 pub struct World {
+    /// The patches, as geometry.
     pub mesh: Mesh,
+    /// The ray caster over their faces.
     pub visibility: Visibility,
+    /// The emitting patches, chosen by flux.
     pub emitters: Emitters,
+    /// The luminaires, sampled exactly.
     pub luminaires: Luminaires,
+    /// The openings through which the sky is seen.
     pub openings: Openings,
     /// The material model of every patch.
     materials: Vec<MaterialModel>,

@@ -1,4 +1,4 @@
-//! Closure (`design.md` §3b, "Balance"): the share of a patch's hemisphere that the fronts
+//! Closure (`docs/design.md` §3b, "Balance"): the share of a patch's hemisphere that the fronts
 //! of surfaces cover, seen from its exposed part. It is `Σ_j F_ij` of the exact kernel,
 //! the row sum every `G` must carry and, by reciprocity, the share of the patch's light
 //! that lands on surfaces: 1 in a closed room, less where the patch sees an opening (or
@@ -21,7 +21,9 @@ pub const DIRECTIONS: usize = STRATA * STRATA;
 /// The rays of one patch's closure: how many were cast and how many met a front.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Closure {
+    /// Rays cast.
     pub cast: u32,
+    /// Rays that met the front of a surface.
     pub covered: u32,
 }
 

@@ -1,10 +1,11 @@
 //! Lambert's contour integral: the exact form factor from a point to a polygon.
 //!
 //! `F_{dA→P} = (1/2π) Σ_i γ_i n·(R_i × R_{i+1})/|R_i × R_{i+1}|` with `R_i` the unit
-//! vectors to the vertices and `γ_i` the angle between consecutive ones (`references.md`,
-//! configuration factors item 6). The polygon is first clipped to the half-space in front
-//! of the point, so patches partly below the point's horizon are handled exactly. This is
-//! the near-field-exact building block of `design.md` §3.
+//! vectors to the vertices and `γ_i` the angle between consecutive ones
+//! (`docs/references.md`, configuration factors item 6). The polygon is first clipped to
+//! the half-space in front of the point, so patches partly below the point's horizon are
+//! handled exactly. This is the near-field-exact building block of `docs/design.md` §3,
+//! equation (3.9).
 
 use crate::geometry::{ConvexPolygon, MAX_CLIPPED, Patch};
 use glam::DVec3;

@@ -1,4 +1,4 @@
-//! Exposed area (`design.md` §3, "Contacts"): the part of a patch that lies outside every
+//! Exposed area (`docs/design.md` §3, "Contacts"): the part of a patch that lies outside every
 //! solid. Furniture stands on floors and against walls; the part of a patch under a
 //! cabinet's foot print sees only the cabinet's inside, so its share of `G` (through the
 //! same stratified points, `occlusion::polygon_points`) is zero. The luminance a patch
@@ -26,6 +26,7 @@ pub struct Backs {
 }
 
 impl Backs {
+    /// The backs of the faces of `mesh` and its contact distance.
     pub fn of(mesh: &Mesh) -> Backs {
         let mut normal = vec![DVec3::ZERO; mesh.faces];
         for p in mesh.patches.iter().filter(|p| p.twin == NO_TWIN) {

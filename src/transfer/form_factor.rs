@@ -1,4 +1,4 @@
-//! Patch-to-patch form factors without occlusion (`design.md` §3), whole or split by
+//! Patch-to-patch form factors without occlusion (`docs/design.md` §3), whole or split by
 //! direction cells (`F_ij^{d,m}`).
 //!
 //! `A_s F_st = ∫_{A_s} F_{dA(x)→P_t} dA(x)`: the inner integral is exact (Lambert's
@@ -40,6 +40,7 @@ impl Default for Quadrature {
 /// How targets are split by direction cells.
 #[derive(Debug, Clone, Copy)]
 pub struct Binning<'a> {
+    /// The direction cells pieces are binned into.
     pub directions: &'a DirectionSet,
     /// A target piece is split while its angular size exceeds `kappa` cell sizes.
     pub kappa: f64,
@@ -48,6 +49,7 @@ pub struct Binning<'a> {
 }
 
 impl<'a> Binning<'a> {
+    /// The binning on `directions` with `kappa = 0.5`.
     pub fn new(directions: &'a DirectionSet) -> Self {
         let smallest = directions.cells().iter().map(|c| c.solid_angle).fold(f64::INFINITY, f64::min);
         Binning { directions, kappa: 0.5, cell_size: smallest.sqrt() }
@@ -60,7 +62,9 @@ const MAX_PIECE_DEPTH: u32 = 4;
 /// `A_s F_st` by the adaptive rule, and by the base rule (no refinement), m².
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PairIntegral {
+    /// By the adaptive rule, m².
     pub adaptive: f64,
+    /// By the base rule, m².
     pub base: f64,
 }
 

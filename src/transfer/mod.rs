@@ -1,4 +1,4 @@
-//! The transfer toolkit of `design.md` §3: how much light a point or a patch receives from
+//! The transfer toolkit of `docs/design.md` §3: how much light a point or a patch receives from
 //! a polygon. Exact point-to-polygon form factors (Lambert's contour integral), pair and
 //! point factors split by direction cells, and visibility fractions from rays between
 //! stratified points. The kernel's assembly, the luminaires' direct light, probes and

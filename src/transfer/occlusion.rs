@@ -1,5 +1,5 @@
 //! Visibility fractions `V_ij` between two patches: the mean of the pupil function `Θ`
-//! over segments joining stratified points of the two patches (`design.md` §3).
+//! over segments joining stratified points of the two patches (`docs/design.md` §3).
 //!
 //! The same points serve both directions, so `V_ij = V_ji` and occlusion keeps the
 //! kernel reciprocal. Four segments (point `k` to point `k` of the other patch) are tested
@@ -59,7 +59,9 @@ pub fn visible_fraction(
 /// A visibility fraction and the rays it took.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct VisibleFraction {
+    /// The visible fraction, 0 to 1.
     pub fraction: f64,
+    /// Rays cast.
     pub rays: usize,
 }
 
@@ -69,8 +71,11 @@ pub struct VisibleFraction {
 /// that is not `uniform` is cut further by the callers (probes, luminaires).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PieceVisibility {
+    /// Stratified points that see.
     pub seen: usize,
+    /// True when the points and the corners all agree.
     pub uniform: bool,
+    /// Rays cast.
     pub rays: usize,
 }
 

@@ -10,8 +10,11 @@ use glam::DVec3;
 /// a one-sided surface) and the point hit, on the face's plane.
 #[derive(Debug, Clone, Copy)]
 pub struct Landing {
+    /// The face hit.
     pub face: u32,
+    /// Its patch facing back along the ray (none on the back of a one-sided surface).
     pub facing: Option<usize>,
+    /// The point hit, on the face's plane, m.
     pub point: DVec3,
 }
 
@@ -22,6 +25,7 @@ pub struct Faces {
 }
 
 impl Faces {
+    /// The patches of every face of `mesh` (one, or two for a two-sided face).
     pub fn of(mesh: &Mesh) -> Faces {
         let mut patches = vec![[NO_TWIN; 2]; mesh.faces];
         for (i, p) in mesh.patches.iter().enumerate() {

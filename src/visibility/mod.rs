@@ -1,4 +1,4 @@
-//! Visibility: the pupil function `Θ(r, r')` of `design.md` §1 and closest hits, through `obvhs`.
+//! Visibility: the pupil function `Θ(r, r')` of `docs/design.md` §1 and closest hits, through `obvhs`.
 //!
 //! Owns the only conversion of the scene to `f32` (obvhs works in `Vec3A`), the
 //! triangle → face map (and, in `faces.rs`, the face → patch map), and the
@@ -37,16 +37,23 @@ use std::time::Duration;
 /// Which hierarchy and layout the queries run on.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct VisibilityOptions {
+    /// The compressed wide BVH (CwBvh) rather than the binary BVH2.
     pub wide: bool,
+    /// Build over the scene turned by a fixed rotation (axis-aligned faces then not aligned with
+    /// the boxes).
     pub rotate: bool,
+    /// obvhs's build quality.
     pub preset: BuildPreset,
 }
 
 /// The obvhs build presets that were measured.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum BuildPreset {
+    /// obvhs's fastest build.
     Fast,
+    /// obvhs's medium build.
     Medium,
+    /// obvhs's slowest, best-quality build (the default).
     Slow,
 }
 
@@ -75,6 +82,7 @@ pub struct Visibility {
 /// The first face hit by a ray.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Hit {
+    /// The face hit.
     pub face: u32,
     /// Distance along the (unit) direction, m.
     pub distance: f64,
@@ -96,10 +104,12 @@ pub const NEAREST_BOX: f64 = 1e-4;
 pub const NO_BLOCKER: Blocker = Blocker(None);
 
 impl Visibility {
+    /// The default structure (CwBvh, slow build, no rotation) over the faces of `mesh`.
     pub fn build(mesh: &Mesh) -> Visibility {
         Visibility::build_with(mesh, VisibilityOptions::default())
     }
 
+    /// The structure over the faces of `mesh` with the layout of `options`.
     pub fn build_with(mesh: &Mesh, options: VisibilityOptions) -> Visibility {
         let rotation = if options.rotate {
             DMat3::from_euler(glam::EulerRot::XYZ, 0.5123, 0.7331, 0.3179)

@@ -1,6 +1,6 @@
 //! 5.7, diffuse reflections with internal obstructions: a sunlit wall (ρ = 0.6) seen past
 //! a black obstruction. `E/(E_v ρ)` in %, the corrected values (the printed Table 19 was
-//! computed with the wrong geometry; references.md).
+//! computed with the wrong geometry; docs/references.md).
 
 use super::{Solved, compare, solved, solved_hierarchically};
 use ugo::readout::illuminance::patch_illuminance;

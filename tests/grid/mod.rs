@@ -12,7 +12,7 @@ use ugo::readout::grid::GridReading;
 use ugo::scene::Grid;
 
 /// `E = π L F` at `(x, 0, z)` facing up under the rectangle `[x0, x1] × [z0, z1]` at
-/// height `h` (superposition of the four corner factors, references.md item 1).
+/// height `h` (superposition of the four corner factors, docs/references.md item 1).
 fn exact(l: f64, (x0, x1): (f64, f64), (z0, z1): (f64, f64), h: f64, x: f64, z: f64) -> f64 {
     let f = |a: f64, b: f64| a.signum() * b.signum() * corner_factor(a.abs(), b.abs(), h);
     let factor = f(x1 - x, z1 - z) - f(x0 - x, z1 - z) - f(x1 - x, z0 - z) + f(x0 - x, z0 - z);

@@ -1,4 +1,4 @@
-//! Form factors against closed forms (`references.md`, configuration factors).
+//! Form factors against closed forms (`docs/references.md`, configuration factors).
 
 use glam::DVec3;
 use ugo::geometry::{ConvexPolygon, Patch};

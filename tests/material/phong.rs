@@ -6,7 +6,7 @@ use super::quadrature::{REFERENCE, phong_albedo, ring_average};
 use super::{block, matrix, rings};
 use ugo::material::MaterialModel;
 
-/// Albedo of the lobe with `k_s = 1` (references.md, "Glossy/specular cases"), 3 decimals.
+/// Albedo of the lobe with `k_s = 1` (docs/references.md, "Glossy and specular cases"), 3 decimals.
 const TABLE: [(f64, [f64; 4]); 3] =
     [(1.0, [1.000, 0.881, 0.609, 0.410]), (10.0, [1.000, 0.866, 0.505, 0.228]), (100.0, [1.000, 0.866, 0.500, 0.175])];
 

@@ -1,4 +1,4 @@
-//! Case files that parse but break a rule of `design.md` §7: each error names the
+//! Case files that parse but break a rule of `docs/design.md` §7: each error names the
 //! table and the key.
 
 use super::{BASE, CASE, LAMP, assert_error, lit, parse, rejected};

@@ -39,7 +39,7 @@ fn the_uniform_sky_gives_pi_l_times_the_configuration_factor_exactly() {
         DVec3::new(2.5, 3.0, 2.5),
         DVec3::new(1.5, 3.0, 2.5),
     );
-    // CIE 171 5.9, type 5, 1 × 1 m opening: the wall points A–F (`references.md`).
+    // CIE 171 5.9, type 5, 1 × 1 m opening: the wall points A–F (`docs/references.md`).
     for (i, reference) in [1.04, 2.39, 2.59, 2.20, 1.70, 1.27].into_iter().enumerate() {
         let (p, n) = (DVec3::new(2.0, 2.75 - 0.5 * i as f64, 0.0), DVec3::Z);
         let (sc, erc) = components(&uniform, &window, p, n);

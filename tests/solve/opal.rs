@@ -3,7 +3,7 @@
 //! above it, and probes on and 1 m above the panel.
 //!
 //! Closed form: the panel's underside receives `E(x) = π L F(x)`, `F` the
-//! point-to-parallel-rectangle factor (four corner rectangles, references.md item 1), and
+//! point-to-parallel-rectangle factor (four corner rectangles, docs/references.md item 1), and
 //! its top glows with `L_b(x) = τ E(x)/π = τ L F(x)`. A receiver 1 m above the centre
 //! facing down gets `E_p = ∫ L_b(x) cosθ cosθ_p / r² dA = ∫ L_b(x) / r⁴ dA` (distance 1),
 //! computed here by 4-point Gauss–Legendre on a 16 × 16 grid (an 8 × 8 grid agrees to 2.5e-12).

@@ -106,7 +106,7 @@ pub fn arriving(model: &Model, x: &[f64]) -> Vec<f64> {
 }
 
 /// Differential element to a parallel rectangle `a × b` at distance `c` with a corner
-/// over the element (references.md, configuration factors item 1).
+/// over the element (docs/references.md, configuration factors item 1).
 pub fn corner_factor(a: f64, b: f64, c: f64) -> f64 {
     let (x, y) = (a / c, b / c);
     let (sx, sy) = ((1.0 + x * x).sqrt(), (1.0 + y * y).sqrt());

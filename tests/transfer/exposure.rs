@@ -72,7 +72,7 @@ fn furnace_errors(scene: &Scene, model: &Model, x: &[f64]) -> (f64, f64) {
 /// `lo` m above the floor, through the uniform kernel (`patch` m patches) or the
 /// hierarchical one (roots `patch`, leaves down to 0.125 m). The block's edges are on the
 /// patches' grid, so every patch is exposed or hidden (a patch that straddles a contact
-/// line is `design.md` §3's "Contacts" error).
+/// line is `docs/design.md` §3's "Contacts" error).
 fn furnace_with_block(lo: f64, link_tolerance: Option<f64>, patch: f64) -> (f64, f64) {
     let mut scene = with_block([0.0, lo, 0.0], [0.5, 0.25 + lo, 0.375], patch);
     if let Some(link_tolerance) = link_tolerance {
@@ -105,7 +105,7 @@ fn the_white_furnace_holds_around_a_block_standing_on_the_floor() {
 }
 
 /// Patches half under the block (off the grid of 0.25 m patches) read the furnace's 5 to
-/// within the error of straddling the block's side (`design.md` §3, "Contacts"); spread
+/// within the error of straddling the block's side (`docs/design.md` §3, "Contacts"); spread
 /// over their whole area they would read about `1 + 0.8 · 5/2 = 3`.
 #[test]
 fn patches_half_under_a_block_read_the_furnace_within_the_contact_error() {

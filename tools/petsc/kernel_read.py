@@ -6,7 +6,7 @@ Two sources, one result (`Kernel`): the `/kernel` group of a solution file writt
 
 From `/kernel`, every rank reads with h5py only the rows of `G` it needs: the rows of the
 patches it owns and of their twins behind two-sided transmitting surfaces, and forms its
-rows of `K = B·G` (design.md §3) with scipy:
+rows of `K = B·G` (docs/design.md §3) with scipy:
 
     K[i·C + k, :] = Σ_d ρ̄_m(i)(k,d) G[i·C + d, :] + Σ_d τ̄_m(i)(k,d) G[twin(i)·C + d, :]
 

@@ -2,7 +2,7 @@
 
 * `eigenvalues`: the `count` eigenvalues of largest magnitude of `K` by Krylov–Schur
   (SLEPc's EPS, non-Hermitian), their residuals `‖K v − λ v‖₂/|λ|`, and the eigenvector
-  of the largest: `ρ(K)` is its modulus (`design.md` §4; ugo's `norms` finds it by power
+  of the largest: `ρ(K)` is its modulus (`docs/design.md` §4; ugo's `norms` finds it by power
   iteration on `K + I`, src/solve/norms.rs). `K ≥ 0`, so the dominant eigenvalue is the
   real Perron root and its eigenvector can be taken non-negative; it is scaled to
   `max |v| = 1` and signed so.

@@ -1,4 +1,4 @@
-"""The operator `A = I − K` of `(I − K) L = L0` (design.md §2), in two forms:
+"""The operator `A = I − K` of `(I − K) L = L0` (docs/design.md §2), in two forms:
 
 * assembled (`assembled`): an AIJ matrix, from this rank's rows of `K` in scipy CSR; what
   the direct solver (an LU factorization) needs;

@@ -1,4 +1,4 @@
-//! The hierarchical kernel's part of `ugo bench` (issue 14, point 6; `design.md` §3b): the
+//! The hierarchical kernel's part of `ugo bench` (issue 14, point 6; `docs/design.md` §3b): the
 //! case built and solved at a sequence of leaf sizes (`patch_size`) under the same roots and
 //! link tolerance, and per size the leaves N, links, nodes, occlusion rays, time, memory
 //! and links/N², with the growth exponents of links and of time against N fitted by least

@@ -1,6 +1,6 @@
 //! Exports of a saved kernel for other programs (issue 15, `docs/kernel-file.md`): the
 //! explicit `K = B·G`, the system matrix `I − K` and the source term `L0` of
-//! `x = L0 + K x` (`design.md` §3), as Matrix Market text (`mtx.rs`, scipy's `mmread`) or
+//! `x = L0 + K x` (`docs/design.md` §3), as Matrix Market text (`mtx.rs`, scipy's `mmread`) or
 //! PETSc binary files (`petsc.rs`, PETSc's `MatLoad`/`VecLoad`). `K` is formed from the
 //! stored `G` and blocks exactly as ugo's own explicit product.
 

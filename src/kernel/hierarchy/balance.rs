@@ -1,4 +1,4 @@
-//! Closure balancing of the hierarchy's `G` (`design.md` §3b, "Balance"): `G' = R G S`
+//! Closure balancing of the hierarchy's `G` (`docs/design.md` §3b, "Balance"): `G' = R G S`
 //! with one receiving factor `r_i` and one sending factor `s_i` per leaf, such that every
 //! leaf's row carries its closure `t_i` (`Σ_{j,m,d} G'[(i,d),(j,m)] = t_i`: the white
 //! furnace holds on every leaf) and every leaf's light lands on the scene's exposed

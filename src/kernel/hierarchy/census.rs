@@ -1,4 +1,4 @@
-//! What the hierarchy is made of (`design.md` §3b, for output and reports): each leaf's
+//! What the hierarchy is made of (`docs/design.md` §3b, for output and reports): each leaf's
 //! level and root, and the links counted by the level they sit at and by their visibility.
 
 use super::kernel::Hierarchy;
@@ -18,6 +18,7 @@ pub struct Census {
     pub cluster_links: usize,
     /// Links by visibility: every tested segment free, or some blocked.
     pub clear: usize,
+    /// Links with some tested segment blocked.
     pub partial: usize,
 }
 

@@ -1,4 +1,4 @@
-//! The cluster tree above the input elements (`design.md` §3b, "Clusters"; Smits, Arvo &
+//! The cluster tree above the input elements (`docs/design.md` §3b, "Clusters"; Smits, Arvo &
 //! Greenberg 1994, Sillion 1995): a binary tree built by median splits of the elements'
 //! bounding-box centres along the longest axis, so that the initial linking starts from one
 //! self-link of the top cluster instead of all k² pairs of the k input elements.

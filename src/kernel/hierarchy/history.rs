@@ -1,4 +1,4 @@
-//! The refinement history (`design.md` §3b, "Oracle": solve, refine where the current
+//! The refinement history (`docs/design.md` §3b, "Oracle": solve, refine where the current
 //! field says it matters, solve again): one record per pass.
 
 use crate::kernel::BalanceReport;

@@ -1,4 +1,4 @@
-//! Refinement iterated with the solve (`design.md` §3b, "Oracle": solve, refine where the
+//! Refinement iterated with the solve (`docs/design.md` §3b, "Oracle": solve, refine where the
 //! current field says it matters, solve again). The source term and the solver are the
 //! caller's (the kernel knows neither luminaires nor methods): `source` gives `L0` on the
 //! current leaves (and may split leaves first, e.g. along the luminaires' shadows), `solve`
@@ -21,8 +21,11 @@ pub type SourceTerm<'a, E> = dyn FnMut(&mut Hierarchy) -> Result<Vec<f64>, E> + 
 
 /// The field on the final leaves, the final operator and its source term.
 pub struct Iterated {
+    /// The solved field on the final leaves, `x[leaf·K + k]`, cd/m².
     pub x: Vec<f64>,
+    /// The operator on the final leaves.
     pub operator: Operator,
+    /// The source term on the final leaves, cd/m².
     pub l0: Vec<f64>,
 }
 

@@ -1,4 +1,4 @@
-//! The hierarchical kernel (`design.md` §3b): the trees, the links that the oracle accepted,
+//! The hierarchical kernel (`docs/design.md` §3b): the trees, the links that the oracle accepted,
 //! and the passes that made them. `new` links from one self-link of the top cluster, with
 //! an ambient first guess of the field for brightness; `refine` refines again with a solved
 //! field; `operator` applies `K` on the current leaves; `leaf_mesh` and `source` give the
@@ -382,22 +382,27 @@ impl Hierarchy {
         out
     }
 
+    /// The element trees and the cluster tree above them.
     pub fn tree(&self) -> &Tree {
         &self.tree
     }
 
+    /// The links the oracle accepted.
     pub fn links(&self) -> &[Link] {
         &self.links
     }
 
+    /// One record per refinement pass.
     pub fn history(&self) -> &[Pass] {
         &self.history
     }
 
+    /// The options the hierarchy was built with.
     pub fn options(&self) -> &Options {
         &self.options
     }
 
+    /// The direction cells of every leaf.
     pub fn directions(&self) -> &DirectionSet {
         &self.directions
     }

@@ -1,4 +1,4 @@
-//! Links (`design.md` §3b, "Links"): a receiver node `p` gathers `F_pq x̄_q` from a source
+//! Links (`docs/design.md` §3b, "Links"): a receiver node `p` gathers `F_pq x̄_q` from a source
 //! node `q`. Between two elements `F_pq = (1/A_p) ∫_p F_{dA→q} dA` by the exact contour
 //! integral and adaptive quadrature (`form_factor::pair_integral`), times the visible
 //! fraction; for `K > 1` split by cells `(d, m)` like `G[(i,d),(j,m)]`: the mean of the
@@ -25,7 +25,9 @@ pub type Piece = (u16, u16, f64);
 /// A link from source `source` to receiver `receiver` (node ids).
 #[derive(Debug, Clone)]
 pub struct Link {
+    /// The node that gathers, `p`.
     pub receiver: u32,
+    /// The node gathered from, `q`.
     pub source: u32,
     /// `F_pq` with visibility, dimensionless.
     pub factor: f64,
@@ -34,6 +36,7 @@ pub struct Link {
     /// What the oracle multiplies by `ρ_p L_q`: the variation of the factor over the two
     /// nodes, its largest value where visibility is partial, a bound for a cluster.
     pub bound: f64,
+    /// Whether the tested segments were all free, some blocked, or none tested.
     pub sight: Sight,
     /// The factor by cells; empty means the one piece `(0, 0, factor)` (`K = 1`).
     pub pieces: Vec<Piece>,

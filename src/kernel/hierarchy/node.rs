@@ -1,4 +1,4 @@
-//! One node of the hierarchy (`design.md` §3b, "Element trees" and "Clusters"): a cluster
+//! One node of the hierarchy (`docs/design.md` §3b, "Element trees" and "Clusters"): a cluster
 //! of input elements or a planar element of one surface, with what the oracle and the
 //! operator need to know about it (area, bounding box, largest albedo, emission).
 
@@ -16,16 +16,26 @@ pub enum Kind {
     Cluster,
     /// A planar piece of one surface; `level` 0 is an input (root) element. A two-sided
     /// element's back is its `twin`; the two split together.
-    Element { patch: Patch, twin: u32, level: u8 },
+    Element {
+        /// The element's polygon, frame, material and exposed area, as a patch.
+        patch: Patch,
+        /// The node of its back-to-back twin (`NONE` for a one-sided element).
+        twin: u32,
+        /// Its depth below its root element (0 for a root).
+        level: u8,
+    },
 }
 
 /// A node: its kind, its place in the tree and its summaries.
 #[derive(Debug, Clone, Copy)]
 pub struct Node {
+    /// Cluster or element.
     pub kind: Kind,
+    /// Index of the parent node (`NONE` at the top).
     pub parent: u32,
     /// Children are `Tree::children[first_child..first_child + child_count]`.
     pub first_child: u32,
+    /// Number of children (0 for a leaf).
     pub child_count: u32,
     /// Area of the elements under it, m² (both sides of a two-sided element count).
     pub area: f64,
@@ -33,6 +43,7 @@ pub struct Node {
     pub exposed: f64,
     /// Axis-aligned bounding box, m.
     pub lo: DVec3,
+    /// Upper corner of the bounding box, m (`lo` the lower).
     pub hi: DVec3,
     /// Largest fraction of arriving light any element under it reflects or transmits.
     pub albedo: f64,
@@ -93,6 +104,7 @@ impl Node {
         }
     }
 
+    /// True when the node has no children.
     pub fn is_leaf(&self) -> bool {
         self.child_count == 0
     }
@@ -102,6 +114,7 @@ impl Node {
         (self.hi - self.lo).length()
     }
 
+    /// Centre of the bounding box, m.
     pub fn centre(&self) -> DVec3 {
         0.5 * (self.lo + self.hi)
     }

@@ -1,4 +1,4 @@
-//! `K x` on the leaf unknowns (`design.md` §3b, "Apply K x"): pull (leaf values up the trees
+//! `K x` on the leaf unknowns (`docs/design.md` §3b, "Apply K x"): pull (leaf values up the trees
 //! as area averages; into a cluster as the cell-weighted mean `Σ_m (μ_m/π) x_m`, which means
 //! the same in every frame), gather over the links at every level (`z_p += F_pq x̄_q`, by
 //! cells), push (each node's gathered light to all its leaves, each leaf with its own share,
@@ -139,10 +139,12 @@ impl Operator {
         &self.leaves
     }
 
+    /// Number of links gathered.
     pub fn links(&self) -> usize {
         self.links
     }
 
+    /// Direction cells per leaf, `K`.
     pub fn cells(&self) -> usize {
         self.k
     }

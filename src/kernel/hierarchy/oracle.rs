@@ -1,4 +1,4 @@
-//! The refinement oracle (`design.md` §3b, "Oracle"; Hanrahan, Salzman & Aupperle 1991):
+//! The refinement oracle (`docs/design.md` §3b, "Oracle"; Hanrahan, Salzman & Aupperle 1991):
 //! a link is refined while `ρ_p · ΔF_pq · L_q > ε`, brightness-weighted. `ΔF` bounds how
 //! much the factor varies over the two nodes: the spread of the exact point-to-polygon
 //! factors at sample points of each end (centroid, the four stratified occlusion points and
@@ -9,7 +9,7 @@
 //! whose longest edge is already the smallest element size.
 //!
 //! Before any of that, an element that straddles a contact (partly inside a solid: its
-//! exposed area strictly between 0 and its area, `design.md` §3 "Contacts") is split
+//! exposed area strictly between 0 and its area, `docs/design.md` §3 "Contacts") is split
 //! whatever the oracle says, down to the smallest size. Its four sample points stand for
 //! its exposed part only on average: when all four lie inside the solid, every link from
 //! them is occluded and would be dropped, and the exposed part would receive (and send)
@@ -79,6 +79,7 @@ impl Oracle {
         if bound.is_finite() { albedo * bound * brightness } else { f64::INFINITY }
     }
 
+    /// True when a link with the estimated `error` must be refined (above `epsilon`).
     pub fn refines(&self, error: f64) -> bool {
         error > self.epsilon
     }

@@ -1,4 +1,4 @@
-//! The push of `design.md` §3b ("each node's gathered value added to all its leaves"),
+//! The push of `docs/design.md` §3b ("each node's gathered value added to all its leaves"),
 //! weighted by each leaf's own view of the node's sources. A link `(a, q)` holds the factor
 //! averaged over `a`; a leaf `i` of `a` sees `q` more or less than that average (a leaf by a
 //! corner sees the adjacent walls more). Each leaf takes the share `w_ia` of the light

@@ -1,4 +1,4 @@
-//! Refinement of links (`design.md` §3b, "Links" and "Oracle"): candidate pairs of nodes are
+//! Refinement of links (`docs/design.md` §3b, "Links" and "Oracle"): candidate pairs of nodes are
 //! evaluated in parallel (dropped when they cannot exchange light, kept as links when the
 //! oracle accepts them, or marked for a split), the marked nodes are split, and their
 //! children's pairs are the next round's candidates, until no candidate is left. A candidate
@@ -21,11 +21,15 @@ use rayon::prelude::*;
 
 /// What stays fixed during refinement.
 pub struct Settings<'a> {
+    /// The ray caster over the roots' faces.
     pub visibility: &'a Visibility,
     /// The backs of the roots' faces, for the exposed area of new elements.
     pub backs: &'a Backs,
+    /// The refinement rule.
     pub oracle: Oracle,
+    /// The quadrature of element factors.
     pub quadrature: &'a Quadrature,
+    /// The direction cells factors are split by.
     pub directions: &'a DirectionSet,
 }
 

@@ -1,4 +1,4 @@
-//! Visibility between two elements (`design.md` §3b, "Links": the factor times a visibility
+//! Visibility between two elements (`docs/design.md` §3b, "Links": the factor times a visibility
 //! fraction): the 4 × 4 segments of `occlusion::visible_fraction` (4 first, all 16 when
 //! they disagree), classified as clear, partial or occluded. Blocked segments do not prove
 //! that nothing passes between two large elements, so the oracle refines occluded links

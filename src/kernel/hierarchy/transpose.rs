@@ -1,4 +1,4 @@
-//! `Gᵀ y` on the leaf unknowns: the hierarchy's transport (`operator.rs`, `design.md` §3b
+//! `Gᵀ y` on the leaf unknowns: the hierarchy's transport (`operator.rs`, `docs/design.md` §3b
 //! "Apply K x") run backwards, balancing factors included (`balance.rs`: `(R G S)ᵀ =
 //! S Gᵀ R`). Push becomes a sum over each leaf's ancestors, gather a
 //! scatter over the links from receiver to source, pull a sweep down the trees (into a

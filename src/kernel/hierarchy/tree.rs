@@ -1,4 +1,4 @@
-//! The element trees and the cluster tree above them, in one arena (`design.md` §3b,
+//! The element trees and the cluster tree above them, in one arena (`docs/design.md` §3b,
 //! "Element trees"): every input element (a patch of the coarse mesh) is a root; an element
 //! splits lazily into the 4 pieces of `ConvexPolygon::split` (quads by their edges,
 //! triangles by their edge midpoints), the two sides of a two-sided element together.
@@ -46,18 +46,22 @@ impl Tree {
         self.top
     }
 
+    /// The node `id`.
     pub fn node(&self, id: u32) -> &Node {
         &self.nodes[id as usize]
     }
 
+    /// Number of nodes, clusters and elements.
     pub fn len(&self) -> usize {
         self.nodes.len()
     }
 
+    /// True when the tree has no nodes.
     pub fn is_empty(&self) -> bool {
         self.nodes.is_empty()
     }
 
+    /// The children of node `id` (empty for a leaf).
     pub fn children(&self, id: u32) -> &[u32] {
         let n = &self.nodes[id as usize];
         &self.children[n.first_child as usize..(n.first_child + n.child_count) as usize]
