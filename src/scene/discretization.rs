@@ -95,7 +95,9 @@ impl KernelKind {
 pub enum KernelAsked {
     /// Chosen by size.
     Auto,
+    /// [`KernelKind::Uniform`].
     Uniform,
+    /// [`KernelKind::Hierarchical`] with the `root_size` and `link_tolerance` asked for.
     Hierarchical,
 }
 
@@ -125,14 +127,18 @@ impl KernelAsked {
 /// or a flag of the command line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Origin {
+    /// The key, as the case spells it.
     Key(&'static str),
+    /// The flag, e.g. `--patch-size`.
     Flag(&'static str),
 }
 
 /// A value and where it was asked for.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Given<T> {
+    /// The value as given.
     pub value: T,
+    /// Where it was given.
     pub origin: Origin,
 }
 
@@ -152,13 +158,19 @@ impl<T> Given<T> {
 /// the other, then to its default.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Asked {
+    /// The finest patches' edge, m.
     pub patch_size: Option<Given<f64>>,
+    /// The hierarchy's roots' edge, m.
     pub root_size: Option<Given<f64>>,
+    /// The hierarchy's error allowed per link (dimensionless).
     pub link_tolerance: Option<Given<f64>>,
+    /// The kernel, or the choice by size.
     pub kernel: Option<Given<KernelAsked>>,
+    /// Direction cells of every patch.
     pub directions: Option<Scheme>,
+    /// Precision of the stored uniform `G`.
     pub precision: Option<Precision>,
-    /// GiB.
+    /// Largest kernel memory allowed, GiB.
     pub memory_limit: Option<Given<f64>>,
 }
 
