@@ -2,7 +2,8 @@
 //! docs/kernel-file.md): the options, and the summary line of a reused kernel.
 
 use std::path::PathBuf;
-use ugo::study::{self, KernelRecord};
+use ugo::io::KernelRecord;
+use ugo::study;
 
 /// Saving and reusing the assembled kernel.
 #[derive(clap::Args, Clone, Debug)]

@@ -1,26 +1,12 @@
-//! The light scenes of a solved case (`[[light_scene]]`): its groups solved after the
-//! case's own field (`study::solve_light_scenes`, with the reference run's method and the
-//! stopping rule of the solve), a line per group and a table per light scene, and each
+//! The light scenes of a solved case (`[[light_scene]]`, solved by `study::solve_case`
+//! after the case's own field): a line per group and a table per light scene, and each
 //! light scene's files beside the output: `<stem>-<scene>-probes.csv` and
 //! `<stem>-<scene>-<grid>.{csv,png}`.
 
-use super::Bars;
 use anyhow::Result;
 use std::path::{Path, PathBuf};
 use ugo::io::{LightScenes, write_probes_csv};
 use ugo::readout::grid::GridReading;
-use ugo::scene::Scene;
-use ugo::solve::SolveParams;
-use ugo::study::{GroupSolves, Solved, solve_light_scenes};
-
-/// The case's light scenes on the model of `s`, when it has any.
-pub fn solve(scene: &Scene, s: &mut Solved, params: &SolveParams) -> Result<Option<LightScenes>> {
-    if scene.lighting.scenes.is_empty() {
-        return Ok(None);
-    }
-    let how = GroupSolves { method: s.runs[s.reference].method, params: *params, warm: true };
-    Ok(Some(solve_light_scenes(scene, &mut s.model, &s.x, &how, &Bars::default())?))
-}
 
 /// Prints the groups' solves and every light scene, and writes its CSV files and, with
 /// `write_grids` (the solve's: grids and the stem of their files), its grids' files.

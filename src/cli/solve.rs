@@ -8,15 +8,16 @@ use anyhow::{Context, Result, bail};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 use ugo::io::{
-    BasisRecord, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
+    MonteCarlo, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
 };
 use ugo::luminaire::{Light, Source};
 use ugo::model::HierarchyRecord;
 use ugo::readout::grid::GridReading;
+use ugo::scene::Scene;
 use ugo::solve::norms::Norms;
 use ugo::solve::orders::OrderRecord;
 use ugo::solve::{Method, SolveParams};
-use ugo::study::{self, MonteCarlo, solve_case};
+use ugo::study::{self, solve_case};
 
 /// Most partial sums `--orders` keeps (each is a copy of the field).
 const MAX_ORDERS_KEPT: usize = 64;
@@ -67,7 +68,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     }
     let study = study::Job { params, ..job.run };
     let outputs: Vec<&Path> = std::iter::once(output.as_path()).chain(job.plot.as_deref()).collect();
-    let mut s = solve_case(&scene, &study, &Bars::default()).map_err(|e| super::stop::not_written(e, &outputs))?;
+    let s = solve_case(&scene, &study, &Bars::default()).map_err(|e| super::stop::not_written(e, &outputs))?;
     for (method, e) in &s.failures {
         eprintln!("ugo: {} failed: {e}", method.name());
     }
@@ -81,34 +82,8 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
             s.warnings.join("; ")
         );
     }
-    let light = super::light_scenes::solve(&scene, &mut s, &params)?;
-    let basis = s.basis.as_ref().map(|(factors, full_residual)| BasisRecord {
-        factors,
-        coefficients: &s.coefficients,
-        full_residual: *full_residual,
-    });
-    let solution = Solution {
-        scene: &scene,
-        model: &s.model,
-        field: &s.field,
-        illuminance: &s.illuminance,
-        params: &params,
-        info: &s.runs[s.reference].info,
-        energy: &s.energy,
-        probes: &s.probes,
-        grids: &s.grids,
-        daylight: s.daylight.as_ref(),
-        orders: s.orders.as_ref(),
-        runs: &s.runs,
-        norms: s.norms.as_ref(),
-        spectrum: s.spectrum.as_ref(),
-        basis: basis.as_ref(),
-        warnings: &s.warnings,
-        kernel: s.kernel.save.as_ref(),
-        light_scenes: light.as_ref(),
-    };
-    write_solution(&output, &solution).with_context(|| format!("writing {}", output.display()))?;
-    summary(&solution, &output);
+    write_solution(&output, &scene, &s).with_context(|| format!("writing {}", output.display()))?;
+    summary(&scene, &s, &output);
     super::kernel::print_record(&s.kernel);
     let lamps = positions(&s.model.sources);
     write_grids(&s.grids, &output.with_extension("").display().to_string(), &lamps)?;
@@ -117,7 +92,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         write_probes_csv(&csv, &s.probes)?;
         println!("  probes             {}", csv.display());
     }
-    if let Some(light) = &light {
+    if let Some(light) = &s.light_scenes {
         super::light_scenes::report(light, &output, &|grids, stem| write_grids(grids, stem, &lamps))?;
     }
     if let Some(orders) = &s.orders {
@@ -166,11 +141,11 @@ fn print_hierarchy(assembly: f64, rays: usize, h: &HierarchyRecord) {
     }
 }
 
-fn summary(s: &Solution, output: &Path) {
-    let m = s.model;
+fn summary(scene: &Scene, s: &Solution, output: &Path) {
+    let m = &s.model;
     let st = &m.stats;
     let g = &m.kernel.g;
-    println!("ugo: {} ({})", s.scene.name, s.scene.path.display());
+    println!("ugo: {} ({})", scene.name, scene.path.display());
     println!("  patches N          {:>12}", m.mesh.len());
     println!("  direction cells K  {:>12}   ({})", m.kernel.cells(), m.kernel.directions.name());
     println!("  unknowns           {:>12}", g.rows());
@@ -190,7 +165,7 @@ fn summary(s: &Solution, output: &Path) {
         (None, None) => println!("  assembly           {assembly:>12.3} s   ({} occlusion rays)", st.rays),
     }
     println!("    of it direct light {:>8.3} s   (the sources' light on the patches: L0)", st.light_seconds);
-    let i = s.info;
+    let i = s.info();
     println!(
         "  solve              {:>12.3} s   ({}, {} iterations, residual {:.2e})",
         i.seconds,
@@ -198,16 +173,16 @@ fn summary(s: &Solution, output: &Path) {
         i.iterations,
         i.residual()
     );
-    if let Some(b) = s.basis {
+    if let Some((factors, full_residual)) = &s.basis {
         println!(
             "  basis              {:>12}   ({} coefficients per patch, rank {}; residual of the field in the full system {:.2e})",
-            b.factors.basis.name(),
-            b.factors.m,
-            b.factors.rank,
-            b.full_residual
+            factors.basis.name(),
+            factors.m,
+            factors.rank,
+            full_residual
         );
     }
-    let e = s.energy;
+    let e = &s.energy;
     if !m.sources.is_empty() {
         println!("  luminaires               emitted lm   on surfaces lm");
         for ((source, emitted), landed) in m.sources.iter().zip(&e.luminaire_emitted).zip(&m.direct.intercepted) {
@@ -223,12 +198,12 @@ fn summary(s: &Solution, output: &Path) {
     }
     if !s.probes.is_empty() {
         println!("  probes                   luminance cd/m²   illuminance lx   of it direct lx");
-        for p in s.probes {
+        for p in &s.probes {
             println!("    {:<22} {:>15.4} {:>16.4} {:>17.4}", p.name, p.luminance, p.illuminance, p.direct);
         }
     }
     if let Some(d) = s.daylight.as_ref() {
-        super::daylight::report(d, s.probes, s.grids);
+        super::daylight::report(d, &s.probes, &s.grids);
     }
     println!("  written            {}", output.display());
 }

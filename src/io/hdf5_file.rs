@@ -23,98 +23,32 @@
 use super::dataset::{dataset, strings, text_attr};
 use super::daylight_group::write_daylight;
 use super::readout_group::{write_grid, write_probes};
+use super::solution::Solution;
 use crate::basis::{Factorization, MaterialFactor};
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::luminaire::Light;
 use crate::luminaire::LuminaireKind;
-use crate::model::{Fingerprint, Model};
 use crate::photometry::Distribution;
-use crate::readout::daylight::DaylightReadings;
-use crate::readout::energy::EnergyBalance;
-use crate::readout::field::Field;
-use crate::readout::grid::GridReading;
 use crate::readout::illuminance::patch_illuminance;
-use crate::readout::probe::ProbeReading;
 use crate::scene::Scene;
+use crate::solve::SolveInfo;
 use crate::solve::norms::Norms;
 use crate::solve::orders::OrderRecord;
-use crate::solve::{Method, SolveInfo, SolveParams, Spectrum};
 use glam::DVec3;
 use ndarray::{Array1, Array2, Array3};
 use std::path::Path;
 
-/// Everything a solve produced.
-pub struct Solution<'a> {
-    /// The case solved.
-    pub scene: &'a Scene,
-    /// Its model: mesh, kernel, source term, luminaires.
-    pub model: &'a Model,
-    /// The solved field, cd/m².
-    pub field: &'a Field,
-    /// Incident illuminance of each patch, lx.
-    pub illuminance: &'a [f64],
-    /// The stopping rule of the solve.
-    pub params: &'a SolveParams,
-    /// What the reference run did.
-    pub info: &'a SolveInfo,
-    /// The energy balance, lm.
-    pub energy: &'a EnergyBalance,
-    /// The probes' readings.
-    pub probes: &'a [ProbeReading],
-    /// The grids' readings.
-    pub grids: &'a [GridReading],
-    /// The daylight readouts, under a `[sky]` (`/daylight`, `daylight_group.rs`).
-    pub daylight: Option<&'a DaylightReadings>,
-    /// The reflection-order record, when taken.
-    pub orders: Option<&'a OrderRecord>,
-    /// Every method run on the system (one for `solve`, several for `compare`).
-    pub runs: &'a [Run],
-    /// Norms of the kernel, when computed.
-    pub norms: Option<&'a Norms>,
-    /// The leading eigenpairs of `K`, when computed (`/spectrum`, `spectrum_file.rs`).
-    pub spectrum: Option<&'a Spectrum>,
-    /// The angular basis of a reduced solve, when one was used.
-    pub basis: Option<&'a BasisRecord<'a>>,
-    /// The physics warnings of the solve (`/warnings`, one string each, empty when none).
-    pub warnings: &'a [String],
-    /// Save the explicit kernel with this fingerprint in `/kernel` (`kernel_file.rs`).
-    pub kernel: Option<&'a Fingerprint>,
-    /// The fields of the case's light scenes and of their groups, when it has any.
-    pub light_scenes: Option<&'a super::LightScenes>,
+/// Writes the solution of `scene` to `path` (through `path.tmp`, renamed when complete).
+pub fn write_solution(path: &Path, scene: &Scene, solution: &Solution) -> Result<(), super::IoError> {
+    super::atomic(path, |tmp| write_to(tmp, scene, solution).map_err(|e| e.to_string()))
 }
 
-/// A solve in a factored angular basis: the factors and the coefficients solved for.
-pub struct BasisRecord<'a> {
-    /// The factors `Ψ`, `Φ` of every material.
-    pub factors: &'a Factorization,
-    /// `c[i·M + n]`; the field is `L0 + Ψ c`.
-    pub coefficients: &'a [f64],
-    /// `‖L0 + K x − x‖₂ / ‖L0‖₂` of the reconstructed field in the full system.
-    pub full_residual: f64,
-}
-
-/// One method's solve of the system, for comparison.
-#[derive(Debug, Clone)]
-pub struct Run {
-    /// The method run.
-    pub method: Method,
-    /// What its solve did.
-    pub info: SolveInfo,
-    /// Largest relative difference from the reference solution, `max |x − x_ref| / max |x_ref|`.
-    pub difference: f64,
-}
-
-/// Writes `solution` to `path` (through `path.tmp`, renamed when complete).
-pub fn write_solution(path: &Path, solution: &Solution) -> Result<(), super::IoError> {
-    super::atomic(path, |tmp| write_to(tmp, solution).map_err(|e| e.to_string()))
-}
-
-fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
+fn write_to(path: &Path, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     let file = hdf5::File::create(path)?;
-    write_mesh(&file.create_group("mesh")?, s.scene, &s.model.mesh)?;
+    write_mesh(&file.create_group("mesh")?, scene, &s.model.mesh)?;
     write_directions(&file.create_group("directions")?, &s.model.kernel.directions)?;
-    write_materials(&file.create_group("materials")?, s)?;
+    write_materials(&file.create_group("materials")?, scene, s)?;
 
     let field = file.create_group("field")?;
     dataset(&field, "luminance", &s.field.luminance)?;
@@ -128,26 +62,26 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
 
     strings(&file, "warnings", s.warnings.iter().map(String::as_str))?;
     let solver = file.create_group("solver")?;
-    write_history(&solver, s.info)?;
+    write_history(&solver, s.info())?;
     if s.runs.len() > 1 {
         let compare = file.create_group("compare")?;
-        for run in s.runs {
+        for run in &s.runs {
             let g = compare.create_group(&run.method.name())?;
             write_history(&g, &run.info)?;
             g.new_attr::<f64>().create("max_relative_difference")?.write_scalar(&run.difference)?;
             g.new_attr::<f64>().create("seconds")?.write_scalar(&run.info.seconds)?;
         }
     }
-    if let Some(orders) = s.orders {
+    if let Some(orders) = &s.orders {
         write_orders(&file.create_group("orders")?, orders, s.model.kernel.cells())?;
     }
-    if let Some(basis) = s.basis {
-        write_basis(&file.create_group("basis")?, basis)?;
+    if let Some((factors, full_residual)) = &s.basis {
+        write_basis(&file.create_group("basis")?, factors, &s.coefficients, *full_residual)?;
     }
-    if let Some(norms) = s.norms {
+    if let Some(norms) = &s.norms {
         write_norms(&file.create_group("norms")?, norms, s.params.tolerance)?;
     }
-    if let Some(spectrum) = s.spectrum {
+    if let Some(spectrum) = &s.spectrum {
         super::spectrum_file::write_spectrum(&file.create_group("spectrum")?, spectrum, s.model.kernel.cells())?;
     }
 
@@ -155,23 +89,23 @@ fn write_to(path: &Path, s: &Solution) -> hdf5::Result<()> {
     dataset(&energy, "surface_emitted", &Array1::from(s.energy.surface_emitted.clone()))?;
     dataset(&energy, "surface_absorbed", &Array1::from(s.energy.surface_absorbed.clone()))?;
 
-    write_probes(&file.create_group("probes")?, s.probes)?;
-    s.daylight.map(|d| write_daylight(&file.create_group("daylight")?, d, s.probes, s.grids)).transpose()?;
+    write_probes(&file.create_group("probes")?, &s.probes)?;
+    s.daylight.as_ref().map(|d| write_daylight(&file.create_group("daylight")?, d, &s.probes, &s.grids)).transpose()?;
     let grids = file.create_group("grids")?;
-    for grid in s.grids {
+    for grid in &s.grids {
         write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
     }
-    write_luminaires(&file.create_group("luminaires")?, s)?;
-    if let Some(light) = s.light_scenes {
-        super::light_scene_group::write_light_scenes(&file, s.scene, s.model, light)?;
+    write_luminaires(&file.create_group("luminaires")?, scene, s)?;
+    if let Some(light) = &s.light_scenes {
+        super::light_scene_group::write_light_scenes(&file, scene, &s.model, light)?;
     }
     if let Some(h) = &s.model.hierarchy {
         super::hierarchy_group::write_hierarchy(&file.create_group("hierarchy")?, h)?;
     }
-    if let Some(fingerprint) = s.kernel {
-        super::kernel_file::write_kernel(&file.create_group("kernel")?, s.model, fingerprint)?;
+    if let Some(fingerprint) = &s.kernel.save {
+        super::kernel_file::write_kernel(&file.create_group("kernel")?, &s.model, fingerprint)?;
     }
-    write_attributes(&file, s)?;
+    write_attributes(&file, scene, s)?;
     // Closed here, not dropped: the last metadata reaches the file now and its error counts.
     file.close()
 }
@@ -244,10 +178,10 @@ fn write_norms(g: &hdf5::Group, norms: &Norms, tolerance: f64) -> hdf5::Result<(
     Ok(())
 }
 
-fn write_materials(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
+fn write_materials(g: &hdf5::Group, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     let blocks = &s.model.kernel.blocks;
     let k = s.model.kernel.cells();
-    strings(g, "name", s.scene.materials.iter().map(|m| m.name.as_str()))?;
+    strings(g, "name", scene.materials.iter().map(|m| m.name.as_str()))?;
     let reflect = Array3::from_shape_fn((blocks.len(), k, k), |(m, a, b)| blocks[m].at(a, b));
     dataset(g, "reflection", &reflect)?;
     let transmit = Array3::from_shape_fn((blocks.len(), k, k), |(m, a, b)| blocks[m].transmit_at(a, b).unwrap_or(0.0));
@@ -255,11 +189,12 @@ fn write_materials(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
 }
 
 /// `/basis/{coefficients (N × M), psi, front, back (materials × K × M)}` and attributes.
-fn write_basis(g: &hdf5::Group, b: &BasisRecord) -> hdf5::Result<()> {
-    let f = b.factors;
+/// `coefficients` are `c[i·M + n]`, the field `L0 + Ψ c`; `full_residual` is
+/// `‖L0 + K x − x‖₂ / ‖L0‖₂` of the reconstructed field in the full system.
+fn write_basis(g: &hdf5::Group, f: &Factorization, coefficients: &[f64], full_residual: f64) -> hdf5::Result<()> {
     let (m, k, count) = (f.m, f.k, f.materials.len());
-    let n = b.coefficients.len() / m.max(1);
-    dataset(g, "coefficients", &Array2::from_shape_fn((n, m), |(i, c)| b.coefficients[i * m + c]))?;
+    let n = coefficients.len() / m.max(1);
+    dataset(g, "coefficients", &Array2::from_shape_fn((n, m), |(i, c)| coefficients[i * m + c]))?;
     let stack = |pick: fn(&MaterialFactor) -> Option<&Vec<f64>>| {
         Array3::from_shape_fn((count, k, m), |(a, r, c)| pick(&f.materials[a]).map_or(0.0, |v| v[r * m + c]))
     };
@@ -267,7 +202,7 @@ fn write_basis(g: &hdf5::Group, b: &BasisRecord) -> hdf5::Result<()> {
     dataset(g, "front", &stack(|x| Some(&x.front)))?;
     dataset(g, "back", &stack(|x| x.back.as_ref()))?;
     text_attr(g, "basis", &f.basis.name())?;
-    for (name, value) in [("m", m as f64), ("rank", f.rank as f64), ("full_residual", b.full_residual)] {
+    for (name, value) in [("m", m as f64), ("rank", f.rank as f64), ("full_residual", full_residual)] {
         g.new_attr::<f64>().create(name)?.write_scalar(&value)?;
     }
     Ok(())
@@ -302,11 +237,11 @@ pub(super) fn write_identity(
     text_attr(file, "units", "luminance cd/m2, illuminance lx, flux lm, lengths m")
 }
 
-fn write_luminaires(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
+fn write_luminaires(g: &hdf5::Group, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     let sources = &s.model.sources;
     let n = sources.len();
     strings(g, "name", sources.iter().map(|l| l.name.as_str()))?;
-    let kinds = s.scene.luminaires.iter().map(|l| match &l.kind {
+    let kinds = scene.luminaires.iter().map(|l| match &l.kind {
         LuminaireKind::Parallel { .. } => "parallel",
         LuminaireKind::Window { .. } => "window",
         LuminaireKind::Point(p) => match &p.distribution {
@@ -340,10 +275,10 @@ fn write_luminaires(g: &hdf5::Group, s: &Solution) -> hdf5::Result<()> {
     dataset(g, "on_surfaces", &Array1::from(s.model.direct.intercepted.clone()))
 }
 
-fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
-    let st = &s.model.stats;
-    write_identity(file, s.info.method, s.scene, &s.model.kernel.directions)?;
-    let d = &s.scene.discretization;
+fn write_attributes(file: &hdf5::File, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
+    let (st, info) = (&s.model.stats, s.info());
+    write_identity(file, info.method, scene, &s.model.kernel.directions)?;
+    let d = &scene.discretization;
     text_attr(file, "kernel", d.kernel.name())?;
     if let Some(chosen) = d.chosen_by_size {
         text_attr(file, "kernel_chosen_by_size", &chosen.to_string())?;
@@ -351,16 +286,16 @@ fn write_attributes(file: &hdf5::File, s: &Solution) -> hdf5::Result<()> {
     let numbers: [(&str, f64); 18] = [
         ("tolerance", s.params.tolerance),
         ("max_iterations", s.params.max_iterations as f64),
-        ("iterations", s.info.iterations as f64),
-        ("kernel_applications", s.info.applications as f64),
-        ("residual", s.info.residual()),
-        ("patch_size", s.scene.discretization.patch_size),
+        ("iterations", info.iterations as f64),
+        ("kernel_applications", info.applications as f64),
+        ("residual", info.residual()),
+        ("patch_size", d.patch_size),
         ("nonzeros", s.model.kernel.g.nnz() as f64),
         ("mesh_seconds", st.mesh_seconds),
         ("bvh_seconds", st.bvh_seconds),
         ("assembly_seconds", st.kernel_seconds),
         ("luminaire_seconds", st.light_seconds),
-        ("solve_seconds", s.info.seconds),
+        ("solve_seconds", info.seconds),
         ("balance_max_correction", st.balance.map_or(0.0, |b| b.max_correction)),
         ("flux_emitted", s.energy.emitted),
         ("flux_absorbed", s.energy.absorbed),

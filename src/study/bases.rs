@@ -3,7 +3,7 @@
 //! SVD), each with its error against the full angular solution, its unknowns, the memory
 //! of its assembled operator, its time and its residual in the full system.
 
-use super::solve::StudyError;
+use super::error::StudyError;
 use crate::basis::{Basis, Factorization, Reduced};
 use crate::kernel::Factored;
 use crate::model::Model;

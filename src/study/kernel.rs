@@ -7,7 +7,7 @@
 //! The hierarchical kernel is neither saved nor reused (its links live on a tree of
 //! elements refined along the solved field; the reason is in the docs).
 
-use crate::io::{IoError, StoredKernel, read_kernel};
+use crate::io::{IoError, KernelRecord, Loaded, StoredKernel, read_kernel};
 use crate::kernel::Transport;
 use crate::model::{Change, Fingerprint, Model, ModelError, NotThisMesh, Part, StoredParts};
 use crate::progress::Progress;
@@ -48,26 +48,6 @@ pub enum KernelError {
     /// The model around the stored kernel could not be built.
     #[error(transparent)]
     Model(#[from] ModelError),
-}
-
-/// Where the kernel of a solve came from, and what to save.
-#[derive(Debug, Clone, Default)]
-pub struct KernelRecord {
-    /// The case's fingerprint, stored in `/kernel` when the kernel is saved.
-    pub save: Option<Fingerprint>,
-    /// The kernel file `G` was read from, when it was.
-    pub loaded: Option<Loaded>,
-}
-
-/// A kernel read from a file instead of assembled.
-#[derive(Debug, Clone)]
-pub struct Loaded {
-    /// The kernel file.
-    pub path: PathBuf,
-    /// The parts that changed but only rebuild `B`, `D` or `L0` (`G` reused).
-    pub rebuilt: Vec<Change>,
-    /// Seconds spent reading the file.
-    pub seconds: f64,
 }
 
 /// The model of `scene`: assembled, or around the `G` of `kernel` when given; with the

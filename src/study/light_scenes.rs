@@ -7,7 +7,7 @@
 //! be. For the hierarchical kernel the hierarchy is the one refined under the case's own
 //! light (every group on at factor 1); each group is solved on it as it stands.
 
-use super::solve::StudyError;
+use super::error::StudyError;
 use crate::io::{GroupField, IoError, LightSceneField, LightScenes, StoredSolution};
 use crate::kernel::{Explicit, Factored};
 use crate::luminaire::Source;

@@ -5,6 +5,7 @@
 //! arguments, calls these and prints what they return.
 
 mod bases;
+mod error;
 mod kernel;
 mod light_scenes;
 mod near;
@@ -15,9 +16,10 @@ mod view;
 mod warnings;
 
 pub use bases::{BasisRow, BasisStudy, compare_bases};
-pub use kernel::{KernelError, KernelRecord, Loaded, model_with_kernel};
+pub use error::StudyError;
+pub use kernel::{KernelError, model_with_kernel};
 pub use light_scenes::{GroupSolves, dimmed, lit_light_scene, solve_light_scenes};
-pub use solve::{Job, MonteCarlo, Solved, StudyError, solve_case};
+pub use solve::{Job, solve_case};
 pub use spectrum::{Rate, chebyshev_rate, measured_rate, rates};
 pub use view::lit_scene;
 pub use warnings::physics_warnings;

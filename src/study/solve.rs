@@ -4,27 +4,26 @@
 //! illuminance, energy balance, probes, grids, reflection orders, norms, the leading
 //! eigenpairs of `K` (`solve/arnoldi.rs`) and, on request, each run's agreement with a forward Monte Carlo estimate of the same discretization.
 
-use super::kernel::{KernelError, KernelRecord, model_with_kernel};
-use crate::basis::{Basis, BasisError, Factorization, Reduced};
-use crate::io::Run;
-use crate::kernel::{Explicit, Factored, TooLarge};
-use crate::model::{Model, ModelError};
+use super::error::StudyError;
+use super::kernel::model_with_kernel;
+use super::light_scenes::{GroupSolves, solve_light_scenes};
+use crate::basis::{Basis, Factorization, Reduced};
+use crate::io::{MonteCarlo, Run, Solution};
+use crate::kernel::{Explicit, Factored};
+use crate::model::Model;
 use crate::progress::Progress;
-use crate::readout::daylight::{DaylightReadings, read_daylight};
+use crate::readout::daylight::read_daylight;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
-use crate::readout::grid::{GridReading, read_grids};
+use crate::readout::grid::read_grids;
 use crate::readout::illuminance::{arriving, patch_illuminance};
-use crate::readout::probe::{ProbeReading, read_probes};
+use crate::readout::probe::read_probes;
 use crate::scene::Scene;
 use crate::solve::norms::Norms;
 use crate::solve::orders::{OrderRecord, reflection_orders};
-use crate::solve::{
-    ArnoldiError, ArnoldiParams, Method, SolveError, SolveParams, Spectrum, System, arnoldi, relative_residual, solve,
-};
-use crate::trace::{Agreement, TraceOptions, World, agreement, trace_photons};
+use crate::solve::{ArnoldiParams, Method, SolveError, SolveParams, System, arnoldi, relative_residual, solve};
+use crate::trace::{TraceOptions, World, agreement, trace_photons};
 use std::path::PathBuf;
-use thiserror::Error;
 
 /// What a command asks of the solve.
 #[derive(Debug, Clone)]
@@ -69,87 +68,9 @@ impl Default for Job {
     }
 }
 
-/// Why a solve gave no field.
-#[derive(Debug, Error)]
-pub enum StudyError {
-    /// The explicit product or a direct solver's factors would exceed the memory limit.
-    #[error(transparent)]
-    TooLarge(#[from] TooLarge),
-    /// The model could not be built.
-    #[error(transparent)]
-    Model(#[from] ModelError),
-    /// The kernel file could not be reused.
-    #[error(transparent)]
-    Kernel(#[from] KernelError),
-    /// The angular basis does not fit the direction set.
-    #[error(transparent)]
-    Basis(#[from] BasisError),
-    /// A solve failed.
-    #[error(transparent)]
-    Solve(#[from] SolveError),
-    /// The spectrum could not be computed.
-    #[error(transparent)]
-    Spectrum(#[from] ArnoldiError),
-    /// Every method asked for failed; each with its error.
-    #[error("every method failed: {}", .0.iter().map(|(m, e)| format!("{}: {e}", m.name())).collect::<Vec<_>>().join("; "))]
-    EveryMethodFailed(Vec<(Method, SolveError)>),
-}
-
-/// A solved case: the model, every run, the reference field and its readouts.
-pub struct Solved {
-    /// The model solved.
-    pub model: Model,
-    /// Every method's run that succeeded.
-    pub runs: Vec<Run>,
-    /// The run whose field is kept: `direct` if it ran, else the smallest final residual.
-    pub reference: usize,
-    /// Methods that failed while others succeeded.
-    pub failures: Vec<(Method, SolveError)>,
-    /// The reference run's unknowns (basis coefficients in a reduced solve).
-    pub coefficients: Vec<f64>,
-    /// The field `x[i·K + k]`, cd/m².
-    pub x: Vec<f64>,
-    /// The factored basis of a reduced solve, and the field's residual in the full system.
-    pub basis: Option<(Factorization, f64)>,
-    /// The field as an `N × K × C` array, cd/m².
-    pub field: Field,
-    /// Illuminance of each patch, lx.
-    pub illuminance: Vec<f64>,
-    /// The energy balance of the field, lm.
-    pub energy: EnergyBalance,
-    /// The probes' readings.
-    pub probes: Vec<ProbeReading>,
-    /// The grids' readings.
-    pub grids: Vec<GridReading>,
-    /// SC, ERC, IRC and DF at the probes and grids, under a `[sky]`.
-    pub daylight: Option<DaylightReadings>,
-    /// The reflection orders, when recorded.
-    pub orders: Option<OrderRecord>,
-    /// The norms of `K`, when asked for.
-    pub norms: Option<Norms>,
-    /// The leading eigenpairs of the full `K` (`--spectrum N`).
-    pub spectrum: Option<Spectrum>,
-    /// The forward Monte Carlo reference, when asked for.
-    pub monte_carlo: Option<MonteCarlo>,
-    /// What the solved field says is probably not meant (`super::physics_warnings`).
-    pub warnings: Vec<String>,
-    /// The kernel file read, and the fingerprint to save (`super::kernel`).
-    pub kernel: KernelRecord,
-}
-
-/// The forward Monte Carlo estimate of the same discretization, and each run's agreement.
-pub struct MonteCarlo {
-    /// Photons traced.
-    pub photons: u64,
-    /// Wall time of the tracing, s.
-    pub seconds: f64,
-    /// Each run's agreement with the estimate, in the order of the runs.
-    pub agreements: Vec<Agreement>,
-}
-
-/// Builds the model of `scene` and solves it as `job` asks; `progress` hears of the
-/// assembly, each method's iterations and the photons.
-pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<Solved, StudyError> {
+/// Builds the model of `scene` and solves it as `job` asks, its light scenes too;
+/// `progress` hears of the assembly, each method's iterations, the photons and the groups.
+pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<Solution, StudyError> {
     let methods = if job.methods.is_empty() { vec![scene.solver.method] } else { job.methods.clone() };
     let (model, kernel) = model_with_kernel(scene, job.kernel_file.as_deref(), job.save_kernel, progress)?;
     let factors =
@@ -194,8 +115,9 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     let probes = read_probes(&scene.probes, &model, &field, progress);
     let grids = read_grids(&scene.grids, &model, &field, progress);
     let daylight = scene.sky.as_ref().map(|sky| read_daylight(&model, sky, &probes, &grids));
-    let mut solved = Solved {
+    let mut solved = Solution {
         model,
+        params: job.params,
         runs,
         reference,
         failures,
@@ -214,8 +136,13 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         monte_carlo,
         warnings: Vec::new(),
         kernel,
+        light_scenes: None,
     };
     solved.warnings = super::physics_warnings(scene, &solved.model, &solved.x, &solved.energy);
+    if !scene.lighting.scenes.is_empty() {
+        let how = GroupSolves { method: solved.runs[solved.reference].method, params: job.params, warm: true };
+        solved.light_scenes = Some(solve_light_scenes(scene, &mut solved.model, &solved.x, &how, progress)?);
+    }
     Ok(solved)
 }
 

@@ -3,9 +3,10 @@
 //! or a negative escaped flux is reported, each naming what is wrong.
 
 use std::path::Path;
+use ugo::io::Solution;
 use ugo::kernel::sent_shares;
 use ugo::scene::Scene;
-use ugo::study::{Job, Solved, physics_warnings, solve_case};
+use ugo::study::{Job, physics_warnings, solve_case};
 
 /// A closed unit room of six inward rectangles, a 1000 lm lamp in the middle, `extra` after.
 fn room(floor_flipped: bool, extra: &str) -> String {
@@ -28,7 +29,7 @@ fn room(floor_flipped: bool, extra: &str) -> String {
     text + extra
 }
 
-fn solved(text: &str) -> (Scene, Solved) {
+fn solved(text: &str) -> (Scene, Solution) {
     let scene = Scene::parse(Path::new("cases/test.toml"), text.to_string()).unwrap_or_else(|e| panic!("{e}"));
     let s = solve_case(&scene, &Job::default(), &ugo::progress::Silent).unwrap();
     (scene, s)

@@ -7,6 +7,7 @@
 
 use std::path::Path;
 use ugo::io::LightSceneField;
+use ugo::io::Solution;
 use ugo::kernel::Factored;
 use ugo::luminaire::direct_light;
 use ugo::model::Model;
@@ -17,7 +18,7 @@ use ugo::readout::illuminance::{arriving, patch_illuminance};
 use ugo::readout::probe::read_probes;
 use ugo::scene::Scene;
 use ugo::solve::{Method, SolveParams, System, solve};
-use ugo::study::{GroupSolves, Job, Solved, dimmed, solve_case, solve_light_scenes};
+use ugo::study::{GroupSolves, Job, dimmed, solve_case, solve_light_scenes};
 
 /// A grey room with a ceiling panel (group "panel"), a bulb (group "left") and a
 /// Lambertian downlight (no group: "default"), a probe and a grid; maintenance factor 0.8.
@@ -123,7 +124,7 @@ fn job() -> Job {
     Job { methods: vec![Method::Gmres { restart: 30 }], params, ..Job::default() }
 }
 
-fn solved(scene: &Scene) -> Solved {
+fn solved(scene: &Scene) -> Solution {
     solve_case(scene, &job(), &ugo::progress::Silent).expect("the room solves")
 }
 
@@ -175,6 +176,9 @@ fn a_light_scene_equals_a_full_solve_with_its_sources_dimmed() {
     let mut s = solved(&scene);
     let how = GroupSolves { method: Method::Gmres { restart: 30 }, params: job().params, warm: true };
     let light = solve_light_scenes(&scene, &mut s.model, &s.x, &how, &ugo::progress::Silent).unwrap();
+    // `solve_case` returns the case with its light scenes solved the same way
+    let own = s.light_scenes.as_ref().expect("solve_case solves the light scenes");
+    Readouts::of(&own.scenes[0]).assert_equal(&Readouts::of(&light.scenes[0]), "solve_case's own");
     let names: Vec<&str> = light.groups.iter().map(|g| g.name.as_str()).collect();
     assert_eq!(names, ["panel", "left", "default"]);
     assert!(light.groups[2].solve.start < 1e-8, "the last group is the case's field less the others");

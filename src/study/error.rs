@@ -1,0 +1,34 @@
+//! [`StudyError`]: why a study gave no field (`docs/design.md` §6).
+
+use super::kernel::KernelError;
+use crate::basis::BasisError;
+use crate::kernel::TooLarge;
+use crate::model::ModelError;
+use crate::solve::{ArnoldiError, Method, SolveError};
+use thiserror::Error;
+
+/// Why a solve gave no field.
+#[derive(Debug, Error)]
+pub enum StudyError {
+    /// The explicit product or a direct solver's factors would exceed the memory limit.
+    #[error(transparent)]
+    TooLarge(#[from] TooLarge),
+    /// The model could not be built.
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    /// The kernel file could not be reused.
+    #[error(transparent)]
+    Kernel(#[from] KernelError),
+    /// The angular basis does not fit the direction set.
+    #[error(transparent)]
+    Basis(#[from] BasisError),
+    /// A solve failed.
+    #[error(transparent)]
+    Solve(#[from] SolveError),
+    /// The spectrum could not be computed.
+    #[error(transparent)]
+    Spectrum(#[from] ArnoldiError),
+    /// Every method asked for failed; each with its error.
+    #[error("every method failed: {}", .0.iter().map(|(m, e)| format!("{}: {e}", m.name())).collect::<Vec<_>>().join("; "))]
+    EveryMethodFailed(Vec<(Method, SolveError)>),
+}
