@@ -8,6 +8,7 @@ mod explicit;
 mod growth;
 mod model;
 mod monte_carlo;
+mod open_box;
 mod plates;
 mod push;
 mod rebalance;

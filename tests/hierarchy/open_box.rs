@@ -1,0 +1,53 @@
+//! Issue 34: a 1 m box open at z = 0 (`cases/open-box.toml`), lit by a black 0.2 m emitter
+//! under the ceiling, solved hierarchically (tolerance 1e-2, smallest 0.05 m) from roots of
+//! 0.25 m (the case's; the emitter smaller than a root) and of 0.12 m: each probe's
+//! luminance within 1 % plus 3 standard errors of backward Monte Carlo traced here. It
+//! fails today: every probe reads too bright from roots of 0.25 m (the ceiling +3.1 and
+//! +4.5 %) and the ceiling 3.7 % low from roots of 0.12 m, because the emitter's leaves are
+//! balanced to their links' own row sums, which their 64 closure rays admit though they
+//! miss the closure by up to 18 % (docs/hierarchy.md, "An open box at coarse roots"). More
+//! rays at the same four points passed it but moved the opal diffuser's closed form by
+//! 5.8e-3 (the points' quadrature, not the rays, then decides the estimate): not kept.
+
+use crate::support::{build, solve};
+use std::path::Path;
+use ugo::geometry::Mesh;
+use ugo::progress::Silent;
+use ugo::readout::field::Field;
+use ugo::readout::probe::read_probes;
+use ugo::scene::Scene;
+use ugo::trace::{TraceOptions, World, trace_probes};
+
+/// Paths per probe: standard errors of 0.1–0.6 % (the ceiling's the largest).
+const PATHS: usize = 65_536;
+
+#[test]
+#[ignore = "issue 34, open: the emitter's leaves are balanced to coarse link rows (docs/hierarchy.md)"]
+fn the_open_boxs_probes_agree_with_backward_monte_carlo_from_coarse_roots() {
+    let mut scene = Scene::load(Path::new("cases/open-box.toml")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(scene.discretization.patch_size, 0.25);
+    let world = World::new(&scene, Mesh::build(&scene.surfaces, scene.discretization.patch_size));
+    let traced = trace_probes(&world, &scene.probes, PATHS, &TraceOptions::default(), &|_| {});
+    let mut failed = Vec::new();
+    for roots in [0.25, 0.12] {
+        scene.discretization.patch_size = roots;
+        let model = build(&scene);
+        let x = solve(&model);
+        let solved = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()), &Silent);
+        assert_eq!(solved.len(), 12);
+        for (probe, estimate) in solved.iter().zip(&traced) {
+            let (value, error) = estimate.luminance;
+            let difference = probe.luminance / value - 1.0;
+            eprintln!(
+                "open box, roots {roots} m, {}: hierarchy {:.4} cd/m², Monte Carlo {value:.4} ± {error:.4}, {:+.2} %",
+                probe.name,
+                probe.luminance,
+                100.0 * difference
+            );
+            if (probe.luminance - value).abs() > 0.01 * value + 3.0 * error {
+                failed.push(format!("roots {roots} m, {}: {:+.2} %", probe.name, 100.0 * difference));
+            }
+        }
+    }
+    assert!(failed.is_empty(), "beyond 1 % + 3σ: {failed:?}");
+}
