@@ -34,9 +34,48 @@ use crate::directions::DirectionSet;
 use glam::DVec3;
 use std::f64::consts::FRAC_1_PI;
 
-/// Every model's `type` and the keys it takes, in the order the documentation lists them.
-pub const TYPES: [(&str, &[&str]); 4] =
-    [(lambert::TYPE, lambert::KEYS), (phong::TYPE, phong::KEYS), (mirror::TYPE, mirror::KEYS), (ggx::TYPE, ggx::KEYS)];
+/// The models by name: what a `type` selects, matched exhaustively where its keys are read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// [`lambert`].
+    Lambert,
+    /// [`phong`].
+    Phong,
+    /// [`mirror`].
+    Mirror,
+    /// [`ggx`].
+    Ggx,
+}
+
+impl Kind {
+    /// Every model, in the order the documentation lists them.
+    pub const ALL: [Kind; 4] = [Kind::Lambert, Kind::Phong, Kind::Mirror, Kind::Ggx];
+
+    /// The model's `type`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Lambert => lambert::TYPE,
+            Kind::Phong => phong::TYPE,
+            Kind::Mirror => mirror::TYPE,
+            Kind::Ggx => ggx::TYPE,
+        }
+    }
+
+    /// The keys the model takes.
+    pub fn keys(self) -> &'static [&'static str] {
+        match self {
+            Kind::Lambert => lambert::KEYS,
+            Kind::Phong => phong::KEYS,
+            Kind::Mirror => mirror::KEYS,
+            Kind::Ggx => ggx::KEYS,
+        }
+    }
+
+    /// The model named `name`, if any.
+    pub fn parse(name: &str) -> Option<Kind> {
+        Kind::ALL.into_iter().find(|k| k.name() == name)
+    }
+}
 
 /// The closed set of material models, as luminance factors `ρ = π f_r` (`docs/design.md` §1).
 #[derive(Debug, Clone, PartialEq)]

@@ -1,11 +1,11 @@
 //! `[[material]]` tables: the rules of each material type's keys (the keys themselves are
-//! the models', `crate::material::TYPES`), validated into `crate::material::MaterialModel`.
+//! the models', `crate::material::Kind`), validated into `crate::material::MaterialModel`.
 
 use super::check::{Context, unique_names};
 use super::description::Material;
 use super::error::SceneError;
 use super::schema::RawMaterial;
-use crate::material::{MaterialModel, TYPES, lambert, mirror, phong};
+use crate::material::{Kind, MaterialModel};
 use std::path::Path;
 
 pub(super) fn materials(path: &Path, raw: &[RawMaterial]) -> Result<Vec<Material>, SceneError> {
@@ -22,8 +22,8 @@ pub(super) fn materials(path: &Path, raw: &[RawMaterial]) -> Result<Vec<Material
 }
 
 fn material_model(at: &Context, m: &RawMaterial) -> Result<MaterialModel, SceneError> {
-    let Some((_, keys)) = TYPES.iter().find(|(name, _)| *name == m.model) else {
-        let known: Vec<String> = TYPES.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+    let Some(kind) = Kind::parse(&m.model) else {
+        let known: Vec<String> = Kind::ALL.iter().map(|k| format!("\"{}\"", k.name())).collect();
         return Err(at.error("type", format!("unknown material type \"{}\"; known: {}", m.model, known.join(", "))));
     };
     let given = [
@@ -34,8 +34,8 @@ fn material_model(at: &Context, m: &RawMaterial) -> Result<MaterialModel, SceneE
         ("roughness", m.roughness),
     ];
     for (key, value) in given {
-        if value.is_some() && !keys.contains(&key) {
-            let message = format!("a \"{}\" material takes only {}", m.model, keys.join(", "));
+        if value.is_some() && !kind.keys().contains(&key) {
+            let message = format!("a \"{}\" material takes only {}", m.model, kind.keys().join(", "));
             return Err(at.error(key, message));
         }
     }
@@ -56,13 +56,13 @@ fn material_model(at: &Context, m: &RawMaterial) -> Result<MaterialModel, SceneE
         }
         Ok(())
     };
-    Ok(match m.model.as_str() {
-        lambert::TYPE => {
+    Ok(match kind {
+        Kind::Lambert => {
             let transmittance = fraction("transmittance", m.transmittance)?;
             sum_at_most_one("transmittance", transmittance)?;
             MaterialModel::Lambert { reflectance, transmittance }
         }
-        phong::TYPE => {
+        Kind::Phong => {
             let specular = fraction("specular", Some(required("specular", m.specular)?))?;
             sum_at_most_one("specular", specular)?;
             let exponent = at.non_negative("exponent", required("exponent", m.exponent)?)?;
@@ -71,8 +71,8 @@ fn material_model(at: &Context, m: &RawMaterial) -> Result<MaterialModel, SceneE
             }
             MaterialModel::Phong { diffuse: reflectance, specular, exponent }
         }
-        mirror::TYPE => MaterialModel::Mirror { reflectance },
-        _ => {
+        Kind::Mirror => MaterialModel::Mirror { reflectance },
+        Kind::Ggx => {
             let specular = fraction("specular", Some(required("specular", m.specular)?))?;
             sum_at_most_one("specular", specular)?;
             let roughness = fraction("roughness", Some(required("roughness", m.roughness)?))?;

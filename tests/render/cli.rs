@@ -92,7 +92,7 @@ const CASES: [(&str, &str, &str); 10] = [
     ("integrating-sphere", "0.35", "1"),
     ("mirror-room", "0.6", "16"),
     ("opal-diffuser", "0.25", "1"),
-    ("open-box", "0.5", "1"),
+    ("open-box", "0.25", "1"),
     ("parallel-plates", "0.25", "1"),
 ];
 
