@@ -1,7 +1,7 @@
 //! A stop asked for from outside the process: SIGINT (Ctrl-C) or SIGTERM (issue 18,
 //! item 8).
 //!
-//! The first signal is only noted. The long loops poll it — the explicit kernel's rows
+//! The first signal is only noted. The long loops poll it — the uniform kernel's rows
 //! (`kernel::assemble`), the hierarchy's refinement passes (`model`), every solver's
 //! iterations (`solve`) — and so does the output writer (`io::atomic`) before it renames a
 //! file: each ends with [`Interrupted`], so that the command removes its temporary files,

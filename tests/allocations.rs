@@ -82,7 +82,6 @@ fn kernel_applications_and_ray_queries_do_not_allocate() {
     let mut z = vec![0.0; reduced.dim()];
     few(allocations(&pool, || reduced.apply(&c, &mut z)), "reduced Φᵀ G Ψ c");
 
-    let mut scene = scene;
     scene.discretization.patch_size = 0.05;
     scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 0.25, link_tolerance: 1e-2 });
     let tree = Model::build(&scene, &ugo::progress::Silent).unwrap();

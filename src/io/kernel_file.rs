@@ -1,4 +1,4 @@
-//! `/kernel` of the HDF5 dump (issue 15, `docs/kernel-file.md`): the explicit kernel
+//! `/kernel` of the HDF5 dump (issue 15, `docs/kernel-file.md`): the uniform kernel
 //! `K = B·G` and source term `L0 = L_e + B·D` of `docs/design.md` §2–§3, stored so that ugo
 //! reuses them instead of assembling and other programs read them with h5py and scipy.
 //!
@@ -38,7 +38,7 @@ pub struct StoredKernel {
     pub l0: Vec<f64>,
 }
 
-/// Writes the explicit kernel of `model` and its `fingerprint` into the group `g`.
+/// Writes the uniform kernel of `model` and its `fingerprint` into the group `g`.
 pub(super) fn write_kernel(g: &hdf5::Group, model: &Model, fingerprint: &Fingerprint) -> hdf5::Result<()> {
     let kernel = &model.kernel;
     let Some(matrix) = kernel.g.matrix() else {
@@ -135,7 +135,7 @@ fn read_from(file: &File) -> Result<StoredKernel, Why> {
     let l0 = vector("L0", n * k)?;
     let fingerprint = fingerprint(&g.group("fingerprint")?)?;
     let direct = DirectLight { arriving, intercepted, rays: rays as usize, least: Vec::new() };
-    let kernel = Kernel { g: Transport::Explicit(g_matrix), directions, blocks, patch_material, twin };
+    let kernel = Kernel { g: Transport::Uniform(g_matrix), directions, blocks, patch_material, twin };
     Ok(StoredKernel { fingerprint, kernel, direct, l0 })
 }
 

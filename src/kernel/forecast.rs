@@ -45,9 +45,9 @@ pub struct Forecast {
     pub cells: usize,
     /// Unknowns of the system, patches (or leaves) × cells.
     pub unknowns: f64,
-    /// Unordered pairs of patches facing each other (explicit kernel).
+    /// Unordered pairs of patches facing each other (uniform kernel).
     pub facing_pairs: f64,
-    /// Non-zeros of `G` (explicit kernel; 0 for the hierarchy, whose links are not known).
+    /// Non-zeros of `G` (uniform kernel; 0 for the hierarchy, whose links are not known).
     pub nonzeros: f64,
     /// Bytes of the patches themselves.
     pub mesh_bytes: f64,

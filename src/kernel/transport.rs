@@ -1,5 +1,5 @@
 //! `G` as the kernel applies it (`docs/design.md` §3 and §3b): every facing pair of patches
-//! stored (the explicit kernel) or the hierarchy's links applied on its leaves by pull,
+//! stored (the uniform kernel) or the hierarchy's links applied on its leaves by pull,
 //! gather and push. Solvers, readouts and `K = B·G` see one `rows` and one `apply`; what
 //! needs the stored entries asks for them and is told when there are none.
 
@@ -9,8 +9,8 @@ use sprs::CsMat;
 
 /// The transport operator `G` over `(patch, cell)` unknowns.
 pub enum Transport {
-    /// Assembled pair by pair (`docs/design.md` §3).
-    Explicit(TransportMatrix),
+    /// Assembled pair by pair over the uniform mesh (`docs/design.md` §3).
+    Uniform(TransportMatrix),
     /// Links of the hierarchical kernel between nodes above the leaves (`docs/design.md` §3b).
     Hierarchical(Box<Operator>),
 }
@@ -19,7 +19,7 @@ impl Transport {
     /// Unknowns `N·K`.
     pub fn rows(&self) -> usize {
         match self {
-            Transport::Explicit(g) => g.rows(),
+            Transport::Uniform(g) => g.rows(),
             Transport::Hierarchical(h) => h.dim(),
         }
     }
@@ -27,7 +27,7 @@ impl Transport {
     /// `y = G x`.
     pub fn apply(&self, x: &[f64], y: &mut [f64]) {
         match self {
-            Transport::Explicit(g) => g.apply(x, y),
+            Transport::Uniform(g) => g.apply(x, y),
             Transport::Hierarchical(h) => h.arriving(x, y),
         }
     }
@@ -37,7 +37,7 @@ impl Transport {
     /// expansion.
     pub fn leaving(&self, y: &[f64], x: &mut [f64]) {
         match self {
-            Transport::Explicit(g) => {
+            Transport::Uniform(g) => {
                 x.fill(0.0);
                 for (row, &w) in y.iter().enumerate() {
                     g.for_each_in_row(row, |column, value| x[column] += w * value);
@@ -50,7 +50,7 @@ impl Transport {
     /// Entries of row `r` written out (the hierarchy's expansion, `hierarchy/expand.rs`).
     pub fn row_len(&self, r: usize) -> usize {
         match self {
-            Transport::Explicit(g) => g.row_len(r),
+            Transport::Uniform(g) => g.row_len(r),
             Transport::Hierarchical(h) => h.row_len(r),
         }
     }
@@ -60,7 +60,7 @@ impl Transport {
     #[inline]
     pub fn for_each_in_row(&self, r: usize, f: impl FnMut(usize, f64)) {
         match self {
-            Transport::Explicit(g) => g.for_each_in_row(r, f),
+            Transport::Uniform(g) => g.for_each_in_row(r, f),
             Transport::Hierarchical(h) => h.for_each_in_row(r, f),
         }
     }
@@ -68,7 +68,7 @@ impl Transport {
     /// Stored entries: the matrix's non-zeros, or the pieces of the hierarchy's links.
     pub fn nnz(&self) -> usize {
         match self {
-            Transport::Explicit(g) => g.nnz(),
+            Transport::Uniform(g) => g.nnz(),
             Transport::Hierarchical(h) => h.pieces(),
         }
     }
@@ -76,28 +76,28 @@ impl Transport {
     /// Bytes held.
     pub fn bytes(&self) -> f64 {
         match self {
-            Transport::Explicit(g) => g.bytes(),
+            Transport::Uniform(g) => g.bytes(),
             Transport::Hierarchical(h) => h.bytes(),
         }
     }
 
-    /// The stored matrix of the explicit kernel; `None` for the hierarchy.
+    /// The stored matrix of the uniform kernel; `None` for the hierarchy.
     pub fn matrix(&self) -> Option<&TransportMatrix> {
         match self {
-            Transport::Explicit(g) => Some(g),
+            Transport::Uniform(g) => Some(g),
             Transport::Hierarchical(_) => None,
         }
     }
 
-    /// The hierarchy's operator; `None` for the explicit kernel.
+    /// The hierarchy's operator; `None` for the uniform kernel.
     pub fn hierarchy(&self) -> Option<&Operator> {
         match self {
-            Transport::Explicit(_) => None,
+            Transport::Uniform(_) => None,
             Transport::Hierarchical(h) => Some(h),
         }
     }
 
-    /// The double-precision matrix of the explicit kernel.
+    /// The double-precision matrix of the uniform kernel.
     pub fn as_double(&self) -> Option<&CsMat<f64>> {
         self.matrix().and_then(TransportMatrix::as_double)
     }

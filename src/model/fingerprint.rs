@@ -26,7 +26,7 @@ pub const KERNEL_FORMAT: u32 = 1;
 pub enum Part {
     /// The surfaces' shapes, sides and orientation (the mesh before `patch_size`).
     Geometry,
-    /// The materials that `G` depends on (none for the explicit kernel).
+    /// The materials that `G` depends on (none for the uniform kernel).
     Materials,
     /// Patch size, direction cells, assembly method, precision of `G`, quadrature.
     Discretization,

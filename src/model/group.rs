@@ -12,7 +12,7 @@ impl Model {
     /// surfaces `surfaces` (indices into the scene's surfaces) alone, at their output in the
     /// model. The luminaires' direct light is integrated on the model's patches with its ray
     /// caster, each shadow edge cut as far as the model's own light was
-    /// (`DirectLight::least`: six levels deep for the explicit kernel, down to the oracle's
+    /// (`DirectLight::least`: six levels deep for the uniform kernel, down to the oracle's
     /// `ε` on the hierarchy's leaves), so that the groups' light adds up to the model's.
     pub fn source_term_of(&self, luminaires: &[usize], surfaces: &[usize]) -> SourceTerm {
         let members: Vec<Source> = luminaires.iter().filter_map(|&i| self.sources.get(i).cloned()).collect();

@@ -85,7 +85,7 @@ pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -
     let mut light_seconds = 0.0;
     let t = Instant::now();
     let hierarchy_options =
-        Options { tolerance: parameters.link_tolerance, smallest: d.patch_size, ..Options::default() };
+        Options { tolerance: parameters.link_tolerance, patch_size: d.patch_size, ..Options::default() };
     // The passes grow in cost as the links multiply: counted, with no time left forecast.
     progress.begin("refinement", 0);
     let mut h = Hierarchy::new(&roots, directions.clone(), blocks.clone(), hierarchy_options, &root_l0);

@@ -59,7 +59,7 @@ impl Model {
             stored.blocks.unwrap_or_else(|| scene.materials.iter().map(|m| m.model.block(&directions)).collect());
         let patch_material = mesh.patches.iter().map(|p| p.material).collect();
         let twin = mesh.patches.iter().map(|p| p.twin).collect();
-        let kernel = Kernel { g: Transport::Explicit(stored.g), directions, blocks, patch_material, twin };
+        let kernel = Kernel { g: Transport::Uniform(stored.g), directions, blocks, patch_material, twin };
         let t = Instant::now();
         let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
         let direct =

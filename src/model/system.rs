@@ -50,7 +50,7 @@ pub struct AssemblyStats {
     pub pairs: usize,
     /// Occlusion rays traced, the luminaires' included.
     pub rays: usize,
-    /// How balancing changed the explicit kernel (the hierarchy is not balanced).
+    /// How balancing changed the uniform kernel's `G` (the hierarchy balances in its passes, `HierarchyRecord`).
     pub balance: Option<BalanceReport>,
 }
 
@@ -75,7 +75,7 @@ pub struct Model {
     pub direct: DirectLight,
     /// Timings and counts of the build.
     pub stats: AssemblyStats,
-    /// What the hierarchical kernel made; `None` for the explicit one.
+    /// What the hierarchical kernel made; `None` for the uniform one.
     pub hierarchy: Option<HierarchyRecord>,
 }
 

@@ -45,7 +45,7 @@ pub fn build(scene: &Scene, progress: &dyn Progress) -> Result<Model, ModelError
     check_blocks(scene, &blocks, directions.len())?;
     let patch_material = mesh.patches.iter().map(|p| p.material).collect();
     let twin = mesh.patches.iter().map(|p| p.twin).collect();
-    let g = Transport::Explicit(TransportMatrix::new(g, d.precision));
+    let g = Transport::Uniform(TransportMatrix::new(g, d.precision));
     check_transport(scene, &mesh, &g, directions.len())?;
     let kernel = Kernel { g, directions, blocks, patch_material, twin };
     let kernel_seconds = t.elapsed().as_secs_f64();

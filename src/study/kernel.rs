@@ -77,7 +77,7 @@ pub fn model_with_kernel(
     }
     let changed = |part: Part| rebuilt.iter().any(|c| c.part == part);
     let StoredKernel { kernel, direct, .. } = stored;
-    let Transport::Explicit(g) = kernel.g else { return Err(KernelError::Hierarchical) };
+    let Transport::Uniform(g) = kernel.g else { return Err(KernelError::Hierarchical) };
     let parts = StoredParts {
         g,
         blocks: (!changed(Part::Reflectances)).then_some(kernel.blocks),

@@ -15,7 +15,7 @@ use glam::DVec3;
 
 /// Distance below which a patch is in a probe's near field, as a share of its diameter.
 /// Measured on the Cornell box's floor probe: +2.5, +2.2 and +2.4 % at 0.17, 0.25 and 0.29
-/// of the nearest patch's size (the hierarchy's defaults, the explicit kernel at 0.03 and
+/// of the nearest patch's size (the hierarchy's defaults, the uniform kernel at 0.03 and
 /// 0.025 m); the office's desk probes, at 0.51 of a monitor's leaf, within 0.5 %.
 pub const NEAR: f64 = 0.4;
 

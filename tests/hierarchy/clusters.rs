@@ -49,7 +49,7 @@ fn cluster_links_agree_with_the_explicit_kernel() {
     let directions = DirectionSet::single();
     let t = assemble(&leaves, &Visibility::build(&leaves), &directions, &Quadrature::default(), &|_| {}).unwrap();
     let kernel = Kernel {
-        g: Transport::Explicit(TransportMatrix::new(t.g, Precision::Double)),
+        g: Transport::Uniform(TransportMatrix::new(t.g, Precision::Double)),
         directions,
         blocks: Vec::new(),
         patch_material: Vec::new(),

@@ -29,7 +29,7 @@ fn compare(scene: Scene, directions: DirectionSet) -> (f64, f64) {
     // the same outer quadrature: with K > 1 its points decide the receiver cells
     let t = assemble(&leaves, &visibility, &directions, &settings.quadrature, &|_| {}).unwrap();
     let kernel = Kernel {
-        g: Transport::Explicit(TransportMatrix::new(t.g, Precision::Double)),
+        g: Transport::Uniform(TransportMatrix::new(t.g, Precision::Double)),
         directions: directions.clone(),
         blocks: blocks(&scene, &directions),
         patch_material: leaves.patches.iter().map(|p| p.material).collect(),

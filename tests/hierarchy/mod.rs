@@ -34,9 +34,9 @@ pub fn hierarchy(scene: &Scene, root_size: f64, directions: DirectionSet, option
     Hierarchy::new(&roots, directions, blocks, options, &l0)
 }
 
-/// Options with `tolerance` and `smallest` (m), the rest default.
-pub fn options(tolerance: f64, smallest: f64) -> Options {
-    Options { tolerance, smallest, ..Options::default() }
+/// Options with `tolerance` and `patch_size` (m, the finest leaves), the rest default.
+pub fn options(tolerance: f64, patch_size: f64) -> Options {
+    Options { tolerance, patch_size, ..Options::default() }
 }
 
 /// `x = b + K x` by `method` to a relative residual of `1e-10` (relaxed by `scale`).

@@ -82,7 +82,7 @@ fn a_form_factor_that_is_not_finite_is_named_by_both_patches() {
     let mut g = model.kernel.g.as_double().unwrap().clone();
     let (row, column) = (5, g.outer_view(5).unwrap().indices()[2]);
     *g.get_mut(row, column).unwrap() = f64::INFINITY;
-    let g = Transport::Explicit(TransportMatrix::new(g, Precision::Double));
+    let g = Transport::Uniform(TransportMatrix::new(g, Precision::Double));
     let text = check_transport(&scene, &model.mesh, &g, 1).unwrap_err().to_string();
     let expected = format!("the form factor G to patch {column} of surface \"room\", cell 0 is inf at patch 5 of");
     assert!(text.starts_with("value out of range: ") && text.contains(&expected), "{text}");

@@ -68,7 +68,7 @@ pub fn build(scene: &Scene) -> Model {
 
 /// The model of `scene` with another direction set (one of the schemes a case can name).
 pub fn build_with(scene: &Scene, directions: DirectionSet) -> Model {
-    let scheme = Scheme::parse(&directions.name()).expect("a set a case can name");
+    let scheme = Scheme::parse(directions.name()).expect("a set a case can name");
     let mut scene = scene.clone();
     scene.discretization.directions = scheme;
     let model = Model::build(&scene, &ugo::progress::Silent).expect("model fits in memory");

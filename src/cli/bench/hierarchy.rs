@@ -2,7 +2,7 @@
 //! case built and solved at a sequence of leaf sizes (`patch_size`) under the same roots and
 //! link tolerance, and per size the leaves N, links, nodes, occlusion rays, time, memory
 //! and links/N², with the growth exponents of links and of time against N fitted by least
-//! squares on the logarithms (the explicit kernel's pairs grow as N²).
+//! squares on the logarithms (the uniform kernel's pairs grow as N²).
 
 use super::peak::Peak;
 use super::scaling::slope;
@@ -25,7 +25,7 @@ pub struct Level {
     /// Leaf elements N (the unknowns per direction cell).
     pub leaves: usize,
     pub links: usize,
-    /// `links / N²`: the share of the explicit kernel's pairs the links stand for.
+    /// `links / N²`: the share of the uniform kernel's pairs the links stand for.
     pub links_per_n2: f64,
     /// Links with a cluster at one end or both.
     pub cluster_links: usize,

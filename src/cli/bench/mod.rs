@@ -252,7 +252,7 @@ fn export_peers(
 ) -> Result<()> {
     let g = g
         .as_double()
-        .context("--export needs the explicit kernel (`--assembly explicit`) in double precision (--precision f64)")?;
+        .context("--export needs the uniform kernel (`--kernel uniform`) in double precision (--precision f64)")?;
     export::export(dir, mesh, visibility, segments, g, meta)?;
     println!("  exported              {} (run docs/peers/peers.py {})", dir.display(), dir.display());
     Ok(())

@@ -6,7 +6,7 @@
 //! element, spread as `μ_m/π` over all `b`'s cells when `q` is a cluster (whose value is
 //! the cell-weighted mean); times `a`'s receiving and `b`'s sending balancing factor
 //! (`balance.rs`). Every pair of leaves lies under exactly one link, so the
-//! expansion has one entry per visible pair and cell pair, like the explicit kernel.
+//! expansion has one entry per visible pair and cell pair, like the uniform kernel.
 
 use super::link::ALL_CELLS;
 use super::operator::Operator;

@@ -30,14 +30,14 @@ pub struct Options {
     /// area-weighted mean of `x − L0`: of the ambient term in the first pass, of the solved
     /// field in the later ones. Default 1e-2.
     pub tolerance: f64,
-    /// Smallest element size: elements whose longest edge is at most this do not split, m.
-    /// Default 0.05 m.
-    pub smallest: f64,
+    /// The finest patches (the discretization's `patch_size`): elements whose longest edge
+    /// is at most this do not split, m. Default 0.05 m.
+    pub patch_size: f64,
     /// Outer quadrature of the element factors. Default `eta = 1`, `max_depth = 4`: a link
     /// is accepted when its factor varies over the pair by less than the tolerance allows,
     /// which bounds the error of the un-refined rule already; a fan triangle is split only
     /// while it is larger than its distance to the other element (graded towards shared
-    /// edges as before). With the explicit kernel's `eta = 0.25` the lecture hall evaluated
+    /// edges as before). With the uniform kernel's `eta = 0.25` the lecture hall evaluated
     /// 318 M point factors instead of 152 M and took 70 s instead of 49 s, for readings
     /// within 0.07 % (`docs/hierarchy.md`, "Element factors"); its depth 7 changes the
     /// closure of a box's leaves by less than 1e-7 and costs 3.4 times the assembly.
@@ -53,7 +53,7 @@ impl Default for Options {
     fn default() -> Self {
         Options {
             tolerance: 1e-2,
-            smallest: 0.05,
+            patch_size: 0.05,
             quadrature: Quadrature { eta: 1.0, max_depth: 4 },
             passes: 4,
             balance: true,
@@ -100,7 +100,7 @@ impl Hierarchy {
         let tree = Tree::new(roots, &albedo, &exposed);
         let share = cell_shares(&directions);
         let (guess, ambient) = first_guess(&tree, l0, &share);
-        let oracle = Oracle { epsilon: options.tolerance * ambient, smallest: options.smallest };
+        let oracle = Oracle { epsilon: options.tolerance * ambient, patch_size: options.patch_size };
         let mut h = Hierarchy {
             tree,
             links: Vec::new(),
@@ -130,7 +130,7 @@ impl Hierarchy {
     /// their shadow boundaries. Links stay where they are (a split element is still covered
     /// by its ancestors' links). Returns the number of elements split.
     pub fn split_leaves(&mut self, varies: &(dyn Fn(&Visibility, &Patch, f64, f64) -> bool + Sync)) -> usize {
-        let (smallest, epsilon) = (self.options.smallest, self.oracle.epsilon);
+        let (patch_size, epsilon) = (self.options.patch_size, self.oracle.epsilon);
         let mut todo = self.tree.leaves();
         let mut splits = 0;
         while !todo.is_empty() {
@@ -140,7 +140,7 @@ impl Hierarchy {
                 .copied()
                 .filter(|&id| {
                     let node = tree.node(id);
-                    tree.can_split(id, smallest)
+                    tree.can_split(id, patch_size)
                         && node.patch().is_some_and(|p| varies(visibility, p, node.albedo, epsilon))
                 })
                 .collect();

@@ -2,7 +2,7 @@
 //! node `q`. Between two elements `F_pq = (1/A_p) ∫_p F_{dA→q} dA` by the exact contour
 //! integral and adaptive quadrature (`form_factor::pair_integral`), times the visible
 //! fraction; for `K > 1` split by cells `(d, m)` like `G[(i,d),(j,m)]`: the mean of the
-//! integral binned from either end (`binned_pair_integral`), as the explicit kernel's
+//! integral binned from either end (`binned_pair_integral`), as the uniform kernel's
 //! `T^{d,m} = v (S_pq^{d,m} + S_qp^{m,d})/2`, so that `A_p F_pq^{d,m} = A_q F_qp^{m,d}`. A link of a cluster uses the cluster's projected area across
 //! the link (Sillion 1995 with the directional area of Christensen et al. 1997: per-axis
 //! sums of the elements' facing areas, exact for axis-aligned rooms where the isotropic

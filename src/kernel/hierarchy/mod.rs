@@ -1,7 +1,7 @@
 //! The hierarchical kernel of `docs/design.md` §3b (Hanrahan, Salzman & Aupperle 1991; clusters
 //! after Smits, Arvo & Greenberg 1994 and Sillion 1995): element trees over a coarse mesh,
 //! a cluster tree above them, links accepted by a brightness-weighted oracle, and `K x`
-//! applied on the leaves by pull, gather and push. The explicit kernel is the special case
+//! applied on the leaves by pull, gather and push. The uniform kernel is the special case
 //! of all links between leaves.
 //!
 //! Use: `Hierarchy::new(&roots, directions, blocks, options, l0)` links the roots (a coarse

@@ -27,8 +27,8 @@ use std::f64::consts::PI;
 pub struct Oracle {
     /// Error allowed per link, cd/m².
     pub epsilon: f64,
-    /// Smallest element size (longest edge), m.
-    pub smallest: f64,
+    /// The finest patches' size (longest edge), m: no split below it.
+    pub patch_size: f64,
 }
 
 /// The factor's variation over a pair of elements, from point factors at sample points.
@@ -87,7 +87,7 @@ impl Oracle {
     /// The end of `(p, q)` to split first because it straddles a contact: an element partly
     /// inside a solid that can still be split.
     pub fn at_contact(&self, tree: &Tree, p: u32, q: u32) -> Option<u32> {
-        [p, q].into_iter().find(|&n| tree.node(n).straddles_contact() && tree.can_split(n, self.smallest))
+        [p, q].into_iter().find(|&n| tree.node(n).straddles_contact() && tree.can_split(n, self.patch_size))
     }
 
     /// The node to split to refine the link `(p, q)`: the cluster of an element–cluster
@@ -101,7 +101,7 @@ impl Oracle {
             (Kind::Element { .. }, Kind::Element { .. }) => larger_first(p, q, a.area, b.area),
             _ => larger_first(p, q, a.diagonal(), b.diagonal()),
         };
-        order.into_iter().find(|&n| tree.can_split(n, self.smallest))
+        order.into_iter().find(|&n| tree.can_split(n, self.patch_size))
     }
 }
 

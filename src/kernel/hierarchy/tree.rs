@@ -93,12 +93,12 @@ impl Tree {
     }
 
     /// True when `id` has children or can get them: a cluster, or an element whose
-    /// longest edge exceeds `smallest` (m).
-    pub fn can_split(&self, id: u32, smallest: f64) -> bool {
+    /// longest edge exceeds `patch_size` (m).
+    pub fn can_split(&self, id: u32, patch_size: f64) -> bool {
         let node = &self.nodes[id as usize];
         match &node.kind {
             Kind::Cluster => true,
-            Kind::Element { patch, .. } => !node.is_leaf() || longest_edge(&patch.polygon) > smallest * (1.0 + 1e-9),
+            Kind::Element { patch, .. } => !node.is_leaf() || longest_edge(&patch.polygon) > patch_size * (1.0 + 1e-9),
         }
     }
 
