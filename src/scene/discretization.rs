@@ -254,8 +254,8 @@ impl Asked {
 }
 
 impl Hierarchical {
-    /// The link tolerance unless one is given.
-    pub const DEFAULT_LINK_TOLERANCE: f64 = 1e-2;
+    /// The link tolerance unless one is given (the hierarchy's own default).
+    pub const DEFAULT_LINK_TOLERANCE: f64 = crate::kernel::hierarchy::DEFAULT_TOLERANCE;
 
     /// The hierarchy with its default roots and tolerance over leaves of `patch_size`.
     pub fn over(patch_size: f64) -> Hierarchical {

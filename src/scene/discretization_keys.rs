@@ -13,9 +13,6 @@ use crate::directions::Scheme;
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-/// The finest leaves of the old spelling's hierarchy when `smallest` was not given, m.
-const OLD_SMALLEST: f64 = 0.05;
-
 /// A key of the old spelling, read as the new one says.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OldSpelling {
@@ -90,7 +87,8 @@ fn old_spelling(
         }
         return Ok((asked, notes));
     }
-    let smallest = raw.smallest.unwrap_or(OLD_SMALLEST);
+    // without `smallest`, the hierarchy's own default leaves (0.05 m)
+    let smallest = raw.smallest.unwrap_or(crate::kernel::hierarchy::Options::default().patch_size);
     if smallest > raw.patch_size && smallest.is_finite() && raw.patch_size > 0.0 {
         let message =
             format!("the smallest element ({smallest} m) exceeds patch_size ({} m), the roots", raw.patch_size);

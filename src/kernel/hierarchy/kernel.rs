@@ -52,7 +52,7 @@ pub struct Options {
 impl Default for Options {
     fn default() -> Self {
         Options {
-            tolerance: 1e-2,
+            tolerance: DEFAULT_TOLERANCE,
             patch_size: 0.05,
             quadrature: Quadrature { eta: 1.0, max_depth: 4 },
             passes: 4,
@@ -60,6 +60,10 @@ impl Default for Options {
         }
     }
 }
+
+/// The link tolerance unless one is given: the one default of `Options::tolerance` and of a
+/// case's `link_tolerance`.
+pub const DEFAULT_TOLERANCE: f64 = 1e-2;
 
 /// The hierarchical form of `K = B·G` over a coarse mesh's patches.
 pub struct Hierarchy {

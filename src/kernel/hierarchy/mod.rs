@@ -29,7 +29,7 @@ mod tree;
 pub use census::Census;
 pub use history::Pass;
 pub use iterate::{Iterated, Solver, SourceTerm, iterate};
-pub use kernel::{Hierarchy, Options};
+pub use kernel::{DEFAULT_TOLERANCE, Hierarchy, Options};
 pub use link::{ALL_CELLS, Link, Piece};
 pub use node::{Kind, NONE, Node};
 pub use operator::Operator;
