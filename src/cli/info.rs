@@ -6,7 +6,7 @@ use super::options::Discretize;
 use super::{bytes, describe, load};
 use anyhow::Result;
 use std::path::Path;
-use ugo::kernel::{Estimate, Forecast};
+use ugo::kernel::Forecast;
 use ugo::luminaire::Source;
 use ugo::model::Model;
 use ugo::scene::KernelKind;
@@ -23,7 +23,7 @@ pub fn run(case: &Path, d: &Discretize) -> Result<()> {
     forecast.check(d.memory_limit)?;
     let mesh = Model::starting_mesh(&scene);
     let directions = d.directions.set();
-    let estimate = Estimate::of(&mesh, &directions);
+    let estimate = Forecast::counted(&mesh, scene.materials.len(), &directions);
     let areas = mesh.surface_areas(scene.surfaces.len());
     println!("ugo info: {} ({})", scene.name, case.display());
     println!("  patch size         {:>12} m", d.patch_size);
@@ -42,9 +42,9 @@ pub fn run(case: &Path, d: &Discretize) -> Result<()> {
             println!("    {:<24} {:>16}   {}", source.name, flux, describe(&source));
         }
     }
-    println!("  patches N          {:>12}", estimate.patches);
+    println!("  patches N          {:>12.0}", estimate.patches);
     println!("  direction cells K  {:>12}   ({})", estimate.cells, directions.name());
-    println!("  unknowns           {:>12}", estimate.unknowns);
+    println!("  unknowns           {:>12.0}", estimate.unknowns);
     println!(
         "  facing pairs       {:>12.0}{}",
         estimate.facing_pairs,

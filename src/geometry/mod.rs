@@ -1,6 +1,7 @@
 //! Geometry: surfaces as described, convex polygons, tessellation of shapes, and the patch
 //! mesh (`docs/design.md` §2).
 
+mod facing;
 mod frame;
 mod mesh;
 mod polygon;
@@ -8,6 +9,7 @@ mod surface;
 mod tessellate;
 mod warp;
 
+pub use facing::facing;
 pub use frame::Frame;
 pub use mesh::{Mesh, NO_TWIN, Patch};
 pub use polygon::{ConvexPolygon, MAX_CLIPPED};

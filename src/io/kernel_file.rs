@@ -135,7 +135,7 @@ fn read_from(file: &File) -> Result<StoredKernel, Why> {
     let l0 = vector("L0", n * k)?;
     let fingerprint = fingerprint(&g.group("fingerprint")?)?;
     let direct = DirectLight { arriving, intercepted, rays: rays as usize, least: Vec::new() };
-    let kernel = Kernel { g: Transport::Uniform(g_matrix), directions, blocks, patch_material, twin };
+    let kernel = Kernel::new(Transport::Uniform(g_matrix), directions, blocks, patch_material, twin);
     Ok(StoredKernel { fingerprint, kernel, direct, l0 })
 }
 

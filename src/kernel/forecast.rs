@@ -1,38 +1,43 @@
-//! What a model will cost, from the surfaces alone, before anything is meshed (issue 18,
-//! item 3): a `patch_size` of 1e-12 m or 10⁹ direction cells must be refused with their
-//! figures, not found out by an allocation that aborts.
+//! The one estimate of what a model will cost (issue 18, item 3): from the surfaces alone,
+//! before anything is meshed (a `patch_size` of 1e-12 m or 10⁹ direction cells must be
+//! refused with their figures, not found out by an allocation that aborts), or counted on
+//! a mesh once it is made. Either is checked against the memory limit by
+//! `super::refusal` and refused with [`super::TooLarge`].
 //!
 //! Closed forms: each surface's elements at edge length `h` are counted without making them
 //! (`geometry::element_count`: `nu × nv` of a grid, `m²` per triangle; twice for a
 //! two-sided surface). Facing pairs are counted between the scene's coarsest elements (one
 //! per rectangle, box face, OBJ triangle, …), each standing for its share of its surface's
-//! fine elements by area: `Σ_(a<b facing) w_a w_b`, over all pairs up to 2,000 coarse
-//! elements, else from a fixed sample of pairs drawn by weight. Pairs inside one coarse
-//! element are coplanar and do not count (on a sphere's 32 coarse pieces this misses about
-//! 1/32 of the pairs). The cell pieces per pair, bytes per non-zero and the assembly's
-//! transient bytes are [`super::memory::Estimate`]'s; the mesh, the solver's vectors and
-//! the materials' `K × K` blocks are added.
+//! fine elements by area: `Σ_(a<b facing) w_a w_b` (on a mesh, every patch with weight 1),
+//! over all pairs up to 4,000 elements, else from a fixed sample of pairs drawn by weight.
+//! Pairs inside one coarse element are coplanar and do not count (on a sphere's 32 coarse
+//! pieces this misses about 1/32 of the pairs).
+//!
+//! The non-zeros of `G` are twice the facing pairs times the cell pairs `(d, m)` one pair
+//! of patches spreads over: a patch seen under solid angle `Ω` overlaps about
+//! `(1 + √(Ω/ω))²` cells of solid angle `ω = 2π/K` on each side, at most `K²` pairs in all
+//! ([`pieces`]). Occlusion can only lower it. The mesh, the solver's vectors and the
+//! materials' `K × K` blocks are added.
 //!
 //! For the hierarchical kernel only the roots (elements of `root_size`) and the most leaves
 //! (the uniform mesh at `patch_size / 2`: a leaf splits while longer than `patch_size`) are known
 //! before refinement; its links are checked
 //! against the limit after each pass.
 
-use super::assembly::facing;
-use super::memory::pieces;
+use super::memory::{ASSEMBLY_BYTES_PER_PAIR, BYTES_PER_NONZERO};
 use crate::directions::DirectionSet;
-use crate::geometry::{Mesh, Patch, Surface, element_count};
+use crate::geometry::{Mesh, Patch, Surface, element_count, facing};
 use crate::random::Rng;
+use rayon::prelude::*;
 
 /// Bytes of one patch with its share of the ray caster and the face table.
 const BYTES_PER_PATCH: f64 = (std::mem::size_of::<Patch>() + 160) as f64;
 /// Vectors of the unknowns' length a solve keeps (field, source, residual, work).
 const VECTORS: f64 = 6.0;
-/// Coarse elements up to which every pair is tested.
-const EXACT: usize = 2000;
+/// Elements up to which every pair is tested.
+const EXACT: usize = 4000;
 /// Pairs drawn above it.
-const SAMPLES: u64 = 400_000;
-const GIB: f64 = (1u64 << 30) as f64;
+const SAMPLES: u64 = 2_000_000;
 
 /// The cost of a model, forecast from its surfaces.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -61,23 +66,32 @@ pub struct Forecast {
     pub assembly_bytes: f64,
     /// True when the pairs were sampled.
     pub sampled: bool,
+    /// True when counted on the mesh, false when forecast from the surfaces.
+    pub counted: bool,
 }
 
 impl Forecast {
     /// The uniform kernel of `surfaces` (with `materials` materials) meshed at
-    /// `patch_size` with `directions`.
+    /// `patch_size` with `directions`, before meshing.
     pub fn uniform(surfaces: &[Surface], materials: usize, patch_size: f64, directions: &DirectionSet) -> Forecast {
-        let cells = directions.len();
         let (coarse, weights) = coarse(surfaces, patch_size);
+        Forecast { counted: false, ..Forecast::of_pairs(&coarse, &weights, materials, directions.len()) }
+    }
+
+    /// The uniform kernel of `mesh`, its facing pairs counted on its patches.
+    pub fn counted(mesh: &Mesh, materials: usize, directions: &DirectionSet) -> Forecast {
+        Forecast::of_pairs(&mesh.patches, &vec![1.0; mesh.len()], materials, directions.len())
+    }
+
+    /// The uniform kernel over `patches`, each standing for `weights` patches of the mesh.
+    fn of_pairs(patches: &[Patch], weights: &[f64], materials: usize, cells: usize) -> Forecast {
+        let sampled = patches.len() > EXACT;
+        let (facing_pairs, pieces) =
+            if sampled { sampled_pairs(patches, weights, cells) } else { every_pair(patches, weights, cells) };
         let patches: f64 = weights.iter().sum();
-        let (facing_pairs, pieces) = if coarse.len() <= EXACT {
-            every_pair(&coarse, &weights, cells)
-        } else {
-            sampled_pairs(&coarse, &weights, cells)
-        };
         let nonzeros = 2.0 * pieces;
         let unknowns = patches * cells as f64;
-        let kernel_bytes = nonzeros * super::memory::BYTES_PER_NONZERO as f64 + 8.0 * (unknowns + 1.0);
+        let kernel_bytes = nonzeros * BYTES_PER_NONZERO as f64 + 8.0 * (unknowns + 1.0);
         let per_pair = pieces / facing_pairs.max(1.0);
         Forecast {
             patches,
@@ -90,8 +104,9 @@ impl Forecast {
             vector_bytes: VECTORS * 8.0 * unknowns,
             block_bytes: (materials * cells * cells) as f64 * 8.0,
             kernel_bytes,
-            assembly_bytes: kernel_bytes + facing_pairs * per_pair.max(1.0) * super::memory::ASSEMBLY_BYTES_PER_PAIR,
-            sampled: coarse.len() > EXACT,
+            assembly_bytes: kernel_bytes + facing_pairs * per_pair.max(1.0) * ASSEMBLY_BYTES_PER_PAIR,
+            sampled,
+            counted: true,
         }
     }
 
@@ -124,6 +139,7 @@ impl Forecast {
             kernel_bytes: 0.0,
             assembly_bytes: 0.0,
             sampled: false,
+            counted: false,
         }
     }
 
@@ -131,69 +147,7 @@ impl Forecast {
     pub fn peak_bytes(&self) -> f64 {
         self.mesh_bytes + self.vector_bytes + self.block_bytes + self.assembly_bytes.max(self.kernel_bytes)
     }
-
-    /// `Ok` when the peak fits in `limit` bytes, else the refusal with every figure.
-    pub fn check(&self, limit: u64) -> Result<(), OverLimit> {
-        match self.peak_bytes() <= limit as f64 {
-            true => Ok(()),
-            false => Err(OverLimit { forecast: *self, limit }),
-        }
-    }
 }
-
-/// A model refused before meshing because its forecast exceeds the memory limit.
-#[derive(Debug, Clone, PartialEq)]
-pub struct OverLimit {
-    /// The forecast refused.
-    pub forecast: Forecast,
-    /// Bytes.
-    pub limit: u64,
-}
-
-impl std::fmt::Display for OverLimit {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let e = &self.forecast;
-        write!(
-            f,
-            "the model would need about {}, over the limit of {}: ",
-            gib(e.peak_bytes()),
-            gib(self.limit as f64)
-        )?;
-        write!(f, "{:.3e} patches × {} direction cells = {:.3e} unknowns", e.patches, e.cells, e.unknowns)?;
-        match e.leaves {
-            None => write!(
-                f,
-                ", {:.3e} facing pairs, {:.3e} non-zeros of G ({} to assemble)",
-                e.facing_pairs,
-                e.nonzeros,
-                gib(e.assembly_bytes.max(e.kernel_bytes))
-            )?,
-            Some(leaves) => write!(f, " (roots of the hierarchy; at most {leaves:.3e} leaves)")?,
-        }
-        write!(
-            f,
-            ", the mesh {}, the material blocks (K × K each) {}; estimated before meshing. Ways out: a larger \
-             {}, fewer --directions, {}or a higher --memory-limit if the machine has the RAM",
-            gib(e.mesh_bytes),
-            gib(e.block_bytes),
-            match e.leaves {
-                None => "--patch-size (patches grow as patch_size⁻², the uniform kernel as patch_size⁻⁴)",
-                Some(_) => "--root-size (the hierarchy's roots grow as root_size⁻²)",
-            },
-            if e.leaves.is_none() { "--kernel hierarchical, " } else { "" }
-        )
-    }
-}
-
-/// Bytes as GiB, in scientific notation past 10⁴ GiB.
-fn gib(bytes: f64) -> String {
-    match bytes / GIB {
-        g if g < 1e4 => format!("{g:.3} GiB"),
-        g => format!("{g:.3e} GiB"),
-    }
-}
-
-impl std::error::Error for OverLimit {}
 
 /// The scene's coarsest patches and the fine patches at `h` each stands for.
 fn coarse(surfaces: &[Surface], h: f64) -> (Vec<Patch>, Vec<f64>) {
@@ -210,20 +164,20 @@ fn fine(p: &Patch, w: f64) -> Patch {
     Patch { area: p.area / w.max(1.0), ..*p }
 }
 
+/// Facing pairs and their cell pieces, `Σ_(a<b facing) w_a w_b`, over every pair.
 fn every_pair(p: &[Patch], w: &[f64], cells: usize) -> (f64, f64) {
-    let (mut pairs, mut sum) = (0.0, 0.0);
-    for a in 0..p.len() {
-        for b in a + 1..p.len() {
-            if facing(&p[a], &p[b]) {
+    (0..p.len())
+        .into_par_iter()
+        .map(|a| {
+            (a + 1..p.len()).filter(|&b| facing(&p[a], &p[b])).fold((0.0, 0.0), |(pairs, sum), b| {
                 let n = w[a] * w[b];
-                pairs += n;
-                sum += n * pieces(&fine(&p[a], w[a]), &fine(&p[b], w[b]), cells);
-            }
-        }
-    }
-    (pairs, sum)
+                (pairs + n, sum + n * pieces(&fine(&p[a], w[a]), &fine(&p[b], w[b]), cells))
+            })
+        })
+        .reduce(|| (0.0, 0.0), |x, y| (x.0 + y.0, x.1 + y.1))
 }
 
+/// The same from a fixed sample of pairs drawn by weight, scaled to all pairs.
 fn sampled_pairs(p: &[Patch], w: &[f64], cells: usize) -> (f64, f64) {
     let mut cdf = Vec::with_capacity(w.len());
     let mut total = 0.0;
@@ -232,15 +186,31 @@ fn sampled_pairs(p: &[Patch], w: &[f64], cells: usize) -> (f64, f64) {
         cdf.push(total);
     }
     let pick = |u: f64| cdf.partition_point(|&c| c < u * total).min(p.len() - 1);
-    let mut rng = Rng::keyed(18);
-    let (mut hits, mut sum) = (0.0, 0.0);
-    for _ in 0..SAMPLES {
-        let (a, b) = (pick(rng.uniform()), pick(rng.uniform()));
-        if a != b && facing(&p[a], &p[b]) {
-            hits += 1.0;
-            sum += pieces(&fine(&p[a], w[a]), &fine(&p[b], w[b]), cells);
-        }
-    }
+    let (hits, sum) = (0..SAMPLES)
+        .into_par_iter()
+        .map(|s| {
+            let mut rng = Rng::from_state(s);
+            let (a, b) = (pick(rng.uniform()), pick(rng.uniform()));
+            match a != b && facing(&p[a], &p[b]) {
+                true => (1.0, pieces(&fine(&p[a], w[a]), &fine(&p[b], w[b]), cells)),
+                false => (0.0, 0.0),
+            }
+        })
+        .reduce(|| (0.0, 0.0), |x, y| (x.0 + y.0, x.1 + y.1));
     let scale = 0.5 * total * total / SAMPLES as f64;
     (hits * scale, sum * scale)
+}
+
+/// Estimated cell pairs `(d, m)` that the exchange between `a` and `b` spreads over.
+fn pieces(a: &Patch, b: &Patch, cells: usize) -> f64 {
+    if cells == 1 {
+        return 1.0;
+    }
+    let cell = std::f64::consts::TAU / cells as f64;
+    let r = b.centroid - a.centroid;
+    let r2 = r.length_squared();
+    let seen = |p: &Patch, dir: glam::DVec3| (p.area * p.normal.dot(dir).abs() / r2).min(std::f64::consts::TAU);
+    let dir = r / r2.sqrt();
+    let spread = |omega: f64| (1.0 + (omega / cell).sqrt()).powi(2);
+    (spread(seen(b, dir)) * spread(seen(a, dir))).min((cells * cells) as f64)
 }

@@ -1,25 +1,32 @@
-//! The kernel `K = B·G` of `docs/design.md` §3: balanced assembly of `G` from the transfer
-//! toolkit (`crate::transfer`), its storage, the material blocks `B`, the memory estimate
-//! and its refusal, the operators (factored and explicit) that solvers apply, and the
-//! hierarchical form of the same operator (`hierarchy/`, `docs/design.md` §3b).
+//! The kernel `K = B·G` of `docs/design.md` §3. Two peers build `G` and know nothing of
+//! each other: the uniform kernel (`uniform/`: every facing pair of one mesh, stored) and
+//! the hierarchical kernel (`hierarchy/`, §3b: links between elements at the levels its
+//! oracle accepts, applied on the leaves). Below both: the material blocks `B`
+//! (`blocks.rs`), what balancing reports (`balance_report.rs`), the one size estimate
+//! (`forecast.rs`, `memory.rs`) and its one refusal (`refusal.rs`). Above both: `G` as
+//! solvers see it (`transport.rs`), the one [`Kernel`] with its factored and explicit
+//! operators (`operator.rs`), its reciprocity check (`reciprocity.rs`), and the hierarchy
+//! refined with solves of that kernel (`refinement.rs`).
 
-mod assembly;
-mod balance;
+mod balance_report;
 mod blocks;
 mod forecast;
 pub mod hierarchy;
-mod matrix;
 pub mod memory;
 mod operator;
 mod reciprocity;
+mod refinement;
+mod refusal;
 mod transport;
+mod uniform;
 
-pub use assembly::{Assembled, assemble, facing, row_stride};
-pub use balance::BalanceReport;
+pub use balance_report::BalanceReport;
 pub use blocks::apply_blocks;
-pub use forecast::{Forecast, OverLimit};
-pub use matrix::{Precision, TransportMatrix, spmv};
-pub use memory::{Estimate, Footprint, TooLarge};
+pub use forecast::Forecast;
+pub use memory::Footprint;
 pub use operator::{Explicit, Factored, Kernel};
 pub use reciprocity::sent_shares;
+pub use refinement::{Refined, Solver, SourceTerm, refine_with_solves};
+pub use refusal::{Need, TooLarge};
 pub use transport::Transport;
+pub use uniform::{Assembled, Precision, TransportMatrix, assemble, row_stride, spmv};

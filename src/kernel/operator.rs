@@ -5,10 +5,12 @@
 //! product, the explicit one is there for norms, direct solves and export.
 
 use super::blocks::apply_blocks;
-use super::memory::{BYTES_PER_NONZERO, Footprint, TooLarge};
+use super::hierarchy::Hierarchy;
+use super::memory::{BYTES_PER_NONZERO, Footprint};
+use super::refusal::TooLarge;
 use super::transport::Transport;
 use crate::directions::DirectionSet;
-use crate::geometry::NO_TWIN;
+use crate::geometry::{Mesh, NO_TWIN};
 use crate::material::Block;
 use sprs::{CsMat, TriMat};
 
@@ -28,6 +30,39 @@ pub struct Kernel {
 }
 
 impl Kernel {
+    /// The kernel of transport `g` over patches of materials `patch_material` (indices into
+    /// `blocks`) and twins `twin` ([`NO_TWIN`] for none), each with the cells of
+    /// `directions`: every kernel, uniform, hierarchical or read from a file, is made here.
+    /// The parts must fit (a file's are checked where it is read, `io::kernel_file`).
+    pub fn new(
+        g: Transport,
+        directions: DirectionSet,
+        blocks: Vec<Block>,
+        patch_material: Vec<u32>,
+        twin: Vec<u32>,
+    ) -> Kernel {
+        debug_assert_eq!(g.rows(), patch_material.len() * directions.len());
+        debug_assert_eq!(twin.len(), patch_material.len());
+        debug_assert!(patch_material.iter().all(|&m| (m as usize) < blocks.len()));
+        Kernel { g, directions, blocks, patch_material, twin }
+    }
+
+    /// The kernel of `g` over the patches of `mesh`.
+    pub fn on_mesh(g: Transport, mesh: &Mesh, directions: DirectionSet, blocks: Vec<Block>) -> Kernel {
+        let patch_material = mesh.patches.iter().map(|p| p.material).collect();
+        let twin = mesh.patches.iter().map(|p| p.twin).collect();
+        Kernel::new(g, directions, blocks, patch_material, twin)
+    }
+
+    /// The kernel on the current leaves of `hierarchy` (its balanced operator as `G`), with
+    /// the leaves as a mesh.
+    pub fn on_leaves(hierarchy: &mut Hierarchy) -> (Kernel, Mesh) {
+        let g = Transport::Hierarchical(Box::new(hierarchy.operator()));
+        let leaves = hierarchy.leaf_mesh();
+        let kernel = Kernel::on_mesh(g, &leaves, hierarchy.directions().clone(), hierarchy.blocks().to_vec());
+        (kernel, leaves)
+    }
+
     /// Number of patches `N`.
     pub fn patches(&self) -> usize {
         self.patch_material.len()
@@ -139,6 +174,6 @@ impl Explicit {
 
     /// `y = A x`, rows in parallel.
     pub fn apply(&self, x: &[f64], y: &mut [f64]) {
-        super::spmv(&self.0, x, y);
+        super::uniform::spmv(&self.0, x, y);
     }
 }

@@ -4,7 +4,7 @@
 //! needs the stored entries asks for them and is told when there are none.
 
 use super::hierarchy::Operator;
-use super::matrix::{Precision, TransportMatrix};
+use super::uniform::{Precision, TransportMatrix};
 use sprs::CsMat;
 
 /// The transport operator `G` over `(patch, cell)` unknowns.

@@ -1,6 +1,6 @@
 //! The hierarchical model (`docs/design.md` §3b): roots meshed at `root_size`, the luminaires'
 //! direct light on them (at a few points of each) as the first source term, then passes of refinement iterated with
-//! a solve (`kernel::hierarchy::iterate`). Before every solve the leaves are split where
+//! a solve (`kernel::refine_with_solves`). Before every solve the leaves are split where
 //! the luminaires' light varies over them by more than the error allowed (their shadow
 //! boundaries and the fall-off under them), and `L0 = L_e + B·D` is integrated on the
 //! leaves as on a uniform mesh (`luminaire::patch_lights`), except that a shadow edge is
@@ -14,8 +14,8 @@ use super::source::source_term;
 use super::system::{AssemblyStats, HierarchyRecord, Model, ModelError};
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch};
-use crate::kernel::hierarchy::{Hierarchy, Iterated, Operator, Options, iterate, sample_points};
-use crate::kernel::{Footprint, Kernel, Transport};
+use crate::kernel::hierarchy::{Hierarchy, Options, sample_points};
+use crate::kernel::{Factored, Footprint, Kernel, Refined, refine_with_solves};
 use crate::luminaire::{DirectLight, OPENING_ETA, PatchLight, Source, arriving_at, incoming, patch_lights};
 use crate::material::Block;
 use crate::progress::Progress;
@@ -90,8 +90,10 @@ pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -
     progress.begin("refinement", 0);
     let mut h = Hierarchy::new(&roots, directions.clone(), blocks.clone(), hierarchy_options, &root_l0);
     let mut cache = LightCache { lights: Vec::new() };
+    let mut pass = 0;
     let mut source = |h: &mut Hierarchy| -> Result<Vec<f64>, ModelError> {
-        crate::interrupt::check(|| format!("the hierarchical kernel's refinement pass {}", h.history().len() + 1))?;
+        pass += 1;
+        crate::interrupt::check(|| format!("the hierarchical kernel's refinement pass {pass}"))?;
         let start = Instant::now();
         h.split_leaves(&|visibility, patch, albedo, epsilon| varies(&sources, visibility, patch, albedo, epsilon));
         let direct = cache.on_leaves(h, &sources, &directions);
@@ -101,41 +103,36 @@ pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -
         light_seconds += start.elapsed().as_secs_f64();
         Ok(l0)
     };
-    let mut solver = |op: &Operator, b: &[f64], scale: f64| -> Result<Vec<f64>, ModelError> {
-        let (what, bytes, nonzeros, patches, cells) =
-            ("hierarchical kernel", op.bytes(), op.pieces() as f64, op.dim() / k, k);
+    let mut solver = |kernel: &Kernel, b: &[f64], scale: f64| -> Result<Vec<f64>, ModelError> {
+        let g = &kernel.g;
+        let (what, bytes, nonzeros, patches, cells) = ("hierarchical kernel", g.bytes(), g.nnz() as f64, g.rows() / k, k);
         Footprint { what, bytes, nonzeros, patches, cells }.check(d.memory_limit)?;
         let params = SolveParams { tolerance: (REFINEMENT_RESIDUAL * scale).min(0.5), ..SolveParams::default() };
-        let system = System { operator: op, explicit: None, areas: &[], l0: b };
+        let operator = Factored::new(kernel);
+        let system = System { operator: &operator, explicit: None, areas: &[], l0: b };
         let (x, _) = solve(Method::Gmres { restart: 30 }, &system, &params, &mut |_, _| {})?;
         progress.advance(1);
         Ok(x)
     };
-    let Iterated { operator, l0, .. } = iterate(&mut h, &mut source, &mut solver)?;
+    let Refined { kernel, leaves: mesh, l0, history, .. } = refine_with_solves(&mut h, &mut source, &mut solver)?;
     progress.end();
     let kernel_seconds = t.elapsed().as_secs_f64() - light_seconds;
     let direct = cache.on_leaves(&h, &sources, &directions);
-    let mesh = h.leaf_mesh();
     let t_bvh = Instant::now();
     let visibility = Visibility::build(&mesh);
     let bvh_seconds = t_bvh.elapsed().as_secs_f64();
-    let history = h.history().to_vec();
     let stats = AssemblyStats {
         mesh_seconds,
         bvh_seconds,
         kernel_seconds,
         light_seconds: root_light_seconds + light_seconds,
-        pairs: operator.links(),
+        pairs: kernel.g.hierarchy().map_or(0, |g| g.links()),
         rays: history.iter().map(|p| p.rays).sum::<usize>() + root_light.rays + direct.rays,
         balance: None,
     };
     let record =
         HierarchyRecord { parameters, patch_size: d.patch_size, roots: roots.len(), history, census: h.census() };
-    let patch_material = mesh.patches.iter().map(|p| p.material).collect();
-    let twin = mesh.patches.iter().map(|p| p.twin).collect();
-    let g = Transport::Hierarchical(Box::new(operator));
-    check_transport(scene, &mesh, &g, k)?;
-    let kernel = Kernel { g, directions, blocks, patch_material, twin };
+    check_transport(scene, &mesh, &kernel.g, k)?;
     let faces = Faces::of(&mesh);
     let materials = scene.materials.iter().map(|m| m.model.clone()).collect();
     Ok(Model { mesh, visibility, faces, kernel, materials, l0, sources, direct, stats, hierarchy: Some(record) })

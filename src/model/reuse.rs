@@ -1,4 +1,4 @@
-//! The explicit model around a stored `G` (issue 15, `docs/kernel-file.md`): the mesh and
+//! The uniform model around a stored `G` (issue 15, `docs/kernel-file.md`): the mesh and
 //! its ray caster rebuilt from the case (cheap), `G` as read from a kernel file instead of
 //! assembled, the blocks `B` and the luminaires' direct light `D` as stored or, when only
 //! they changed, rebuilt from the case, and `L0 = L_e + B·D` (`docs/design.md` §2, §3).
@@ -42,7 +42,7 @@ pub struct NotThisMesh {
 }
 
 impl Model {
-    /// The explicit model of `scene` around the stored parts: nothing is assembled.
+    /// The uniform model of `scene` around the stored parts: nothing is assembled.
     pub fn with_kernel(scene: &Scene, stored: StoredParts) -> Result<Model, NotThisMesh> {
         let t = Instant::now();
         let mesh = Mesh::build(&scene.surfaces, scene.discretization.patch_size);
@@ -57,9 +57,7 @@ impl Model {
         let bvh_seconds = t.elapsed().as_secs_f64();
         let blocks =
             stored.blocks.unwrap_or_else(|| scene.materials.iter().map(|m| m.model.block(&directions)).collect());
-        let patch_material = mesh.patches.iter().map(|p| p.material).collect();
-        let twin = mesh.patches.iter().map(|p| p.twin).collect();
-        let kernel = Kernel { g: Transport::Uniform(stored.g), directions, blocks, patch_material, twin };
+        let kernel = Kernel::on_mesh(Transport::Uniform(stored.g), &mesh, directions, blocks);
         let t = Instant::now();
         let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
         let direct =

@@ -6,7 +6,7 @@ use super::range::OutOfRange;
 use crate::geometry::Mesh;
 use crate::interrupt::Interrupted;
 use crate::kernel::hierarchy::{Census, Pass};
-use crate::kernel::{BalanceReport, Kernel, OverLimit, TooLarge};
+use crate::kernel::{BalanceReport, Kernel, TooLarge};
 use crate::luminaire::{DirectLight, Source};
 use crate::material::MaterialModel;
 use crate::scene::Hierarchical;
@@ -17,11 +17,8 @@ use thiserror::Error;
 /// Why no model was built.
 #[derive(Debug, Error)]
 pub enum ModelError {
-    /// Refused before meshing, from the surfaces' closed forms.
-    #[error(transparent)]
-    OverLimit(#[from] OverLimit),
-    /// Refused after meshing: the kernel's estimate (or the hierarchy's operator) over the
-    /// memory limit.
+    /// Over the memory limit: the model's forecast before meshing, its count on the mesh,
+    /// or the hierarchy's links after a pass.
     #[error(transparent)]
     TooLarge(#[from] TooLarge),
     /// A value of the source term or the kernel that no solve can carry.

@@ -5,7 +5,7 @@ use super::range::{check_blocks, check_source, check_transport};
 use super::source::source_term;
 use super::system::{AssemblyStats, Model, ModelError};
 use crate::geometry::Mesh;
-use crate::kernel::{Assembled, Estimate, Footprint, Kernel, Transport, TransportMatrix, assemble};
+use crate::kernel::{Assembled, Forecast, Kernel, Transport, TransportMatrix, assemble};
 use crate::luminaire::{Source, direct_light};
 use crate::progress::Progress;
 use crate::scene::Scene;
@@ -21,15 +21,7 @@ pub fn build(scene: &Scene, progress: &dyn Progress) -> Result<Model, ModelError
     let d = &scene.discretization;
     let mut mesh = Mesh::build(&scene.surfaces, d.patch_size);
     let directions = d.directions.set();
-    let estimate = Estimate::of(&mesh, &directions);
-    Footprint {
-        what: "kernel G",
-        bytes: estimate.peak_bytes(),
-        nonzeros: estimate.nonzeros,
-        patches: estimate.patches,
-        cells: estimate.cells,
-    }
-    .check(d.memory_limit)?;
+    Forecast::counted(&mesh, scene.materials.len(), &directions).check(d.memory_limit)?;
     let mesh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let visibility = Visibility::build(&mesh);
@@ -43,11 +35,9 @@ pub fn build(scene: &Scene, progress: &dyn Progress) -> Result<Model, ModelError
     progress.end();
     let blocks: Vec<_> = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
     check_blocks(scene, &blocks, directions.len())?;
-    let patch_material = mesh.patches.iter().map(|p| p.material).collect();
-    let twin = mesh.patches.iter().map(|p| p.twin).collect();
     let g = Transport::Uniform(TransportMatrix::new(g, d.precision));
     check_transport(scene, &mesh, &g, directions.len())?;
-    let kernel = Kernel { g, directions, blocks, patch_material, twin };
+    let kernel = Kernel::on_mesh(g, &mesh, directions, blocks);
     let kernel_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();

@@ -2,7 +2,6 @@
 //! The solvers own it (as in faer); the kernel's operators are adapted here, so the kernel
 //! floor knows nothing of solvers.
 
-use crate::kernel::hierarchy::Operator;
 use crate::kernel::{Explicit, Factored};
 
 /// A square linear operator `y = A x`.
@@ -30,15 +29,5 @@ impl LinOp for Explicit {
 
     fn apply(&self, x: &[f64], y: &mut [f64]) {
         Explicit::apply(self, x, y);
-    }
-}
-
-impl LinOp for Operator {
-    fn dim(&self) -> usize {
-        Operator::dim(self)
-    }
-
-    fn apply(&self, x: &[f64], y: &mut [f64]) {
-        Operator::apply(self, x, y);
     }
 }

@@ -4,7 +4,7 @@
 use super::{hierarchy, options};
 use crate::support::furnace;
 use ugo::directions::DirectionSet;
-use ugo::kernel::facing;
+use ugo::geometry::facing;
 use ugo::kernel::hierarchy::{Hierarchy, NONE};
 
 /// Leaf indices under node `id`.

@@ -2,7 +2,7 @@
 //! agrees with the explicit (balanced) kernel assembled on the same leaf mesh: `K x` for
 //! any `x`, and the solved field.
 
-use super::{box_with_block, hierarchy, options, relative_difference};
+use super::{box_with_block, hierarchy, links, options, relative_difference};
 use crate::support::furnace;
 use ugo::directions::DirectionSet;
 use ugo::kernel::hierarchy::Options;
@@ -23,18 +23,13 @@ fn compare(scene: Scene, directions: DirectionSet) -> (f64, f64) {
     let quadrature = Quadrature { eta: 0.25, max_depth: 4 };
     let settings = Options { balance: false, quadrature, ..options(0.0, 0.25) };
     let mut h = hierarchy(&scene, 1.0, directions.clone(), settings);
-    let op = h.operator();
-    let leaves = h.leaf_mesh();
+    let (hierarchical, leaves) = Kernel::on_leaves(&mut h);
+    let op = Factored::new(&hierarchical);
     let visibility = Visibility::build(&leaves);
     // the same outer quadrature: with K > 1 its points decide the receiver cells
     let t = assemble(&leaves, &visibility, &directions, &settings.quadrature, &|_| {}).unwrap();
-    let kernel = Kernel {
-        g: Transport::Uniform(TransportMatrix::new(t.g, Precision::Double)),
-        directions: directions.clone(),
-        blocks: blocks(&scene, &directions),
-        patch_material: leaves.patches.iter().map(|p| p.material).collect(),
-        twin: leaves.patches.iter().map(|p| p.twin).collect(),
-    };
+    let g = Transport::Uniform(TransportMatrix::new(t.g, Precision::Double));
+    let kernel = Kernel::on_mesh(g, &leaves, directions.clone(), blocks(&scene, &directions));
     let explicit = Factored::new(&kernel);
     assert_eq!(op.dim(), explicit.dim());
     let x: Vec<f64> = (0..op.dim()).map(|i| 1.0 + 0.5 * (i as f64 * 0.37).sin()).collect();
@@ -49,7 +44,7 @@ fn compare(scene: Scene, directions: DirectionSet) -> (f64, f64) {
          solutions {solution:.2e}",
         directions.len(),
         leaves.len(),
-        op.links(),
+        links(&hierarchical),
         t.pairs
     );
     (kx, solution)

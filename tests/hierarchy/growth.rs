@@ -10,12 +10,9 @@ fn links_grow_much_slower_than_leaves_squared() {
         .iter()
         .map(|&h| {
             let hier = hierarchy(&scene, 1.0, DirectionSet::single(), options(1e-2, h));
-            let pass = hier.history()[0];
-            eprintln!(
-                "growth: smallest {h} m: {} leaves, {} links, {} rays, {:.2} s",
-                pass.leaves, pass.links, pass.rays, pass.seconds
-            );
-            (pass.leaves as f64, pass.links as f64)
+            let (leaves, links, work) = (hier.tree().leaves().len(), hier.links().len(), hier.work());
+            eprintln!("growth: smallest {h} m: {leaves} leaves, {links} links, {} rays, {:.2} s", work.rays, work.seconds);
+            (leaves as f64, links as f64)
         })
         .collect();
     let (first, last) = (counts[0], counts[counts.len() - 1]);

@@ -19,7 +19,8 @@ use glam::DVec3;
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
 use ugo::geometry::{Emission, Shape};
-use ugo::kernel::hierarchy::{Hierarchy, Iterated, Operator, Options, iterate};
+use ugo::kernel::hierarchy::{Hierarchy, Options};
+use ugo::kernel::{Factored, Kernel, Refined, refine_with_solves};
 use ugo::scene::Scene;
 use ugo::solve::{Method, SolveError, SolveParams, System, solve};
 
@@ -40,19 +41,31 @@ pub fn options(tolerance: f64, patch_size: f64) -> Options {
 }
 
 /// `x = b + K x` by `method` to a relative residual of `1e-10` (relaxed by `scale`).
-pub fn solver(method: Method) -> impl FnMut(&Operator, &[f64], f64) -> Result<Vec<f64>, SolveError> {
-    move |op, b, scale| {
+pub fn solver(method: Method) -> impl FnMut(&Kernel, &[f64], f64) -> Result<Vec<f64>, SolveError> {
+    move |kernel, b, scale| {
         let params = SolveParams { tolerance: 1e-10 * scale, max_iterations: 10_000, ..SolveParams::default() };
-        let system = System { operator: op, explicit: None, areas: &[], l0: b };
+        let operator = Factored::new(kernel);
+        let system = System { operator: &operator, explicit: None, areas: &[], l0: b };
         solve(method, &system, &params, &mut |_, _| {}).map(|(x, _)| x)
     }
 }
 
-/// Solves and refines in passes with `method`.
-pub fn solved(h: &mut Hierarchy, method: Method) -> (Vec<f64>, Operator) {
-    let Iterated { x, operator, .. } =
-        iterate(h, &mut |h| Ok(h.emission()), &mut solver(method)).expect("the solve converges");
-    (x, operator)
+/// Solves and refines in passes with `method`: the field and the kernel on the final leaves.
+pub fn solved(h: &mut Hierarchy, method: Method) -> (Vec<f64>, Kernel) {
+    let Refined { x, kernel, history, .. } =
+        refine_with_solves(h, &mut |h| Ok(h.emission()), &mut solver(method)).expect("the solve converges");
+    eprintln!("passes: {history:?}");
+    (x, kernel)
+}
+
+/// The kernel `K = B·G` on the current leaves of `h`.
+pub fn kernel(h: &mut Hierarchy) -> Kernel {
+    Kernel::on_leaves(h).0
+}
+
+/// Links of the hierarchical kernel `k`.
+pub fn links(k: &Kernel) -> usize {
+    k.g.hierarchy().map_or(0, |g| g.links())
 }
 
 /// A closed unit cube seen from inside (reflectance `rho`, every face emitting 1 cd/m²)

@@ -1,7 +1,7 @@
 //! The push's weights kept between operator builds (`push.rs`, `SeenCache`): after a
-//! refinement pass the operator built with the kept weights is the one built afresh.
+//! refinement pass the operator (`G`) built with the kept weights is the one built afresh.
 
-use super::{box_with_block, hierarchy, options, relative_difference, solver};
+use super::{box_with_block, hierarchy, kernel, options, relative_difference, solver};
 use ugo::directions::DirectionSet;
 use ugo::geometry::Emission;
 use ugo::kernel::hierarchy::{Operator, Options, SeenCache};
@@ -17,20 +17,19 @@ fn kept_push_weights_give_the_operator_built_afresh() {
     let directions = DirectionSet::single();
     // unbalanced: the balancing factors would follow any difference of the weights
     let mut h = hierarchy(&scene, 0.5, directions.clone(), Options { balance: false, ..options(3e-2, 0.05) });
-    let first = h.operator();
+    let first = kernel(&mut h);
     let x = solver(Method::Neumann)(&first, &h.emission(), 1.0).unwrap();
     let refined = h.refine(&x);
     assert!(refined > 0, "the solved field refines some links");
     let kept = h.operator();
-    let blocks: Vec<_> = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
-    let fresh = Operator::new(h.tree(), h.links(), &blocks, &directions, &mut SeenCache::default());
+    let fresh = Operator::new(h.tree(), h.links(), &directions, &mut SeenCache::default());
     let y: Vec<f64> = (0..kept.dim()).map(|i| 1.0 + (i % 7) as f64).collect();
     let (mut a, mut b) = (vec![0.0; y.len()], vec![0.0; y.len()]);
-    kept.apply(&y, &mut a);
-    fresh.apply(&y, &mut b);
+    kept.arriving(&y, &mut a);
+    fresh.arriving(&y, &mut b);
     let difference = relative_difference(&a, &b);
     eprintln!(
-        "push weights kept: {refined} links refined, {} leaves, max |Δ(Kx)|/max|Kx| = {difference:.1e}",
+        "push weights kept: {refined} links refined, {} leaves, max |Δ(Gx)|/max|Gx| = {difference:.1e}",
         kept.dim()
     );
     assert!(difference < 1e-14, "{difference}");

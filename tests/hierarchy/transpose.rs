@@ -19,7 +19,8 @@ fn leaving_is_the_transpose_of_arriving() {
     for directions in [DirectionSet::single(), DirectionSet::hemisphere(8)] {
         let k = directions.len();
         let mut h = hierarchy(&box_with_block(0.6), 0.5, directions, options(1e-2, 0.1));
-        let (_, op) = solved(&mut h, Method::Gmres { restart: 30 });
+        let (_, kernel) = solved(&mut h, Method::Gmres { restart: 30 });
+        let Some(op) = kernel.g.hierarchy() else { panic!("not hierarchical") };
         let (x, y) = (wavy(op.dim(), 0.0), wavy(op.dim(), 1.3));
         let (mut gx, mut gty) = (vec![0.0; op.dim()], vec![0.0; op.dim()]);
         op.arriving(&x, &mut gx);

@@ -2,7 +2,8 @@
 
 use crate::support::{build_with, furnace};
 use ugo::directions::DirectionSet;
-use ugo::kernel::{Explicit, Factored, facing};
+use ugo::geometry::facing;
+use ugo::kernel::{Explicit, Factored};
 use ugo::transfer::form_factor::{Binning, Quadrature, binned_pair_integral, pair_integral};
 
 #[test]
@@ -91,7 +92,7 @@ fn the_memory_estimate_bounds_the_assembled_kernel() {
     scene.discretization.patch_size = 0.1;
     for set in [DirectionSet::single(), DirectionSet::hemisphere(64)] {
         let model = build_with(&scene, set.clone());
-        let estimate = ugo::kernel::Estimate::of(&model.mesh, &set);
+        let estimate = ugo::kernel::Forecast::counted(&model.mesh, scene.materials.len(), &set);
         let actual = model.kernel.g.nnz() as f64;
         eprintln!("K = {}: estimated {:.0} non-zeros, assembled {actual}", set.len(), estimate.nonzeros);
         assert!(estimate.nonzeros >= actual && estimate.nonzeros < 3.0 * actual, "{} vs {actual}", estimate.nonzeros);

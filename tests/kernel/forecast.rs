@@ -7,7 +7,7 @@ use glam::DVec3;
 use std::time::Instant;
 use ugo::directions::{DirectionSet, Scheme};
 use ugo::geometry::{Mesh, Shape, element_count, tessellate};
-use ugo::kernel::{Estimate, Forecast};
+use ugo::kernel::{Forecast, Need};
 use ugo::model::{Model, ModelError};
 use ugo::scene::{Hierarchical, KernelKind};
 
@@ -43,7 +43,7 @@ fn the_forecast_of_a_closed_box_counts_its_facing_pairs_exactly() {
     let scene = furnace(1.0, 0.5, 1.0, 0.1);
     let f = Model::forecast(&scene);
     let mesh = Mesh::build(&scene.surfaces, 0.1);
-    let counted = Estimate::of(&mesh, &scene.discretization.directions.set());
+    let counted = Forecast::counted(&mesh, 1, &scene.discretization.directions.set());
     assert_eq!(f.patches, 600.0);
     assert_eq!(f.facing_pairs, counted.facing_pairs);
     assert_eq!(f.nonzeros, counted.nonzeros);
@@ -51,7 +51,7 @@ fn the_forecast_of_a_closed_box_counts_its_facing_pairs_exactly() {
     // K = 16 spreads each pair over cells: within a factor of two of the mesh's estimate.
     let k16 = DirectionSet::hemisphere(16);
     let f = Forecast::uniform(&scene.surfaces, 1, 0.1, &k16);
-    let counted = Estimate::of(&mesh, &k16);
+    let counted = Forecast::counted(&mesh, 1, &k16);
     assert!((f.nonzeros / counted.nonzeros - 1.0).abs() < 0.5, "{} against {}", f.nonzeros, counted.nonzeros);
     build(&scene);
 }
@@ -62,7 +62,8 @@ fn tiny_patch_sizes_are_refused_before_meshing_with_the_estimate() {
         let scene = furnace(1.0, 0.5, 1.0, h);
         let started = Instant::now();
         let result = Model::build(&scene, &ugo::progress::Silent);
-        let Err(ModelError::OverLimit(e)) = result else { panic!("patch_size {h}: not refused before meshing") };
+        let Err(ModelError::TooLarge(e)) = result else { panic!("patch_size {h}: not refused before meshing") };
+        let Need::Model(forecast) = e.need else { panic!("patch_size {h}: refused as a matrix") };
         assert!(started.elapsed().as_secs_f64() < 1.0, "patch_size {h}: {:?}", started.elapsed());
         let message = e.to_string();
         for fragment in
@@ -70,7 +71,7 @@ fn tiny_patch_sizes_are_refused_before_meshing_with_the_estimate() {
         {
             assert!(message.contains(fragment), "{message} lacks {fragment}");
         }
-        assert!(e.forecast.patches >= 6.0 / (h * h) * 0.99 || e.forecast.patches.is_infinite(), "{message}");
+        assert!(forecast.patches >= 6.0 / (h * h) * 0.99 || forecast.patches.is_infinite(), "{message}");
     }
 }
 
@@ -84,7 +85,7 @@ fn the_material_blocks_count_in_the_forecast() {
     let mut scene = scene;
     scene.discretization.directions = Scheme::Cells(65535);
     scene.discretization.memory_limit = 16 << 30;
-    let Err(ModelError::OverLimit(e)) = Model::build(&scene, &ugo::progress::Silent) else {
+    let Err(ModelError::TooLarge(e)) = Model::build(&scene, &ugo::progress::Silent) else {
         panic!("65535 cells accepted under 16 GiB")
     };
     assert!(e.to_string().contains("material blocks"), "{e}");
@@ -99,7 +100,7 @@ fn the_hierarchy_forecasts_its_roots_and_its_most_leaves() {
     assert_eq!(f.leaves, Some(6.0 * 200.0 * 200.0), "the uniform mesh at patch_size / 2");
     assert_eq!(f.nonzeros, 0.0);
     scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 1e-9, link_tolerance: 0.1 });
-    let Err(ModelError::OverLimit(e)) = Model::build(&scene, &ugo::progress::Silent) else {
+    let Err(ModelError::TooLarge(e)) = Model::build(&scene, &ugo::progress::Silent) else {
         panic!("a hierarchy of 6e18 roots accepted")
     };
     assert!(e.to_string().contains("roots of the hierarchy"), "{e}");

@@ -52,6 +52,18 @@ pub fn analyse(sources: &[(String, String)]) -> Vec<Fault> {
     faults
 }
 
+/// Every import between two files, as (importing file, imported file), paths relative to
+/// `src/`.
+pub fn imports(sources: &[(String, String)]) -> Vec<(String, String)> {
+    let binary = binary_modules(sources);
+    let files: Vec<File> = sources.iter().map(|(p, t)| file(p, t, &binary)).collect();
+    let edges = edges(&files);
+    edges
+        .iter()
+        .flat_map(|(from, to)| to.iter().map(|t| (files[*from].path.clone(), files[*t].path.clone())))
+        .collect()
+}
+
 /// The top-level modules of the binary (`mod x;` in `main.rs`).
 fn binary_modules(sources: &[(String, String)]) -> BTreeSet<String> {
     let main = sources.iter().find(|(p, _)| p == "main.rs").map_or("", |(_, t)| t.as_str());

@@ -8,7 +8,7 @@
 mod graph;
 mod paths;
 
-use graph::{Fault, analyse};
+use graph::{Fault, analyse, imports};
 use std::path::Path;
 
 /// Every `.rs` file under `src/`, as (path relative to `src/`, text).
@@ -36,6 +36,35 @@ fn sources() -> Vec<(String, String)> {
 fn no_import_points_up_a_floor_and_no_files_import_each_other() {
     let faults = analyse(&sources());
     assert!(faults.is_empty(), "layering faults:\n{}", faults.iter().map(|f| format!("  {f}\n")).collect::<String>());
+}
+
+/// Imports between the two kernels, `kernel/uniform/` and `kernel/hierarchy/`, either way.
+fn between_peers(sources: &[(String, String)]) -> Vec<(String, String)> {
+    let (uniform, hierarchy) = ("kernel/uniform/", "kernel/hierarchy/");
+    let crosses = |a: &str, b: &str| a.starts_with(uniform) && b.starts_with(hierarchy);
+    imports(sources).into_iter().filter(|(from, to)| crosses(from, to) || crosses(to, from)).collect()
+}
+
+#[test]
+fn the_uniform_and_the_hierarchical_kernel_never_import_each_other() {
+    let crossing = between_peers(&sources());
+    assert!(crossing.is_empty(), "imports between the kernels: {crossing:?}");
+}
+
+#[test]
+fn an_import_between_the_kernels_is_found() {
+    let lib = "//! 1. kernel: [`kernel`]\npub mod kernel;\n";
+    let files = [
+        ("lib.rs", lib),
+        ("kernel/mod.rs", "pub mod hierarchy;\nmod uniform;\npub use uniform::assemble;\n"),
+        ("kernel/uniform/mod.rs", "mod assembly;\npub use assembly::assemble;\n"),
+        ("kernel/uniform/assembly.rs", "pub fn assemble() {}\n"),
+        ("kernel/hierarchy/mod.rs", "mod link;\n"),
+        ("kernel/hierarchy/link.rs", "use crate::kernel::assemble;\n"),
+    ];
+    let sources: Vec<(String, String)> = files.iter().map(|(p, t)| (p.to_string(), t.to_string())).collect();
+    let crossing = between_peers(&sources);
+    assert_eq!(crossing, [("kernel/hierarchy/link.rs".to_string(), "kernel/uniform/assembly.rs".to_string())]);
 }
 
 /// A made-up crate: `lib.rs` with two floors, and the given files.

@@ -67,7 +67,7 @@ fn the_wide_and_binary_hierarchies_answer_every_query_alike() {
     for (i, &(a, pa)) in points.iter().enumerate() {
         for &(b, pb) in points.iter().skip(i + 1).step_by(5) {
             let (p, q) = (&mesh.patches[pa], &mesh.patches[pb]);
-            if !ugo::kernel::facing(p, q) {
+            if !ugo::geometry::facing(p, q) {
                 continue;
             }
             let (fa, fb) = (p.face, q.face);

@@ -9,7 +9,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 use std::time::Instant;
 use ugo::geometry::Mesh;
-use ugo::kernel::facing;
+use ugo::geometry::facing;
 use ugo::random::Rng;
 use ugo::visibility::{BuildPreset, NO_FACE, Visibility, VisibilityOptions};
 

@@ -6,7 +6,7 @@
 //! conserved). The exact kernel has both properties (reciprocity makes the columns the
 //! rows); the hierarchy's links lose them where a few rays between stand-ins decide a
 //! whole cluster pair's visibility, or a link is dropped as occluded while part of it is
-//! seen. The uniform kernel is balanced the same way (`kernel/balance.rs`, symmetrically:
+//! seen. The uniform kernel is balanced the same way (`kernel/uniform/balance.rs`, symmetrically:
 //! its exchange areas are reciprocal). Sinkhorn–Knopp by alternating row and column
 //! sweeps (Sinkhorn & Knopp 1967), each one application of `G` and one of `Gᵀ`.
 
@@ -80,6 +80,7 @@ impl Operator {
         report.max_correction = receive.iter().chain(&send).map(|f| (f - 1.0).abs()).fold(0.0, f64::max);
         self.receive = receive;
         self.send = send;
+        self.balanced = Some(report);
         report
     }
 }

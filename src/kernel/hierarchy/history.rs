@@ -30,3 +30,16 @@ pub struct Pass {
     /// Wall time of the solve that followed the pass, s (0 until it ran).
     pub solve_seconds: f64,
 }
+
+/// Work the hierarchy has spent since it was made, counted up by its verbs: the passes'
+/// records are differences of two of these.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Work {
+    /// Occlusion rays traced: links tested and leaves' closures measured.
+    pub rays: usize,
+    /// Leaf elements split along the light from outside the links
+    /// ([`super::Hierarchy::split_leaves`]).
+    pub splits: usize,
+    /// Wall time of linking and refining, s.
+    pub seconds: f64,
+}

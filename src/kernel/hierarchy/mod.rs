@@ -5,31 +5,38 @@
 //! of all links between leaves.
 //!
 //! Use: `Hierarchy::new(&roots, directions, blocks, options, l0)` links the roots (a coarse
-//! `Mesh`, with its source term); `iterate(&mut h, source, solve)` solves and refines in
-//! passes; `h.operator()` is `K` on the leaves (a `LinOp`), `h.leaf_mesh()` the leaves'
-//! mesh, `h.split_leaves(varies)` splits them along the luminaires' shadows.
+//! `Mesh`, with its source term); `h.operator()` is `G` on the leaves, `h.leaf_mesh()` the
+//! leaves' mesh, `h.split_leaves(varies)` splits them along the luminaires' shadows,
+//! `h.refine(x)` refines again with a solved field. `K = B·G` over it, and the passes
+//! iterated with solves, are `crate::kernel::{Kernel, refine_with_solves}`: this module
+//! knows neither the material blocks' product nor the uniform kernel.
 
 mod balance;
+mod balanced;
 mod census;
 mod cluster;
 mod expand;
 mod history;
-mod iterate;
 mod kernel;
+mod leaves;
 mod link;
+mod memo;
 mod node;
 mod operator;
+mod options;
 mod oracle;
+mod pass;
 mod push;
 mod refine;
 mod sight;
+mod split;
 mod transpose;
 mod tree;
 
 pub use census::Census;
-pub use history::Pass;
-pub use iterate::{Iterated, Solver, SourceTerm, iterate};
-pub use kernel::{DEFAULT_TOLERANCE, Hierarchy, Options};
+pub use history::{Pass, Work};
+pub use kernel::Hierarchy;
+pub use options::{DEFAULT_TOLERANCE, Options};
 pub use link::{ALL_CELLS, Link, Piece};
 pub use node::{Kind, NONE, Node};
 pub use operator::Operator;

@@ -1,19 +1,18 @@
-//! `K x` on the leaf unknowns (`docs/design.md` §3b, "Apply K x"): pull (leaf values up the trees
+//! `G x` on the leaf unknowns (`docs/design.md` §3b, "Apply K x"): pull (leaf values up the trees
 //! as area averages; into a cluster as the cell-weighted mean `Σ_m (μ_m/π) x_m`, which means
 //! the same in every frame), gather over the links at every level (`z_p += F_pq x̄_q`, by
 //! cells), push (each node's gathered light to all its leaves, each leaf with its own share,
-//! `push.rs`), then the material blocks of every leaf: `y = ρ̄ z + τ̄ z_twin`, as
-//! `Kernel::apply_materials` does for `G x`. Nodes are stored in depth-first order, so pull
-//! is one backward sweep; gather (over receivers) and push (over leaves) run in parallel.
-//! Nothing is allocated per application.
+//! `push.rs`). The material blocks are the kernel's (`crate::kernel::Kernel`), as for the
+//! uniform kernel's `G`. Nodes are stored in depth-first order, so pull is one backward
+//! sweep; gather (over receivers) and push (over leaves) run in parallel. Nothing is
+//! allocated per application.
 
 use super::link::{ALL_CELLS, Link};
 use super::node::{Kind, NONE};
 use super::push::{SeenCache, push_rows};
 use super::tree::Tree;
 use crate::directions::DirectionSet;
-use crate::kernel::blocks::apply_blocks;
-use crate::material::Block;
+use crate::kernel::BalanceReport;
 use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::sync::Mutex;
@@ -27,16 +26,15 @@ pub(super) struct Entry {
     pub(super) f: f64,
 }
 
-/// Work arrays: `nodes × K` (means, gathered light) and `leaves × K` (sent and arriving
-/// light), shared by `K x` and `Gᵀ y` (`transpose.rs`).
+/// Work arrays: `nodes × K` (means, gathered light) and `leaves × K` (sent light), shared
+/// by `G x` and `Gᵀ y` (`transpose.rs`).
 pub(super) struct Scratch {
     sent: Vec<f64>,
     pub(super) mean: Vec<f64>,
     pub(super) gathered: Vec<f64>,
-    arriving: Vec<f64>,
 }
 
-/// The hierarchical kernel `K = B·G` as an operator on `x[leaf·K + k]`.
+/// The hierarchical transport `G` as an operator on `x[leaf·K + k]`.
 pub struct Operator {
     pub(super) k: usize,
     /// Tree node of each leaf, in unknown order.
@@ -61,27 +59,19 @@ pub struct Operator {
     links: usize,
     /// `μ_d/π` of each cell.
     pub(super) share: Vec<f64>,
-    blocks: Vec<Block>,
-    leaf_block: Vec<u32>,
-    /// The leaf on the other side of a two-sided leaf, or [`NONE`].
-    leaf_twin: Vec<u32>,
     /// Each leaf's balancing factors (`balance.rs`): what it receives and what it sends
     /// are scaled by them; 1 until balanced.
     pub(super) receive: Vec<f64>,
     pub(super) send: Vec<f64>,
+    /// How balancing these factors went (`None`: not balanced).
+    pub(super) balanced: Option<BalanceReport>,
     pub(super) scratch: Mutex<Scratch>,
 }
 
 impl Operator {
     /// The operator of `links` over the leaves of `tree`; the push's weights are kept in
     /// `seen` from one build to the next.
-    pub fn new(
-        tree: &Tree,
-        links: &[Link],
-        blocks: &[Block],
-        directions: &DirectionSet,
-        seen: &mut SeenCache,
-    ) -> Operator {
+    pub fn new(tree: &Tree, links: &[Link], directions: &DirectionSet, seen: &mut SeenCache) -> Operator {
         let k = directions.len();
         let order = tree.preorder();
         let mut position = vec![NONE; tree.len()];
@@ -95,10 +85,6 @@ impl Operator {
         let leaf_position = leaves.iter().map(|&id| position[id as usize]).collect();
         let (push_row, push) = push_rows(tree, links, &position, &leaves, seen);
         let (row, entries) = gather_rows(links, &position, order.len());
-        let mut leaf_index = vec![NONE; tree.len()];
-        leaves.iter().enumerate().for_each(|(l, &id)| leaf_index[id as usize] = l as u32);
-        let leaf_twin = leaves.iter().map(|&id| twin_of(tree, id).map_or(NONE, |t| leaf_index[t as usize])).collect();
-        let leaf_block = leaves.iter().map(|&id| tree.node(id).patch().map_or(0, |p| p.material)).collect();
         let (nodes, dim) = (order.len(), leaves.len() * k);
         Operator {
             k,
@@ -115,16 +101,13 @@ impl Operator {
             entries,
             links: links.len(),
             share: directions.cells().iter().map(|c| c.projected / PI).collect(),
-            blocks: blocks.to_vec(),
-            leaf_block,
-            leaf_twin,
             receive: vec![1.0; dim / k],
             send: vec![1.0; dim / k],
+            balanced: None,
             scratch: Mutex::new(Scratch {
                 sent: vec![0.0; dim],
                 mean: vec![0.0; nodes * k],
                 gathered: vec![0.0; nodes * k],
-                arriving: vec![0.0; dim],
             }),
         }
     }
@@ -149,6 +132,11 @@ impl Operator {
         self.k
     }
 
+    /// How balancing went (`None`: not balanced).
+    pub fn balanced(&self) -> Option<BalanceReport> {
+        self.balanced
+    }
+
     /// Gathered pieces of all links (one per link for `K = 1`, one per cell pair otherwise).
     pub fn pieces(&self) -> usize {
         self.entries.len()
@@ -158,25 +146,17 @@ impl Operator {
     pub fn bytes(&self) -> f64 {
         let nodes = self.parent.len() as f64;
         let per_node = 4.0 + 8.0 + 1.0 + 8.0 + 2.0 * 8.0 * self.k as f64;
-        let per_leaf = 4.0 * 5.0 + 3.0 * 8.0 + 2.0 * 8.0 * self.k as f64;
+        let per_leaf = 4.0 * 2.0 + 3.0 * 8.0 + 8.0 * self.k as f64;
         (self.entries.len() * std::mem::size_of::<Entry>() + self.push.len() * 16) as f64
             + nodes * per_node
             + self.leaves.len() as f64 * per_leaf
-    }
-
-    /// `y = K x`.
-    pub fn apply(&self, x: &[f64], y: &mut [f64]) {
-        let mut s = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
-        let Scratch { sent, mean, gathered, arriving } = &mut *s;
-        self.transport(x, sent, mean, gathered, arriving);
-        apply_blocks(&self.blocks, &self.leaf_block, &self.leaf_twin, self.k, arriving, y);
     }
 
     /// `z = G x`: the light arriving at every leaf and cell (as `Kernel::apply_transport`;
     /// illuminance `E = π Σ_d z_d`, lx).
     pub fn arriving(&self, x: &[f64], z: &mut [f64]) {
         let mut s = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
-        let Scratch { sent, mean, gathered, .. } = &mut *s;
+        let Scratch { sent, mean, gathered } = &mut *s;
         self.transport(x, sent, mean, gathered, z);
     }
 
@@ -297,11 +277,4 @@ fn gather_rows(links: &[Link], position: &[u32], nodes: usize) -> (Vec<usize>, V
         }
     }
     (row, entries)
-}
-
-fn twin_of(tree: &Tree, id: u32) -> Option<u32> {
-    match tree.node(id).kind {
-        Kind::Element { twin, .. } if twin != NONE => Some(twin),
-        _ => None,
-    }
 }

@@ -9,9 +9,10 @@
 //! `G[(i,d),(j,m)] = D_(i,d) D_(j,m) T_ij^{d,m} / A_i` (see [`cell_targets`] for what each
 //! row must carry).
 
-use super::balance::{BalanceReport, balance};
+use super::balance::balance;
+use crate::kernel::BalanceReport;
 use crate::directions::DirectionSet;
-use crate::geometry::{Mesh, Patch};
+use crate::geometry::{Mesh, Patch, facing};
 use crate::interrupt::Interrupted;
 use crate::transfer::form_factor::{Binning, PairIntegral, Quadrature, binned_pair_integral, pair_integral};
 use crate::transfer::occlusion::{POINTS, sample_points, visible_fraction};
@@ -295,13 +296,4 @@ fn merge_pieces(from_a: &[(u16, u16, f64)], from_b: &[(u16, u16, f64)], v: f64, 
         }
     }
     cells.truncate(write);
-}
-
-/// True when some part of each patch lies strictly in front of the other.
-pub fn facing(a: &Patch, b: &Patch) -> bool {
-    let ahead = |p: &Patch, q: &Patch| {
-        let eps = 1e-9 * (p.area + q.area).sqrt();
-        q.polygon.vertices().iter().any(|v| (*v - p.centroid).dot(p.normal) > eps)
-    };
-    ahead(a, b) && ahead(b, a)
 }

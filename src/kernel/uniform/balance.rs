@@ -8,21 +8,8 @@
 //! conserving, while moving each entry only as far as the targets demand (reported as
 //! `max_correction`).
 
+use crate::kernel::BalanceReport;
 use sprs::CsMat;
-
-/// How far balancing moved the exchange areas.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct BalanceReport {
-    /// `max |D_r² − 1|`: the largest relative change of a row.
-    pub max_correction: f64,
-    /// Largest relative row-sum mismatch left, `max |(D T D 1)_r / target_r − 1|`.
-    pub residual: f64,
-    /// Gauss–Seidel sweeps spent.
-    pub iterations: usize,
-    /// True when every enclosed patch's cells carry exactly their projected solid angle
-    /// (balanced by `(patch, cell)`); false when balanced by patch only.
-    pub by_cell: bool,
-}
 
 /// Finds `D` with `D_r Σ_c T_rc D_c = target_r` for the symmetric matrix `t`; rows with a
 /// zero sum or target keep `D_r = 1`.

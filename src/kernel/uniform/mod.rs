@@ -1,0 +1,10 @@
+//! The uniform kernel (`docs/design.md` §3): every facing pair of patches of one mesh
+//! integrated, balanced to reciprocity and closure (`balance.rs`) and stored as one sparse
+//! `G` in double or single precision (`matrix.rs`). It knows nothing of the hierarchy.
+
+mod assembly;
+mod balance;
+mod matrix;
+
+pub use assembly::{Assembled, assemble, row_stride};
+pub use matrix::{Precision, TransportMatrix, spmv};
