@@ -2,12 +2,12 @@
 //! under the ceiling, solved hierarchically (link tolerance 1e-2, leaves to 0.05 m) from roots of
 //! 0.25 m (the case's; the emitter smaller than a root) and of 0.12 m: each probe's
 //! luminance within 1 % plus 3 standard errors of backward Monte Carlo traced here. It
-//! fails today: every probe reads too bright from roots of 0.25 m (the ceiling +3.1 and
-//! +4.5 %) and the ceiling 3.7 % low from roots of 0.12 m, because the emitter's leaves are
-//! balanced to their links' own row sums, which their 64 closure rays admit though they
-//! miss the closure by up to 18 % (docs/hierarchy.md, "An open box at coarse roots"). More
-//! rays at the same four points passed it but moved the opal diffuser's closed form by
-//! 5.8e-3 (the points' quadrature, not the rays, then decides the estimate): not kept.
+//! failed before the emitting leaves were balanced to their columns: every probe read too
+//! bright from roots of 0.25 m (the ceiling +3.1 and +4.5 %) and the ceiling 3.7 % low
+//! from roots of 0.12 m, because the emitter's leaves were balanced to their links' own
+//! row sums (never refined: the emitter is black), which their 64 closure rays admitted
+//! though they missed the closure by up to 18 % (docs/hierarchy.md, "An open box at coarse
+//! roots").
 
 use crate::support::{build, solve};
 use std::path::Path;
@@ -22,7 +22,6 @@ use ugo::trace::{TraceOptions, World, trace_probes};
 const PATHS: usize = 65_536;
 
 #[test]
-#[ignore = "issue 34, open: the emitter's leaves are balanced to coarse link rows (docs/hierarchy.md)"]
 fn the_open_boxs_probes_agree_with_backward_monte_carlo_from_coarse_roots() {
     let mut scene = Scene::load(Path::new("cases/open-box.toml")).unwrap_or_else(|e| panic!("{e}"));
     let KernelKind::Hierarchical(hierarchy) = scene.discretization.kernel else { panic!("not hierarchical") };

@@ -12,8 +12,8 @@ impl Hierarchy {
         if self.options.balance {
             let leaves = operator.leaves().to_vec();
             self.work.rays += self.memo.measure_closure(&self.tree, &self.backs, &self.visibility, &leaves);
-            let targets = self.closure_targets(&operator, &leaves);
             let areas: Vec<f64> = leaves.iter().map(|&id| self.tree.node(id).exposed).collect();
+            let targets = self.closure_targets(&operator, &leaves, &areas);
             let start = leaves.iter().map(|&id| self.memo.last_factors(&self.tree, id)).unzip();
             operator.balance(&targets, &areas, start);
             self.memo.keep_factors(self.tree.len(), &leaves, &operator.receive, &operator.send);
@@ -21,20 +21,30 @@ impl Hierarchy {
         operator
     }
 
-    /// Each leaf's row sum to balance to: its links' own (`G·1`, unbalanced) unless its
-    /// closure rays tell it apart from the closure (all of them met a front and the row is
-    /// not 1, or it lies beyond three standard errors), then the rays' closure.
-    fn closure_targets(&self, operator: &Operator, leaves: &[u32]) -> Vec<f64> {
+    /// Each leaf's row sum to balance to. An emitting leaf's own estimate is its column,
+    /// what the others receive from it per unit of its area (`Σ_i A_i G_ij / A_j`): its
+    /// links as a source are refined against its brightness, while as a receiver a dark
+    /// emitter's are never refined. Another leaf's is its row (`G·1`). Either stands unless
+    /// its closure rays tell it apart from the closure (all of them met a front and it is
+    /// not 1, or it lies beyond three standard errors); then the rays' closure does.
+    fn closure_targets(&self, operator: &Operator, leaves: &[u32], areas: &[f64]) -> Vec<f64> {
         let k = operator.cells();
         let mut rows = vec![0.0; operator.dim()];
         operator.arriving(&vec![1.0; operator.dim()], &mut rows);
+        let weights: Vec<f64> = areas.iter().flat_map(|&a| std::iter::repeat_n(a, k)).collect();
+        let mut columns = vec![0.0; operator.dim()];
+        operator.leaving(&weights, &mut columns);
         leaves
             .iter()
-            .zip(rows.chunks(k))
-            .map(|(&id, row)| {
-                let row: f64 = row.iter().sum();
+            .enumerate()
+            .map(|(l, &id)| {
+                let node = self.tree.node(id);
+                let own = match node.emission > 0.0 && areas[l] > 0.0 {
+                    true => columns[l * k..(l + 1) * k].iter().sum::<f64>() / areas[l],
+                    false => rows[l * k..(l + 1) * k].iter().sum(),
+                };
                 let rays = self.memo.closure(id);
-                if rays.cast == 0 || rays.admits(row) { row } else { rays.share() }
+                if rays.cast == 0 || rays.admits(own) { own } else { rays.share() }
             })
             .collect()
     }
