@@ -60,7 +60,8 @@ fn write_to(path: &Path, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     dataset(&field, "illuminance", &Array1::from(s.illuminance.to_vec()))?;
     dataset(&field, "direct_illuminance", &Array1::from(patch_illuminance(&s.model.direct.arriving, k)))?;
 
-    strings(&file, "warnings", s.warnings.iter().map(String::as_str))?;
+    let warnings: Vec<String> = s.warnings.iter().map(ToString::to_string).collect();
+    strings(&file, "warnings", warnings.iter().map(String::as_str))?;
     let solver = file.create_group("solver")?;
     write_history(&solver, s.info())?;
     if s.runs.len() > 1 {
