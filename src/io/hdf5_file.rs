@@ -278,7 +278,7 @@ fn write_luminaires(g: &hdf5::Group, scene: &Scene, s: &Solution) -> hdf5::Resul
 
 fn write_attributes(file: &hdf5::File, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     let (st, info) = (&s.model.stats, s.info());
-    write_identity(file, info.method, scene, &s.model.kernel.directions)?;
+    write_identity(file, info.method.name(), scene, &s.model.kernel.directions)?;
     let d = &scene.discretization;
     text_attr(file, "kernel", d.kernel.name())?;
     if let Some(chosen) = d.chosen_by_size {
