@@ -1,4 +1,4 @@
-//! Gauss–Seidel sweeps on the explicit kernel: `x_i ← (L0_i + Σ_{j≠i} K_ij x_j)/(1 − K_ii)`
+//! Gauss–Seidel sweeps on the explicit product `B·G`: `x_i ← (L0_i + Σ_{j≠i} K_ij x_j)/(1 − K_ii)`
 //! in row order, using the newest values (the "gathering" counterpart of the lecture's
 //! successive approximation). One sweep costs one kernel application; the residual after
 //! each sweep costs another.

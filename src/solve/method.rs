@@ -12,7 +12,7 @@ use crate::kernel::{Explicit, Factored, Kernel};
 pub enum Method {
     /// Successive approximation (reflection orders).
     Neumann,
-    /// Gauss–Seidel sweeps on the explicit kernel.
+    /// Gauss–Seidel sweeps on the explicit product `B·G`.
     GaussSeidel,
     /// Progressive refinement, one-cell case only.
     Southwell,

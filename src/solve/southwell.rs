@@ -10,7 +10,7 @@ use super::history::residual_norm;
 use super::outcome::{SolveError, SolveInfo, SolveParams};
 use crate::kernel::Explicit;
 
-/// Solves `x = L0 + K x` by shooting; `k` is the explicit kernel, `areas` the patch areas.
+/// Solves `x = L0 + K x` by shooting; `k` is the explicit product `B·G`, `areas` the patch areas.
 pub fn southwell(
     k: &Explicit,
     areas: &[f64],
