@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Plots docs/img/accuracy-vs-time.csv (written by docs/accuracy-study.sh) as an SVG:
 the largest probe error (%) against the wall time of `ugo solve` (s), log-log, one
-series per kernel (explicit = uniform patches, hierarchical). Standard library only.
+series per kernel (uniform, hierarchical). Standard library only.
 docs/office-accuracy.py plots its CSV with it too, with the scene's name as a third argument.
 
     python3 docs/accuracy-plot.py docs/img/accuracy-vs-time.csv docs/img/accuracy-vs-time.svg [SCENE]
@@ -12,7 +12,7 @@ import sys
 
 W, H = 640, 440
 LEFT, RIGHT, TOP, BOTTOM = 70, 20, 40, 60
-COLOURS = {"explicit": "#c0392b", "hierarchical": "#2471a3"}
+COLOURS = {"uniform": "#c0392b", "hierarchical": "#2471a3"}
 
 
 def decades(lo, hi):
@@ -27,7 +27,7 @@ def scale(lo, hi, a, b):
 
 
 def label(row):
-    if row["method"] == "explicit":
+    if row["method"] == "uniform":
         return f'h {row["patch_size_m"]}'
     return f'{row["link_tolerance"]}, {row["smallest_m"]}'
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Accuracy against time of docs/performance.md: the Cornell box solved with the explicit
-# (uniform) kernel at several patch sizes and with the hierarchical kernel at several link
+# Accuracy against time of docs/performance.md: the Cornell box solved with the uniform
+# kernel at several patch sizes and with the hierarchical kernel at several link
 # tolerances and smallest sizes; per run the wall clock and peak memory of the whole
 # `ugo solve` (mesh, assembly or refinement, solve, writing), and the largest probe error
 # against a converged backward Monte Carlo reference. Run from the repository root after
@@ -55,7 +55,7 @@ echo "method,patch_size_m,link_tolerance,smallest_m,leaves,wall_s,peak_MiB,floor
 sizes="0.1 0.07 0.05 0.035"
 [[ "${FINE:-0}" == 1 ]] && sizes="$sizes 0.025"
 for h in $sizes; do
-  run explicit "$h" - - --kernel uniform --patch-size "$h"
+  run uniform "$h" - - --kernel uniform --patch-size "$h"
 done
 for ts in 1e-2:0.05 3e-3:0.05 1e-3:0.05 3e-3:0.035 1e-3:0.035 1e-3:0.025; do
   tol=${ts%:*} smallest=${ts#*:}

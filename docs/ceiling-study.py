@@ -1,7 +1,7 @@
 """Compares the ceiling readings of docs/ceiling-study.sh bin by bin (docs/hierarchy.md).
 
-Each 0.25 m ceiling patch is one forward bin and one explicit patch; its four backward
-probes and the explicit kernel's four point readings average over it. The sums over the
+Each 0.25 m ceiling patch is one forward bin and one uniform patch; its four backward
+probes and the uniform kernel's four point readings average over it. The sums over the
 bins are compared, grouped by the bins' distance from the walls, as illuminance (lx) with
 the ceiling's reflectance 0.8. Usage: python3 docs/ceiling-study.py OUT_FOLDER.
 """
@@ -37,16 +37,16 @@ def probes(name, columns):
 
 
 points, forward, forward_error = field("forward")
-_, explicit, _ = field("explicit")
+_, uniform, _ = field("uniform")
 backward = probes("backward", [2, 3])
-explicit_points = probes("explicit", [1])
+uniform_points = probes("uniform", [1])
 rows = []
-for (x, _, z), f, fe, e in zip(points, forward, forward_error, explicit):
+for (x, _, z), f, fe, e in zip(points, forward, forward_error, uniform):
     a, b = int(x // 0.25), int(z // 0.25)
     block = (slice(2 * a, 2 * a + 2), slice(2 * b, 2 * b + 2))
     b_mean = backward[block][..., 0].mean()
     b_error = np.sqrt((backward[block][..., 1] ** 2).sum()) / 4
-    rows.append((b_mean, b_error, f, fe, e, explicit_points[block][..., 0].mean(), min(x, 8 - x, z, 6 - z)))
+    rows.append((b_mean, b_error, f, fe, e, uniform_points[block][..., 0].mean(), min(x, 8 - x, z, 6 - z)))
 rows = np.array(rows)
 print("ceiling bins by distance from the walls: sums' ratios, % (standard error of backward/forward)")
 for low, high in [(0, 0.3), (0.3, 0.6), (0.6, 1.2), (1.2, 9)]:
@@ -54,4 +54,4 @@ for low, high in [(0, 0.3), (0.3, 0.6), (0.6, 1.2), (1.2, 9)]:
     b, f, e, ep = r[:, 0].sum(), r[:, 2].sum(), r[:, 4].sum(), r[:, 5].sum()
     se = np.hypot(np.sqrt((r[:, 1] ** 2).sum()) / b, np.sqrt((r[:, 3] ** 2).sum()) / f)
     print(f"  {low:.1f}-{high:.1f} m ({len(r):3d} bins): backward/forward {100 * (b / f - 1):+.2f} ({100 * se:.2f}), "
-          f"explicit/forward {100 * (e / f - 1):+.2f}, explicit's points/its patches {100 * (ep / e - 1):+.2f}")
+          f"uniform/forward {100 * (e / f - 1):+.2f}, uniform's points/its patches {100 * (ep / e - 1):+.2f}")

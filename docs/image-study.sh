@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The image study of docs/experiments.md ("The image study with the hierarchy"): the study
-# camera's 64×64 image of the Cornell and glossy Cornell boxes, solved with the explicit and
+# camera's 64×64 image of the Cornell and glossy Cornell boxes, solved with the uniform and
 # the hierarchical kernel and rendered flat, smooth and with a final gather, each against a
 # converged backward Monte Carlo reference; per run the wall clock, CPU time and peak memory
 # of the solve and of the render, and the error beyond the reference's noise (`ugo agree`).

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Accuracy against time on the furnished office (docs/performance.md, "Accuracy against
-time: the office"): `ugo solve cases/office.toml` with the explicit kernel at several patch
+time: the office"): `ugo solve cases/office.toml` with the uniform kernel at several patch
 sizes and with the hierarchical kernel at the settings a case without `method` would get
 (roots 4 h, elements split down to h, link tolerance 1e-2) and at the case's own; per run
 the wall clock and peak memory of the whole solve (`/usr/bin/time`: mesh, assembly, solve,
@@ -40,12 +40,12 @@ REFERENCE = {  # illuminance, lx: (mean, standard error)
     "ceiling, centre": (195.3201, 0.156),
 }
 
-# (method, patch size h, link tolerance, smallest): the explicit kernel at h, the hierarchy
+# (method, patch size h, link tolerance, smallest): the uniform kernel at h, the hierarchy
 # with roots of h
 RUNS = [
-    ("explicit", 0.5, None, None),
-    ("explicit", 0.35, None, None),
-    ("explicit", 0.25, None, None),
+    ("uniform", 0.5, None, None),
+    ("uniform", 0.35, None, None),
+    ("uniform", 0.25, None, None),
     ("hierarchical", 2.0, 1e-2, 0.5),
     ("hierarchical", 1.4, 1e-2, 0.35),
     ("hierarchical", 1.0, 1e-2, 0.25),

@@ -79,7 +79,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         bail!(
             "--strict: {} warning(s) about the solved field, nothing written: {}",
             s.warnings.len(),
-            s.warnings.join("; ")
+            s.warnings.iter().map(ToString::to_string).collect::<Vec<_>>().join("; ")
         );
     }
     write_solution(&output, &scene, &s).with_context(|| format!("writing {}", output.display()))?;

@@ -60,7 +60,8 @@ fn write_to(path: &Path, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     dataset(&field, "illuminance", &Array1::from(s.illuminance.to_vec()))?;
     dataset(&field, "direct_illuminance", &Array1::from(patch_illuminance(&s.model.direct.arriving, k)))?;
 
-    strings(&file, "warnings", s.warnings.iter().map(String::as_str))?;
+    let warnings: Vec<String> = s.warnings.iter().map(ToString::to_string).collect();
+    strings(&file, "warnings", warnings.iter().map(String::as_str))?;
     let solver = file.create_group("solver")?;
     write_history(&solver, s.info())?;
     if s.runs.len() > 1 {
@@ -277,7 +278,7 @@ fn write_luminaires(g: &hdf5::Group, scene: &Scene, s: &Solution) -> hdf5::Resul
 
 fn write_attributes(file: &hdf5::File, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     let (st, info) = (&s.model.stats, s.info());
-    write_identity(file, info.method, scene, &s.model.kernel.directions)?;
+    write_identity(file, info.method.name(), scene, &s.model.kernel.directions)?;
     let d = &scene.discretization;
     text_attr(file, "kernel", d.kernel.name())?;
     if let Some(chosen) = d.chosen_by_size {

@@ -30,7 +30,7 @@ use std::path::Path;
 pub struct StoredKernel {
     /// The fingerprint of the case that saved it.
     pub fingerprint: Fingerprint,
-    /// `G` (explicit), the direction set, the blocks, each patch's material and twin.
+    /// `G` (the uniform kernel's), the direction set, the blocks, each patch's material and twin.
     pub kernel: Kernel,
     /// The luminaires' direct light `D` as the saving solve had it.
     pub direct: DirectLight,

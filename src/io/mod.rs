@@ -30,6 +30,7 @@ mod spectrum_file;
 mod spectrum_plot;
 mod ticks;
 mod triptych;
+mod warning;
 
 pub use basis_plot::basis_plot;
 pub use bytes_file::write_bytes;
@@ -53,5 +54,6 @@ pub use spectrum_file::{Mode, read_mode};
 pub use spectrum_plot::{RateLine, spectrum_plot};
 pub use ticks::{log_ticks, round_125, round_top, step, tick_label, ticks};
 pub use triptych::{CAPTION_HEIGHT, write_triptych};
+pub use warning::{NegativeEscape, SensorFault, Warning};
 
 use atomic::{atomic, atomic_png};

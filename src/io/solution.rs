@@ -1,6 +1,7 @@
 //! The one record of a solved case (`docs/design.md` §6, §8): what `study::solve_case`
 //! returns and `write_solution` writes as it is. The command line prints from it.
 
+use super::warning::Warning;
 use crate::basis::Factorization;
 use crate::model::{Change, Fingerprint, Model};
 use crate::readout::daylight::DaylightReadings;
@@ -53,7 +54,7 @@ pub struct Solution {
     /// Each run's agreement with a forward Monte Carlo estimate, when asked for.
     pub monte_carlo: Option<MonteCarlo>,
     /// What the solved field says is probably not meant (`study::physics_warnings`).
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
     /// The kernel file read, and the fingerprint to save.
     pub kernel: KernelRecord,
     /// The fields of the case's light scenes and of their groups, when it has any.

@@ -2,6 +2,7 @@
 //! applications per iteration. Breakdown (`ρ = 0` or `ω = 0`) is reported, not hidden.
 
 use super::LinOp;
+use super::algorithm::Algorithm;
 use super::history::History;
 use super::history::residual_norm;
 use super::outcome::{SolveError, SolveInfo, SolveParams, dot};
@@ -14,7 +15,7 @@ pub fn bicgstab(
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = l0.len();
-    let mut history = History::start("BiCGSTAB", l0)?;
+    let mut history = History::start(Algorithm::Bicgstab, l0)?;
     let scale = history.scale;
     let a = |v: &[f64], out: &mut [f64]| {
         kernel.apply(v, out);

@@ -5,6 +5,7 @@
 //! of the factors is checked before factoring: `8 n²` bytes dense; for the sparse LU its
 //! fill-in is bounded by the same `8 n²`, which is what is checked.
 
+use super::algorithm::Algorithm;
 use super::history::History;
 use super::history::residual_norm;
 use super::outcome::{SolveError, SolveInfo, SolveParams};
@@ -52,7 +53,7 @@ fn lu(
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = k.dim();
-    let method = if sparse { "direct (sparse LU)" } else { "direct (dense LU)" };
+    let method = if sparse { Algorithm::SparseLu } else { Algorithm::DenseLu };
     let mut history = History::start(method, l0)?;
     let need = 8.0 * (n as f64) * (n as f64) * 2.0;
     if need > limit as f64 {

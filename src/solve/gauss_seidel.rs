@@ -1,8 +1,9 @@
-//! Gauss–Seidel sweeps on the explicit kernel: `x_i ← (L0_i + Σ_{j≠i} K_ij x_j)/(1 − K_ii)`
+//! Gauss–Seidel sweeps on the explicit product `B·G`: `x_i ← (L0_i + Σ_{j≠i} K_ij x_j)/(1 − K_ii)`
 //! in row order, using the newest values (the "gathering" counterpart of the lecture's
 //! successive approximation). One sweep costs one kernel application; the residual after
 //! each sweep costs another.
 
+use super::algorithm::Algorithm;
 use super::history::History;
 use super::history::residual_norm;
 use super::outcome::{SolveError, SolveInfo, SolveParams};
@@ -15,7 +16,7 @@ pub fn gauss_seidel(
     params: &SolveParams,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
-    let mut history = History::start("Gauss-Seidel", l0)?;
+    let mut history = History::start(Algorithm::GaussSeidel, l0)?;
     let scale = history.scale;
     let m = &k.0;
     let (indptr, indices, data) = (m.indptr(), m.indices(), m.data());

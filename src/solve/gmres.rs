@@ -4,6 +4,7 @@
 //! 0.1 % is reported as stagnation.
 
 use super::LinOp;
+use super::algorithm::Algorithm;
 use super::history::History;
 use super::history::residual_norm;
 use super::outcome::{SolveError, SolveInfo, SolveParams, dot};
@@ -17,7 +18,7 @@ pub fn gmres(
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
     let n = l0.len();
     let m = params.restart.max(1);
-    let mut history = History::start("GMRES", l0)?;
+    let mut history = History::start(Algorithm::Gmres, l0)?;
     let scale = history.scale;
     let mut x = l0.to_vec();
     let mut w = vec![0.0; n];

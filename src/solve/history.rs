@@ -3,6 +3,7 @@
 //! every method stops on a value out of range (a residual that is not finite) and on a
 //! signal (`crate::interrupt`).
 
+use super::algorithm::Algorithm;
 use super::outcome::{SolveError, SolveInfo, norm};
 use super::range::OutOfRange;
 use std::time::Instant;
@@ -10,7 +11,7 @@ use std::time::Instant;
 /// The record of one solve: the relative residual, the kernel applications and the time
 /// of every iterate.
 pub struct History {
-    method: &'static str,
+    method: Algorithm,
     start: Instant,
     /// `‖L0‖₂`: residuals are relative to it.
     pub scale: f64,
@@ -22,7 +23,7 @@ pub struct History {
 impl History {
     /// Starts the record of `method`'s solve of `x = L0 + K x`; a zero source has nothing
     /// to solve, and one whose norm is not finite cannot be solved.
-    pub fn start(method: &'static str, l0: &[f64]) -> Result<History, SolveError> {
+    pub fn start(method: Algorithm, l0: &[f64]) -> Result<History, SolveError> {
         let scale = norm(l0);
         if scale == 0.0 {
             return Err(SolveError::NoSource);

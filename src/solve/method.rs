@@ -1,6 +1,7 @@
 //! The closed set of solvers, selected by name (`--method`, `--methods`), dispatched once.
 
 use super::LinOp;
+use super::algorithm::Algorithm;
 use super::outcome::{SolveError, SolveInfo, SolveParams, norm};
 use super::range::OutOfRange;
 use super::{bicgstab, direct, direct_sparse, gauss_seidel, gmres, southwell, successive_approximation};
@@ -11,7 +12,7 @@ use crate::kernel::{Explicit, Factored, Kernel};
 pub enum Method {
     /// Successive approximation (reflection orders).
     Neumann,
-    /// Gauss–Seidel sweeps on the explicit kernel.
+    /// Gauss–Seidel sweeps on the explicit product `B·G`.
     GaussSeidel,
     /// Progressive refinement, one-cell case only.
     Southwell,
@@ -117,7 +118,7 @@ pub fn solve(
     let System { operator, explicit, areas, l0 } = *system;
     if l0.iter().all(|&l| l == 0.0) {
         let info = SolveInfo {
-            method: "none (zero source)",
+            method: Algorithm::ZeroSource,
             iterations: 0,
             applications: 0,
             residual_history: vec![0.0],

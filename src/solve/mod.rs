@@ -3,6 +3,7 @@
 //! Every method reports the same relative residual `‖L0 + Kx − x‖₂ / ‖L0‖₂` for every
 //! iterate, the number of kernel applications and the wall time, so methods compare fairly.
 
+mod algorithm;
 mod arnoldi;
 mod bicgstab;
 mod direct;
@@ -19,6 +20,7 @@ mod range;
 mod southwell;
 mod successive;
 
+pub use algorithm::Algorithm;
 pub use arnoldi::{ArnoldiError, ArnoldiParams, Eigenpair, Spectrum, arnoldi};
 pub use bicgstab::bicgstab;
 pub use direct::{direct, direct_sparse};

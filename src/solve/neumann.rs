@@ -5,6 +5,7 @@
 //! `≥ 1` instead of `ρ(K) < 1`, and the method stops with a clear error rather than loop.
 
 use super::LinOp;
+use super::algorithm::Algorithm;
 use super::history::History;
 use super::outcome::{SolveError, SolveInfo, SolveParams};
 
@@ -19,7 +20,7 @@ pub fn successive_approximation(
     params: &SolveParams,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<(Vec<f64>, SolveInfo), SolveError> {
-    let mut history = History::start("successive approximation", l0)?;
+    let mut history = History::start(Algorithm::SuccessiveApproximation, l0)?;
     let scale = history.scale;
     let mut x = l0.to_vec();
     let mut next = vec![0.0; l0.len()];

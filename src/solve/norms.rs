@@ -43,7 +43,7 @@ const POWER_TOLERANCE: f64 = 1e-12;
 const POWER_MAX: usize = 20_000;
 
 impl Norms {
-    /// Every norm of the explicit kernel `k`, and `cond∞(I − K)` by one GMRES solve.
+    /// Every norm of the explicit product `k`, and `cond∞(I − K)` by one GMRES solve.
     pub fn of(k: &Explicit) -> Norms {
         let m = &k.0;
         let n = m.rows();

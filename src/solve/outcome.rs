@@ -1,6 +1,7 @@
 //! The one shape of every solver (`docs/design.md` §4): the stopping rule in, what the solve
 //! did or why it failed out, and the vector helpers the methods share.
 
+use super::algorithm::Algorithm;
 use super::range::OutOfRange;
 use crate::interrupt::Interrupted;
 use thiserror::Error;
@@ -34,8 +35,8 @@ impl Default for SolveParams {
 /// What a successful solve did.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SolveInfo {
-    /// The method's name, as printed.
-    pub method: &'static str,
+    /// The algorithm that ran.
+    pub method: Algorithm,
     /// Iterations until the returned iterate met the tolerance.
     pub iterations: usize,
     /// Applications of the kernel `K`.
@@ -129,8 +130,8 @@ pub enum SolveError {
          or nearly so (spectral radius ≥ 1, e.g. a closed scene whose reflectances are all 1)"
     )]
     Singular {
-        /// The method's name.
-        method: &'static str,
+        /// The algorithm that ran.
+        method: Algorithm,
         /// `‖x‖/‖L0‖` (infinite for a zero pivot).
         growth: f64,
     },

@@ -3,13 +3,14 @@
 //! iteration where it first appears and reported as what it is, never as a failure to
 //! converge or a spectral radius.
 
+use super::algorithm::Algorithm;
 use std::fmt;
 
 /// Where a solve met a value it cannot carry.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OutOfRange {
-    /// The method's name.
-    pub method: &'static str,
+    /// The algorithm that met it.
+    pub method: Algorithm,
     /// The iteration at which it appeared; `None` before the first (the source term).
     pub iteration: Option<usize>,
     /// The norm that is not finite: `"the source term's norm ‖L0‖₂"`, `"the residual"`,
@@ -29,7 +30,7 @@ impl OutOfRange {
     /// `norm` of `vector` (the iterate, or the vector just made by `K`) is `size`, not
     /// finite: located at the first value of `vector` that is not finite, else its largest.
     pub fn of(
-        method: &'static str,
+        method: Algorithm,
         iteration: Option<usize>,
         norm: &'static str,
         size: f64,

@@ -4,12 +4,13 @@
 //! `x = L0 + K(x − ΔL)` makes the residual `K ΔL`, evaluated after every `N` shots (one
 //! application's worth of work, counted as one kernel application, plus one for the check).
 
+use super::algorithm::Algorithm;
 use super::history::History;
 use super::history::residual_norm;
 use super::outcome::{SolveError, SolveInfo, SolveParams};
 use crate::kernel::Explicit;
 
-/// Solves `x = L0 + K x` by shooting; `k` is the explicit kernel, `areas` the patch areas.
+/// Solves `x = L0 + K x` by shooting; `k` is the explicit product `B·G`, `areas` the patch areas.
 pub fn southwell(
     k: &Explicit,
     areas: &[f64],
@@ -21,7 +22,7 @@ pub fn southwell(
     if areas.len() != n {
         return Err(SolveError::Unsupported { method: "Southwell", needs: "one direction cell (K = 1)" });
     }
-    let mut history = History::start("Southwell", l0)?;
+    let mut history = History::start(Algorithm::Southwell, l0)?;
     let scale = history.scale;
     let columns = k.0.to_csc();
     let mut x = l0.to_vec();

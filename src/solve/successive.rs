@@ -20,6 +20,7 @@
 //! method, and a cold projection (`warm = false`), always start from nothing.
 
 use super::LinOp;
+use super::algorithm::Algorithm;
 use super::method::{Method, System, solve};
 use super::outcome::{SolveError, SolveInfo, SolveParams, norm};
 
@@ -118,7 +119,7 @@ impl Projection {
 /// The record of a solve that started within the tolerance: no iteration.
 fn no_iteration(residual: f64) -> SolveInfo {
     SolveInfo {
-        method: "projection",
+        method: Algorithm::Projection,
         iterations: 0,
         applications: 0,
         residual_history: vec![residual],

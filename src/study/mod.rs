@@ -1,10 +1,12 @@
 //! Pipelines that return values (`docs/design.md` §6, the study floor): a stored solution made
 //! ready to look at, the solve of a case with every method asked for, its light scenes by
 //! superposition, the study of angular bases, the convergence rates a spectrum predicts,
-//! and the agreement with Monte Carlo references. The command line only parses its
-//! arguments, calls these and prints what they return.
+//! the agreement with Monte Carlo references, and the measurements of `ugo bench`
+//! ([`bench`]). The command line only parses its arguments, calls these and prints what
+//! they return.
 
 mod bases;
+pub mod bench;
 mod error;
 mod kernel;
 mod light_scenes;

@@ -9,6 +9,7 @@
 //! every patch of the uniform 2.5 cm mesh right (forward Monte Carlo), and the hierarchy
 //! at its defaults 2.5 %. Warned, naming the nearest such patch.
 
+use crate::io::Warning;
 use crate::model::Model;
 use crate::scene::{ProbeKind, Scene};
 use glam::DVec3;
@@ -21,20 +22,17 @@ pub const NEAR: f64 = 0.4;
 
 /// One warning per probe that lies within [`NEAR`] of a patch's diameter from a patch it
 /// can see (in front of the probe, off the surface the probe lies on).
-pub fn near_patches(scene: &Scene, model: &Model, out: &mut Vec<String>) {
+pub fn near_patches(scene: &Scene, model: &Model, out: &mut Vec<Warning>) {
     for probe in &scene.probes {
         if let Some((i, distance)) = nearest(model, probe.position, facing(probe.kind, probe.normal)) {
             let patch = &model.mesh.patches[i];
-            out.push(format!(
-                "probe \"{}\" lies {:.2} cm from a patch of \"{}\" {:.1} cm across, closer than {NEAR} of its size: \
-                 it reads the patch's mean luminance where it sees mostly the patch's nearest part, an error of several \
-                 per cent where the light on the patch varies (a contact, a shadow); place the probe farther from \
-                 it, or compare with `ugo trace`",
-                probe.name,
-                100.0 * distance,
-                scene.surfaces[patch.surface as usize].name,
-                100.0 * patch.polygon.diameter(),
-            ));
+            out.push(Warning::NearPatch {
+                probe: probe.name.clone(),
+                distance,
+                surface: scene.surfaces[patch.surface as usize].name.clone(),
+                diameter: patch.polygon.diameter(),
+                near: NEAR,
+            });
         }
     }
 }

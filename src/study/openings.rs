@@ -12,6 +12,7 @@
 //! emitted flux escapes through it. A scene open by design has a large opening (the
 //! Cornell box's open front: about a sixth of its surfaces).
 
+use crate::io::Warning;
 use crate::model::Model;
 use crate::readout::energy::EnergyBalance;
 use crate::scene::Scene;
@@ -30,7 +31,7 @@ pub fn small_opening(
     x: &[f64],
     energy: &EnergyBalance,
     shares: &[f64],
-) -> Option<String> {
+) -> Option<Warning> {
     let (k, cells) = (model.kernel.cells(), model.kernel.directions.cells());
     let mut leak = vec![0.0; scene.surfaces.len()];
     let mut escaping = 0.0;
@@ -49,13 +50,6 @@ pub fn small_opening(
     }
     let mut order: Vec<usize> = (0..leak.len()).filter(|&i| leak[i] > 0.0).collect();
     order.sort_by(|&a, &b| leak[b].total_cmp(&leak[a]));
-    let named: Vec<String> = order.iter().take(3).map(|&i| format!("\"{}\"", scene.surfaces[i].name)).collect();
-    Some(format!(
-        "{escaping:.4} lm ({:.1} % of the flux emitted) leaves the surfaces through an opening of about \
-         {opening:.4} m², {:.2} % of the {surfaces:.4} m² of surfaces: a nearly closed scene, so a missing wall or a \
-         gap between surfaces? The surfaces that see most of it: {}",
-        100.0 * escaping / energy.emitted,
-        100.0 * opening / surfaces,
-        named.join(", ")
-    ))
+    let seen_by = order.iter().take(3).map(|&i| scene.surfaces[i].name.clone()).collect();
+    Some(Warning::SmallOpening { escaping, emitted: energy.emitted, opening, surfaces, seen_by })
 }

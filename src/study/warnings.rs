@@ -30,6 +30,7 @@
 
 use crate::geometry::Frame;
 use crate::geometry::cosine_direction;
+use crate::io::{NegativeEscape, SensorFault, Warning};
 use crate::kernel::sent_shares;
 use crate::luminaire::Light;
 use crate::model::{Model, place};
@@ -50,7 +51,7 @@ const SENSOR_RAYS: usize = 256;
 const BACKS: f64 = 0.02;
 
 /// Every warning of the solved field `x` of `model` (of `scene`), with its energy balance.
-pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance) -> Vec<String> {
+pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance) -> Vec<Warning> {
     let mut out = Vec::new();
     backs(scene, model, x, energy, &mut out);
     luminaires(scene, model, &mut out);
@@ -62,7 +63,7 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
         sent_shares(&model.kernel, &areas)
     };
     if energy.escaped < -1e-9 * energy.emitted.abs() {
-        out.push(negative_escape(scene, model, x, energy, &shares()));
+        out.push(Warning::NegativeEscape(negative_escape(scene, model, x, energy, &shares())));
     } else if energy.escaped > super::openings::ESCAPING * energy.emitted {
         out.extend(super::openings::small_opening(scene, model, x, energy, &shares()));
     }
@@ -73,7 +74,7 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
 /// reciprocity error: the columns' sent shares `s` (`kernel::sent_shares`) against 1,
 /// weighted by the solved outgoing flux (the escaped flux is exactly `Σ Φ (1 − s)` plus
 /// the luminaires' light that lands nowhere).
-fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, shares: &[f64]) -> String {
+fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, shares: &[f64]) -> NegativeEscape {
     let (e, k) = (energy, model.kernel.cells());
     let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
     let cells = model.kernel.directions.cells();
@@ -85,42 +86,18 @@ fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalan
         sending.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &c| (l.min(shares[c]), h.max(shares[c])));
     let error = |c: usize| flux(c) * (shares[c] - 1.0).abs();
     let worst = sending.iter().copied().max_by(|&a, &b| error(a).total_cmp(&error(b)));
-    let worst = worst.map_or(String::new(), |c| {
-        format!(" (the largest part: {:.5} at {})", shares[c], place(scene, &model.mesh, c, k))
-    });
-    let share = |f: f64| 100.0 * f / e.emitted;
+    let worst = worst.map(|c| (shares[c], place(scene, &model.mesh, c, k)));
     // the luminaires' part: their light landing on the patches beyond their flux
     let landed: f64 = model.direct.intercepted.iter().sum();
     let beyond = landed - e.luminaire_emitted.iter().sum::<f64>();
-    let luminaires = if beyond > 1e-9 * e.emitted {
-        format!(
-            " Of it, {:.4} lm is the luminaires' direct light on the patches exceeding their flux (the error of its \
-             integration over the patches); the rest, {:.4} lm, the kernel's.",
-            -beyond,
-            e.escaped + beyond
-        )
-    } else {
-        String::new()
-    };
-    format!(
-        "the escaped flux is negative ({:.4} lm, {:.3} % of the {:.4} lm emitted): no light enters from outside, so \
-         this is the discretization error, not a flux.{luminaires} The kernel's columns that send light, the share \
-         of the light each patch sends that the others receive (π Σ_i A_i G_ij / (A_j μ)), lie between {low:.5} \
-         and {high:.5} where a closed scene has 1{worst}; weighted by the solved outgoing flux, their excess over 1 is {over:.4} lm \
-         (it bounds the kernel's part) and their deviation either way {either:.4} lm, {:.3} % of the flux \
-         emitted: the energy balance, and readings that depend on it, are uncertain by up to that share; a smaller \
-         patch_size lowers it",
-        e.escaped,
-        -share(e.escaped),
-        e.emitted,
-        share(either)
-    )
+    let luminaires = (beyond > 1e-9 * e.emitted).then_some(beyond);
+    NegativeEscape { escaped: e.escaped, emitted: e.emitted, luminaires, low, high, worst, over, either }
 }
 
 /// Every pair of parallel light (the sun of `[sky]` or a `type = "parallel"` luminaire) and
 /// glazed window it meets at an incidence other than grazing: its beam passes the glass
 /// unattenuated (not modelled), so its direct light through that window is too high.
-fn parallel_through_glass(model: &Model, out: &mut Vec<String>) {
+fn parallel_through_glass(model: &Model, out: &mut Vec<Warning>) {
     for beam in &model.sources {
         let Light::Parallel { direction, .. } = beam.light else { continue };
         for window in &model.sources {
@@ -130,16 +107,12 @@ fn parallel_through_glass(model: &Model, out: &mut Vec<String>) {
             if cos <= 0.0 {
                 continue;
             }
-            out.push(format!(
-                "\"{}\" (parallel light) passes the glazed window \"{}\" unattenuated: the glass's transmittance \
-                 (τ = {:.3} at the beam's {:.1}° incidence) and the window's maintenance factor apply to the sky and \
-                 the ground it lets in, not to the beam, so the direct light through it, and all it lights, is too \
-                 high by at least 1/τ; leave the window open or the beam out for a result without this error",
-                beam.name,
-                window.name,
-                glazing.transmittance(cos),
-                cos.acos().to_degrees()
-            ));
+            out.push(Warning::ParallelThroughGlass {
+                beam: beam.name.clone(),
+                window: window.name.clone(),
+                transmittance: glazing.transmittance(cos),
+                incidence: cos.acos().to_degrees(),
+            });
         }
     }
 }
@@ -154,7 +127,7 @@ fn back_hit(model: &Model, origin: DVec3, direction: DVec3, ignore: u32) -> Opti
     })
 }
 
-fn backs(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, out: &mut Vec<String>) {
+fn backs(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, out: &mut Vec<Warning>) {
     let (mesh, k) = (&model.mesh, model.kernel.cells());
     let cells = model.kernel.directions.cells();
     let outgoing: Vec<f64> = mesh
@@ -204,14 +177,8 @@ fn backs(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, out: &
     }
     let mut order: Vec<usize> = (0..lost.len()).filter(|&i| lost[i] > 0.0).collect();
     order.sort_by(|&a, &b| lost[b].total_cmp(&lost[a]));
-    let named: Vec<String> =
-        order.iter().take(3).map(|&i| format!("\"{}\" {:.4} lm", scene.surfaces[i].name, lost[i])).collect();
-    out.push(format!(
-        "about {sum:.4} lm ({:.1} % of the flux emitted) meets the back of one-sided surfaces, where it is lost: \
-         {}; a surface facing the wrong way (`inside`, the order of its vertices) or one meant to be two_sided",
-        100.0 * sum / energy.emitted,
-        named.join(", ")
-    ));
+    let surfaces = order.iter().take(3).map(|&i| (scene.surfaces[i].name.clone(), lost[i])).collect();
+    out.push(Warning::BacksLost { lost: sum, emitted: energy.emitted, surfaces });
 }
 
 /// Stratified directions of a point luminaire with the flux each carries.
@@ -235,7 +202,7 @@ fn photons(source: &crate::luminaire::Source, flux: f64) -> Vec<(DVec3, f64)> {
     out
 }
 
-fn luminaires(scene: &Scene, model: &Model, out: &mut Vec<String>) {
+fn luminaires(scene: &Scene, model: &Model, out: &mut Vec<Warning>) {
     for (l, source) in scene.luminaires.iter().zip(&model.sources) {
         let Light::Point { position, .. } = source.light else { continue };
         let (mut front, mut back, mut total) = (0.0, 0.0, 0.0);
@@ -250,33 +217,23 @@ fn luminaires(scene: &Scene, model: &Model, out: &mut Vec<String>) {
         if total <= 0.0 {
             continue;
         }
+        let (luminaire, backs) = (l.name.clone(), 100.0 * back / total);
         if front == 0.0 {
-            out.push(format!(
-                "luminaire \"{}\": none of its light reaches the front of a surface ({:.0} % meets backs, the rest \
-                 nothing): it lies inside or behind a surface",
-                l.name,
-                100.0 * back / total
-            ));
+            out.push(Warning::LuminaireUnseen { luminaire, backs });
         } else if back > 0.5 * total {
-            out.push(format!(
-                "luminaire \"{}\": {:.0} % of its flux meets the back of surfaces (lost): it lies inside or behind a \
-                 surface, or aims away from the room",
-                l.name,
-                100.0 * back / total
-            ));
+            out.push(Warning::LuminaireMostlyBacks { luminaire, backs });
         }
     }
 }
 
 /// What a sensor at `p` facing `n` finds wrong, if anything.
-fn sensor(scene: &Scene, model: &Model, p: DVec3, n: DVec3) -> Option<String> {
+fn sensor(scene: &Scene, model: &Model, p: DVec3, n: DVec3) -> Option<SensorFault> {
     let (mesh, vis) = (&model.mesh, &model.visibility);
-    let name = |i: usize| &scene.surfaces[i].name;
+    let name = |i: usize| scene.surfaces[i].name.clone();
     if model.faces.under(mesh, vis, p, n).is_none()
         && let Some(i) = model.faces.under(mesh, vis, p, -n)
     {
-        let surface = mesh.patches[i].surface as usize;
-        return Some(format!("its normal points into the surface it lies on (\"{}\")", name(surface)));
+        return Some(SensorFault::IntoSurface { surface: name(mesh.patches[i].surface as usize) });
     }
     let frame = Frame::around(n);
     let origin = p + n * 1e-6 * mesh.extent();
@@ -289,32 +246,22 @@ fn sensor(scene: &Scene, model: &Model, p: DVec3, n: DVec3) -> Option<String> {
             surface = s;
         }
     }
-    (backs * 2 > SENSOR_RAYS).then(|| {
-        format!(
-            "{:.0} % of what it sees is the back of surfaces (\"{}\"): it lies behind one",
-            100.0 * backs as f64 / SENSOR_RAYS as f64,
-            name(surface)
-        )
-    })
+    (backs * 2 > SENSOR_RAYS)
+        .then(|| SensorFault::Behind { backs: 100.0 * backs as f64 / SENSOR_RAYS as f64, surface: name(surface) })
 }
 
-fn sensors(scene: &Scene, model: &Model, out: &mut Vec<String>) {
+fn sensors(scene: &Scene, model: &Model, out: &mut Vec<Warning>) {
     for p in &scene.probes {
-        if let Some(why) = sensor(scene, model, p.position, p.normal) {
-            out.push(format!("probe \"{}\": {why}; its readings are not of the room", p.name));
+        if let Some(fault) = sensor(scene, model, p.position, p.normal) {
+            out.push(Warning::Probe { probe: p.name.clone(), fault });
         }
     }
     for g in &scene.grids {
         let points = g.points();
-        let bad: Vec<String> = points.iter().filter_map(|&q| sensor(scene, model, q, g.normal)).collect();
+        let mut bad: Vec<SensorFault> = points.iter().filter_map(|&q| sensor(scene, model, q, g.normal)).collect();
         if bad.len() * 2 > points.len() {
-            out.push(format!(
-                "grid \"{}\": at {} of its {} points {}; its illuminances are not of the room",
-                g.name,
-                bad.len(),
-                points.len(),
-                bad[0]
-            ));
+            let faulty = bad.len();
+            out.push(Warning::Grid { grid: g.name.clone(), faulty, points: points.len(), first: bad.swap_remove(0) });
         }
     }
 }

@@ -34,7 +34,7 @@ use obvhs::{
 };
 use std::time::Duration;
 
-/// Which hierarchy and layout the queries run on.
+/// Which BVH layout the queries run on.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct VisibilityOptions {
     /// The compressed wide BVH (CwBvh) rather than the binary BVH2.
@@ -63,15 +63,16 @@ impl Default for VisibilityOptions {
     }
 }
 
-enum Hierarchy {
+/// The BVH the queries traverse, in either layout.
+enum Bvh {
     Binary(Bvh2),
     Wide(CwBvh),
 }
 
 /// A ray-casting structure over the faces of a mesh.
 pub struct Visibility {
-    hierarchy: Hierarchy,
-    /// Triangles in the hierarchy's primitive order (rotated when `rotation` is not identity).
+    bvh: Bvh,
+    /// Triangles in the BVH's primitive order (rotated when `rotation` is not identity).
     triangles: Vec<Triangle>,
     /// Face of each triangle, same order.
     face_of: Vec<u32>,
@@ -134,17 +135,17 @@ impl Visibility {
             BuildPreset::Slow => BvhBuildParams::slow_build(),
         };
         let mut time = Duration::default();
-        let (hierarchy, order) = if options.wide {
-            let bvh = build_cwbvh_from_tris(&triangles, params, &mut time);
-            let order = bvh.primitive_indices.clone();
-            (Hierarchy::Wide(bvh), order)
+        let (bvh, order) = if options.wide {
+            let wide = build_cwbvh_from_tris(&triangles, params, &mut time);
+            let order = wide.primitive_indices.clone();
+            (Bvh::Wide(wide), order)
         } else {
-            let bvh = build_bvh2_from_tris(&triangles, params, &mut time);
-            let order = bvh.primitive_indices.clone();
-            (Hierarchy::Binary(bvh), order)
+            let binary = build_bvh2_from_tris(&triangles, params, &mut time);
+            let order = binary.primitive_indices.clone();
+            (Bvh::Binary(binary), order)
         };
         Visibility {
-            hierarchy,
+            bvh,
             triangles: order.iter().map(|&i| triangles[i as usize]).collect(),
             face_of: order.iter().map(|&i| face_of[i as usize]).collect(),
             rotation,
@@ -185,9 +186,9 @@ impl Visibility {
             }
             t
         };
-        let miss = match &self.hierarchy {
-            Hierarchy::Binary(bvh) => bvh.ray_traverse_miss(ray, test),
-            Hierarchy::Wide(bvh) => bvh.ray_traverse_miss(ray, test),
+        let miss = match &self.bvh {
+            Bvh::Binary(binary) => binary.ray_traverse_miss(ray, test),
+            Bvh::Wide(wide) => wide.ray_traverse_miss(ray, test),
         };
         if hit.is_some() {
             blocker.0 = hit;
@@ -202,9 +203,9 @@ impl Visibility {
             if self.face_of[id] == ignore { f32::INFINITY } else { intersect(&self.triangles[id], ray) }
         };
         let mut hit = RayHit::none();
-        let found = match &self.hierarchy {
-            Hierarchy::Binary(bvh) => bvh.ray_traverse(ray, &mut hit, test),
-            Hierarchy::Wide(bvh) => bvh.ray_traverse(ray, &mut hit, test),
+        let found = match &self.bvh {
+            Bvh::Binary(binary) => binary.ray_traverse(ray, &mut hit, test),
+            Bvh::Wide(wide) => wide.ray_traverse(ray, &mut hit, test),
         };
         found.then(|| Hit { face: self.face_of[hit.primitive_id as usize], distance: hit.t as f64 - NEAREST_BOX })
     }
@@ -216,7 +217,7 @@ impl Visibility {
     fn ray(&self, origin: DVec3, direction: DVec3, tmin: f64, tmax: f64) -> Ray {
         let o = Vec3A::from((self.rotation * (origin - direction * NEAREST_BOX)).as_vec3());
         let mut d = Vec3A::from((self.rotation * direction).as_vec3());
-        if matches!(self.hierarchy, Hierarchy::Wide(_)) {
+        if matches!(self.bvh, Bvh::Wide(_)) {
             // obvhs's wide traversal misses boxes along exactly axis-aligned rays.
             d = Vec3A::select(d.abs().cmplt(Vec3A::splat(1e-7)), Vec3A::splat(1e-7).copysign(d), d);
         }

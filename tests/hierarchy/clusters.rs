@@ -1,5 +1,5 @@
 //! Clusters: a closed room with a cloud of small cubes (k input elements). The isotropic
-//! links of clusters (with their stand-ins' visibility) agree with the explicit kernel on the
+//! links of clusters (with their stand-ins' visibility) agree with the uniform kernel on the
 //! same leaves within what sampled visibility allows, and the links grow much slower than k².
 
 use super::{hierarchy, options, relative_difference};

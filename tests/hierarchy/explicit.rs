@@ -1,5 +1,5 @@
 //! With tolerance 0 and smallest size `h`, the hierarchy links every pair at the leaves and
-//! agrees with the explicit (balanced) kernel assembled on the same leaf mesh: `K x` for
+//! agrees with the uniform (balanced) kernel assembled on the same leaf mesh: `K x` for
 //! any `x`, and the solved field.
 
 use super::{box_with_block, hierarchy, links, options, relative_difference};
@@ -17,7 +17,7 @@ use ugo::visibility::Visibility;
 /// emission as the source.
 fn compare(scene: Scene, directions: DirectionSet) -> (f64, f64) {
     // the links themselves: balancing to the leaves' closures would hide their differences;
-    // the explicit kernel's quadrature (`η = 0.25`): the explicit kernel averages a pair's
+    // the uniform kernel's quadrature (`η = 0.25`): the uniform kernel averages a pair's
     // integrals from both ends, a link takes the receiver's, and `K x` of the box agrees to
     // 1.2e-6 with it (at the hierarchy's `η = 1`, 9.5e-5)
     let quadrature = Quadrature { eta: 0.25, max_depth: 4 };
@@ -66,7 +66,7 @@ fn tolerance_zero_agrees_with_the_explicit_kernel_on_the_leaves() {
     let (kx, solution) = compare(furnace(1.0, 0.5, 1.0, 1.0), DirectionSet::single());
     assert!(kx < 1e-5 && solution < 1e-5, "K x {kx}, solution {solution}");
     // a block casting shadows: the two close to different visibility estimates where the
-    // 4 × 4 segments see it partly (explicit: adaptive row sums, hierarchy: point factors)
+    // 4 × 4 segments see it partly (uniform: adaptive row sums, hierarchy: point factors)
     let (kx, solution) = compare(box_with_block(0.5), DirectionSet::single());
     assert!(kx < 1e-2 && solution < 1e-2, "K x {kx}, solution {solution}");
 }
@@ -74,7 +74,7 @@ fn tolerance_zero_agrees_with_the_explicit_kernel_on_the_leaves() {
 #[test]
 fn tolerance_zero_agrees_with_the_explicit_kernel_for_glossy_materials_at_64_cells() {
     // the glossy Cornell box's materials: a Phong room and a GGX block casting shadows,
-    // 64 cells. Both split each pair's factor by cells from either end; the explicit kernel
+    // 64 cells. Both split each pair's factor by cells from either end; the uniform kernel
     // is then balanced cell by cell (a closed patch's cell d carries exactly A μ_d/π), the
     // hierarchy is not: single cells of K x differ by 2.7 %, the solutions by 1.4 % (both
     // with and without the block; measured)

@@ -1,4 +1,4 @@
-//! The hierarchical kernel (`docs/design.md` §3b) against the explicit kernel on the same leaves,
+//! The hierarchical kernel (`docs/design.md` §3b) against the uniform kernel on the same leaves,
 //! closed forms, and its own invariants (coverage of leaf pairs, growth of links).
 
 mod closure;

@@ -1,4 +1,4 @@
-//! The hierarchical kernel through `Model::build` (`[discretization] method =
+//! The hierarchical kernel through `Model::build` (`[discretization] kernel =
 //! "hierarchical"`): the white furnace and the energy balance on the leaves, its explicit
 //! expansion against its matrix-free application, `direct` on the expansion against GMRES,
 //! and CIE 171 5.8 (a point luminaire in a closed cube) against its closed form.

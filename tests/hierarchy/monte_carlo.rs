@@ -3,7 +3,7 @@
 //! backward Monte Carlo at their probes (`ugo::trace::trace_probes`, traced here): within
 //! 1 % plus 3 standard errors. The Cornell box's floor probe, 1 cm from the short block's
 //! foot in the lamp's umbra, is held to 3 %: neither kernel reads that contact corner within
-//! 1 % at these sizes (the explicit one at 0.025 m +2.4 %; docs/hierarchy.md, "The floor
+//! 1 % at these sizes (the uniform one at 0.025 m +2.4 %; docs/hierarchy.md, "The floor
 //! probe at the short block's foot").
 
 use crate::support::{build, solve};

@@ -65,7 +65,7 @@ fn assembled_transport_is_closed_and_reciprocal() {
             assert!((a[i] * v - a[j] * back).abs() <= 1e-12 * a[i] * v);
         }
     }
-    let balance = model.stats.balance.expect("the explicit kernel is balanced");
+    let balance = model.stats.balance.expect("the uniform kernel is balanced");
     assert!(balance.max_correction < 1e-3, "{balance:?}");
 }
 

@@ -7,7 +7,7 @@ use ugo::material::MaterialModel;
 use ugo::model::Model;
 use ugo::solve::norms::Norms;
 use ugo::solve::orders::reflection_orders;
-use ugo::solve::{Method, SolveError, SolveParams, System, solve};
+use ugo::solve::{Algorithm, Method, SolveError, SolveParams, System, solve};
 
 fn tight() -> SolveParams {
     SolveParams { tolerance: 1e-12, max_iterations: 5000, ..SolveParams::default() }
@@ -124,7 +124,8 @@ fn sparse_and_dense_lu_agree() {
     let explicit = Explicit(model.kernel.explicit(u64::MAX).unwrap());
     let (dense, _) = ugo::solve::direct(&explicit, &model.l0, &tight(), &mut |_, _| {}).unwrap();
     let (sparse, info) = ugo::solve::direct_sparse(&explicit, &model.l0, &tight(), &mut |_, _| {}).unwrap();
-    assert_eq!(info.method, "direct (sparse LU)");
+    assert_eq!(info.method, Algorithm::SparseLu);
+    assert_eq!(info.method.to_string(), "direct (sparse LU)");
     assert!(relative_difference(&sparse, &dense) < 1e-12);
     assert!(info.residual() < 1e-13);
 }

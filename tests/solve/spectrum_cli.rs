@@ -5,7 +5,7 @@
 use crate::support::{scratch, ugo};
 use std::process::Output;
 use ugo::io::{Run, read_mode};
-use ugo::solve::{Eigenpair, Method, SolveInfo, Spectrum};
+use ugo::solve::{Algorithm, Eigenpair, Method, SolveInfo, Spectrum};
 use ugo::study::{chebyshev_rate, measured_rate, rates};
 
 fn text(o: &Output) -> String {
@@ -65,7 +65,7 @@ fn a_file_without_a_spectrum_has_no_mode() {
 
 fn run(method: Method, residuals: Vec<f64>, applications: Vec<usize>) -> Run {
     let info = SolveInfo {
-        method: "test",
+        method: Algorithm::Projection,
         iterations: residuals.len(),
         applications: *applications.last().unwrap(),
         time_history: vec![0.0; residuals.len()],

@@ -1,6 +1,6 @@
 //! The integrating sphere: the reflected illuminance on the wall is uniform,
 //! `E_ind = ρΦ / (A (1 − ρ (1 − f)))`, `f` the wall's form factor to the black bulb; with
-//! the explicit kernel and through the hierarchy (issue 14.4), within the same bounds.
+//! the uniform kernel and through the hierarchy (issue 14.4), within the same bounds.
 
 use std::f64::consts::PI;
 use std::path::Path;

@@ -2,7 +2,7 @@
 //! hides the floor under it. Every patch's exposed area against its foot print; then the
 //! white furnace (every surface `ρ = 0.8`, emitting 1 cd/m²: `L = 5` on every exposed
 //! patch, and absorbed = emitted) with the block standing on the floor, through the
-//! explicit and the hierarchical kernels, with the hidden patches (under the block, behind
+//! uniform and the hierarchical kernels, with the hidden patches (under the block, behind
 //! it on the walls, the block's own bottom and back) left out.
 
 use crate::support::{build, furnace, lambert, solve, surface};
@@ -93,7 +93,7 @@ fn furnace_with_block(lo: f64, link_tolerance: Option<f64>, patch: f64) -> (f64,
 /// Standing on the floor, the block's contacts cost nothing: the furnace holds as well as
 /// with the block floating (where the occlusion's sampling sets the error), in either
 /// kernel. Without the exposed areas, the furnace's closure fails where patches are
-/// hidden: the explicit kernel's worst error against 5 is measured in `docs/hierarchy.md`.
+/// hidden: the uniform kernel's worst error against 5 is measured in `docs/hierarchy.md`.
 #[test]
 fn the_white_furnace_holds_around_a_block_standing_on_the_floor() {
     for (link_tolerance, patch) in [(None, 0.125), (Some(1e-3), 0.5)] {

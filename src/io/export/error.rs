@@ -10,7 +10,7 @@ pub enum ExportError {
     /// The files could not be written.
     #[error(transparent)]
     Io(#[from] IoError),
-    /// The explicit kernel `B·G` would exceed the memory limit.
+    /// The explicit product `B·G` would exceed the memory limit.
     #[error(transparent)]
     TooLarge(#[from] TooLarge),
     /// PETSc's binary files count in int32.

@@ -1,14 +1,15 @@
-//! `ugo bench --export DIR`: the benchmark's triangles, occlusion rays (with ugo's
-//! answers) and transport matrix as raw little-endian arrays plus `meta.json`, so that
-//! peers (Embree through `embreex`, `scipy.sparse`) time the very same work:
+//! The files of `ugo bench --export DIR`: the benchmark's triangles, occlusion rays (with
+//! ugo's answers) and transport matrix as raw little-endian arrays plus `meta.json`, so
+//! that peers (Embree through `embreex`, `scipy.sparse`) time the very same work:
 //! `docs/peers/peers.py`.
 
-use super::layouts::Segment;
-use anyhow::{Context, Result};
+use super::error::BenchError;
+use super::occlusion::Segment;
+use crate::geometry::Mesh;
+use crate::io::write_bytes;
+use crate::visibility::Visibility;
 use sprs::CsMat;
 use std::path::Path;
-use ugo::geometry::Mesh;
-use ugo::visibility::Visibility;
 
 /// Writes the arrays and `meta` (a JSON object completed with the sizes) into `dir`.
 pub fn export(
@@ -18,8 +19,8 @@ pub fn export(
     segments: &[Segment],
     g: &CsMat<f64>,
     mut meta: serde_json::Value,
-) -> Result<()> {
-    std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+) -> Result<(), BenchError> {
+    std::fs::create_dir_all(dir).map_err(|e| BenchError::Folder(dir.to_path_buf(), e))?;
     let mut seen = vec![false; mesh.faces];
     let mut triangles = Vec::new();
     for p in &mesh.patches {
@@ -55,6 +56,6 @@ pub fn export(
     write(dir, "meta.json", serde_json::to_string_pretty(&meta)?.as_bytes())
 }
 
-fn write(dir: &Path, name: &str, data: &[u8]) -> Result<()> {
-    Ok(ugo::io::write_bytes(&dir.join(name), data)?)
+fn write(dir: &Path, name: &str, data: &[u8]) -> Result<(), BenchError> {
+    Ok(write_bytes(&dir.join(name), data)?)
 }

@@ -1,6 +1,6 @@
-//! Peak resident memory of one stretch of `ugo bench`'s work: the kernel's high-water
-//! mark (`VmHWM`) reset before it and read after it, less the resident size before it.
-//! Linux only; elsewhere, or where the reset is not allowed, there is no figure.
+//! Peak resident memory of one stretch of work: the kernel's high-water mark (`VmHWM`)
+//! reset before it and read after it, less the resident size before it. Linux only;
+//! elsewhere, or where the reset is not allowed, there is no figure.
 
 /// A stretch of work whose peak memory is measured.
 pub struct Peak {

@@ -1,0 +1,248 @@
+//! [`Warning`]: what a solved field says is probably not meant (issue 18, item 4), one
+//! variant a kind with the names and numbers its text states. `study::physics_warnings`
+//! finds them; [`super::Solution`] keeps them typed, and they become text (`Display`) only
+//! where they are printed or written to `/warnings`.
+
+use std::fmt;
+
+/// One physics warning of a solved case.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Warning {
+    /// Light lost on the back of one-sided surfaces, above 2 % of the flux emitted.
+    BacksLost {
+        /// Flux meeting backs, lm.
+        lost: f64,
+        /// Flux emitted, lm.
+        emitted: f64,
+        /// The (at most three) surfaces whose backs receive most, with the flux each
+        /// receives, lm, most first.
+        surfaces: Vec<(String, f64)>,
+    },
+    /// A point luminaire none of whose light reaches the front of a surface.
+    LuminaireUnseen {
+        /// The luminaire's name.
+        luminaire: String,
+        /// Share of its flux meeting backs, %.
+        backs: f64,
+    },
+    /// A point luminaire more than half of whose flux meets the back of surfaces.
+    LuminaireMostlyBacks {
+        /// The luminaire's name.
+        luminaire: String,
+        /// Share of its flux meeting backs, %.
+        backs: f64,
+    },
+    /// A probe whose sensor is not in the room.
+    Probe {
+        /// The probe's name.
+        probe: String,
+        /// What is wrong with it.
+        fault: SensorFault,
+    },
+    /// A grid more than half of whose points are not in the room.
+    Grid {
+        /// The grid's name.
+        grid: String,
+        /// Points with a fault.
+        faulty: usize,
+        /// Points of the grid.
+        points: usize,
+        /// The first point's fault.
+        first: SensorFault,
+    },
+    /// A probe in the near field of a patch it sees (`study`'s `near.rs`).
+    NearPatch {
+        /// The probe's name.
+        probe: String,
+        /// Its distance from the patch, m.
+        distance: f64,
+        /// The patch's surface.
+        surface: String,
+        /// The patch's diameter, m.
+        diameter: f64,
+        /// The share of the diameter below which a patch is near.
+        near: f64,
+    },
+    /// A negative escaped flux, explained and bounded by the kernel's columns.
+    NegativeEscape(NegativeEscape),
+    /// Light escaping through an opening small against the surfaces (`study`'s
+    /// `openings.rs`).
+    SmallOpening {
+        /// Flux leaving the surfaces through it, lm.
+        escaping: f64,
+        /// Flux emitted, lm.
+        emitted: f64,
+        /// The opening's area, m².
+        opening: f64,
+        /// The surfaces' area, m².
+        surfaces: f64,
+        /// The (at most three) surfaces that see most of it, most first.
+        seen_by: Vec<String>,
+    },
+    /// Parallel light through a glazed window, which does not attenuate it.
+    ParallelThroughGlass {
+        /// The parallel light's name.
+        beam: String,
+        /// The window's name.
+        window: String,
+        /// The glass's transmittance at the beam's incidence.
+        transmittance: f64,
+        /// The beam's incidence on the window, degrees.
+        incidence: f64,
+    },
+}
+
+/// A negative escaped flux of a closed scene: not light but discretization error, the
+/// luminaires' part stated apart and the kernel's bounded by its columns' sent shares.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NegativeEscape {
+    /// The escaped flux, lm (negative).
+    pub escaped: f64,
+    /// Flux emitted, lm.
+    pub emitted: f64,
+    /// The luminaires' direct light landing on the patches beyond their flux, lm, when it
+    /// is more than a rounding error.
+    pub luminaires: Option<f64>,
+    /// The smallest sent share of a column that sends light.
+    pub low: f64,
+    /// The largest.
+    pub high: f64,
+    /// The column whose deviation from 1 weighs most: its share and its place.
+    pub worst: Option<(f64, String)>,
+    /// The columns' excess over 1 weighted by the solved outgoing flux, lm.
+    pub over: f64,
+    /// Their deviation from 1 either way, weighted the same, lm.
+    pub either: f64,
+}
+
+/// What is wrong with a sensor (a probe, a grid's point).
+#[derive(Debug, Clone, PartialEq)]
+pub enum SensorFault {
+    /// Its normal points into the surface it lies on.
+    IntoSurface {
+        /// That surface's name.
+        surface: String,
+    },
+    /// It sees mostly the backs of surfaces.
+    Behind {
+        /// Share of what it sees that is a back, %.
+        backs: f64,
+        /// The last back-facing surface it saw.
+        surface: String,
+    },
+}
+
+impl fmt::Display for SensorFault {
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        match self {
+            SensorFault::IntoSurface { surface } => {
+                write!(f, "its normal points into the surface it lies on (\"{surface}\")")
+            }
+            SensorFault::Behind { backs, surface } => {
+                write!(f, "{backs:.0} % of what it sees is the back of surfaces (\"{surface}\"): it lies behind one")
+            }
+        }
+    }
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        match self {
+            Warning::BacksLost { lost, emitted, surfaces } => {
+                let named: Vec<String> = surfaces.iter().map(|(name, lm)| format!("\"{name}\" {lm:.4} lm")).collect();
+                write!(
+                    f,
+                    "about {lost:.4} lm ({:.1} % of the flux emitted) meets the back of one-sided surfaces, where it \
+                     is lost: {}; a surface facing the wrong way (`inside`, the order of its vertices) or one meant \
+                     to be two_sided",
+                    100.0 * lost / emitted,
+                    named.join(", ")
+                )
+            }
+            Warning::LuminaireUnseen { luminaire, backs } => write!(
+                f,
+                "luminaire \"{luminaire}\": none of its light reaches the front of a surface ({backs:.0} % meets \
+                 backs, the rest nothing): it lies inside or behind a surface"
+            ),
+            Warning::LuminaireMostlyBacks { luminaire, backs } => write!(
+                f,
+                "luminaire \"{luminaire}\": {backs:.0} % of its flux meets the back of surfaces (lost): it lies \
+                 inside or behind a surface, or aims away from the room"
+            ),
+            Warning::Probe { probe, fault } => {
+                write!(f, "probe \"{probe}\": {fault}; its readings are not of the room")
+            }
+            Warning::Grid { grid, faulty, points, first } => write!(
+                f,
+                "grid \"{grid}\": at {faulty} of its {points} points {first}; its illuminances are not of the room"
+            ),
+            Warning::NearPatch { probe, distance, surface, diameter, near } => write!(
+                f,
+                "probe \"{probe}\" lies {:.2} cm from a patch of \"{surface}\" {:.1} cm across, closer than {near} \
+                 of its size: it reads the patch's mean luminance where it sees mostly the patch's nearest part, an \
+                 error of several per cent where the light on the patch varies (a contact, a shadow); place the \
+                 probe farther from it, or compare with `ugo trace`",
+                100.0 * distance,
+                100.0 * diameter,
+            ),
+            Warning::NegativeEscape(escape) => escape.fmt(f),
+            Warning::SmallOpening { escaping, emitted, opening, surfaces, seen_by } => {
+                let named: Vec<String> = seen_by.iter().map(|name| format!("\"{name}\"")).collect();
+                write!(
+                    f,
+                    "{escaping:.4} lm ({:.1} % of the flux emitted) leaves the surfaces through an opening of about \
+                     {opening:.4} m², {:.2} % of the {surfaces:.4} m² of surfaces: a nearly closed scene, so a \
+                     missing wall or a gap between surfaces? The surfaces that see most of it: {}",
+                    100.0 * escaping / emitted,
+                    100.0 * opening / surfaces,
+                    named.join(", ")
+                )
+            }
+            Warning::ParallelThroughGlass { beam, window, transmittance, incidence } => write!(
+                f,
+                "\"{beam}\" (parallel light) passes the glazed window \"{window}\" unattenuated: the glass's \
+                 transmittance (τ = {transmittance:.3} at the beam's {incidence:.1}° incidence) and the window's \
+                 maintenance factor apply to the sky and the ground it lets in, not to the beam, so the direct light \
+                 through it, and all it lights, is too high by at least 1/τ; leave the window open or the beam out \
+                 for a result without this error"
+            ),
+        }
+    }
+}
+
+impl fmt::Display for NegativeEscape {
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        let NegativeEscape { escaped, emitted, luminaires, low, high, worst, over, either } = self;
+        let share = |flux: f64| 100.0 * flux / emitted;
+        write!(
+            f,
+            "the escaped flux is negative ({escaped:.4} lm, {:.3} % of the {emitted:.4} lm emitted): no light enters \
+             from outside, so this is the discretization error, not a flux.",
+            -share(*escaped)
+        )?;
+        if let Some(beyond) = luminaires {
+            write!(
+                f,
+                " Of it, {:.4} lm is the luminaires' direct light on the patches exceeding their flux (the error of \
+                 its integration over the patches); the rest, {:.4} lm, the kernel's.",
+                -beyond,
+                escaped + beyond
+            )?;
+        }
+        write!(
+            f,
+            " The kernel's columns that send light, the share of the light each patch sends that the others \
+             receive (π Σ_i A_i G_ij / (A_j μ)), lie between {low:.5} and {high:.5} where a closed scene has 1"
+        )?;
+        if let Some((largest, place)) = worst {
+            write!(f, " (the largest part: {largest:.5} at {place})")?;
+        }
+        write!(
+            f,
+            "; weighted by the solved outgoing flux, their excess over 1 is {over:.4} lm (it bounds the kernel's \
+             part) and their deviation either way {either:.4} lm, {:.3} % of the flux emitted: the energy balance, \
+             and readings that depend on it, are uncertain by up to that share; a smaller patch_size lowers it",
+            share(*either)
+        )
+    }
+}

@@ -1,0 +1,76 @@
+//! The occlusion rays of `ugo bench`: segments like the assembly's, between stratified
+//! points of random facing patch pairs, timed through the default BVH.
+
+use super::error::BenchError;
+use crate::geometry::{Mesh, facing};
+use crate::random::Rng;
+use crate::scene::Scene;
+use crate::transfer::occlusion::sample_points;
+use crate::visibility::Visibility;
+use glam::DVec3;
+use rayon::prelude::*;
+use std::time::Instant;
+
+/// A segment between two faces, ignoring both.
+pub type Segment = (DVec3, DVec3, [u32; 2]);
+
+/// The uniform mesh of a case at one patch size, its BVH, the segments and their rate.
+pub struct Occlusion {
+    /// The mesh.
+    pub mesh: Mesh,
+    /// Its ray caster, in the default layout.
+    pub visibility: Visibility,
+    /// Segments between interior points of random facing patch pairs.
+    pub segments: Vec<Segment>,
+    /// Occlusion rays per second through them (the better of two runs, all threads of the
+    /// current pool).
+    pub rays_per_second: f64,
+}
+
+impl Occlusion {
+    /// Meshes `scene` at `size` and times `count` segments; refused when no facing pair
+    /// turns up (a scene of one plate, or of luminaires and a floor only, has nothing to
+    /// time).
+    pub fn measure(scene: &Scene, size: f64, count: usize) -> Result<Occlusion, BenchError> {
+        let mesh = Mesh::build(&scene.surfaces, size);
+        let Some(segments) = segments(&mesh, count) else {
+            return Err(BenchError::NoFacingPairs { patches: mesh.len() });
+        };
+        let visibility = Visibility::build(&mesh);
+        let rays_per_second = rays_per_second(&visibility, &segments).max(rays_per_second(&visibility, &segments));
+        Ok(Occlusion { mesh, visibility, segments, rays_per_second })
+    }
+}
+
+/// Occlusion rays per second through `visibility` (all threads of the current pool).
+fn rays_per_second(visibility: &Visibility, segments: &[Segment]) -> f64 {
+    let t = Instant::now();
+    let seen: usize = segments.par_iter().map(|(a, b, f)| visibility.visible(*a, *b, *f) as usize).sum();
+    std::hint::black_box(seen);
+    segments.len() as f64 / t.elapsed().as_secs_f64()
+}
+
+/// `count` segments between interior points of random facing patch pairs (reproducible),
+/// or `None` when no facing pair turns up in `1000 · count` draws.
+fn segments(mesh: &Mesh, count: usize) -> Option<Vec<Segment>> {
+    let n = mesh.len() as u64;
+    if n < 2 {
+        return None;
+    }
+    let mut rng = Rng::stream(0x2545_F491_4F6C_DD1D, 0);
+    let mut out = Vec::with_capacity(count);
+    for _ in 0..1000 * count.max(1) {
+        if out.len() == count {
+            break;
+        }
+        let (i, j) = ((rng.next_u64() % n) as usize, (rng.next_u64() % n) as usize);
+        let (a, b) = (&mesh.patches[i], &mesh.patches[j]);
+        if i == j || !facing(a, b) {
+            continue;
+        }
+        let pa = sample_points(a)[(rng.next_u64() % 4) as usize];
+        let pb = sample_points(b)[(rng.next_u64() % 4) as usize];
+        out.push((pa, pb, [a.face, b.face]));
+    }
+    (!out.is_empty()).then_some(out)
+}
