@@ -117,6 +117,10 @@ enum Command {
         /// Photons (forward).
         #[arg(long, allow_negative_numbers = true, default_value_t = 1_000_000)]
         photons: u64,
+        /// Bin the photons (forward) on the patches and cells of this solution (an HDF5 file
+        /// of `ugo solve` of the same case): the hierarchy's leaves, for `ugo agree` leaf by leaf.
+        #[arg(long, value_name = "SOLUTION")]
+        bins_of: Option<PathBuf>,
         /// Seed of the random streams: the same seed and counts give the same result.
         #[arg(long, allow_negative_numbers = true, default_value_t = 1)]
         seed: u64,
@@ -148,6 +152,10 @@ enum Command {
         /// Final-gather rays per pixel (with --shading gather).
         #[arg(long, allow_negative_numbers = true, default_value_t = 256)]
         gather_rays: usize,
+        /// Relative standard error up to which a forward bin is precise enough to read the
+        /// solution's relative error off it (the leaf-by-leaf figures).
+        #[arg(long, allow_negative_numbers = true, default_value_t = 5e-3)]
+        precise: f64,
     },
     /// Camera images (linear EXR, tone-mapped PNG) of a solution written by `solve`.
     Render {
@@ -293,15 +301,27 @@ fn run(command: Command) -> anyhow::Result<()> {
             };
             cli::render::run(&solution, &cameras, &output, &look)
         }
-        Command::Trace { case, cameras, spp, probe_samples, forward, photons, seed, max_order, output, discretize } => {
+        Command::Trace {
+            case,
+            cameras,
+            spp,
+            probe_samples,
+            forward,
+            photons,
+            bins_of,
+            seed,
+            max_order,
+            output,
+            discretize,
+        } => {
             let options = ugo::trace::TraceOptions { seed, max_order };
             let photons = forward.then_some(photons);
-            let job = cli::trace::TraceJob { cameras, spp, probe_samples, photons, options, output };
+            let job = cli::trace::TraceJob { cameras, spp, probe_samples, photons, bins_of, options, output };
             cli::trace::run(&case, &discretize, &job)
         }
-        Command::Agree { solution, reference, camera, samples, shading, gather_rays } => {
+        Command::Agree { solution, reference, camera, samples, shading, gather_rays, precise } => {
             let rendering = cli::agree::Rendering { camera: camera.as_deref(), samples, shading, gather_rays };
-            cli::agree::run(&solution, &reference, &rendering)
+            cli::agree::run(&solution, &reference, &rendering, precise)
         }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench(options) => cli::bench::run(&options),

@@ -12,7 +12,7 @@ use anyhow::{Result, bail};
 use std::path::Path;
 use ugo::io::{StoredSolution, read_exr, read_solution};
 use ugo::render::render;
-use ugo::trace::{Agreement, agreement};
+use ugo::trace::{Agreement, agreement, leaf_errors};
 
 /// How the solution is rendered for a comparison with a traced image.
 pub struct Rendering<'a> {
@@ -25,12 +25,15 @@ pub struct Rendering<'a> {
     pub gather_rays: usize,
 }
 
-pub fn run(solution: &Path, reference: &Path, rendering: &Rendering) -> Result<()> {
+pub fn run(solution: &Path, reference: &Path, rendering: &Rendering, precise: f64) -> Result<()> {
+    if !(precise > 0.0 && precise < 1.0) {
+        bail!("--precise must lie between 0 and 1 (a relative standard error), got {precise}");
+    }
     let shading = shading_of(rendering.shading, rendering.gather_rays)?;
     let stored = read_solution(solution)?;
     let is_image = reference.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"));
     if !is_image {
-        return against_estimate(solution, reference, &stored);
+        return against_estimate(solution, reference, &stored, precise);
     }
     let mean = read_exr(reference)?;
     let error_path = sibling(&reference.with_extension(""), "-stderr.exr");
@@ -78,7 +81,7 @@ pub fn run(solution: &Path, reference: &Path, rendering: &Rendering) -> Result<(
 }
 
 /// Per (patch, cell) against a forward Monte Carlo estimate, as a whole and per surface.
-fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution) -> Result<()> {
+fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution, precise: f64) -> Result<()> {
     let mc = read_solution(reference)?;
     let Some(error) = &mc.standard_error else {
         bail!(
@@ -99,7 +102,33 @@ fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution) 
     println!("ugo agree: {} against the forward estimate {}", solution.display(), reference.display());
     println!("  per (patch, cell): {n} × {k}");
     summary(&agreement(&stored.luminance, &mc.luminance, error));
-    let names: Vec<&str> = stored.scene.surfaces.iter().map(|s| s.name.as_str()).collect();
+    let areas: Vec<f64> = stored.mesh.patches.iter().flat_map(|p| std::iter::repeat_n(p.area, k)).collect();
+    match leaf_errors(&stored.luminance, &mc.luminance, error, &areas, precise) {
+        Some(e) => {
+            let worst = &stored.mesh.patches[e.largest.1 / k];
+            let c = worst.centroid;
+            println!(
+                "  bins precise to {:.1} % {:>8}   ({:.1} % of the area); |x − m|/m over them, area-weighted:",
+                100.0 * precise,
+                e.bins,
+                100.0 * e.area_share
+            );
+            println!("    mean               {:>11.3} %", 100.0 * e.mean);
+            println!("    95th percentile    {:>11.3} %", 100.0 * e.p95);
+            println!(
+                "    largest            {:>11.3} %   (\"{}\", patch {} at [{:.3}, {:.3}, {:.3}], cell {})",
+                100.0 * e.largest.0,
+                names_of(stored)[worst.surface as usize],
+                e.largest.1 / k,
+                c.x,
+                c.y,
+                c.z,
+                e.largest.1 % k
+            );
+        }
+        None => println!("  no bin is precise to {:.1} %: trace more --photons", 100.0 * precise),
+    }
+    let names = names_of(stored);
     println!("  {:<26} {:>8} {:>10} {:>10}", "surface", "rms z", "rel. L1", "noise L2");
     for (s, name) in names.iter().enumerate() {
         let pick = |v: &[f64]| -> Vec<f64> {
@@ -116,6 +145,11 @@ fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution) 
         println!("  {:<26} {:>8.3} {:>10.3e} {:>10.3e}", name, a.rms_z, a.relative_l1, a.noise_l2);
     }
     Ok(())
+}
+
+/// The surfaces' names, by surface index.
+fn names_of(stored: &StoredSolution) -> Vec<&str> {
+    stored.scene.surfaces.iter().map(|s| s.name.as_str()).collect()
 }
 
 fn summary(a: &Agreement) {

@@ -11,7 +11,7 @@ use anyhow::{Result, bail};
 use std::path::{Path, PathBuf};
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
-use ugo::io::{EstimateFile, auto_exposure, write_estimate, write_exr_as, write_png};
+use ugo::io::{EstimateFile, auto_exposure, read_solution, write_estimate, write_exr_as, write_png};
 use ugo::scene::{ProbeKind, Scene};
 use ugo::trace::{TraceOptions, World, trace_camera, trace_photons, trace_probes};
 
@@ -23,27 +23,18 @@ pub struct TraceJob {
     pub probe_samples: usize,
     /// `Some(P)`: forward with `P` photons instead of cameras.
     pub photons: Option<u64>,
+    /// Forward: bin on the patches and cells of this solution instead of the uniform mesh.
+    pub bins_of: Option<PathBuf>,
     pub options: TraceOptions,
     pub output: Option<PathBuf>,
 }
 
 pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
     let scene = load(case, d)?;
-    // the tracers bin into the uniform mesh at the patch size, whatever the kernel
-    let (h, limit) = (scene.discretization.patch_size, scene.discretization.memory_limit);
-    let directions = scene.discretization.directions.set();
-    let f = ugo::kernel::Forecast::uniform(&scene.surfaces, scene.materials.len(), h, &directions);
-    let need = f.mesh_bytes + f.vector_bytes;
-    if need.is_nan() || need > limit as f64 {
-        bail!(
-            "the mesh would need {} for {:.3e} patches (estimated before meshing), over the limit of {}: \
-             a larger --patch-size, or a higher --memory-limit if the machine has the RAM",
-            super::bytes(f.mesh_bytes + f.vector_bytes),
-            f.patches,
-            super::bytes(limit as f64)
-        );
-    }
-    let mesh = Mesh::build(&scene.surfaces, h);
+    let (mesh, directions) = match &job.bins_of {
+        Some(solution) => bins_of(case, &scene, solution, job)?,
+        None => (uniform_mesh(&scene)?, scene.discretization.directions.set()),
+    };
     let world = World::new(&scene, mesh);
     // Surfaces and luminaires both emit: the tracers start paths on the one and gather
     // (or, forward, start photons at) the other.
@@ -69,6 +60,45 @@ pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
     }
     camera_images(case, &scene, &world, job)?;
     if scene.probes.is_empty() { Ok(()) } else { probes(&scene, &world, job) }
+}
+
+/// The uniform mesh at the patch size, which the tracers bin into whatever the kernel,
+/// refused before meshing when it would not fit in the memory limit.
+fn uniform_mesh(scene: &Scene) -> Result<Mesh> {
+    let (h, limit) = (scene.discretization.patch_size, scene.discretization.memory_limit);
+    let directions = scene.discretization.directions.set();
+    let f = ugo::kernel::Forecast::uniform(&scene.surfaces, scene.materials.len(), h, &directions);
+    let need = f.mesh_bytes + f.vector_bytes;
+    if need.is_nan() || need > limit as f64 {
+        bail!(
+            "the mesh would need {} for {:.3e} patches (estimated before meshing), over the limit of {}: \
+             a larger --patch-size, or a higher --memory-limit if the machine has the RAM",
+            super::bytes(f.mesh_bytes + f.vector_bytes),
+            f.patches,
+            super::bytes(limit as f64)
+        );
+    }
+    Ok(Mesh::build(&scene.surfaces, h))
+}
+
+/// The patches and cells of the solution `solution` of the same case (`--bins-of`): the
+/// hierarchy's leaves, for a forward estimate on them.
+fn bins_of(case: &Path, scene: &Scene, solution: &Path, job: &TraceJob) -> Result<(Mesh, DirectionSet)> {
+    if job.photons.is_none() {
+        bail!("--bins-of names the bins of a forward trace: add --forward");
+    }
+    let stored = read_solution(solution)?;
+    let (surfaces, materials) = (stored.scene.surfaces.len(), stored.scene.materials.len());
+    if surfaces != scene.surfaces.len() || materials != scene.materials.len() {
+        bail!(
+            "{} solves another case: {surfaces} surfaces and {materials} materials against {} and {} in {}",
+            solution.display(),
+            scene.surfaces.len(),
+            scene.materials.len(),
+            case.display()
+        );
+    }
+    Ok((stored.mesh, stored.directions))
 }
 
 /// What a trace keeps: every reflection order, or those up to `--max-order`.

@@ -60,9 +60,9 @@ pub struct Forecast {
     pub vector_bytes: f64,
     /// The materials' `K × K` blocks.
     pub block_bytes: f64,
-    /// `G` once assembled (explicit).
+    /// `G` once assembled (uniform kernel).
     pub kernel_bytes: f64,
-    /// `G` while it is assembled (explicit).
+    /// `G` while it is assembled (uniform kernel).
     pub assembly_bytes: f64,
     /// True when the pairs were sampled.
     pub sampled: bool,

@@ -4,7 +4,7 @@
 //! assembled for and a refusal names the part that changed.
 //!
 //! Each part is a 64-bit FNV-1a hash of a canonical text (every float in its exact
-//! shortest round-trip form) with a short summary for messages. The explicit `G` depends
+//! shortest round-trip form) with a short summary for messages. The uniform `G` depends
 //! on the geometry, the discretization, the visibility rules and the program; a change of
 //! the reflectances only rebuilds `B` and `L0`, a change of the luminaires only `D` and
 //! `L0`. Probes, grids, cameras, the solver and the surfaces' own emission (`L_e`, taken

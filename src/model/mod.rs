@@ -1,13 +1,13 @@
 //! The discretized problem of a scene: mesh, visibility, kernel `K = B·G` and source
 //! `L0` (`docs/design.md` §6, the arrows from Scene to Kernel): the surfaces' own emission plus
 //! the luminaires' direct light reflected once, `L0 = L_e + B·D` (`crate::luminaire`).
-//! The kernel is explicit (`explicit.rs`, every facing pair of patches) or hierarchical
+//! The kernel is uniform (`uniform.rs`, every facing pair of patches) or hierarchical
 //! (`hierarchical.rs`, `docs/design.md` §3b: links between elements at the levels its oracle
 //! accepts, refined with the solve); either way the mesh is the unknowns' patches.
 //!
 //! The kernel's memory is estimated before assembly (after each refinement pass for the
 //! hierarchy) and a kernel over the limit is refused with the estimate and the ways out.
-//! A saved explicit `G` is reused instead of assembled (`reuse.rs`) when the case's
+//! A saved uniform `G` is reused instead of assembled (`reuse.rs`) when the case's
 //! fingerprint (`fingerprint.rs`) matches the one stored with it.
 
 mod fingerprint;

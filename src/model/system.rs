@@ -39,11 +39,11 @@ pub struct AssemblyStats {
     pub mesh_seconds: f64,
     /// Time spent building the ray caster, s.
     pub bvh_seconds: f64,
-    /// The kernel: the explicit assembly, or every refinement pass and its solve.
+    /// The kernel: the uniform assembly, or every refinement pass and its solve.
     pub kernel_seconds: f64,
     /// Time spent on the luminaires' direct light.
     pub light_seconds: f64,
-    /// Patch pairs integrated (explicit), or links (hierarchical).
+    /// Patch pairs integrated (uniform), or links (hierarchical).
     pub pairs: usize,
     /// Occlusion rays traced, the luminaires' included.
     pub rays: usize,

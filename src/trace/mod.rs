@@ -8,7 +8,8 @@
 //!   standard errors of a `[[camera]]`, [`probe`] the readings of a `[[probe]]`.
 //! * [`forward`] (from the sources): light tracing into the `(patch, direction cell)` bins,
 //!   a Monte Carlo estimate of the discrete field `L(i,k)` with standard errors.
-//! * [`agreement`]: a deterministic result against either, in units of the standard error.
+//! * [`agreement`]: a deterministic result against either, in units of the standard error;
+//!   [`leaf_errors`]: against the forward bins precise enough to tell, in relative error.
 //!
 //! The pieces they share: [`world`] (geometry, materials, ray casting), [`emitters`]
 //! (sources sampled by flux), [`luminaires`] (delta lights gathered exactly, photon
@@ -21,6 +22,7 @@ pub mod backward;
 pub mod camera;
 pub mod emitters;
 pub mod forward;
+pub mod leaf_errors;
 pub mod luminaires;
 pub mod openings;
 pub mod probe;
@@ -31,6 +33,7 @@ pub use agreement::{Agreement, agreement};
 pub use backward::{Start, TraceOptions, luminance_along};
 pub use camera::{TracedImage, trace_camera};
 pub use forward::{FieldEstimate, trace_photons};
+pub use leaf_errors::{LeafErrors, leaf_errors};
 pub use openings::Openings;
 pub use probe::{ProbeEstimate, trace_probes};
 pub use world::{Cast, World};

@@ -98,3 +98,25 @@ fn trace_refuses_bad_requests() {
     let daylit = fails(&["trace", "cases/daylit-office.toml", "--forward", "--photons", "10", "-o", d]);
     assert!(daylit.contains("[[window]]") && daylit.contains("--forward"), "{daylit}");
 }
+
+#[test]
+fn a_forward_trace_bins_on_a_hierarchical_solutions_leaves_and_agree_reads_them_leaf_by_leaf() {
+    let dir = scratch("bins-of");
+    let (solved, forward) = (dir.join("solved.h5"), dir.join("forward.h5"));
+    let (s, f) = (solved.to_str().unwrap(), forward.to_str().unwrap());
+    let hierarchical = ["--kernel", "hierarchical", "--root-size", "0.5", "--patch-size", "0.25"];
+    ok(&[&["solve", "cases/furnace-box.toml", "-o", s][..], &hierarchical].concat());
+    let leaves = read_solution(&solved).unwrap().mesh.len();
+    let printed = ok(&["trace", "cases/furnace-box.toml", "--forward", "--photons", "400000", "--bins-of", s, "-o", f]);
+    assert!(printed.contains(&format!("patches N × cells K  {leaves} × 1")), "{printed}");
+    assert_eq!(read_solution(&forward).unwrap().mesh.len(), leaves);
+    // the white furnace is 5 cd/m² on every leaf, so what agree reads is the trace's noise
+    let printed = ok(&["agree", s, f, "--precise", "0.02"]);
+    assert!(printed.contains(&format!("per (patch, cell): {leaves} × 1")), "{printed}");
+    assert!(printed.contains("bins precise to 2.0 %") && printed.contains("95th percentile"), "{printed}");
+
+    assert!(fails(&["trace", "cases/furnace-box.toml", "--bins-of", s]).contains("--forward"));
+    let other = fails(&["trace", "cases/cornell-box.toml", "--forward", "--bins-of", s]);
+    assert!(other.contains("another case"), "{other}");
+    assert!(fails(&["agree", s, f, "--precise", "0"]).contains("--precise"));
+}

@@ -75,3 +75,20 @@ fn forward_estimate_agrees_with_the_direct_solve_of_the_same_discretization() {
     assert!((0.85..1.15).contains(&a.rms_z), "rms z {}", a.rms_z);
     assert!(a.max_abs_z < 5.0 && a.beyond_3 < 0.01, "max |z| {}, beyond 3σ {}", a.max_abs_z, a.beyond_3);
 }
+
+#[test]
+fn leaf_errors_weigh_the_precise_bins_by_area() {
+    use ugo::trace::leaf_errors;
+    // four bins: two precise (σ/m = 1e-3), one too noisy, one without an estimate
+    let values = [1.01, 2.0 * 0.9, 3.0 * 1.5, 7.0];
+    let mean = [1.0, 2.0, 3.0, 0.0];
+    let error = [1e-3, 2e-3, 0.3, 0.0];
+    let areas = [3.0, 1.0, 4.0, 2.0];
+    let e = leaf_errors(&values, &mean, &error, &areas, 5e-3).expect("two precise bins");
+    assert_eq!(e.bins, 2);
+    assert!((e.area_share - 0.4).abs() < 1e-12, "{e:?}");
+    assert!((e.mean - (3.0 * 0.01 + 1.0 * 0.1) / 4.0).abs() < 1e-12, "{e:?}");
+    // 95 % of the 4 m² lie at or below 0.1 (0.01 covers only 75 %)
+    assert!((e.p95 - 0.1).abs() < 1e-12 && (e.largest.0 - 0.1).abs() < 1e-12 && e.largest.1 == 1, "{e:?}");
+    assert!(leaf_errors(&values, &mean, &error, &areas, 1e-4).is_none());
+}

@@ -1,5 +1,5 @@
 //! The hierarchy's `G` written out on the leaves (`docs/design.md` §3b, "Apply K x" read as a
-//! matrix): for the methods and norms that need the explicit kernel. Row `(a, d)` of leaf
+//! matrix): for the methods and norms that need the explicit product `B·G`. Row `(a, d)` of leaf
 //! `a` sums, over each ancestor `p` that gathers (with `a`'s push share `w`) and each piece
 //! `f` of `p`'s links from `q`, `w f` times the pull weight `ω_b` of every leaf `b` under
 //! `q` (the product of area shares down the tree): in `b`'s cell `m` when `q` is an
