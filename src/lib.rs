@@ -12,7 +12,7 @@
 //! 6. model: [`model`]
 //! 7. readouts: [`readout`]
 //! 8. render/trace: [`render`], [`trace`]
-//! 9. io: [`io`]
+//! 9. io, probe placement: [`io`], [`placement`]
 //! 10. study: [`study`]
 //!
 //! The command line (`src/main.rs`, `src/cli/`) stands on top and only calls the library.
@@ -29,6 +29,7 @@ pub mod luminaire;
 pub mod material;
 pub mod model;
 pub mod photometry;
+pub mod placement;
 pub mod progress;
 pub mod random;
 pub mod readout;

@@ -1,5 +1,5 @@
 //! The `ugo` command line (`docs/design.md` §6): `solve`, `norms`, `compare`, `render`, `trace`,
-//! `agree`, `info`, `bench`, `export`.
+//! `agree`, `info`, `bench`, `export`, `probes`.
 
 mod cli;
 
@@ -200,6 +200,27 @@ enum Command {
     },
     /// Throughput of every stage against the machine's limits (table and JSON).
     Bench(cli::bench::BenchOptions),
+    /// Hard probes placed by class (room corners and edges, contacts, undersides, umbrae, the
+    /// dimmest 5 %, open surfaces) as `[[probe]]` tables: the case with them is a benchmark
+    /// (docs/accuracy.md).
+    Probes {
+        /// The case file (TOML).
+        case: PathBuf,
+        /// The file the `[[probe]]` tables go to.
+        #[arg(short, long)]
+        output: PathBuf,
+        /// Probes per class (fewer where a room has no place for them).
+        #[arg(long, allow_negative_numbers = true, default_value_t = 20)]
+        count: usize,
+        /// Seed of the candidates' random streams: the same seed gives the same probes.
+        #[arg(long, allow_negative_numbers = true, default_value_t = 1)]
+        seed: u64,
+        /// Candidate points drawn at most.
+        #[arg(long, allow_negative_numbers = true, default_value_t = 200_000)]
+        candidates: usize,
+        #[command(flatten)]
+        discretize: Discretize,
+    },
     /// K, I − K and L0 of a saved kernel (`solve --save-kernel`) as Matrix Market or PETSc binary files.
     Export(cli::export::ExportOptions),
 }
@@ -326,5 +347,9 @@ fn run(command: Command) -> anyhow::Result<()> {
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench(options) => cli::bench::run(&options),
         Command::Export(options) => cli::export::run(&options),
+        Command::Probes { case, output, count, seed, candidates, discretize } => {
+            let options = ugo::placement::Options { count, seed, candidates };
+            cli::probes::run(&case, &discretize, &cli::probes::ProbesJob { output, options })
+        }
     }
 }

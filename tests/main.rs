@@ -14,6 +14,7 @@ mod luminaire;
 mod material;
 mod model;
 mod photometry;
+mod placement;
 mod progress;
 mod readout;
 mod render;

@@ -9,6 +9,7 @@ pub mod info;
 pub mod kernel;
 pub mod light_scenes;
 pub mod options;
+pub mod probes;
 pub mod render;
 pub mod solve;
 pub mod spectrum;

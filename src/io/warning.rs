@@ -63,6 +63,13 @@ pub enum Warning {
         /// The share of the diameter below which a patch is near.
         near: f64,
     },
+    /// More probes near a patch than are named one by one.
+    MoreNearPatches {
+        /// The probes not named.
+        count: usize,
+        /// The share of the diameter below which a patch is near.
+        near: f64,
+    },
     /// A negative escaped flux, explained and bounded by the kernel's columns.
     NegativeEscape(NegativeEscape),
     /// Light escaping through an opening small against the surfaces (`study`'s
@@ -185,6 +192,9 @@ impl fmt::Display for Warning {
                 100.0 * distance,
                 100.0 * diameter,
             ),
+            Warning::MoreNearPatches { count, near } => {
+                write!(f, "{count} more probes lie closer than {near} of a patch's size to a patch they see")
+            }
             Warning::NegativeEscape(escape) => escape.fmt(f),
             Warning::SmallOpening { escaping, emitted, opening, surfaces, seen_by } => {
                 let named: Vec<String> = seen_by.iter().map(|name| format!("\"{name}\"")).collect();

@@ -7,7 +7,8 @@
 //! the Cornell box's floor probe,
 //! 1 cm in front of a block whose lowest leaves are 2–6 cm across, reads 2.4 % high with
 //! every patch of the uniform 2.5 cm mesh right (forward Monte Carlo), and the hierarchy
-//! at its defaults 2.5 %. Warned, naming the nearest such patch.
+//! at its defaults 2.5 %. Warned, naming the nearest such patch, for the first few such probes;
+//! the others counted in one warning.
 
 use crate::io::Warning;
 use crate::model::Model;
@@ -20,20 +21,32 @@ use glam::DVec3;
 /// 0.025 m); the office's desk probes, at 0.51 of a monitor's leaf, within 0.5 %.
 pub const NEAR: f64 = 0.4;
 
+/// Probes named one by one before the rest are counted in one warning: a benchmark's
+/// hundreds of probes by corners and contacts (`crate::placement`) are near patches by design.
+pub const LISTED: usize = 3;
+
 /// One warning per probe that lies within [`NEAR`] of a patch's diameter from a patch it
-/// can see (in front of the probe, off the surface the probe lies on).
+/// can see (in front of the probe, off the surface the probe lies on), for the first
+/// [`LISTED`] such probes; one more that counts the others.
 pub fn near_patches(scene: &Scene, model: &Model, out: &mut Vec<Warning>) {
-    for probe in &scene.probes {
-        if let Some((i, distance)) = nearest(model, probe.position, facing(probe.kind, probe.normal)) {
-            let patch = &model.mesh.patches[i];
-            out.push(Warning::NearPatch {
-                probe: probe.name.clone(),
-                distance,
-                surface: scene.surfaces[patch.surface as usize].name.clone(),
-                diameter: patch.polygon.diameter(),
-                near: NEAR,
-            });
+    let near = scene.probes.iter().filter_map(|p| nearest(model, p.position, facing(p.kind, p.normal)).map(|n| (p, n)));
+    let mut others = 0;
+    for (k, (probe, (i, distance))) in near.enumerate() {
+        if k >= LISTED {
+            others += 1;
+            continue;
         }
+        let patch = &model.mesh.patches[i];
+        out.push(Warning::NearPatch {
+            probe: probe.name.clone(),
+            distance,
+            surface: scene.surfaces[patch.surface as usize].name.clone(),
+            diameter: patch.polygon.diameter(),
+            near: NEAR,
+        });
+    }
+    if others > 0 {
+        out.push(Warning::MoreNearPatches { count: others, near: NEAR });
     }
 }
 

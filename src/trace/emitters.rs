@@ -137,7 +137,7 @@ impl Emitters {
 }
 
 /// A uniform point of `polygon`: `u0` chooses the fan triangle by area, `u1, u2` the point in it.
-pub(super) fn point_on(polygon: &ConvexPolygon, u0: f64, u1: f64, u2: f64) -> DVec3 {
+pub fn point_on(polygon: &ConvexPolygon, u0: f64, u1: f64, u2: f64) -> DVec3 {
     let mut s = u0 * polygon.area();
     let mut chosen = None;
     for tri in polygon.triangles() {
