@@ -1,5 +1,6 @@
 //! The one integration-test crate of ugo; its folders mirror `src/`.
 
+mod accuracy;
 mod basis;
 mod cie171;
 mod cli;

@@ -6,8 +6,10 @@
 
 use glam::DVec3;
 
-/// The most vertices a clipped patch can have (a quad cut by one plane has at most 5).
-pub const MAX_CLIPPED: usize = 5;
+/// The most vertices a clipped patch can have: a planar quad cut by one plane has at most
+/// 5, but a quad that the plane nearly holds can, by rounding, lie on alternate sides of it
+/// at every vertex, and each of its 4 edges then gives a vertex and a crossing.
+pub const MAX_CLIPPED: usize = 8;
 
 /// A convex planar polygon of 3 or 4 vertices.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -160,7 +162,8 @@ impl ConvexPolygon {
                 out[n] = a;
                 n += 1;
             }
-            if (da >= 0.0) != (db >= 0.0) {
+            // strictly across: a vertex on the plane is kept once, not again as a crossing
+            if (da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0) {
                 out[n] = a + (b - a) * (da / (da - db));
                 n += 1;
             }

@@ -1,3 +1,4 @@
 //! Meshing: the tessellation of shapes into patches.
 
+mod clip;
 mod concave;

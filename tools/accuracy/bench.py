@@ -1,0 +1,228 @@
+#!/usr/bin/env python3
+"""The hard-probe benchmark of issue 34 (docs/accuracy.md).
+
+For each room case: place the hard probes by class (`ugo probes`), make the case with them
+in place of its own probes (cameras, grids and light scenes dropped, file paths made
+absolute), trace the reference into tests/data/accuracy/CASE.csv with the commands in its
+header: a pilot (`ugo trace --probe-samples 16384 --seed S`) says how many paths each probe
+needs for TARGET standard error, and the probes, grouped by that count (powers of two), are
+traced again with seed S + 1 (the pilot only chooses the counts); solve it with each setting
+(timed, wall clock and peak memory) and write every probe's relative error to
+out/accuracy/CASE-SETTING.csv (`--step compare` again from the solves' files). `report.py` turns those into the tables of docs/accuracy.md.
+
+    tools/accuracy/bench.py cornell-box open-box office            # all three steps
+    tools/accuracy/bench.py --step solve office                       # the solves only
+
+Only the Python standard library: the ugo binary does the work.
+"""
+
+import argparse
+import csv
+import math
+import os
+import re
+import shlex
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+UGO = ROOT / "target" / "release" / "ugo"
+OUT = ROOT / "out" / "accuracy"
+DATA = ROOT / "tests" / "data" / "accuracy"
+
+# The references' standard error, relative; the pilot's paths per reading, and the most
+# paths a reading is given.
+TARGET = 0.003
+PILOT = 1 << 14
+MOST = 1 << 22
+
+# The settings solved per case: a name and the flags of `ugo solve`. "case" is the case's own.
+SETTINGS = {
+    "cornell-box": [
+        ("case", []),
+        ("hierarchy", ["--kernel", "hierarchical"]),
+        # no `kernel` in the case: at 0.02 m the size rule picks the hierarchy (roots 0.08 m)
+        ("leaves-0.02", ["--patch-size", "0.02"]),
+    ],
+    "open-box": [
+        ("case", []),
+        ("roots-0.12", ["--root-size", "0.12"]),
+        ("uniform-0.04", ["--kernel", "uniform", "--patch-size", "0.04"]),
+    ],
+    "office": [
+        ("case", []),
+        ("leaves-0.05", ["--patch-size", "0.05"]),
+        ("uniform-0.25", ["--kernel", "uniform", "--patch-size", "0.25"]),
+    ],
+}
+DEFAULT_SETTINGS = [("case", [])]
+
+# The tables a benchmark case drops: its own probes (replaced), and what costs time
+# without reading a probe.
+DROPPED = {"probe", "camera", "grid", "light_scene"}
+
+
+def run(command, log):
+    """Runs `command`, its output to `log`; returns (stdout, wall seconds, peak MB)."""
+    start = time.monotonic()
+    timed = ["/usr/bin/time", "-f", "%M"] + [str(c) for c in command]
+    done = subprocess.run(timed, capture_output=True, text=True)
+    seconds = time.monotonic() - start
+    log.write_text(done.stdout + done.stderr)
+    if done.returncode != 0:
+        sys.exit(f"bench: {shlex.join(map(str, command))} failed (exit {done.returncode}), see {log}")
+    peak = int(done.stderr.strip().splitlines()[-1]) / 1024
+    return done.stdout, seconds, peak
+
+
+def shown(command):
+    """A command as written in a header: paths relative to the repository."""
+    return shlex.join(os.path.relpath(c, ROOT) if isinstance(c, Path) else str(c) for c in command)
+
+
+def bench_case(case, probes):
+    """The case's text without DROPPED tables, its file paths absolute, with the `probes` text."""
+    kept, skipping = [], False
+    folder = case.parent.resolve()
+    for line in case.read_text().splitlines():
+        header = re.match(r"^\s*\[\[?\s*([A-Za-z_]+)\s*\]\]?\s*(#.*)?$", line)
+        if header:
+            skipping = header.group(1) in DROPPED
+        if skipping:
+            continue
+        path = re.match(r'^(\s*file\s*=\s*")([^"]+)(".*)$', line)
+        if path and not os.path.isabs(path.group(2)):
+            line = path.group(1) + str(folder / path.group(2)) + path.group(3)
+        kept.append(line)
+    return "\n".join(kept) + "\n\n" + probes
+
+
+def place(name, count, seed):
+    """`ugo probes`, then the benchmark case; returns (its path, the probes' command)."""
+    case = ROOT / "cases" / f"{name}.toml"
+    probes = OUT / f"{name}-probes.toml"
+    command = [UGO, "probes", case, "-o", probes, "--count", count, "--seed", seed]
+    out, _, _ = run(command, OUT / f"{name}-probes.log")
+    print(out, end="")
+    bench = OUT / f"{name}-bench.toml"
+    bench.write_text(bench_case(case, probes.read_text()))
+    return bench, command
+
+
+def reading_lines(text):
+    """(name, L, σL, E, σE) of every probe line `ugo trace` prints."""
+    number = r"([-+0-9.eE]+)"
+    line = re.compile(rf"^\s+(\S+)\s+{number} ± {number}\s+{number} ± {number}\s*$")
+    return [(m[1], *map(float, m.groups()[1:])) for m in map(line.match, text.splitlines()) if m]
+
+
+def paths_needed(e, se):
+    """Paths for TARGET relative standard error from the pilot's σ, a power of two."""
+    wanted = PILOT * (se / (TARGET * e)) ** 2 * 1.2 if e > 0 else MOST
+    return min(MOST, max(2 * PILOT, 1 << max(0, math.ceil(math.log2(wanted)))))
+
+
+def reference(name, bench, placed, seed):
+    """Traces the references into DATA/name.csv with the commands in its header."""
+    pilot = [UGO, "trace", bench, "--probe-samples", PILOT, "--seed", seed]
+    out, seconds, _ = run(pilot, OUT / f"{name}-pilot.log")
+    tables = probe_tables(bench)
+    groups = {}
+    for probe, _, _, e, se in reading_lines(out):
+        groups.setdefault(paths_needed(e, se), []).append(probe)
+    commands, readings = [f"pilot: {shown(pilot)} ({seconds:.0f} s)"], []
+    case = ROOT / "cases" / f"{name}.toml"
+    for paths, names in sorted(groups.items()):
+        group = OUT / f"{name}-bench-{paths}.toml"
+        group.write_text(bench_case(case, "".join(tables[n]["text"] for n in names)))
+        command = [UGO, "trace", group, "--probe-samples", paths, "--seed", seed + 1]
+        out, seconds, _ = run(command, OUT / f"{name}-trace-{paths}.log")
+        commands.append(f"{len(names)} probes: {shown(command)} ({seconds:.0f} s)")
+        readings += reading_lines(out)
+        print(f"  {len(names)} probes at {paths} paths: {seconds:.0f} s")
+    write_reference(name, placed, commands, readings, tables)
+
+
+def write_reference(name, placed, commands, readings, tables):
+    """DATA/name.csv: the readings by probe, the commands in its header."""
+    DATA.mkdir(parents=True, exist_ok=True)
+    with open(DATA / f"{name}.csv", "w", newline="") as f:
+        f.write(f"# Hard-probe references of cases/{name}.toml (issue 34, docs/accuracy.md).\n")
+        f.write(f"# probes: {shown(placed)}\n")
+        f.write(f"# case: tools/accuracy/bench.py: cases/{name}.toml without its "
+                f"{', '.join(sorted(DROPPED))} tables, with the probes (out/accuracy/{name}-bench-PATHS.toml)\n")
+        f.writelines(f"# {c}\n" for c in commands)
+        f.write("# E_lx: illuminance on a receiver facing the normal; L_cd_m2: what a meter aimed along it reads\n")
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["name", "class", "x", "y", "z", "nx", "ny", "nz", "E_lx", "E_se_lx", "L_cd_m2", "L_se_cd_m2"])
+        for probe, l, sl, e, se in sorted(readings, key=lambda r: list(tables).index(r[0])):
+            p = tables[probe]
+            w.writerow([probe, probe.split("/")[0], *p["position"], *p["normal"], f"{e:.6e}", f"{se:.3e}",
+                        f"{l:.6e}", f"{sl:.3e}"])
+    print(f"  reference → {os.path.relpath(DATA / f'{name}.csv', ROOT)}")
+
+
+def probe_tables(bench):
+    """name → the `[[probe]]` table of a benchmark case as `ugo probes` writes it (its text,
+    position and normal), in the file's order."""
+    pattern = r'\[\[probe\]\]\nname = "([^"]+)"\nposition = \[([^\]]+)\]\nnormal = \[([^\]]+)\]\n'
+    return {m[1]: {"text": "\n" + m[0], "position": m[2].split(", "), "normal": m[3].split(", ")}
+            for m in re.finditer(pattern, bench.read_text())}
+
+
+def read_reference(name):
+    """name → (class, E, σE) from DATA/name.csv."""
+    with open(DATA / f"{name}.csv") as f:
+        rows = csv.DictReader(line for line in f if not line.startswith("#"))
+        return {r["name"]: (r["class"], float(r["E_lx"]), float(r["E_se_lx"])) for r in rows}
+
+
+def solve(name, bench, setting, flags):
+    """Solves the benchmark case with `flags`: its probes' readings in
+    out/accuracy/name-setting-probes.csv, the command and its cost in name-setting.run."""
+    output = OUT / f"{name}-{setting}.h5"
+    command = [UGO, "solve", bench, "-o", output, *flags]
+    _, seconds, peak = run(command, OUT / f"{name}-{setting}.log")
+    (OUT / f"{name}-{setting}.run").write_text(f"# {shown(command)}\n# seconds {seconds:.1f} peak_MB {peak:.0f}\n")
+    output.unlink(missing_ok=True)
+    print(f"  {setting}: {seconds:.1f} s, {peak:.0f} MB")
+
+
+def compare(name, setting):
+    """Each probe's relative error against the reference: out/accuracy/name-setting.csv."""
+    with open(OUT / f"{name}-{setting}-probes.csv") as f:
+        solved = {r["name"]: float(r["E_lx"]) for r in csv.DictReader(f)}
+    ref = read_reference(name)
+    with open(OUT / f"{name}-{setting}.csv", "w", newline="") as f:
+        f.write((OUT / f"{name}-{setting}.run").read_text())
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["name", "class", "E_ref_lx", "E_se_lx", "E_lx", "error_pct"])
+        for probe, (cls, e, se) in ref.items():
+            x = solved[probe]
+            w.writerow([probe, cls, e, se, x, f"{100 * (x - e) / e:.4f}" if e > 0 else "nan"])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("cases", nargs="+", help="names of cases/NAME.toml")
+    parser.add_argument("--step", choices=["all", "reference", "solve", "compare"], default="all")
+    parser.add_argument("--count", type=int, default=20, help="probes per class")
+    parser.add_argument("--seed", type=int, default=1)
+    args = parser.parse_args()
+    OUT.mkdir(parents=True, exist_ok=True)
+    for name in args.cases:
+        print(f"{name}:")
+        bench, placed = place(name, args.count, args.seed)
+        if args.step in ("all", "reference"):
+            reference(name, bench, placed, args.seed)
+        for setting, flags in SETTINGS.get(name, DEFAULT_SETTINGS):
+            if args.step in ("all", "solve"):
+                solve(name, bench, setting, flags)
+            if args.step in ("all", "solve", "compare"):
+                compare(name, setting)
+
+
+if __name__ == "__main__":
+    main()
