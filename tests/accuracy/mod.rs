@@ -93,21 +93,23 @@ fn the_cornell_box_at_its_hard_probes_is_no_worse_than_today() {
 
 #[test]
 fn the_open_box_at_its_hard_probes_is_no_worse_than_today() {
-    // The case's hierarchy from roots of 0.25 m: every class reads high, the bias of issue
-    // 34 (docs/hierarchy.md, "An open box at coarse roots"; docs/accuracy.md, "open-box, case").
+    // The case's hierarchy from roots of 0.25 m. Before the emitter's leaves were balanced to
+    // their columns every class read high, the open probes up to +3.8 % (the bias of issue 34,
+    // docs/hierarchy.md, "An open box at coarse roots"); since, the open probes are within
+    // 0.51 % and the bounds below are the fixed figures (docs/accuracy.md, "open-box, case").
     let bounds = [
-        ("corner-2cm", 7.2),
-        ("corner-5cm", 6.1),
-        ("corner-10cm", 6.4),
-        ("edge-2cm", 5.7),
-        ("edge-5cm", 4.3),
-        ("edge-10cm", 4.6),
-        ("contact-1cm", 30.3),
-        ("contact-3cm", 11.6),
-        ("umbra", 7.9),
-        ("penumbra", 5.7),
-        ("dim", 24.6),
-        ("open", 3.9),
+        ("corner-2cm", 3.4),
+        ("corner-5cm", 2.3),
+        ("corner-10cm", 2.4),
+        ("edge-2cm", 2.1),
+        ("edge-5cm", 2.0),
+        ("edge-10cm", 1.3),
+        ("contact-1cm", 25.5),
+        ("contact-3cm", 7.5),
+        ("umbra", 3.8),
+        ("penumbra", 1.9),
+        ("dim", 19.8),
+        ("open", 0.7),
     ];
     check("open-box", &bounds);
 }
