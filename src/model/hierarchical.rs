@@ -105,7 +105,8 @@ pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -
     };
     let mut solver = |kernel: &Kernel, b: &[f64], scale: f64| -> Result<Vec<f64>, ModelError> {
         let g = &kernel.g;
-        let (what, bytes, nonzeros, patches, cells) = ("hierarchical kernel", g.bytes(), g.nnz() as f64, g.rows() / k, k);
+        let (what, bytes, nonzeros, patches, cells) =
+            ("hierarchical kernel", g.bytes(), g.nnz() as f64, g.rows() / k, k);
         Footprint { what, bytes, nonzeros, patches, cells }.check(d.memory_limit)?;
         let params = SolveParams { tolerance: (REFINEMENT_RESIDUAL * scale).min(0.5), ..SolveParams::default() };
         let operator = Factored::new(kernel);

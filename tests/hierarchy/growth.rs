@@ -11,7 +11,10 @@ fn links_grow_much_slower_than_leaves_squared() {
         .map(|&h| {
             let hier = hierarchy(&scene, 1.0, DirectionSet::single(), options(1e-2, h));
             let (leaves, links, work) = (hier.tree().leaves().len(), hier.links().len(), hier.work());
-            eprintln!("growth: smallest {h} m: {leaves} leaves, {links} links, {} rays, {:.2} s", work.rays, work.seconds);
+            eprintln!(
+                "growth: smallest {h} m: {leaves} leaves, {links} links, {} rays, {:.2} s",
+                work.rays, work.seconds
+            );
             (leaves as f64, links as f64)
         })
         .collect();

@@ -3,8 +3,8 @@
 use crate::support::{build, furnace, lambert, scene, surface};
 use glam::DVec3;
 use ugo::geometry::Mesh;
-use ugo::geometry::{Emission, Shape};
 use ugo::geometry::facing;
+use ugo::geometry::{Emission, Shape};
 use ugo::transfer::form_factor::{Quadrature, form_factor};
 
 /// Raw (unbalanced, unoccluded) form factors of every facing pair.

@@ -58,10 +58,7 @@ pub fn imports(sources: &[(String, String)]) -> Vec<(String, String)> {
     let binary = binary_modules(sources);
     let files: Vec<File> = sources.iter().map(|(p, t)| file(p, t, &binary)).collect();
     let edges = edges(&files);
-    edges
-        .iter()
-        .flat_map(|(from, to)| to.iter().map(|t| (files[*from].path.clone(), files[*t].path.clone())))
-        .collect()
+    edges.iter().flat_map(|(from, to)| to.iter().map(|t| (files[*from].path.clone(), files[*t].path.clone()))).collect()
 }
 
 /// The top-level modules of the binary (`mod x;` in `main.rs`).

@@ -25,7 +25,13 @@ pub(super) struct Memo {
 
 impl Memo {
     /// Measures the closure of the `leaves` not yet measured; returns the rays taken.
-    pub(super) fn measure_closure(&mut self, tree: &Tree, backs: &Backs, visibility: &Visibility, leaves: &[u32]) -> usize {
+    pub(super) fn measure_closure(
+        &mut self,
+        tree: &Tree,
+        backs: &Backs,
+        visibility: &Visibility,
+        leaves: &[u32],
+    ) -> usize {
         self.closure.resize(tree.len(), None);
         let todo: Vec<u32> = leaves.iter().copied().filter(|&id| self.closure[id as usize].is_none()).collect();
         let measured: Vec<(Closure, usize)> = todo

@@ -10,10 +10,10 @@
 //! row must carry).
 
 use super::balance::balance;
-use crate::kernel::BalanceReport;
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch, facing};
 use crate::interrupt::Interrupted;
+use crate::kernel::BalanceReport;
 use crate::transfer::form_factor::{Binning, PairIntegral, Quadrature, binned_pair_integral, pair_integral};
 use crate::transfer::occlusion::{POINTS, sample_points, visible_fraction};
 use crate::visibility::{NO_BLOCKER, Visibility};
