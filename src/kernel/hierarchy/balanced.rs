@@ -31,15 +31,18 @@ impl Hierarchy {
         let k = operator.cells();
         let mut rows = vec![0.0; operator.dim()];
         operator.arriving(&vec![1.0; operator.dim()], &mut rows);
-        let weights: Vec<f64> = areas.iter().flat_map(|&a| std::iter::repeat_n(a, k)).collect();
+        // columns only where some leaf emits: `leaving` is one serial scatter over the links
+        let emits = |id: u32| self.tree.node(id).emission > 0.0;
         let mut columns = vec![0.0; operator.dim()];
-        operator.leaving(&weights, &mut columns);
+        if leaves.iter().any(|&id| emits(id)) {
+            let weights: Vec<f64> = areas.iter().flat_map(|&a| std::iter::repeat_n(a, k)).collect();
+            operator.leaving(&weights, &mut columns);
+        }
         leaves
             .iter()
             .enumerate()
             .map(|(l, &id)| {
-                let node = self.tree.node(id);
-                let own = match node.emission > 0.0 && areas[l] > 0.0 {
+                let own = match emits(id) && areas[l] > 0.0 {
                     true => columns[l * k..(l + 1) * k].iter().sum::<f64>() / areas[l],
                     false => rows[l * k..(l + 1) * k].iter().sum(),
                 };
