@@ -14,7 +14,8 @@ pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Re
     dataset(g, "normal", &Array2::from_shape_fn((n, 3), |(i, c)| probes[i].normal[c]))?;
     dataset(g, "luminance", &Array1::from_iter(probes.iter().map(|p| p.luminance)))?;
     dataset(g, "illuminance", &Array1::from_iter(probes.iter().map(|p| p.illuminance)))?;
-    dataset(g, "direct", &Array1::from_iter(probes.iter().map(|p| p.direct)))
+    dataset(g, "direct", &Array1::from_iter(probes.iter().map(|p| p.direct)))?;
+    dataset(g, "correction", &Array1::from_iter(probes.iter().map(|p| p.correction)))
 }
 
 /// Points and illuminance as `nv × nu` arrays (row `b` runs along `edge_u`).

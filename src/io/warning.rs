@@ -186,9 +186,9 @@ impl fmt::Display for Warning {
             Warning::NearPatch { probe, distance, surface, diameter, near } => write!(
                 f,
                 "probe \"{probe}\" lies {:.2} cm from a patch of \"{surface}\" {:.1} cm across, closer than {near} \
-                 of its size: it reads the patch's mean luminance where it sees mostly the patch's nearest part, an \
-                 error of several per cent where the light on the patch varies (a contact, a shadow); place the \
-                 probe farther from it, or compare with `ugo trace`",
+                 of its size: where it sees mostly the patch's nearest part, its reading is corrected by the light \
+                 gathered at pieces of the patch (E_correction_lx; not for cylindrical kinds), which cannot mend a \
+                 patch whose own mean is wrong (coarse leaves at a contact or in an umbra); compare with `ugo trace`",
                 100.0 * distance,
                 100.0 * diameter,
             ),

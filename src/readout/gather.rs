@@ -30,26 +30,38 @@ use rayon::prelude::*;
 use std::f64::consts::PI;
 
 /// Illuminance, lx, on a receiver at `p` facing the unit `n` (on a surface or in free
-/// space), the luminaires' direct light included.
+/// space), the luminaires' direct light included; not corrected near geometry (a grid
+/// point's: `correction.rs` says why).
 pub fn illuminance_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> f64 {
-    plane_illuminance(model, field, p, n).0
-}
-
-/// [`illuminance_at`] and its part direct from the luminaires, lx.
-pub fn plane_illuminance(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (f64, f64) {
     let (_, incident, direct) = incident_at(model, field, p, n);
-    let direct = PI * direct.iter().sum::<f64>();
-    (PI * incident.iter().sum::<f64>() + direct, direct)
+    PI * incident.iter().chain(&direct).sum::<f64>()
 }
 
-/// The patch `p` lies on (if any) and the light arriving at `p` per cell of its frame:
+/// A receiver at a point: the patch it lies on (if any), the frame its light is binned
+/// in (the patch's, or one around the receiver's normal) and the face its rays ignore.
+pub(super) struct Receiver {
+    pub patch: Option<usize>,
+    pub frame: Frame,
+    pub ignore: u32,
+}
+
+impl Receiver {
+    /// The receiver at `p` facing the unit `n`.
+    pub fn at(model: &Model, p: DVec3, n: DVec3) -> Receiver {
+        let patch = model.faces.under(&model.mesh, &model.visibility, p, n);
+        let frame = patch.map_or_else(|| Frame::around(n), |i| model.mesh.patches[i].frame());
+        let ignore = patch.map_or(NO_FACE, |i| model.mesh.patches[i].face);
+        Receiver { patch, frame, ignore }
+    }
+}
+
+/// The receiver at `p` facing `n` and the light arriving there per cell of its frame:
 /// gathered from the surfaces, and directly from the luminaires.
-pub(super) fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (Option<usize>, Vec<f64>, Vec<f64>) {
-    let patch = model.faces.under(&model.mesh, &model.visibility, p, n);
-    let frame = patch.map_or_else(|| Frame::around(n), |i| model.mesh.patches[i].frame());
-    let ignore = patch.map_or(NO_FACE, |i| model.mesh.patches[i].face);
-    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &frame, ignore, ETA);
-    (patch, gather(model, field, p, &frame, ignore), direct)
+pub(super) fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (Receiver, Vec<f64>, Vec<f64>) {
+    let at = Receiver::at(model, p, n);
+    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &at.frame, at.ignore, ETA);
+    let incident = gather(model, field, p, &at.frame, at.ignore);
+    (at, incident, direct)
 }
 
 /// All the light arriving at point `q` of patch `s` per cell of its frame: gathered from

@@ -68,6 +68,13 @@ pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3, relit_rays: usize)
         .unwrap_or(0.0)
 }
 
+/// The Lambertian luminance of patch `j`'s point `y` towards `direction`, from the light
+/// gathered at `y` (its pieces along shadow edges cut at [`RELIT_SHADOW_CUT`]), cd/m².
+pub fn gathered(model: &Model, field: &Field, j: usize, y: DVec3, direction: DVec3) -> f64 {
+    let s = &model.mesh.patches[j];
+    lambertian(model, field, j, y, direction, &arriving_within(model, field, y, s, RELIT_SHADOW_CUT))
+}
+
 /// The Lambertian outgoing luminance of patch `i` at `q` towards `direction`.
 fn lambertian(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, incident: &[f64]) -> f64 {
     let kernel = &model.kernel;
@@ -135,7 +142,7 @@ impl Surroundings for Relit<'_> {
         let light = if s.normal.dot(w) >= 0.0 {
             self.stored.stored(j, w)
         } else if is_diffuse(material) {
-            lambertian(model, field, j, y, -w, &arriving_within(model, field, y, s, RELIT_SHADOW_CUT))
+            gathered(model, field, j, y, -w)
         } else if has_lobe(material) {
             self.stored.outgoing(j, y, -w, PIECE_RAYS)
         } else {

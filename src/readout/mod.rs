@@ -2,6 +2,7 @@
 //! illuminance of patches and points, probes (point sensors, luminance meters, cylindrical
 //! illuminance), grids and the energy balance in lumens.
 
+pub mod correction;
 pub mod cylindrical;
 pub mod daylight;
 pub mod energy;

@@ -12,17 +12,20 @@
 //!   (`cylindrical.rs`); no luminance (NaN).
 //!
 //! Each reading keeps the part of its illuminance that comes directly from the luminaires.
+//! A point sensor's and a luminance meter's illuminance (and a point sensor's luminance on a
+//! surface, from the same light) are corrected near geometry (`correction.rs`,
+//! `docs/design.md` (5.4)), and the reading keeps the correction.
 
 use crate::model::Model;
 use crate::progress::Progress;
+use crate::readout::correction::corrected;
 use crate::readout::cylindrical::cylindrical;
 use crate::readout::field::Field;
-use crate::readout::gather::{incident_at, plane_illuminance, sum};
+use crate::readout::gather::sum;
 use crate::readout::luminance::{RELIT_RAYS, outgoing, seen};
 use crate::readout::meter::mean_luminance;
 use crate::scene::{Probe, ProbeKind};
 use glam::DVec3;
-use std::f64::consts::PI;
 
 /// One probe's reading.
 #[derive(Debug, Clone, PartialEq)]
@@ -42,6 +45,9 @@ pub struct ProbeReading {
     pub illuminance: f64,
     /// The part of `illuminance` that comes directly from the luminaires, lx.
     pub direct: f64,
+    /// The correction near geometry included in `illuminance` (`correction.rs`), lx; 0 for
+    /// the cylindrical kinds, which are not corrected.
+    pub correction: f64,
     /// The patch a point sensor lies on, if any.
     pub patch: Option<usize>,
 }
@@ -63,15 +69,7 @@ pub fn read_probes(probes: &[Probe], model: &Model, field: &Field, progress: &dy
 
 fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
     let (p, n) = (probe.position, probe.normal);
-    let (luminance, (illuminance, direct), patch) = match probe.kind {
-        ProbeKind::Point => point(model, field, p, n),
-        ProbeKind::LuminanceMeter { fov_deg } => {
-            (mean_luminance(model, field, p, n, fov_deg), plane_illuminance(model, field, p, n), None)
-        }
-        ProbeKind::Cylindrical => (f64::NAN, cylindrical(model, field, p, n, None), None),
-        ProbeKind::SemiCylindrical { axis } => (f64::NAN, cylindrical(model, field, p, axis, Some(n)), None),
-    };
-    ProbeReading {
+    let reading = |luminance, (illuminance, direct), correction, patch| ProbeReading {
         name: probe.name.clone(),
         kind: probe.kind,
         position: p,
@@ -79,17 +77,35 @@ fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
         luminance,
         illuminance,
         direct,
+        correction,
         patch,
+    };
+    match probe.kind {
+        ProbeKind::Point => point(model, field, p, n, reading),
+        ProbeKind::LuminanceMeter { fov_deg } => {
+            let light = corrected(model, field, p, n);
+            reading(mean_luminance(model, field, p, n, fov_deg), light.illuminance(), light.correction, None)
+        }
+        ProbeKind::Cylindrical => reading(f64::NAN, cylindrical(model, field, p, n, None), 0.0, None),
+        ProbeKind::SemiCylindrical { axis } => {
+            reading(f64::NAN, cylindrical(model, field, p, axis, Some(n)), 0.0, None)
+        }
     }
 }
 
-/// A point sensor's luminance, (illuminance, direct illuminance) and the patch it lies on.
-fn point(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (f64, (f64, f64), Option<usize>) {
-    let (patch, incident, direct) = incident_at(model, field, p, n);
-    let illuminance = PI * (incident.iter().sum::<f64>() + direct.iter().sum::<f64>());
-    let luminance = match patch {
-        Some(i) => outgoing(model, field, i, p, n, &sum(&incident, &direct)),
+/// A point sensor's reading: its luminance (on a surface, from the corrected light),
+/// (illuminance, direct illuminance), the correction and the patch it lies on.
+fn point<R>(
+    model: &Model,
+    field: &Field,
+    p: DVec3,
+    n: DVec3,
+    reading: impl Fn(f64, (f64, f64), f64, Option<usize>) -> R,
+) -> R {
+    let light = corrected(model, field, p, n);
+    let luminance = match light.patch {
+        Some(i) => outgoing(model, field, i, p, n, &sum(&light.incident, &light.direct)),
         None => seen(model, field, p, n, RELIT_RAYS),
     };
-    (luminance, (illuminance, PI * direct.iter().sum::<f64>()), patch)
+    reading(luminance, light.illuminance(), light.correction, light.patch)
 }

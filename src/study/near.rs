@@ -7,8 +7,11 @@
 //! the Cornell box's floor probe,
 //! 1 cm in front of a block whose lowest leaves are 2–6 cm across, reads 2.4 % high with
 //! every patch of the uniform 2.5 cm mesh right (forward Monte Carlo), and the hierarchy
-//! at its defaults 2.5 %. Warned, naming the nearest such patch, for the first few such probes;
-//! the others counted in one warning.
+//! at its defaults 2.5 %. A point sensor's and a luminance meter's reading is corrected
+//! there (`readout::correction`, `docs/design.md` (5.4)); the warning stays, because the
+//! correction gathers from the same field and cannot mend a patch whose mean is wrong.
+//! Warned, naming the nearest such patch, for the first few such probes; the others
+//! counted in one warning.
 
 use crate::io::Warning;
 use crate::model::Model;

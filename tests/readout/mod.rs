@@ -1,6 +1,7 @@
 //! Tests of the readouts at points (`ugo::readout`): the luminance meter and the
 //! cylindrical and semi-cylindrical illuminance against closed forms (issue 17, item 7).
 
+mod correction;
 mod cylindrical;
 mod glossy;
 mod meter;
