@@ -28,6 +28,9 @@ use ugo::transfer::contour::point_to_polygon;
 const LUMINANCE: f64 = 1000.0;
 const RHO: f64 = 0.8;
 /// Floor strips by distance from the mirror, m.
+/// Bounds of the relative errors of the light by way of the mirror (measured: see above).
+const WORST_STRIP: f64 = 1e-4;
+const FLOOR_TOTAL: f64 = 1e-4;
 const STRIPS: [(f64, f64); 4] = [(0.0, 0.5), (0.5, 1.0), (1.0, 1.5), (1.5, 2.0)];
 
 fn mirror_scene() -> Scene {
@@ -86,27 +89,26 @@ fn errors(got: &[f64], exact: &[f64]) -> (f64, f64) {
     (worst, got.iter().sum::<f64>() / exact.iter().sum::<f64>() - 1.0)
 }
 
-/// (worst strip, total, worst direct strip) relative errors of the mirror light with `k` cells.
-fn mirror_errors(scene: &Scene, k: usize) -> (f64, f64, f64) {
+/// (worst strip, floor total) relative errors of the light by way of the mirror with `k`
+/// cells: the floor's light `π Σ_d (G x)` less the exact direct light, against the image's.
+fn mirror_errors(scene: &Scene, k: usize) -> (f64, f64) {
     let model = build_with(scene, DirectionSet::hemisphere(k));
+    assert_eq!(model.mirrors.len(), 1, "the mirror wall is one plane mirror");
     let x = solve(&model);
-    let (all, direct) = (arriving(&model, &x), arriving(&model, &model.l0));
+    let all = strip_means(&model, &arriving(&model, &x));
+    let direct = exact_strips(&square_at(0.5), LUMINANCE);
     let via: Vec<f64> = all.iter().zip(&direct).map(|(a, d)| a - d).collect();
-    let (worst, total) = errors(&strip_means(&model, &via), &exact_strips(&square_at(-0.5), RHO * LUMINANCE));
-    let (direct_worst, _) = errors(&strip_means(&model, &direct), &exact_strips(&square_at(0.5), LUMINANCE));
-    eprintln!(
-        "mirror, K = {k}: via the mirror worst strip {worst:.3}, floor total {total:.4}; direct {direct_worst:.1e}"
-    );
-    (worst, total, direct_worst)
+    let (worst, total) = errors(&via, &exact_strips(&square_at(-0.5), RHO * LUMINANCE));
+    eprintln!("mirror, K = {k}: via the mirror worst strip {worst:.2e}, floor total {total:.2e}");
+    (worst, total)
 }
 
 #[test]
-fn floor_strips_match_the_image_source_and_improve_with_cells() {
+fn floor_strips_match_the_image_source_at_any_cell_count() {
     let scene = mirror_scene();
-    let (coarse, _, _) = mirror_errors(&scene, 64);
-    let (fine, total, direct) = mirror_errors(&scene, 256);
-    assert!(direct < 1e-3, "direct light {direct}");
-    assert!(fine < 0.08, "worst strip at K = 256: {fine}");
-    assert!(total.abs() < 0.01, "floor total at K = 256: {total}");
-    assert!(fine < 0.5 * coarse, "the image sharpens with more cells: {coarse} → {fine}");
+    for k in [16, 64] {
+        let (worst, total) = mirror_errors(&scene, k);
+        assert!(worst < WORST_STRIP, "worst strip at K = {k}: {worst}");
+        assert!(total.abs() < FLOOR_TOTAL, "floor total at K = {k}: {total}");
+    }
 }
