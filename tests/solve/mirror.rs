@@ -1,4 +1,4 @@
-//! A vertical mirror and the image-source closed form.
+//! A vertical mirror and the image-source closed form (`docs/mirrors.md`).
 //!
 //! A black floor (2 × 2 m, `x ∈ [0, 2]`, `z ∈ [−1, 1]`, y up), a mirror wall at `x = 0`
 //! (`ρ_s = 0.8`, 1 m high) and a 0.1 m square Lambertian emitter (1000 cd/m²) facing down
@@ -6,14 +6,20 @@
 //! light reaching the floor by way of the mirror is `ρ_s` times the light of the mirrored
 //! emitter at `x = −0.5`, and every floor point sees that image through the mirror, so
 //! `E_via(p) = π ρ_s L F_{dA(p)→image}` (Lambert's contour formula, exact). The direct part
-//! is `π L F_{dA(p)→emitter}`. The floor is black, so `E − E_direct` on the floor is all
-//! mirror light: `E_direct = π Σ_d (G L0)`, `E = π Σ_d (G x)`.
+//! is `π L F_{dA(p)→emitter}`. The floor is black, so all its light is the kernel's first
+//! transport of the emitter, `E = π Σ_d (G x)`, and what exceeds the exact direct light came
+//! by way of the mirror. Compared: means over four 0.5 m floor strips by distance from the
+//! mirror, and the whole floor's flux.
 //!
-//! The binned mirror smears the image over a cell, so the quantities compared are means
-//! over four 0.5 m floor strips by distance from the mirror and the whole floor's flux.
-//! Measured, worst strip / whole floor: K = 16 52 % / 3.0 %, K = 64 18.6 % / 1.35 %,
-//! K = 144 10.3 % / 0.96 %, K = 256 5.3 % / 0.24 %. The direct strips agree to 3.3e-6.
+//! The uniform kernel carries the mirror's light by the emitter's image (`docs/design.md`
+//! (3.10)): measured, worst strip / whole floor, K = 16 6.1e-6 / 1.3e-6, K = 64 4.0e-6 /
+//! −1.7e-6. The cell-to-cell mirror block it replaced smeared the image over a cell: K = 16
+//! 52 % / 3.0 %, K = 64 18.6 % / 1.35 %, K = 144 10.3 % / 0.96 %, K = 256 5.3 % / 0.24 %.
+//!
+//! A point luminaire in front of the mirror lights the floor as itself plus its image of
+//! intensity `ρ_s I`: exact per strip from the solid angles, to round-off.
 
+use crate::luminaire::point;
 use crate::support::{arriving, build_with, material, mean_over, rectangle, scene, solve, surface};
 use glam::DVec3;
 use std::f64::consts::PI;
@@ -22,6 +28,7 @@ use ugo::geometry::ConvexPolygon;
 use ugo::geometry::Emission;
 use ugo::material::MaterialModel;
 use ugo::model::Model;
+use ugo::photometry::Distribution;
 use ugo::scene::Scene;
 use ugo::transfer::contour::point_to_polygon;
 
@@ -111,4 +118,49 @@ fn floor_strips_match_the_image_source_at_any_cell_count() {
         assert!(worst < WORST_STRIP, "worst strip at K = {k}: {worst}");
         assert!(total.abs() < FLOOR_TOTAL, "floor total at K = {k}: {total}");
     }
+}
+
+/// The mirror scene lit by an isotropic point source of `INTENSITY` at `(0.5, 1, 0)` instead
+/// of the emitting square, the mirror 2 m high so that every floor point sees the source's
+/// image whole.
+fn luminaire_scene() -> Scene {
+    let materials = vec![
+        material("black", MaterialModel::Lambert { reflectance: 0.0, transmittance: 0.0 }),
+        material("mirror", MaterialModel::Mirror { reflectance: RHO }),
+    ];
+    let surfaces = vec![
+        surface("floor", rectangle([0.0, 0.0, -1.0], [0.0, 0.0, 2.0], [2.0, 0.0, 0.0]), 0, false, None),
+        surface("mirror", rectangle([0.0, 0.0, -1.0], [0.0, 2.0, 0.0], [0.0, 0.0, 2.0]), 1, false, None),
+    ];
+    let mut s = scene(materials, surfaces, 0.1);
+    let bulb = Distribution::Isotropic { intensity: INTENSITY };
+    s.luminaires.push(point("bulb", DVec3::new(0.5, 1.0, 0.0), DVec3::NEG_Y, bulb));
+    s
+}
+
+const INTENSITY: f64 = 100.0;
+
+#[test]
+fn a_luminaire_seen_in_the_mirror_lights_the_floor_as_its_image() {
+    let model = build_with(&luminaire_scene(), DirectionSet::hemisphere(64));
+    assert_eq!(model.mirrors.len(), 1);
+    let x = solve(&model);
+    let light: Vec<f64> = arriving(&model, &x).iter().zip(&model.direct.arriving).map(|(g, d)| g + d).collect();
+    let got = strip_means(&model, &light);
+    let (source, image) = (DVec3::new(0.5, 1.0, 0.0), DVec3::new(-0.5, 1.0, 0.0));
+    let exact: Vec<f64> = STRIPS
+        .iter()
+        .map(|&(a, b)| {
+            let strip = ConvexPolygon::quad(
+                DVec3::new(a, 0.0, -1.0),
+                DVec3::new(a, 0.0, 1.0),
+                DVec3::new(b, 0.0, 1.0),
+                DVec3::new(b, 0.0, -1.0),
+            );
+            INTENSITY * (strip.solid_angle(source) + RHO * strip.solid_angle(image)) / (2.0 * (b - a))
+        })
+        .collect();
+    let (worst, total) = errors(&got, &exact);
+    eprintln!("luminaire and its image: worst strip {worst:.1e}, floor total {total:.1e}");
+    assert!(worst < 1e-9 && total.abs() < 1e-9, "strips {got:?} against {exact:?}");
 }
