@@ -24,13 +24,16 @@ use crate::support::{arriving, build_with, material, mean_over, rectangle, scene
 use glam::DVec3;
 use std::f64::consts::PI;
 use ugo::directions::DirectionSet;
-use ugo::geometry::ConvexPolygon;
 use ugo::geometry::Emission;
+use ugo::geometry::{ConvexPolygon, Frame};
 use ugo::material::MaterialModel;
 use ugo::model::Model;
 use ugo::photometry::Distribution;
+use ugo::readout::field::Field;
+use ugo::readout::mirrored::through_mirrors;
 use ugo::scene::Scene;
 use ugo::transfer::contour::point_to_polygon;
+use ugo::visibility::NO_FACE;
 
 const LUMINANCE: f64 = 1000.0;
 const RHO: f64 = 0.8;
@@ -163,4 +166,23 @@ fn a_luminaire_seen_in_the_mirror_lights_the_floor_as_its_image() {
     let (worst, total) = errors(&got, &exact);
     eprintln!("luminaire and its image: worst strip {worst:.1e}, floor total {total:.1e}");
     assert!(worst < 1e-9 && total.abs() < 1e-9, "strips {got:?} against {exact:?}");
+}
+
+/// A point on the floor reads the light by way of the mirror from the emitter's image
+/// (`readout::mirrored`), exact where the kernel's cell values would smear it.
+#[test]
+fn a_floor_point_reads_the_image_through_the_mirror() {
+    let model = build_with(&mirror_scene(), DirectionSet::hemisphere(64));
+    let field = Field::from_unknowns(&solve(&model), model.kernel.cells());
+    let image = square_at(-0.5);
+    let mut worst: f64 = 0.0;
+    for x in [0.05, 0.3, 0.75, 1.4, 1.95] {
+        let p = DVec3::new(x, 0.0, 0.2);
+        let frame = Frame::around(DVec3::Y);
+        let got = PI * through_mirrors(&model, &field, p, &frame, NO_FACE, 1e-4).iter().sum::<f64>();
+        let exact = PI * RHO * LUMINANCE * point_to_polygon(p, DVec3::Y, &image);
+        worst = worst.max((got / exact - 1.0).abs());
+    }
+    eprintln!("floor points through the mirror: worst {worst:.1e}");
+    assert!(worst < 1e-9, "{worst}");
 }
