@@ -26,9 +26,11 @@ use std::f64::consts::PI;
 use ugo::directions::DirectionSet;
 use ugo::geometry::Emission;
 use ugo::geometry::{ConvexPolygon, Frame};
+use ugo::kernel::sent_shares;
 use ugo::material::MaterialModel;
 use ugo::model::Model;
 use ugo::photometry::Distribution;
+use ugo::readout::energy::EnergyBalance;
 use ugo::readout::field::Field;
 use ugo::readout::mirrored::through_mirrors;
 use ugo::scene::Scene;
@@ -185,4 +187,40 @@ fn a_floor_point_reads_the_image_through_the_mirror() {
     }
     eprintln!("floor points through the mirror: worst {worst:.1e}");
     assert!(worst < 1e-9, "{worst}");
+}
+
+/// A closed 2 m cube of 50 % Lambertian walls, one of them a 75 % plane mirror, lit by its
+/// emitting ceiling: the images deliver exactly what the mirror reflects, so no flux
+/// escapes and every patch's sent share is 1 (`kernel::sent_shares`, weighted by the cells'
+/// projected solid angles: the images are balanced by patch here, their pieces and the
+/// mirror's falling into different cells near the cells' edges).
+#[test]
+fn a_closed_room_with_a_plane_mirror_keeps_its_energy() {
+    let materials = vec![
+        material("wall", MaterialModel::Lambert { reflectance: 0.5, transmittance: 0.0 }),
+        material("mirror", MaterialModel::Mirror { reflectance: 0.75 }),
+    ];
+    let lit = Some(Emission::Luminance(100.0));
+    let sides = [
+        ("floor", [0.0, 0.0, 0.0], [0.0, 0.0, 2.0], [2.0, 0.0, 0.0], 0, None),
+        ("ceiling", [0.0, 2.0, 0.0], [2.0, 0.0, 0.0], [0.0, 0.0, 2.0], 0, lit),
+        ("mirror", [0.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 2.0], 1, None),
+        ("x = 2", [2.0, 0.0, 0.0], [0.0, 0.0, 2.0], [0.0, 2.0, 0.0], 0, None),
+        ("z = 0", [0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0], 0, None),
+        ("z = 2", [0.0, 0.0, 2.0], [0.0, 2.0, 0.0], [2.0, 0.0, 0.0], 0, None),
+    ];
+    let surfaces = sides.iter().map(|&(name, o, u, v, m, e)| surface(name, rectangle(o, u, v), m, false, e)).collect();
+    let model = build_with(&scene(materials, surfaces, 0.25), DirectionSet::hemisphere(16));
+    assert_eq!(model.mirrors.len(), 1);
+    let x = solve(&model);
+    let energy = EnergyBalance::of(&model, &x, 6);
+    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
+    let shares = sent_shares(&model.kernel, &areas, &model.mirrors);
+    let cells = model.kernel.directions.cells();
+    let per_patch =
+        shares.chunks(cells.len()).map(|s| s.iter().zip(cells).map(|(s, c)| s * c.projected).sum::<f64>() / PI);
+    let worst = per_patch.map(|s| (s - 1.0).abs()).fold(0.0, f64::max);
+    let escaped = energy.escaped / energy.emitted;
+    eprintln!("closed room with a plane mirror: escaped {escaped:.1e}, worst sent share {worst:.1e}");
+    assert!(escaped.abs() < 1e-8 && worst < 1e-8, "escaped {escaped}, shares within {worst} of 1");
 }

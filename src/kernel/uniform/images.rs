@@ -5,10 +5,11 @@
 //! stratified points that pass through `M`), binned as a direct pair: `d` the cell the light
 //! arrives in at `i` (from the mirror point), `m` the cell it leaves `j` in (towards it).
 //!
-//! These exchange areas are symmetric (`A_i F_{ij′} = A_j F_{ji′}`). They are balanced on
-//! their own (`balance.rs`) so that each row `(i, d)` carries `ρ_M` times the balanced
-//! exchange area of `(i, d)` with the mirror, times the mirror's closure (the share of its
-//! view that lands on patches): the images deliver exactly the light the mirror reflects.
+//! These exchange areas are symmetric (`A_i F_{ij′} = A_j F_{ji′}`). Where the mirrors are
+//! closed (every ray they reflect lands on a patch) they are balanced on their own
+//! (`balance.rs`) so that each row `(i, d)` (or, failing that, each patch) carries `ρ_M`
+//! times the balanced exchange area of `(i, d)` with the mirror: the images deliver
+//! exactly the light the mirror reflects.
 //! The mirror's columns of the direct `G` are then dropped (its light reaches the others
 //! only through its images); its rows stay, so its stored luminance (the cell-to-cell
 //! reflection of what arrives at it) is what readouts and renders look at.
@@ -24,10 +25,15 @@ use glam::DVec3;
 use rayon::prelude::*;
 use sprs::CsMat;
 
-/// Largest relative row-sum mismatch and row correction (`|D² − 1|`) with which the
-/// images' balancing is kept; beyond either, the raw image exchange areas stay.
+/// Largest relative row-sum mismatch with which the images' balancing is kept.
 const BALANCED: f64 = 1e-9;
+/// Largest row correction (`|D² − 1|`) with which the images' balancing is kept.
 const MOST_CORRECTION: f64 = 3.0;
+/// A mirror patch is closed where its balanced row sums carry its exposed area to this,
+/// relative to its area: nothing but the quadrature's own error escapes from it (the mirror
+/// room's mirror carries 1.001 to 1.003 of its area: its view of the ceiling behind the
+/// lamp 1 cm under it is counted twice, in part).
+const CLOSED: f64 = 1e-2;
 
 /// The plane mirrors of a mesh of `n` patches, and which patches they hold.
 pub(super) struct Mirrors<'a> {
@@ -104,10 +110,14 @@ pub(super) fn image_row(
     row
 }
 
-/// The scaling `D` of the image exchange areas `images`: each row `(i, d)` carries `ρ_M`
-/// times the balanced direct exchange area `direct` of `(i, d)` with the patches of mirror
-/// `M` (rows scaled by `scale`), each times its patch's closure. All ones where the
-/// balancing does not converge.
+/// The scaling `D` of the image exchange areas `images`. Where every mirror patch is closed
+/// (its balanced direct row sums, `direct` scaled by `scale`, carry its exposed area to
+/// [`CLOSED`]: every reflected ray lands on a patch), each row `(i, d)` carries `ρ_M` times
+/// the balanced exchange area of `(i, d)` with the patches of `M`; where that needs
+/// corrections beyond [`MOST_CORRECTION`] (the images' pieces and the mirror's fall into
+/// different cells near a cell's edge), each patch carries that in total, shared among its
+/// cells as the images' own. All ones (the raw images) in an open scene or where neither
+/// converges.
 pub(super) fn balance_images(
     mesh: &Mesh,
     mirrors: &[PlaneMirror],
@@ -123,26 +133,42 @@ pub(super) fn balance_images(
     let carried = |r: usize| -> f64 {
         direct.outer_view(r).map_or(0.0, |row| row.iter().map(|(c, v)| v * scale[r] * scale[c]).sum())
     };
-    let closure: Vec<f64> = (0..mesh.len())
-        .map(|p| match reflectance[p] > 0.0 && mesh.patches[p].exposed > 0.0 {
-            true => (p * k..(p + 1) * k).map(carried).sum::<f64>() / mesh.patches[p].exposed,
-            false => 0.0,
-        })
-        .collect();
-    let targets: Vec<f64> = (0..direct.rows())
+    let closed = mirrors.iter().flat_map(|m| &m.patches).all(|&p| {
+        let patch = &mesh.patches[p as usize];
+        let carries: f64 = (p as usize * k..(p as usize + 1) * k).map(carried).sum();
+        (carries - patch.exposed).abs() <= CLOSED * patch.area
+    });
+    let ones = vec![1.0; images.rows()];
+    if !closed {
+        return ones;
+    }
+    let by_cell: Vec<f64> = (0..direct.rows())
         .into_par_iter()
         .map(|r| {
             direct.outer_view(r).map_or(0.0, |row| {
                 let seen = row.iter().filter(|&(c, _)| reflectance[c / k] > 0.0);
-                seen.map(|(c, v)| reflectance[c / k] * closure[c / k] * v * scale[r] * scale[c]).sum()
+                seen.map(|(c, v)| reflectance[c / k] * v * scale[r] * scale[c]).sum()
             })
         })
         .collect();
-    let (d, report) = balance(images, &targets);
-    if report.residual > BALANCED || report.max_correction > MOST_CORRECTION {
-        return vec![1.0; d.len()];
+    let (d, report) = balance(images, &by_cell);
+    if report.residual <= BALANCED && report.max_correction <= MOST_CORRECTION {
+        return d;
     }
-    d
+    let raw: Vec<f64> = images.outer_iterator().map(|row| row.data().iter().sum()).collect();
+    let mut by_patch = vec![0.0; raw.len()];
+    for p in 0..mesh.len() {
+        let cells = p * k..(p + 1) * k;
+        let (total, split) = (by_cell[cells.clone()].iter().sum::<f64>(), raw[cells.clone()].iter().sum::<f64>());
+        if split > 0.0 {
+            cells.for_each(|r| by_patch[r] = total * raw[r] / split);
+        }
+    }
+    let (d, report) = balance(images, &by_patch);
+    if report.residual <= BALANCED && report.max_correction <= MOST_CORRECTION {
+        return d;
+    }
+    ones
 }
 
 /// `G`: the direct exchange areas `direct` scaled by `d`, without the columns of mirror
