@@ -27,8 +27,9 @@ use ugo::directions::DirectionSet;
 use ugo::geometry::Emission;
 use ugo::geometry::{ConvexPolygon, Frame};
 use ugo::kernel::sent_shares;
+use ugo::luminaire::{Luminaire, LuminaireKind};
 use ugo::material::MaterialModel;
-use ugo::model::Model;
+use ugo::model::{Fingerprint, Model, Part};
 use ugo::photometry::Distribution;
 use ugo::readout::energy::EnergyBalance;
 use ugo::readout::field::Field;
@@ -223,4 +224,26 @@ fn a_closed_room_with_a_plane_mirror_keeps_its_energy() {
     let escaped = energy.escaped / energy.emitted;
     eprintln!("closed room with a plane mirror: escaped {escaped:.1e}, worst sent share {worst:.1e}");
     assert!(escaped.abs() < 1e-8 && worst < 1e-8, "escaped {escaped}, shares within {worst} of 1");
+}
+
+/// The uniform `G` holds `ρ_M` in its images: a saved kernel is not reused for another
+/// mirror reflectance, nor once a luminaire is parallel light (its mirrors then reflect cell
+/// to cell); another Lambertian reflectance only rebuilds the blocks.
+#[test]
+fn a_saved_kernel_follows_its_mirrors() {
+    let scene = luminaire_scene();
+    let changed = |edit: &dyn Fn(&mut Scene)| {
+        let mut other = scene.clone();
+        edit(&mut other);
+        Fingerprint::of(&other).changes_from(&Fingerprint::of(&scene))
+    };
+    let refused = |changes: Vec<ugo::model::Change>| changes.iter().any(|c| c.part == Part::Materials);
+    assert!(refused(changed(&|s| s.materials[1].model = MaterialModel::Mirror { reflectance: 0.5 })));
+    let parallel = Luminaire {
+        name: "sun".into(),
+        kind: LuminaireKind::Parallel { direction: DVec3::NEG_Y, illuminance: 1000.0 },
+    };
+    assert!(refused(changed(&|s| s.luminaires.push(parallel.clone()))));
+    let grey = MaterialModel::Lambert { reflectance: 0.5, transmittance: 0.0 };
+    assert!(!refused(changed(&|s| s.materials[0].model = grey.clone())));
 }
