@@ -6,7 +6,9 @@
 //! exact solid angle (`ConvexPolygon::solid_angle`) times the fraction of its four
 //! stratified points that see the source. Pieces whose points and corners disagree lie on
 //! a shadow edge and are cut further (`transfer::occlusion::cut_along_shadows`). An isotropic source is thus
-//! exact, and in a closed room its patches intercept its whole flux to round-off.
+//! exact, and in a closed room its patches intercept its whole flux to round-off. Its
+//! light reflected by a plane mirror `M` comes alike from its image at `R s`, of intensity
+//! `ρ_M I(R w)`, through `M` (`transfer::image`, `docs/mirrors.md`).
 //!
 //! Parallel light along `l` with normal illuminance `E_n`: each piece receives
 //! `E_n cosθ A` times the fraction of its points from which a ray towards `−l` escapes the
@@ -20,6 +22,7 @@ use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Frame, Mesh, Patch};
 use crate::sky::{Opening, Sky, through_window};
+use crate::transfer::image::PlaneMirror;
 use crate::transfer::occlusion::cut_along_shadows;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
@@ -59,15 +62,17 @@ pub struct DirectLight {
 /// The direct light of `sources` on every patch of `mesh`, binned by `directions`, every
 /// shadow edge cut down to the flux `least[i]` on patch `i` (every edge
 /// [`SHADOW_DEPTH`](crate::transfer::occlusion::SHADOW_DEPTH) levels deep when `least` is
-/// empty; [`DirectLight::least`] gives the limits another integration used).
+/// empty; [`DirectLight::least`] gives the limits another integration used), with the point
+/// sources' images in `mirrors`.
 pub fn direct_light(
     sources: &[Source],
     mesh: &Mesh,
     visibility: &Visibility,
     directions: &DirectionSet,
     least: &[f64],
+    mirrors: &[PlaneMirror],
 ) -> DirectLight {
-    let per_patch = patch_lights(sources, &mesh.patches, visibility, directions, least);
+    let per_patch = patch_lights(sources, &mesh.patches, visibility, directions, least, mirrors);
     let mut light =
         DirectLight { arriving: Vec::with_capacity(mesh.len() * directions.len()), ..DirectLight::none(sources) };
     per_patch.iter().for_each(|p| light.add(p));
@@ -108,13 +113,16 @@ impl DirectLight {
 /// (`Source::dimmed`), exceeds `least[i]`, lm (every piece when `least` is empty); below
 /// that its lit fraction is that of its four points. A patch with no exposed area (inside a
 /// solid) takes none: what its pieces would catch through gaps its points miss counts as
-/// escaped (`readout::energy`).
+/// escaped (`readout::energy`). A point source's light reflected by a plane mirror of
+/// `mirrors` arrives from its image (`docs/mirrors.md`); it is not in the source's
+/// intercepted flux.
 pub fn patch_lights(
     sources: &[Source],
     patches: &[Patch],
     visibility: &Visibility,
     directions: &DirectionSet,
     least: &[f64],
+    mirrors: &[PlaneMirror],
 ) -> Vec<PatchLight> {
     let k = directions.len();
     patches
@@ -136,8 +144,11 @@ pub fn patch_lights(
                     match &source.light {
                         Light::Point { position, .. } => {
                             if (*position - patch.polygon.vertices()[0]).dot(patch.normal) > 0.0 {
-                                onto.point(source, *position, &patch.polygon, 0);
+                                let s = *position;
+                                let sees = |x: DVec3| visibility.visible(s, x, [NO_FACE, patch.face]);
+                                onto.point(s, &|w| source.intensity(w), &sees, &patch.polygon, 0);
                             }
+                            mirrors.iter().for_each(|mirror| onto.mirrored(source, *position, mirror));
                         }
                         Light::Parallel { direction, illuminance } => {
                             let cos = -direction.dot(patch.normal);
@@ -172,23 +183,48 @@ struct Onto<'a> {
 }
 
 impl Onto<'_> {
-    fn point(&mut self, source: &Source, s: DVec3, piece: &ConvexPolygon, depth: u32) {
+    /// The light of a point at `s` of intensity `intensity(w)` towards the world direction
+    /// `w`, seen from the points `sees` says see it, onto `piece`.
+    fn point(
+        &mut self,
+        s: DVec3,
+        intensity: &dyn Fn(DVec3) -> f64,
+        sees: &dyn Fn(DVec3) -> bool,
+        piece: &ConvexPolygon,
+        depth: u32,
+    ) {
         if depth < MAX_DEPTH && piece.diameter() > ETA * (piece.centroid() - s).length() {
-            piece.split().iter().for_each(|p| self.point(source, s, p, depth + 1));
+            piece.split().iter().for_each(|p| self.point(s, intensity, sees, p, depth + 1));
             return;
         }
-        let (visibility, face) = (self.visibility, self.patch.face);
-        let sees = |x: DVec3| visibility.visible(s, x, [NO_FACE, face]);
         let least = self.least;
         let worth = |part: &ConvexPolygon| {
             let w = (part.centroid() - s).normalize();
-            source.intensity(w) * part.solid_angle(s) > least
+            intensity(w) * part.solid_angle(s) > least
         };
-        let rays = cut_along_shadows(piece, depth, &sees, &worth, &mut |part, seen| {
+        let rays = cut_along_shadows(piece, depth, sees, &worth, &mut |part, seen| {
             let w = (part.centroid() - s).normalize();
-            self.add(-w, source.intensity(w) * part.solid_angle(s) * seen);
+            self.add(-w, intensity(w) * part.solid_angle(s) * seen);
         });
         self.rays += rays;
+    }
+
+    /// The light of the point source `source` at `s` reflected by the plane `mirror`: its
+    /// image at `R s`, of intensity `ρ_M I(R w)`, seen through the mirror. It arrives on the
+    /// patch, but it is not the source's intercepted flux.
+    fn mirrored(&mut self, source: &Source, s: DVec3, mirror: &PlaneMirror) {
+        let image = mirror.reflect(s);
+        let corner = self.patch.polygon.vertices()[0];
+        if mirror.height(s) <= 0.0 || !mirror.in_front(self.patch) || (image - corner).dot(self.patch.normal) <= 0.0 {
+            return;
+        }
+        let (visibility, face) = (self.visibility, self.patch.face);
+        let intensity = |w: DVec3| mirror.reflectance * source.intensity(mirror.reflect_direction(w));
+        let sees = |x: DVec3| mirror.passes(visibility, x, face, image, NO_FACE);
+        let flux = self.flux;
+        let polygon = self.patch.polygon;
+        self.point(image, &intensity, &sees, &polygon, 0);
+        self.flux = flux;
     }
 
     fn parallel(&mut self, direction: DVec3, normal_share: f64, piece: &ConvexPolygon) {

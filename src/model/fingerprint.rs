@@ -5,13 +5,16 @@
 //!
 //! Each part is a 64-bit FNV-1a hash of a canonical text (every float in its exact
 //! shortest round-trip form) with a short summary for messages. The uniform `G` depends
-//! on the geometry, the discretization, the visibility rules and the program; a change of
-//! the reflectances only rebuilds `B` and `L0`, a change of the luminaires only `D` and
-//! `L0`. Probes, grids, cameras, the solver and the surfaces' own emission (`L_e`, taken
+//! on the geometry, the discretization, the visibility rules and the program, and on its
+//! mirrors (which surfaces mirror, how much, and whether every luminaire is a point source:
+//! plane mirrors are carried by images, `docs/mirrors.md`); a change of the other
+//! reflectances only rebuilds `B` and `L0`, a change of the luminaires (among point sources)
+//! only `D` and `L0`. Probes, grids, cameras, the solver and the surfaces' own emission (`L_e`, taken
 //! from the case every time) are not part of the kernel.
 
 use crate::geometry::{Shape, Surface};
-use crate::luminaire::Source;
+use crate::luminaire::{Light, Source};
+use crate::material::MaterialModel;
 use crate::scene::{Discretization, KernelKind, Scene};
 use crate::transfer::form_factor::Quadrature;
 use crate::transfer::occlusion::{POINTS, SHADOW_DEPTH};
@@ -150,10 +153,7 @@ impl Fingerprint {
                         let _ = write!(h, "{:?}", sources.iter().map(|s| &s.light).collect::<Vec<_>>());
                         format!("{} materials and {} luminaires (hierarchical)", scene.materials.len(), sources.len())
                     }
-                    Part::Materials => {
-                        let _ = write!(h, "none");
-                        "none (the uniform G depends on no material)".to_string()
-                    }
+                    Part::Materials => mirrors(scene, &sources, &mut h),
                     Part::Discretization => discretization(&scene.discretization, &mut h),
                     Part::Visibility => {
                         let text = format!(
@@ -254,4 +254,27 @@ impl Write for Fnv {
         }
         Ok(())
     }
+}
+
+/// What the uniform `G` takes of the materials: the mirrors' reflectances and surfaces, and
+/// whether only point sources light the scene (else its mirrors reflect cell to cell:
+/// `model::uniform::mirrors_of`). Hashed as `none` when no surface mirrors.
+fn mirrors(scene: &Scene, sources: &[Source], h: &mut Fnv) -> String {
+    let mirroring: Vec<(usize, f64)> = scene
+        .surfaces
+        .iter()
+        .enumerate()
+        .filter_map(|(i, s)| match scene.materials.get(s.material)?.model {
+            MaterialModel::Mirror { reflectance } => Some((i, reflectance)),
+            _ => None,
+        })
+        .collect();
+    if mirroring.is_empty() {
+        let _ = write!(h, "none");
+        return "none (the uniform G depends on no material)".to_string();
+    }
+    let points = sources.iter().all(|s| matches!(s.light, Light::Point { .. }));
+    let _ = write!(h, "{mirroring:?} {points}");
+    let images = if points { "carried by images" } else { "reflecting cell to cell" };
+    format!("mirrors on {} surfaces {images}", mirroring.len())
 }

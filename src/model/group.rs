@@ -16,8 +16,14 @@ impl Model {
     /// `ε` on the hierarchy's leaves), so that the groups' light adds up to the model's.
     pub fn source_term_of(&self, luminaires: &[usize], surfaces: &[usize]) -> SourceTerm {
         let members: Vec<Source> = luminaires.iter().filter_map(|&i| self.sources.get(i).cloned()).collect();
-        let mut direct =
-            direct_light(&members, &self.mesh, &self.visibility, &self.kernel.directions, &self.direct.least);
+        let mut direct = direct_light(
+            &members,
+            &self.mesh,
+            &self.visibility,
+            &self.kernel.directions,
+            &self.direct.least,
+            &self.mirrors,
+        );
         let mut intercepted = vec![0.0; self.sources.len()];
         for (&i, &flux) in luminaires.iter().zip(&direct.intercepted) {
             intercepted[i] = flux;

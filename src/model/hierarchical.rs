@@ -45,7 +45,7 @@ impl LightCache {
         let new: Vec<u32> = leaves.iter().copied().filter(|&id| self.lights[id as usize].is_none()).collect();
         let patches: Vec<Patch> = new.iter().filter_map(|&id| h.tree().node(id).patch().copied()).collect();
         let least: Vec<f64> = new.iter().map(|&id| worth_cutting(h, id)).collect();
-        for (id, light) in new.iter().zip(patch_lights(sources, &patches, h.visibility(), directions, &least)) {
+        for (id, light) in new.iter().zip(patch_lights(sources, &patches, h.visibility(), directions, &least, &[])) {
             self.lights[*id as usize] = Some(light);
         }
         let mut direct = DirectLight::none(sources);
@@ -136,7 +136,19 @@ pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -
     check_transport(scene, &mesh, &kernel.g, k)?;
     let faces = Faces::of(&mesh);
     let materials = scene.materials.iter().map(|m| m.model.clone()).collect();
-    Ok(Model { mesh, visibility, faces, kernel, materials, l0, sources, direct, stats, hierarchy: Some(record) })
+    Ok(Model {
+        mesh,
+        visibility,
+        faces,
+        kernel,
+        materials,
+        l0,
+        sources,
+        direct,
+        mirrors: Vec::new(),
+        stats,
+        hierarchy: Some(record),
+    })
 }
 
 /// The luminaires' light on the roots, only to seed the oracle's first guess (each root's

@@ -5,6 +5,7 @@
 
 use super::source::source_term;
 use super::system::{AssemblyStats, Model};
+use super::uniform::mirrors_of;
 use crate::geometry::Mesh;
 use crate::kernel::{Kernel, Transport, TransportMatrix};
 use crate::luminaire::{DirectLight, Source, direct_light};
@@ -60,8 +61,10 @@ impl Model {
         let kernel = Kernel::on_mesh(Transport::Uniform(stored.g), &mesh, directions, blocks);
         let t = Instant::now();
         let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
-        let direct =
-            stored.direct.unwrap_or_else(|| direct_light(&sources, &mesh, &visibility, &kernel.directions, &[]));
+        let mirrors = mirrors_of(scene, &mesh);
+        let direct = stored
+            .direct
+            .unwrap_or_else(|| direct_light(&sources, &mesh, &visibility, &kernel.directions, &[], &mirrors));
         let stats = AssemblyStats {
             mesh_seconds,
             bvh_seconds,
@@ -74,6 +77,6 @@ impl Model {
         let l0 = source_term(&kernel.blocks, &mesh, &direct, kernel.cells());
         let faces = Faces::of(&mesh);
         let materials = scene.materials.iter().map(|m| m.model.clone()).collect();
-        Ok(Model { mesh, visibility, faces, kernel, materials, l0, sources, direct, stats, hierarchy: None })
+        Ok(Model { mesh, visibility, faces, kernel, materials, l0, sources, direct, mirrors, stats, hierarchy: None })
     }
 }

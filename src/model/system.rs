@@ -11,6 +11,7 @@ use crate::luminaire::{DirectLight, Source};
 use crate::material::MaterialModel;
 use crate::scene::Hierarchical;
 use crate::solve::SolveError;
+use crate::transfer::image::PlaneMirror;
 use crate::visibility::{Faces, Visibility};
 use thiserror::Error;
 
@@ -68,8 +69,11 @@ pub struct Model {
     pub l0: Vec<f64>,
     /// The luminaires, placed.
     pub sources: Vec<Source>,
-    /// Their direct light on every (patch, cell).
+    /// Their direct light on every (patch, cell), by way of `mirrors` included.
     pub direct: DirectLight,
+    /// The plane mirrors whose light the kernel carries by images (`transfer::image`); none
+    /// for the hierarchical kernel, whose mirrors reflect cell to cell.
+    pub mirrors: Vec<PlaneMirror>,
     /// Timings and counts of the build.
     pub stats: AssemblyStats,
     /// What the hierarchical kernel made; `None` for the uniform one.

@@ -14,4 +14,5 @@ pub mod grid;
 pub mod illuminance;
 pub mod luminance;
 pub mod meter;
+pub mod mirrored;
 pub mod probe;

@@ -60,7 +60,7 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
     super::near::near_patches(scene, model, &mut out);
     let shares = || {
         let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
-        sent_shares(&model.kernel, &areas)
+        sent_shares(&model.kernel, &areas, &model.mirrors)
     };
     if energy.escaped < -1e-9 * energy.emitted.abs() {
         out.push(Warning::NegativeEscape(negative_escape(scene, model, x, energy, &shares())));

@@ -47,7 +47,7 @@ fn cluster_links_agree_with_the_explicit_kernel() {
     let op = h.operator();
     let leaves = h.leaf_mesh();
     let directions = DirectionSet::single();
-    let t = assemble(&leaves, &Visibility::build(&leaves), &directions, &Quadrature::default(), &|_| {}).unwrap();
+    let t = assemble(&leaves, &Visibility::build(&leaves), &directions, &Quadrature::default(), &[], &|_| {}).unwrap();
     let uniform = Transport::Uniform(TransportMatrix::new(t.g, Precision::Double));
     let x: Vec<f64> = (0..op.dim()).map(|i| 1.0 + 0.5 * (i as f64 * 0.37).sin()).collect();
     let (mut a, mut b) = (vec![0.0; x.len()], vec![0.0; x.len()]);

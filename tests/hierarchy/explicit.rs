@@ -27,7 +27,7 @@ fn compare(scene: Scene, directions: DirectionSet) -> (f64, f64) {
     let op = Factored::new(&hierarchical);
     let visibility = Visibility::build(&leaves);
     // the same outer quadrature: with K > 1 its points decide the receiver cells
-    let t = assemble(&leaves, &visibility, &directions, &settings.quadrature, &|_| {}).unwrap();
+    let t = assemble(&leaves, &visibility, &directions, &settings.quadrature, &[], &|_| {}).unwrap();
     let g = Transport::Uniform(TransportMatrix::new(t.g, Precision::Double));
     let kernel = Kernel::on_mesh(g, &leaves, directions.clone(), blocks(&scene, &directions));
     let explicit = Factored::new(&kernel);

@@ -180,7 +180,7 @@ fn a_dimmed_source_is_cut_along_shadows_as_its_own_light() {
     // the shadow's edges fall at x = 0.2 and 1.2 m, across the 0.25 m patches
     let model = build(&s);
     let light = |sources: &[ugo::luminaire::Source], least: &[f64]| {
-        direct_light(sources, &model.mesh, &model.visibility, &model.kernel.directions, least).arriving
+        direct_light(sources, &model.mesh, &model.visibility, &model.kernel.directions, least, &model.mirrors).arriving
     };
     // 0.05 lm: the undimmed penumbra pieces of 0.1 lm are cut further, at 0.3 of it not
     let least = vec![0.05; model.mesh.len()];

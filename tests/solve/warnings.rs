@@ -97,7 +97,7 @@ fn a_negative_escaped_flux_is_explained_and_bounded_by_the_kernels_columns() {
     // The columns' range and their deviation from 1 weighted by the solved flux, computed
     // here from the balance's own identity: escaped = Σ Φ (1 − s) (the lamp's light all lands).
     let (areas, k) = (s.model.mesh.patches.iter().map(|p| p.exposed).collect::<Vec<_>>(), s.model.kernel.cells());
-    let shares = sent_shares(&s.model.kernel, &areas);
+    let shares = sent_shares(&s.model.kernel, &areas, &s.model.mirrors);
     let cells = s.model.kernel.directions.cells();
     let flux = |c: usize| areas[c / k] * cells[c % k].projected * s.x[c];
     let either: f64 = (0..shares.len()).map(|c| flux(c) * (shares[c] - 1.0).abs()).sum();
@@ -127,7 +127,8 @@ fn the_escaped_flux_is_the_outgoing_flux_weighted_by_the_columns_shortfall() {
         let (_, s) = solved(&text);
         let (m, e) = (&s.model, &s.energy);
         let areas: Vec<f64> = m.mesh.patches.iter().map(|p| p.exposed).collect();
-        let (shares, k, cells) = (sent_shares(&m.kernel, &areas), m.kernel.cells(), m.kernel.directions.cells());
+        let (shares, k, cells) =
+            (sent_shares(&m.kernel, &areas, &m.mirrors), m.kernel.cells(), m.kernel.directions.cells());
         let from_surfaces: f64 =
             (0..shares.len()).map(|c| areas[c / k] * cells[c % k].projected * s.x[c] * (1.0 - shares[c])).sum();
         let from_luminaires: f64 = e.luminaire_emitted.iter().zip(&m.direct.intercepted).map(|(a, b)| a - b).sum();

@@ -225,8 +225,14 @@ fn on_a_fixed_hierarchy_a_light_scene_equals_the_solve_of_its_dimmed_sources() {
     for (light_scene, factors) in scene.lighting.scenes.iter().zip([[0.5, 0.3, 0.6], [0.0, 1.0, 0.0]]) {
         let model = &mut s.model;
         let sources = dimmed(&scene, &model.sources, light_scene);
-        let direct =
-            direct_light(&sources, &model.mesh, &model.visibility, &model.kernel.directions, &model.direct.least);
+        let direct = direct_light(
+            &sources,
+            &model.mesh,
+            &model.visibility,
+            &model.kernel.directions,
+            &model.direct.least,
+            &model.mirrors,
+        );
         let emission = model.mesh.patches.iter().zip(&model.mesh.emission);
         let emission: Vec<f64> = emission.map(|(p, &e)| if p.surface == 2 { factors[0] * e } else { e }).collect();
         let own =

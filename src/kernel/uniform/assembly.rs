@@ -7,14 +7,18 @@
 //! shared visibility fraction, and both patches' base-rule closure contributions. The
 //! exchange areas are then balanced row by row, `(patch, cell)`, and become
 //! `G[(i,d),(j,m)] = D_(i,d) D_(j,m) T_ij^{d,m} / A_i` (see [`cell_targets`] for what each
-//! row must carry).
+//! row must carry). Plane mirrors carry light between patches by their images
+//! (`images.rs`, `docs/design.md` (3.10)) instead of their columns of `G`.
 
 use super::balance::balance;
+use super::images::{Mirrors, balance_images, combine, image_row};
+use super::pairs::{Pair, RowWork, exchange, push_pieces, sparse_rows};
 use crate::directions::DirectionSet;
-use crate::geometry::{Mesh, Patch, facing};
+use crate::geometry::{Mesh, facing};
 use crate::interrupt::Interrupted;
 use crate::kernel::BalanceReport;
-use crate::transfer::form_factor::{Binning, PairIntegral, Quadrature, binned_pair_integral, pair_integral};
+use crate::transfer::form_factor::{Binning, Quadrature};
+use crate::transfer::image::PlaneMirror;
 use crate::transfer::occlusion::{POINTS, sample_points, visible_fraction};
 use crate::visibility::{NO_BLOCKER, Visibility};
 use rayon::prelude::*;
@@ -27,7 +31,8 @@ pub struct Assembled {
     pub g: CsMat<f64>,
     /// How balancing moved the exchange areas.
     pub balance: BalanceReport,
-    /// Unordered patch pairs that face each other and were integrated.
+    /// Unordered patch pairs that face each other (directly or by a mirror image) and were
+    /// integrated.
     pub pairs: usize,
     /// Occlusion rays traced.
     pub rays: usize,
@@ -36,32 +41,15 @@ pub struct Assembled {
 /// The base-rule closure is trusted where it agrees with the adaptive row sum to this.
 const TRUSTED_CLOSURE: f64 = 1e-3;
 
-/// One exchanging pair `(i, j)`, `i < j`: its cell pieces `(d, m, T)` in `RowWork::cells`.
-struct Pair {
-    j: u32,
-    first: u32,
-    count: u32,
-    base_j: f64,
-}
-
-/// One row's share of the pair work.
-#[derive(Default)]
-struct RowWork {
-    pairs: Vec<Pair>,
-    cells: Vec<(u16, u16, f64)>,
-    closure: f64,
-    visited: usize,
-    rays: usize,
-}
-
-/// Assembles `G` for `directions`. `progress` is called with the number of pairs just finished.
-/// A stop asked for by a signal (`crate::interrupt`) skips the rows not yet begun and ends
-/// with [`Interrupted`].
+/// Assembles `G` for `directions`, the light by way of `mirrors` carried by their images.
+/// `progress` is called with the number of direct pairs just finished. A stop asked for by a
+/// signal (`crate::interrupt`) skips the rows not yet begun and ends with [`Interrupted`].
 pub fn assemble(
     mesh: &Mesh,
     visibility: &Visibility,
     directions: &DirectionSet,
     quadrature: &Quadrature,
+    mirrors: &[PlaneMirror],
     progress: &(dyn Fn(u64) + Sync),
 ) -> Result<Assembled, Interrupted> {
     let n = mesh.len();
@@ -95,19 +83,32 @@ pub fn assemble(
     if report.residual > BALANCED || report.max_correction > MOST_CORRECTION {
         (d, report) = balance(&exchange, &cell_targets(mesh, directions, &work, &exchange, false));
     }
-    let mut g = exchange;
-    for (r, mut row) in g.outer_iterator_mut().enumerate() {
-        let patch = &mesh.patches[r / k];
-        for (c, v) in row.iter_mut() {
-            *v = patch.per_exposed_area(*v * d[r] * d[c]);
+    let (mut pairs, mut rays) = (work.iter().map(|w| w.visited).sum(), work.iter().map(|w| w.rays).sum());
+    if mirrors.is_empty() {
+        let mut g = exchange;
+        for (r, mut row) in g.outer_iterator_mut().enumerate() {
+            let patch = &mesh.patches[r / k];
+            for (c, v) in row.iter_mut() {
+                *v = patch.per_exposed_area(*v * d[r] * d[c]);
+            }
         }
+        return Ok(Assembled { g, balance: report, pairs, rays });
     }
-    Ok(Assembled {
-        g,
-        balance: report,
-        pairs: work.iter().map(|w| w.visited).sum(),
-        rays: work.iter().map(|w| w.rays).sum(),
-    })
+    let planes = Mirrors::new(n, mirrors);
+    let images: Vec<RowWork> = (0..n)
+        .into_par_iter()
+        .map(|i| match crate::interrupt::requested(String::new) {
+            Some(_) => RowWork::default(),
+            None => image_row(mesh, visibility, &planes, quadrature, binning.as_ref(), &points, i),
+        })
+        .collect();
+    crate::interrupt::check(|| format!("the mirror images of G ({n} patches)"))?;
+    pairs += images.iter().map(|w| w.visited).sum::<usize>();
+    rays += images.iter().map(|w| w.rays).sum::<usize>();
+    let images = sparse_rows(mesh, k, &images);
+    let e = balance_images(mesh, mirrors, k, &exchange, &d, &images);
+    let g = combine(mesh, k, &planes.held, (&exchange, &d), (&images, &e));
+    Ok(Assembled { g, balance: report, pairs, rays })
 }
 
 /// The order the rows are integrated in, `k ↦ k·stride mod n`: a stride near `0.618 n`
@@ -177,48 +178,6 @@ fn cell_targets(
     targets
 }
 
-/// The symmetric exchange areas `T[(i,d),(j,m)]` as CSR rows over `(patch, cell)`.
-fn sparse_rows(mesh: &Mesh, k: usize, work: &[RowWork]) -> CsMat<f64> {
-    let rows = mesh.len() * k;
-    let mut counts = vec![0usize; rows + 1];
-    for (i, w) in work.iter().enumerate() {
-        for p in &w.pairs {
-            for &(cd, cm, _) in &w.cells[p.first as usize..(p.first + p.count) as usize] {
-                counts[i * k + cd as usize + 1] += 1;
-                counts[p.j as usize * k + cm as usize + 1] += 1;
-            }
-        }
-    }
-    for r in 0..rows {
-        counts[r + 1] += counts[r];
-    }
-    let indptr = counts.clone();
-    let mut fill = counts;
-    let mut entries = vec![(0usize, 0.0f64); indptr[rows]];
-    for (i, w) in work.iter().enumerate() {
-        for p in &w.pairs {
-            let j = p.j as usize;
-            for &(cd, cm, t) in &w.cells[p.first as usize..(p.first + p.count) as usize] {
-                let (ri, rj) = (i * k + cd as usize, j * k + cm as usize);
-                entries[fill[ri]] = (rj, t);
-                fill[ri] += 1;
-                entries[fill[rj]] = (ri, t);
-                fill[rj] += 1;
-            }
-        }
-    }
-    let mut chunks: Vec<&mut [(usize, f64)]> = Vec::with_capacity(rows);
-    let mut rest = entries.as_mut_slice();
-    for r in 0..rows {
-        let (row, tail) = rest.split_at_mut(indptr[r + 1] - indptr[r]);
-        chunks.push(row);
-        rest = tail;
-    }
-    chunks.par_iter_mut().for_each(|row| row.sort_unstable_by_key(|e| e.0));
-    let (indices, data) = entries.into_iter().unzip();
-    CsMat::new((rows, rows), indptr, indices, data)
-}
-
 fn row_work(
     mesh: &Mesh,
     visibility: &Visibility,
@@ -248,52 +207,10 @@ fn row_work(
             continue;
         }
         let first = row.cells.len() as u32;
-        match binning {
-            None => row.cells.push((0, 0, 0.5 * (ab.adaptive + ba.adaptive) * v)),
-            Some(_) => merge_pieces(&from_a, &from_b, v, &mut row.cells),
-        }
+        push_pieces((ab, ba), &from_a, &from_b, binning, v, &mut row.cells);
         let count = row.cells.len() as u32 - first;
         row.pairs.push(Pair { j: j as u32, first, count, base_j: ba.base * v });
         row.closure += ab.base * v;
     }
     row
-}
-
-/// Both directions' integrals of a pair; binned pieces land in `from_a` (`(d at a, m at b)`)
-/// and `from_b` (`(d at b, m at a)`).
-fn exchange(
-    a: &Patch,
-    b: &Patch,
-    q: &Quadrature,
-    binning: Option<&Binning>,
-    from_a: &mut Vec<(u16, u16, f64)>,
-    from_b: &mut Vec<(u16, u16, f64)>,
-) -> (PairIntegral, PairIntegral) {
-    match binning {
-        None => (pair_integral(a, b, q), pair_integral(b, a, q)),
-        Some(bins) => {
-            from_a.clear();
-            from_b.clear();
-            (binned_pair_integral(a, b, q, bins, from_a), binned_pair_integral(b, a, q, bins, from_b))
-        }
-    }
-}
-
-/// Symmetric cell pieces `T^{d,m} = v (S_ab^{d,m} + S_ba^{m,d}) / 2`, merged by cell pair
-/// and appended to `cells`.
-fn merge_pieces(from_a: &[(u16, u16, f64)], from_b: &[(u16, u16, f64)], v: f64, cells: &mut Vec<(u16, u16, f64)>) {
-    let start = cells.len();
-    cells.extend(from_a.iter().map(|&(d, m, t)| (d, m, 0.5 * v * t)));
-    cells.extend(from_b.iter().map(|&(d, m, t)| (m, d, 0.5 * v * t)));
-    cells[start..].sort_unstable_by_key(|&(d, m, _)| (d, m));
-    let mut write = start;
-    for read in start..cells.len() {
-        if write > start && cells[write - 1].0 == cells[read].0 && cells[write - 1].1 == cells[read].1 {
-            cells[write - 1].2 += cells[read].2;
-        } else {
-            cells[write] = cells[read];
-            write += 1;
-        }
-    }
-    cells.truncate(write);
 }
