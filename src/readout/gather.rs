@@ -10,7 +10,9 @@
 //! weighed by its own rays, while the light the piece would send unoccluded exceeds
 //! [`SHADOW_CUT`] of all the point would receive unoccluded). A Phong or GGX patch's light
 //! towards `p` is, piece by piece, its final gather at the piece's centroid towards `p`
-//! (`glossy.rs`, [`PIECE_RAYS`] directions) instead of its cell value `L_j(m)`. The
+//! (`glossy.rs`, [`PIECE_RAYS`] directions) instead of its cell value `L_j(m)`. A plane
+//! mirror's light is not its cell values but the images of the other patches seen through
+//! it (`mirrored.rs`, `docs/mirrors.md`). The
 //! luminaires' light arrives exactly at the point (`crate::luminaire::arriving_at`, one shadow ray each) as
 //! `D_d(p)`; the illuminance is `E = π Σ_d (I_d + D_d)`, of which `π Σ_d D_d` is direct
 //! from the luminaires.
@@ -20,6 +22,7 @@ use crate::luminaire::arriving_at;
 use crate::model::Model;
 use crate::readout::field::Field;
 use crate::readout::glossy::{ModelSurroundings, PIECE_RAYS, has_lobe};
+use crate::readout::mirrored::{on_mirrors, through_mirrors};
 use crate::sky::ETA;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
@@ -98,17 +101,18 @@ fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, 
     let cells = directions.len();
     let binning = Binning::new(directions);
     let patches = &model.mesh.patches;
+    let mirrored = on_mirrors(model);
     let unoccluded: Vec<f64> = patches
         .par_iter()
         .enumerate()
-        .map(|(j, s)| match s.face == ignore {
+        .map(|(j, s)| match s.face == ignore || mirrored[j] {
             true => 0.0,
             false => point_to_patch(p, frame.normal, s).max(0.0) * field.brightest(j),
         })
         .collect();
     let least = shadow_cut * unoccluded.iter().sum::<f64>();
     let surroundings = ModelSurroundings::new(model, field);
-    patches
+    let surfaces = patches
         .par_iter()
         .enumerate()
         .filter(|&(j, _)| unoccluded[j] > 0.0)
@@ -132,5 +136,6 @@ fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, 
             },
         )
         .map(|(sum, _)| sum)
-        .reduce(|| vec![0.0; cells], |a, b| a.iter().zip(&b).map(|(x, y)| x + y).collect())
+        .reduce(|| vec![0.0; cells], |a, b| sum(&a, &b));
+    sum(&surfaces, &through_mirrors(model, field, p, frame, ignore, shadow_cut))
 }

@@ -15,8 +15,8 @@
 //!
 //! The mirror's own stored cell values hold its reflection averaged over each direction
 //! cell (the kernel's cell block, what renders read); read from this instead, a point by a
-//! mirror sees the images whole. `gather.rs` is where a point's light from the surfaces is
-//! gathered: it should take a plane mirror's light from here, not from its cells.
+//! mirror sees the images whole. `gather.rs` takes a plane mirror's light from here, not from
+//! its cells.
 
 use crate::geometry::{ConvexPolygon, Frame, Patch};
 use crate::model::Model;
@@ -27,6 +27,13 @@ use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::cut_along_shadows;
 use glam::DVec3;
 use rayon::prelude::*;
+
+/// For each patch, true when it lies on one of the plane mirrors of `model`.
+pub fn on_mirrors(model: &Model) -> Vec<bool> {
+    let mut held = vec![false; model.mesh.patches.len()];
+    model.mirrors.iter().flat_map(|m| &m.patches).for_each(|&j| held[j as usize] = true);
+    held
+}
 
 /// `I^M_d(p)` summed over the mirrors: the light arriving at `p` per cell of `frame` by way
 /// of the plane mirrors of `model` (`ignore`: the face `p` lies on). A piece crossed by a
@@ -45,8 +52,7 @@ pub fn through_mirrors(
     let cells = directions.len();
     let binning = Binning::new(directions);
     let patches = &model.mesh.patches;
-    let mut held = vec![false; patches.len()];
-    model.mirrors.iter().flat_map(|m| &m.patches).for_each(|&j| held[j as usize] = true);
+    let held = on_mirrors(model);
     let surroundings = ModelSurroundings::new(model, field);
     let mut sum = vec![0.0; cells];
     for mirror in model.mirrors.iter().filter(|m| m.height(p) > 0.0 && m.reflectance > 0.0) {
