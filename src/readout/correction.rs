@@ -25,7 +25,7 @@
 use crate::geometry::{ConvexPolygon, Frame, Patch};
 use crate::model::Model;
 use crate::readout::field::Field;
-use crate::readout::gather::incident_at;
+use crate::readout::gather::{incident_at, sum};
 use crate::readout::glossy::is_diffuse;
 use crate::readout::luminance::gathered;
 use crate::transfer::contour::point_to_patch;
@@ -121,7 +121,7 @@ pub fn near_correction(model: &Model, field: &Field, p: DVec3, frame: &Frame, ig
             },
         )
         .map(|(sum, _)| sum)
-        .reduce(|| vec![0.0; cells], |a, b| a.iter().zip(&b).map(|(x, y)| x + y).collect())
+        .reduce(|| vec![0.0; cells], |a, b| sum(&a, &b))
 }
 
 /// Hands `visit` the pieces of `piece` (cut `depth` times): quarters while a piece lies

@@ -18,7 +18,7 @@
 
 use crate::model::Model;
 use crate::progress::Progress;
-use crate::readout::correction::corrected;
+use crate::readout::correction::{Corrected, corrected};
 use crate::readout::cylindrical::cylindrical;
 use crate::readout::field::Field;
 use crate::readout::gather::sum;
@@ -81,7 +81,10 @@ fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
         patch,
     };
     match probe.kind {
-        ProbeKind::Point => point(model, field, p, n, reading),
+        ProbeKind::Point => {
+            let light = corrected(model, field, p, n);
+            reading(point_luminance(model, field, p, n, &light), light.illuminance(), light.correction, light.patch)
+        }
         ProbeKind::LuminanceMeter { fov_deg } => {
             let light = corrected(model, field, p, n);
             reading(mean_luminance(model, field, p, n, fov_deg), light.illuminance(), light.correction, None)
@@ -93,19 +96,11 @@ fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
     }
 }
 
-/// A point sensor's reading: its luminance (on a surface, from the corrected light),
-/// (illuminance, direct illuminance), the correction and the patch it lies on.
-fn point<R>(
-    model: &Model,
-    field: &Field,
-    p: DVec3,
-    n: DVec3,
-    reading: impl Fn(f64, (f64, f64), f64, Option<usize>) -> R,
-) -> R {
-    let light = corrected(model, field, p, n);
-    let luminance = match light.patch {
+/// A point sensor's luminance: on a surface, its outgoing luminance from the corrected
+/// light `light`; in free space, what a meter aimed along `n` reads.
+fn point_luminance(model: &Model, field: &Field, p: DVec3, n: DVec3, light: &Corrected) -> f64 {
+    match light.patch {
         Some(i) => outgoing(model, field, i, p, n, &sum(&light.incident, &light.direct)),
         None => seen(model, field, p, n, RELIT_RAYS),
-    };
-    reading(luminance, light.illuminance(), light.correction, light.patch)
+    }
 }
