@@ -18,8 +18,8 @@
 //! distance, the pieces' luminances average to the patch's and `ΔI` vanishes; the farther
 //! patches, read at their means, are left as they are.
 //!
-//! Each piece costs a gather over every patch (about 8 ms on the Cornell box's 3,400
-//! patches here, 0.1 s on the office's 42,000 leaves): probes are corrected, grid points
+//! Each piece costs a gather over every patch (about 9 ms on the Cornell box's 3,400
+//! leaves here, growing with the patches): probes are corrected, grid points
 //! (`grid.rs`, hundreds a plane, often a few centimetres above desks) are not.
 
 use crate::geometry::{ConvexPolygon, Frame, Patch};
