@@ -197,9 +197,10 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
         println!("  warnings           {:>12}   (on stderr and in /warnings)", s.warnings.len());
     }
     if !s.probes.is_empty() {
-        println!("  probes                   luminance cd/m²   illuminance lx   of it direct lx");
+        println!("  probes                   luminance cd/m²   illuminance lx   error bar lx   of it direct lx");
         for p in &s.probes {
-            println!("    {:<22} {:>15.4} {:>16.4} {:>17.4}", p.name, p.luminance, p.illuminance, p.direct);
+            let bar = p.error.map_or("-".to_string(), |e| format!("± {e:.3}"));
+            println!("    {:<22} {:>15.4} {:>16.4} {:>14} {:>17.4}", p.name, p.luminance, p.illuminance, bar, p.direct);
         }
     }
     if let Some(d) = s.daylight.as_ref() {

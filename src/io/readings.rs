@@ -27,17 +27,17 @@ pub fn write_grid_csv(path: &Path, grid: &GridReading) -> Result<(), IoError> {
     write_text(path, &text)
 }
 
-/// `name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx,E_correction_lx,kind`
+/// `name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx,E_correction_lx,E_error_lx,kind`
 /// per probe (`E_direct_lx`: the luminaires' part; `E_correction_lx`: the correction near
-/// geometry included in `E_lx`; `kind` as in the
-/// case, e.g. `cylindrical`, whose `E_lx` is `E_z`).
+/// geometry included in `E_lx`; `E_error_lx`: its error bar, empty where none was
+/// estimated; `kind` as in the case, e.g. `cylindrical`, whose `E_lx` is `E_z`).
 pub fn write_probes_csv(path: &Path, probes: &[ProbeReading]) -> Result<(), IoError> {
-    let mut text = String::from("name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx,E_correction_lx,kind\n");
+    let mut text = String::from("name,x,y,z,nx,ny,nz,L_cd_m2,E_lx,E_direct_lx,E_correction_lx,E_error_lx,kind\n");
     for p in probes {
         let (x, n) = (p.position, p.normal);
         let name = p.name.replace('"', "\"\"");
         text += &format!(
-            "\"{name}\",{:.9},{:.9},{:.9},{:.9},{:.9},{:.9},{:.9e},{:.9e},{:.9e},{:.9e},{}\n",
+            "\"{name}\",{:.9},{:.9},{:.9},{:.9},{:.9},{:.9},{:.9e},{:.9e},{:.9e},{:.9e},{},{}\n",
             x.x,
             x.y,
             x.z,
@@ -48,6 +48,7 @@ pub fn write_probes_csv(path: &Path, probes: &[ProbeReading]) -> Result<(), IoEr
             p.illuminance,
             p.direct,
             p.correction,
+            p.error.map_or(String::new(), |e| format!("{e:.3e}")),
             p.kind.name()
         );
     }

@@ -15,7 +15,8 @@ pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Re
     dataset(g, "luminance", &Array1::from_iter(probes.iter().map(|p| p.luminance)))?;
     dataset(g, "illuminance", &Array1::from_iter(probes.iter().map(|p| p.illuminance)))?;
     dataset(g, "direct", &Array1::from_iter(probes.iter().map(|p| p.direct)))?;
-    dataset(g, "correction", &Array1::from_iter(probes.iter().map(|p| p.correction)))
+    dataset(g, "correction", &Array1::from_iter(probes.iter().map(|p| p.correction)))?;
+    dataset(g, "error", &Array1::from_iter(probes.iter().map(|p| p.error.unwrap_or(f64::NAN))))
 }
 
 /// Points and illuminance as `nv × nu` arrays (row `b` runs along `edge_u`).

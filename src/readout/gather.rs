@@ -42,7 +42,7 @@ pub fn illuminance_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> f64 {
 
 /// A receiver at a point: the patch it lies on (if any), the frame its light is binned
 /// in (the patch's, or one around the receiver's normal) and the face its rays ignore.
-pub(super) struct Receiver {
+pub(crate) struct Receiver {
     pub patch: Option<usize>,
     pub frame: Frame,
     pub ignore: u32,

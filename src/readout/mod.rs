@@ -6,6 +6,7 @@ pub mod correction;
 pub mod cylindrical;
 pub mod daylight;
 pub mod energy;
+pub mod error_bar;
 pub mod field;
 pub mod final_gather;
 pub mod gather;

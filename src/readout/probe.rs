@@ -14,7 +14,8 @@
 //! Each reading keeps the part of its illuminance that comes directly from the luminaires.
 //! A point sensor's and a luminance meter's illuminance (and a point sensor's luminance on a
 //! surface, from the same light) are corrected near geometry (`correction.rs`,
-//! `docs/design.md` (5.4)), and the reading keeps the correction.
+//! `docs/design.md` (5.4)), and the reading keeps the correction; its error bar
+//! (`error_bar.rs`, (5.5)) is a separate step, a gather per direction.
 
 use crate::model::Model;
 use crate::progress::Progress;
@@ -50,6 +51,10 @@ pub struct ProbeReading {
     pub correction: f64,
     /// The patch a point sensor lies on, if any.
     pub patch: Option<usize>,
+    /// The illuminance's error bar, lx (`error_bar.rs`, `docs/design.md` (5.5)), once
+    /// estimated: `read_probes` leaves it `None`, `error_bar::estimate_errors` sets it for a
+    /// point sensor and a luminance meter.
+    pub error: Option<f64>,
 }
 
 /// Reads every probe from a solved field, telling `progress` of each.
@@ -79,6 +84,7 @@ fn read(probe: &Probe, model: &Model, field: &Field) -> ProbeReading {
         direct,
         correction,
         patch,
+        error: None,
     };
     match probe.kind {
         ProbeKind::Point => {

@@ -14,6 +14,7 @@ use crate::luminaire::Source;
 use crate::model::{Model, SourceTerm};
 use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
+use crate::readout::error_bar::estimate_errors;
 use crate::readout::field::Field;
 use crate::readout::grid::read_grids;
 use crate::readout::illuminance::{arriving, patch_illuminance};
@@ -120,6 +121,8 @@ fn read_out(
     }
     let k = model.kernel.cells();
     let field = Field::from_unknowns(&x, k);
+    let mut probes = read_probes(&scene.probes, model, &field, progress);
+    estimate_errors(&mut probes, model, &field, progress);
     LightSceneField {
         name: light_scene.name.clone(),
         factors: light_scene.factors.clone(),
@@ -128,7 +131,7 @@ fn read_out(
         illuminance: patch_illuminance(&arriving(model, &x), k),
         direct_illuminance: patch_illuminance(&model.direct.arriving, k),
         energy: EnergyBalance::of(model, &x, scene.surfaces.len()),
-        probes: read_probes(&scene.probes, model, &field, progress),
+        probes,
         grids: read_grids(&scene.grids, model, &field, progress),
         field,
     }

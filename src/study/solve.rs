@@ -14,6 +14,7 @@ use crate::model::Model;
 use crate::progress::Progress;
 use crate::readout::daylight::read_daylight;
 use crate::readout::energy::EnergyBalance;
+use crate::readout::error_bar::estimate_errors;
 use crate::readout::field::Field;
 use crate::readout::grid::read_grids;
 use crate::readout::illuminance::{arriving, patch_illuminance};
@@ -112,7 +113,8 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     let field = Field::from_unknowns(&x, k);
     let illuminance = patch_illuminance(&arriving(&model, &x), k);
     let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
-    let probes = read_probes(&scene.probes, &model, &field, progress);
+    let mut probes = read_probes(&scene.probes, &model, &field, progress);
+    estimate_errors(&mut probes, &model, &field, progress);
     let grids = read_grids(&scene.grids, &model, &field, progress);
     let daylight = scene.sky.as_ref().map(|sky| read_daylight(&model, sky, &probes, &grids));
     let mut solved = Solution {

@@ -3,6 +3,7 @@
 
 mod correction;
 mod cylindrical;
+mod error_bar;
 mod glossy;
 mod meter;
 

@@ -191,17 +191,19 @@ def solve(name, bench, setting, flags):
 
 
 def compare(name, setting):
-    """Each probe's relative error against the reference: out/accuracy/name-setting.csv."""
+    """Each probe's relative error against the reference and its error bar (docs/design.md
+    (5.5)) relative to the reference: out/accuracy/name-setting.csv."""
     with open(OUT / f"{name}-{setting}-probes.csv") as f:
-        solved = {r["name"]: float(r["E_lx"]) for r in csv.DictReader(f)}
+        solved = {r["name"]: (float(r["E_lx"]), float(r.get("E_error_lx") or "nan")) for r in csv.DictReader(f)}
     ref = read_reference(name)
     with open(OUT / f"{name}-{setting}.csv", "w", newline="") as f:
         f.write((OUT / f"{name}-{setting}.run").read_text())
         w = csv.writer(f, lineterminator="\n")
-        w.writerow(["name", "class", "E_ref_lx", "E_se_lx", "E_lx", "error_pct"])
+        w.writerow(["name", "class", "E_ref_lx", "E_se_lx", "E_lx", "error_pct", "bar_pct"])
         for probe, (cls, e, se) in ref.items():
-            x = solved[probe]
-            w.writerow([probe, cls, e, se, x, f"{100 * (x - e) / e:.4f}" if e > 0 else "nan"])
+            x, bar = solved[probe]
+            relative = (lambda v: f"{100 * v / e:.4f}") if e > 0 else (lambda v: "nan")
+            w.writerow([probe, cls, e, se, x, relative(x - e), relative(bar)])
 
 
 def main():
