@@ -11,8 +11,10 @@ use super::sibling;
 use anyhow::{Result, bail};
 use std::path::Path;
 use ugo::io::{StoredSolution, read_exr, read_solution};
+use ugo::luminaire::Source;
+use ugo::placement::{Place, places};
 use ugo::render::render;
-use ugo::trace::{Agreement, agreement, leaf_errors};
+use ugo::trace::{Agreement, World, agreement, leaf_errors};
 
 /// How the solution is rendered for a comparison with a traced image.
 pub struct Rendering<'a> {
@@ -128,6 +130,7 @@ fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution, 
         }
         None => println!("  no bin is precise to {:.1} %: trace more --photons", 100.0 * precise),
     }
+    by_place(stored, &mc.luminance, error, &areas, precise);
     let names = names_of(stored);
     println!("  {:<26} {:>8} {:>10} {:>10}", "surface", "rms z", "rel. L1", "noise L2");
     for (s, name) in names.iter().enumerate() {
@@ -145,6 +148,43 @@ fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution, 
         println!("  {:<26} {:>8.3} {:>10.3e} {:>10.3e}", name, a.rms_z, a.relative_l1, a.noise_l2);
     }
     Ok(())
+}
+
+/// The leaf-by-leaf errors of each kind of place (`placement::places`: near a contact, near
+/// an edge of the room, umbra, penumbra, open), over the bins precise to `precise`.
+fn by_place(stored: &StoredSolution, mean: &[f64], error: &[f64], areas: &[f64], precise: f64) {
+    let k = stored.directions.len();
+    let sources: Vec<Source> = stored.scene.luminaires.iter().map(Source::of).collect();
+    let places = places(&World::new(&stored.scene, stored.mesh.clone()), &sources);
+    println!(
+        "  by place: the error beyond noise over all its leaves (L2, as above); the bins precise to {:.1} %, their \
+         share of its area and their |x − m|/m",
+        100.0 * precise
+    );
+    println!(
+        "    {:<10} {:>8} {:>10} {:>8} {:>8} {:>10} {:>10} {:>10}",
+        "place", "leaves", "beyond", "bins", "area %", "mean", "95th pct", "largest"
+    );
+    for place in Place::ALL {
+        let leaves = places.iter().filter(|p| **p == Some(place)).count();
+        let bins: Vec<usize> = (0..mean.len()).filter(|b| places[b / k] == Some(place)).collect();
+        let pick = |v: &[f64]| -> Vec<f64> { bins.iter().map(|&b| v[b]).collect() };
+        let beyond = agreement(&pick(&stored.luminance), &pick(mean), &pick(error)).excess_l2;
+        match leaf_errors(&pick(&stored.luminance), &pick(mean), &pick(error), &pick(areas), precise) {
+            Some(e) => println!(
+                "    {:<10} {:>8} {:>8.3} % {:>8} {:>8.1} {:>8.3} % {:>8.3} % {:>8.3} %",
+                place.name(),
+                leaves,
+                100.0 * beyond,
+                e.bins,
+                100.0 * e.area_share,
+                100.0 * e.mean,
+                100.0 * e.p95,
+                100.0 * e.largest.0
+            ),
+            None => println!("    {:<10} {:>8} {:>8.3} % {:>8}", place.name(), leaves, 100.0 * beyond, 0),
+        }
+    }
 }
 
 /// The surfaces' names, by surface index.

@@ -9,12 +9,14 @@
 //! point along its surface to a distance from one or two walls (`settle.rs`), the share of
 //! the direct light that reaches a point (`lights.rs`), the dimmest points by a quick
 //! Monte Carlo estimate (`dim.rs`) and the drawing of candidates until every class is
-//! full or the candidates run out (`place.rs`). Everything is decided from the mesh and
+//! full or the candidates run out (`place.rs`); and the same places for a mesh's leaves, for
+//! the field's comparison leaf by leaf (`leaves.rs`). Everything is decided from the mesh and
 //! ray casts, never per case, and depends only on the seed.
 
 mod around;
 mod class;
 mod dim;
+mod leaves;
 mod lights;
 mod place;
 mod settle;
@@ -23,6 +25,7 @@ mod sight;
 
 pub use around::OFFSET;
 pub use class::{CONTACTS, Class, EDGES, Placed};
+pub use leaves::{NEAR, Place, places};
 pub use lights::{Lit, lit};
 pub use place::{Options, Placement, place};
 pub use shell::Shell;

@@ -2,6 +2,8 @@
 //! with a lamp under its ceiling, a block on the floor, a board held in the air and two
 //! books on it 2 cm apart, every class gets probes where its name says.
 
+mod leaves;
+
 use glam::DVec3;
 use std::path::Path;
 use std::sync::OnceLock;

@@ -114,6 +114,12 @@ fn a_forward_trace_bins_on_a_hierarchical_solutions_leaves_and_agree_reads_them_
     let printed = ok(&["agree", s, f, "--precise", "0.02"]);
     assert!(printed.contains(&format!("per (patch, cell): {leaves} × 1")), "{printed}");
     assert!(printed.contains("bins precise to 2.0 %") && printed.contains("95th percentile"), "{printed}");
+    // every leaf of the furnace emits, so none has a place (placement::places)
+    assert!(
+        printed.contains("by place")
+            && printed.lines().any(|l| l.split_whitespace().eq(["open", "0", "0.000", "%", "0"])),
+        "{printed}"
+    );
 
     assert!(fails(&["trace", "cases/furnace-box.toml", "--bins-of", s]).contains("--forward"));
     let other = fails(&["trace", "cases/cornell-box.toml", "--forward", "--bins-of", s]);
