@@ -18,18 +18,8 @@
 //! Its traversal also drops every box that ends within [`NEAREST_BOX`] (an absolute
 //! length, in the scene's metres) of the ray's origin, whatever the ray's own `tmin`: every
 //! query's ray starts that far behind its origin, its `tmin` moved on to match.
-//!
-//! Occlusion queries can also run on ugo's own traversal (`any_hit.rs`) of a flat
-//! four-wide tree collapsed from the same obvhs build (`quad.rs`; `own` in the options);
-//! closest hits always run on obvhs's. Both see the same rays and the same triangle test
-//! (`triangle.rs`). The own traversal answers exactly as obvhs's but was not measurably
-//! faster on the Cornell box's segments (`docs/performance.md`), so obvhs's is the default.
 
-mod any_hit;
-mod build;
 mod faces;
-mod quad;
-mod triangle;
 
 pub use faces::{Faces, Landing, standoff};
 
@@ -42,9 +32,7 @@ use obvhs::{
     ray::{Ray, RayHit},
     triangle::Triangle,
 };
-use quad::Quad;
 use std::time::Duration;
-use triangle::Tri;
 
 /// Which BVH layout the queries run on.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -56,9 +44,6 @@ pub struct VisibilityOptions {
     pub rotate: bool,
     /// obvhs's build quality.
     pub preset: BuildPreset,
-    /// Occlusion through ugo's own four-wide traversal rather than obvhs's (not the
-    /// default: no faster, `docs/performance.md`).
-    pub own: bool,
 }
 
 /// The obvhs build presets that were measured.
@@ -74,7 +59,7 @@ pub enum BuildPreset {
 
 impl Default for VisibilityOptions {
     fn default() -> Self {
-        VisibilityOptions { wide: true, rotate: false, preset: BuildPreset::Slow, own: false }
+        VisibilityOptions { wide: true, rotate: false, preset: BuildPreset::Slow }
     }
 }
 
@@ -87,10 +72,8 @@ enum Bvh {
 /// A ray-casting structure over the faces of a mesh.
 pub struct Visibility {
     bvh: Bvh,
-    /// ugo's own tree for occlusion, when asked for.
-    quad: Option<Quad>,
     /// Triangles in the BVH's primitive order (rotated when `rotation` is not identity).
-    triangles: Vec<Tri>,
+    triangles: Vec<Triangle>,
     /// Face of each triangle, same order.
     face_of: Vec<u32>,
     rotation: DMat3,
@@ -109,8 +92,7 @@ pub struct Hit {
 /// Sentinel for "no face to ignore".
 pub const NO_FACE: u32 = u32::MAX;
 
-/// The triangle that blocked a caller's last occlusion query, if any (an index into the
-/// triangles of the traversal that found it).
+/// The triangle that blocked a caller's last occlusion query, if any.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Blocker(Option<usize>);
 
@@ -152,7 +134,6 @@ impl Visibility {
             BuildPreset::Medium => BvhBuildParams::medium_build(),
             BuildPreset::Slow => BvhBuildParams::slow_build(),
         };
-        let quad = options.own.then(|| Quad::collapse(&build::binary_tree(&triangles, params), &triangles, &face_of));
         let mut time = Duration::default();
         let (bvh, order) = if options.wide {
             let wide = build_cwbvh_from_tris(&triangles, params, &mut time);
@@ -165,8 +146,7 @@ impl Visibility {
         };
         Visibility {
             bvh,
-            quad,
-            triangles: order.iter().map(|&i| Tri::of(&triangles[i as usize])).collect(),
+            triangles: order.iter().map(|&i| triangles[i as usize]).collect(),
             face_of: order.iter().map(|&i| face_of[i as usize]).collect(),
             rotation,
             epsilon: 1e-6 * mesh.extent(),
@@ -188,53 +168,39 @@ impl Visibility {
             return true;
         }
         let ray = self.ray(a, d / length, self.epsilon, length - self.epsilon);
-        let (triangles, face_of) = match &self.quad {
-            Some(quad) => (&quad.tris, &quad.faces),
-            None => (&self.triangles, &self.face_of),
-        };
         let skip = |id: usize| {
-            let face = face_of[id];
+            let face = self.face_of[id];
             face == ignore[0] || face == ignore[1]
         };
         if let Some(id) = blocker.0
             && !skip(id)
-            && triangles[id].hit(&ray) < f32::INFINITY
+            && intersect(&self.triangles[id], &ray) < f32::INFINITY
         {
             return false;
         }
-        let hit = match &self.quad {
-            Some(quad) => quad.any_hit(&ray, skip),
-            None => self.obvhs_any_hit(&ray, skip),
-        };
-        if hit.is_some() {
-            blocker.0 = hit;
-        }
-        hit.is_none()
-    }
-
-    /// A triangle that `ray` crosses, other than those `skip` excludes, through obvhs's
-    /// traversal.
-    fn obvhs_any_hit(&self, ray: &Ray, skip: impl Fn(usize) -> bool) -> Option<usize> {
         let mut hit = None;
         let test = |ray: &Ray, id: usize| {
-            let t = if skip(id) { f32::INFINITY } else { self.triangles[id].hit(ray) };
+            let t = if skip(id) { f32::INFINITY } else { intersect(&self.triangles[id], ray) };
             if t < f32::INFINITY {
                 hit = Some(id);
             }
             t
         };
-        match &self.bvh {
-            Bvh::Binary(binary) => binary.ray_traverse_miss(*ray, test),
-            Bvh::Wide(wide) => wide.ray_traverse_miss(*ray, test),
+        let miss = match &self.bvh {
+            Bvh::Binary(binary) => binary.ray_traverse_miss(ray, test),
+            Bvh::Wide(wide) => wide.ray_traverse_miss(ray, test),
         };
-        hit
+        if hit.is_some() {
+            blocker.0 = hit;
+        }
+        miss
     }
 
     /// The first face along `origin + t·direction`, `t > 0`, other than `ignore`.
     pub fn closest_hit(&self, origin: DVec3, direction: DVec3, ignore: u32) -> Option<Hit> {
         let ray = self.ray(origin, direction.normalize(), self.epsilon, f32::INFINITY as f64);
         let test = |ray: &Ray, id: usize| {
-            if self.face_of[id] == ignore { f32::INFINITY } else { self.triangles[id].hit(ray) }
+            if self.face_of[id] == ignore { f32::INFINITY } else { intersect(&self.triangles[id], ray) }
         };
         let mut hit = RayHit::none();
         let found = match &self.bvh {
@@ -257,4 +223,26 @@ impl Visibility {
         }
         Ray::new(o, d, (tmin + NEAREST_BOX) as f32, (tmax + NEAREST_BOX) as f32)
     }
+}
+
+/// Barycentric slack that closes the cracks between triangles sharing an edge.
+const EDGE_SLACK: f32 = 1e-5;
+
+/// Möller–Trumbore with a slack on the barycentric coordinates; distance or infinity.
+#[inline(always)]
+fn intersect(tri: &Triangle, ray: &Ray) -> f32 {
+    let (e1, e2) = (tri.v1 - tri.v0, tri.v2 - tri.v0);
+    let p = ray.direction.cross(e2);
+    let det = e1.dot(p);
+    if det.abs() < 1e-20 {
+        return f32::INFINITY;
+    }
+    let inv = 1.0 / det;
+    let s = ray.origin - tri.v0;
+    let u = s.dot(p) * inv;
+    let q = s.cross(e1);
+    let v = ray.direction.dot(q) * inv;
+    let t = e2.dot(q) * inv;
+    let inside = u >= -EDGE_SLACK && v >= -EDGE_SLACK && u + v <= 1.0 + EDGE_SLACK;
+    if inside && t > ray.tmin && t < ray.tmax { t } else { f32::INFINITY }
 }

@@ -6,8 +6,6 @@ use ugo::geometry::Mesh;
 use ugo::scene::Scene;
 use ugo::visibility::{NO_FACE, Visibility, VisibilityOptions};
 
-mod own;
-
 fn cornell() -> Mesh {
     let scene = Scene::load(Path::new("cases/cornell-box.toml")).unwrap();
     Mesh::build(&scene.surfaces, 0.05)

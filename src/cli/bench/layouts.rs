@@ -33,11 +33,7 @@ fn print_layouts(occlusion: &Occlusion) {
         "bvh", "preset", "rotated", "build ms", "rays/s", "visible", "lost"
     );
     for l in bench::layouts(&occlusion.mesh, &occlusion.segments) {
-        let name = match (l.options.own, l.options.wide) {
-            (true, _) => "own4",
-            (false, true) => "cwbvh",
-            (false, false) => "bvh2",
-        };
+        let name = if l.options.wide { "cwbvh" } else { "bvh2" };
         let (preset, rotate) = (format!("{:?}", l.options.preset), l.options.rotate);
         let (build, rate, visible, lost) = (l.build_seconds * 1e3, l.rays_per_second, l.visible, l.lost);
         println!("  {name:<8} {preset:<7} {rotate:<7} {build:>10.1} {rate:>14.3e} {visible:>8.1}% {lost:>6}");

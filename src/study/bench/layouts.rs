@@ -1,6 +1,5 @@
-//! Every BVH layout of `ugo bench --layouts` on the same segments (obvhs's binary or
-//! compressed wide BVH, or ugo's own four-wide traversal; obvhs build preset, scene turned
-//! by a generic rotation or not), with a
+//! Every BVH layout of `ugo bench --layouts` on the same segments (binary or compressed
+//! wide BVH, obvhs build preset, scene turned by a generic rotation or not), with a
 //! correctness figure: the axis-aligned rays, one dropped onto every patch along its
 //! normal, that failed to find that patch ("lost").
 
@@ -25,15 +24,14 @@ pub struct Layout {
     pub lost: usize,
 }
 
-/// Every layout on `segments`, measured one at a time as the iterator is read: obvhs's
-/// binary then wide traversal, then ugo's own (closest hits through the wide one), each
-/// with the fast, medium and slow presets, each unrotated then rotated.
+/// Every layout on `segments`, measured one at a time as the iterator is read: binary
+/// then wide, each with the fast, medium and slow presets, each unrotated then rotated.
 pub fn layouts<'a>(mesh: &'a Mesh, segments: &'a [Segment]) -> impl Iterator<Item = Layout> + 'a {
-    [(false, false), (true, false), (true, true)].into_iter().flat_map(move |(wide, own)| {
+    [false, true].into_iter().flat_map(move |wide| {
         [BuildPreset::Fast, BuildPreset::Medium, BuildPreset::Slow].into_iter().flat_map(move |preset| {
             [false, true]
                 .into_iter()
-                .map(move |rotate| layout(mesh, segments, VisibilityOptions { wide, rotate, preset, own }))
+                .map(move |rotate| layout(mesh, segments, VisibilityOptions { wide, rotate, preset }))
         })
     })
 }
