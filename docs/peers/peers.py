@@ -50,6 +50,10 @@ def main(folder):
     print(f"occlusion rays: Embree (embreex) {embree_rate:.3e} rays/s, ugo {meta['ugo_occlusion_rays_per_second']:.3e} rays/s "
           f"on {meta['threads']} threads; ugo/Embree = {meta['ugo_occlusion_rays_per_second'] / embree_rate:.2f}; "
           f"answers agree on {100 * agree:.3f} % of {len(rays)} rays")
+    one = meta.get("ugo_occlusion_rays_per_second_one_thread")
+    if one:
+        # embreex traces its batch on one thread: this is the per-core ratio.
+        print(f"occlusion rays per core: ugo {one:.3e} rays/s on one thread; ugo/Embree per core = {one / embree_rate:.2f}")
 
     import scipy.sparse as sp
 

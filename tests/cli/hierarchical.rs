@@ -113,7 +113,13 @@ fn bench_reports_the_hierarchys_links_against_the_leaves() {
     let o = ugo(&[&args[..], &sizes[..]].concat());
     assert!(o.status.success(), "{}", stderr(&o));
     let report: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
-    for key in ["occlusion_rays_per_second", "factored_apply_seconds", "links_exponent", "time_exponent"] {
+    for key in [
+        "occlusion_rays_per_second",
+        "occlusion_rays_per_second_one_thread",
+        "factored_apply_seconds",
+        "links_exponent",
+        "time_exponent",
+    ] {
         assert!(report[key].as_f64().is_some_and(f64::is_finite), "{key}: {}", report[key]);
     }
     let levels = report["hierarchy"].as_array().unwrap();

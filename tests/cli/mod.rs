@@ -195,6 +195,7 @@ fn bench_reports_every_figure_as_json_and_exports_the_peer_data() {
     let report: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     for key in [
         "occlusion_rays_per_second",
+        "occlusion_rays_per_second_one_thread",
         "triad_bytes_per_second",
         "assembly_pairs_per_second",
         "spmv_bytes_per_second",
@@ -209,6 +210,7 @@ fn bench_reports_every_figure_as_json_and_exports_the_peer_data() {
     let meta: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(export.join("meta.json")).unwrap()).unwrap();
     let size = |name: &str| std::fs::metadata(export.join(name)).unwrap().len();
+    assert!(meta["ugo_occlusion_rays_per_second_one_thread"].as_f64().is_some_and(|v| v > 0.0), "{meta}");
     assert_eq!(size("rays.f32"), 20000 * 8 * 4);
     assert_eq!(size("visible.u8"), 20000);
     assert_eq!(size("triangles.f32"), meta["triangles"].as_u64().unwrap() * 36);

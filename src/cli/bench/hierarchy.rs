@@ -22,7 +22,7 @@ pub fn run(o: &BenchOptions, scene: &Scene, h: Hierarchical) -> Result<()> {
     }
     let threads = rayon::current_num_threads();
     println!("ugo bench: {} ({} threads, hierarchical kernel, roots of {} m)", scene.name, threads, h.root_size);
-    let rays = occlusion_rays(o, scene, h.root_size)?.rays_per_second;
+    let occlusion = occlusion_rays(o, scene, h.root_size)?;
     let (own, model) = bench::level(scene, scene.discretization.patch_size)?;
     println!("  sparse product G x    skipped: the hierarchy stores no matrix (links applied by pull, gather, push)");
     let factored = bench::apply_seconds(&Factored::new(&model.kernel));
@@ -41,7 +41,8 @@ pub fn run(o: &BenchOptions, scene: &Scene, h: Hierarchical) -> Result<()> {
         "assembly": "hierarchical",
         "root_size": h.root_size,
         "link_tolerance": tolerance,
-        "occlusion_rays_per_second": rays,
+        "occlusion_rays_per_second": occlusion.rays_per_second,
+        "occlusion_rays_per_second_one_thread": occlusion.one_thread_rays_per_second,
         "factored_apply_seconds": factored,
         "hierarchy": curve.levels,
         "links_exponent": curve.links_exponent,

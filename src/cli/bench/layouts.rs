@@ -13,10 +13,12 @@ use ugo::study::bench::{self, DenseLu, Occlusion};
 pub fn occlusion_rays(o: &BenchOptions, scene: &Scene, size: f64) -> Result<Occlusion> {
     let occlusion = Occlusion::measure(scene, size, o.rays).with_context(|| o.case.display().to_string())?;
     println!(
-        "  occlusion rays        {:>12.3e} rays/s   ({} patches, {} rays, default BVH)",
+        "  occlusion rays        {:>12.3e} rays/s   ({} patches, {} rays, default BVH; {:.3e} rays/s on one thread, \
+         the per-core figure docs/peers/peers.py sets against Embree's)",
         occlusion.rays_per_second,
         occlusion.mesh.len(),
-        occlusion.segments.len()
+        occlusion.segments.len(),
+        occlusion.one_thread_rays_per_second
     );
     if o.layouts {
         print_layouts(&occlusion);

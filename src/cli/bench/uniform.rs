@@ -50,6 +50,7 @@ pub fn run(o: &BenchOptions, scene: &Scene) -> Result<()> {
         "case": scene.name,
         "threads": threads,
         "occlusion_rays_per_second": occlusion.rays_per_second,
+        "occlusion_rays_per_second_one_thread": occlusion.one_thread_rays_per_second,
         "triad_bytes_per_second": triad,
         "assembly_pairs_per_second": pairs_rate,
         "assembly_rays_per_second": model.stats.rays as f64 / model.stats.kernel_seconds,
@@ -65,6 +66,7 @@ pub fn run(o: &BenchOptions, scene: &Scene) -> Result<()> {
     if let Some(dir) = &o.export {
         let meta = json!({
             "ugo_occlusion_rays_per_second": occlusion.rays_per_second,
+            "ugo_occlusion_rays_per_second_one_thread": occlusion.one_thread_rays_per_second,
             "ugo_spmv_seconds": product.seconds,
             "threads": threads
         });

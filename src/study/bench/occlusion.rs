@@ -25,6 +25,9 @@ pub struct Occlusion {
     /// Occlusion rays per second through them (the better of two runs, all threads of the
     /// current pool).
     pub rays_per_second: f64,
+    /// The same on one thread: the per-core figure that Embree's single-threaded batch in
+    /// `docs/peers/peers.py` is compared with.
+    pub one_thread_rays_per_second: f64,
 }
 
 impl Occlusion {
@@ -37,8 +40,9 @@ impl Occlusion {
             return Err(BenchError::NoFacingPairs { patches: mesh.len() });
         };
         let visibility = Visibility::build(&mesh);
-        let rays_per_second = rays_per_second(&visibility, &segments).max(rays_per_second(&visibility, &segments));
-        Ok(Occlusion { mesh, visibility, segments, rays_per_second })
+        let rate = || rays_per_second(&visibility, &segments);
+        let (all, one) = (rate().max(rate()), rayon::ThreadPoolBuilder::new().num_threads(1).build()?.install(rate));
+        Ok(Occlusion { mesh, visibility, segments, rays_per_second: all, one_thread_rays_per_second: one })
     }
 }
 
