@@ -23,7 +23,7 @@ pub fn report(d: &DaylightReadings, probes: &[ProbeReading], grids: &[GridReadin
     if !grids.is_empty() {
         println!("    grid                   DF_avg %   DF_min %   DF_max %   DF_min/DF_avg");
         for (g, df) in grids.iter().zip(&d.grids) {
-            let st = stats(df);
+            let st = stats(df, g);
             println!(
                 "    {:<22} {:>8.3} {:>10.3} {:>10.3} {:>10.4}",
                 g.grid.name, st.average, st.min, st.max, st.uniformity

@@ -86,14 +86,15 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     summary(&scene, &s, &output);
     super::kernel::print_record(&s.kernel);
     let lamps = positions(&s.model.sources);
-    write_grids(&s.grids, &output.with_extension("").display().to_string(), &lamps)?;
+    let names: Vec<String> = scene.surfaces.iter().map(|s| s.name.clone()).collect();
+    write_grids(&s.grids, &output.with_extension("").display().to_string(), &lamps, &names)?;
     if !s.probes.is_empty() {
         let csv = super::beside(&output, "-probes.csv");
         write_probes_csv(&csv, &s.probes)?;
         println!("  probes             {}", csv.display());
     }
     if let Some(light) = &s.light_scenes {
-        super::light_scenes::report(light, &output, &|grids, stem| write_grids(grids, stem, &lamps))?;
+        super::light_scenes::report(light, &output, &|grids, stem| write_grids(grids, stem, &lamps, &names))?;
     }
     if let Some(orders) = &s.orders {
         print_orders(orders, &s.x);
@@ -220,18 +221,26 @@ fn positions(sources: &[Source]) -> Vec<DVec3> {
         .collect()
 }
 
-/// Each grid's CSV and plan (`ugo::io::write_grid_map`), `<stem>-<grid>.{csv,png}`.
-fn write_grids(grids: &[GridReading], stem: &str, lamps: &[DVec3]) -> Result<()> {
+/// Each grid's CSV and plan (`ugo::io::write_grid_map`), `<stem>-<grid>.{csv,png}`; the
+/// points left out of the statistics counted after them.
+fn write_grids(grids: &[GridReading], stem: &str, lamps: &[DVec3], surfaces: &[String]) -> Result<()> {
     if grids.is_empty() {
         return Ok(());
     }
     println!("  grids                      E_avg lx     E_min lx     E_max lx      U0");
     for g in grids {
         let st = g.stats();
-        println!("    {:<22} {:>12.4} {:>12.4} {:>12.4} {:>7.4}", g.grid.name, st.average, st.min, st.max, st.u0);
+        let left_out = match g.left_out() {
+            0 => String::new(),
+            n => format!("   ({n} of {} points left out)", g.points.len()),
+        };
+        println!(
+            "    {:<22} {:>12.4} {:>12.4} {:>12.4} {:>7.4}{left_out}",
+            g.grid.name, st.average, st.min, st.max, st.u0
+        );
         let base = format!("{stem}-{}", file_name(&g.grid.name));
         let (csv, png) = (PathBuf::from(format!("{base}.csv")), PathBuf::from(format!("{base}.png")));
-        write_grid_csv(&csv, g)?;
+        write_grid_csv(&csv, g, surfaces)?;
         write_grid_map(&png, g, lamps)?;
         println!("      {}\n      {}", csv.display(), png.display());
     }

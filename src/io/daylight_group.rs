@@ -30,7 +30,7 @@ pub(super) fn write_daylight(
         let h = all.create_group(&grid.grid.name)?;
         let [nu, nv] = grid.grid.resolution;
         dataset(&h, "daylight_factor", &Array2::from_shape_fn((nv, nu), |(b, a)| df[b * nu + a]))?;
-        let st = stats(df);
+        let st = stats(df, grid);
         for (name, value) in
             [("DF_avg", st.average), ("DF_min", st.min), ("DF_max", st.max), ("uniformity", st.uniformity)]
         {

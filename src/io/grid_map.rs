@@ -2,7 +2,8 @@
 //! one: the grid seen from the side its normal points to (`super::plan`, never mirrored),
 //! its cells in false colour with a legend in lx at round values, axes in metres with
 //! round ticks, the grid's outline, the luminaires' positions (circles), the statistics
-//! `E_avg`, `E_min`, `E_max`, `U0` in the title, and on request (`[[grid]] map = { … }`)
+//! `E_avg`, `E_min`, `E_max`, `U0` in the title, the cells of points left out of them
+//! (`readout::obstructed`) hatched in grey and counted in the title, and on request (`[[grid]] map = { … }`)
 //! a log scale, the value of every cell and lines of equal illuminance (isolux lines).
 
 use super::IoError;
@@ -148,8 +149,18 @@ fn title(root: &Area, grid: &GridReading) -> Drawn {
     };
     let [nu, nv] = g.resolution;
     let head = format!("grid \"{}\", {nu} × {nv} points, seen from {side}", g.name);
-    let stats =
-        format!("E_avg {} lx   E_min {} lx   E_max {} lx   U0 {:.2}", lux(st.average), lux(st.min), lux(st.max), st.u0);
+    let left_out = match grid.left_out() {
+        0 => String::new(),
+        1 => "   (hatched: 1 point left out)".to_string(),
+        n => format!("   (hatched: {n} points left out)"),
+    };
+    let stats = format!(
+        "E_avg {} lx   E_min {} lx   E_max {} lx   U0 {:.2}{left_out}",
+        lux(st.average),
+        lux(st.min),
+        lux(st.max),
+        st.u0
+    );
     root.draw(&Text::new(head, (LEFT, 10), ("sans-serif", 18).into_font().color(&BLACK)))?;
     root.draw(&Text::new(stats, (LEFT, 34), ("sans-serif", 18).into_font().color(&BLACK)))?;
     Ok(())
@@ -192,7 +203,13 @@ fn cells(root: &Area, grid: &GridReading, plan: &GridPlan, scale: Scale, (lo, hi
             let Some((a, b)) = on.at(plan.layout.point(x as f64 + 0.5, y as f64 + 0.5)) else { continue };
             let (i, j) = (((a * nu as f64) as usize).min(nu - 1), ((b * nv as f64) as usize).min(nv - 1));
             let e = grid.illuminance[j * nu + i];
-            root.draw_pixel((x, y), &colour(position(e, lo, hi, scale)))?;
+            let shade = match grid.obstructed[j * nu + i] {
+                // grey, hatched along the plan's diagonals
+                Some(_) if (x + y).rem_euclid(8) < 2 => RGBColor(110, 110, 110),
+                Some(_) => RGBColor(200, 200, 200),
+                None => colour(position(e, lo, hi, scale)),
+            };
+            root.draw_pixel((x, y), &shade)?;
         }
     }
     root.draw(&Rectangle::new([(left, top), (right, bottom)], RGBColor(160, 160, 160)))?;

@@ -54,6 +54,6 @@ pub use spectrum_file::{Mode, read_mode};
 pub use spectrum_plot::{RateLine, spectrum_plot};
 pub use ticks::{log_ticks, round_125, round_top, step, tick_label, ticks};
 pub use triptych::{CAPTION_HEIGHT, write_triptych};
-pub use warning::{NegativeEscape, SensorFault, Warning};
+pub use warning::{LeftOut, NegativeEscape, SensorFault, Warning};
 
 use atomic::{atomic, atomic_png};

@@ -7,22 +7,40 @@ use crate::readout::grid::GridReading;
 use crate::readout::probe::ProbeReading;
 use std::path::Path;
 
-/// `u,v,x,y,z,E_lx` per point (`u`, `v` the cell indices), statistics in `#` comments.
-pub fn write_grid_csv(path: &Path, grid: &GridReading) -> Result<(), IoError> {
+/// `u,v,x,y,z,E_lx,counted,left_out_by` per point (`u`, `v` the cell indices; `counted` 1
+/// for a point in the statistics, 0 for one left out, `left_out_by` then saying what
+/// stands over it), statistics in `#` comments.
+pub fn write_grid_csv(path: &Path, grid: &GridReading, surfaces: &[String]) -> Result<(), IoError> {
     let [nu, _] = grid.grid.resolution;
     let st = grid.stats();
     let mut text = format!(
         "# grid \"{}\", illuminance in lx on the side facing {:?}\n\
-         # E_avg {:.6e}, E_min {:.6e}, E_max {:.6e}, U0 {:.6}\nu,v,x,y,z,E_lx\n",
+         # E_avg {:.6e}, E_min {:.6e}, E_max {:.6e}, U0 {:.6} over the {} of {} points counted\n\
+         u,v,x,y,z,E_lx,counted,left_out_by\n",
         grid.grid.name,
         grid.grid.normal.to_array(),
         st.average,
         st.min,
         st.max,
-        st.u0
+        st.u0,
+        st.counted,
+        grid.points.len()
     );
-    for (i, (p, e)) in grid.points.iter().zip(&grid.illuminance).enumerate() {
-        text += &format!("{},{},{:.9},{:.9},{:.9},{:.9e}\n", i % nu, i / nu, p.x, p.y, p.z, e);
+    for (i, ((p, e), o)) in grid.points.iter().zip(&grid.illuminance).zip(&grid.obstructed).enumerate() {
+        let by = o.as_ref().map_or(String::new(), |o| {
+            let name = surfaces[o.surface].replace('"', "\"\"");
+            if o.inside { format!("inside {name}") } else { format!("{:.3} m under {name}", o.distance) }
+        });
+        text += &format!(
+            "{},{},{:.9},{:.9},{:.9},{:.9e},{},\"{by}\"\n",
+            i % nu,
+            i / nu,
+            p.x,
+            p.y,
+            p.z,
+            e,
+            u8::from(o.is_none())
+        );
     }
     write_text(path, &text)
 }

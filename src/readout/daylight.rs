@@ -87,12 +87,11 @@ pub fn grid_daylight_factor(sky: &Sky, grid: &GridReading) -> Vec<f64> {
     grid.illuminance.iter().map(|e| 100.0 * e / sky.horizontal_illuminance).collect()
 }
 
-/// `DF_avg`, `DF_min`, `DF_max` and the uniformity `DF_min / DF_avg` of equal cells.
-pub fn stats(daylight_factor: &[f64]) -> DaylightStats {
-    let average = daylight_factor.iter().sum::<f64>() / daylight_factor.len().max(1) as f64;
-    let min = daylight_factor.iter().copied().fold(f64::INFINITY, f64::min);
-    let max = daylight_factor.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    DaylightStats { average, min, max, uniformity: if average > 0.0 { min / average } else { 0.0 } }
+/// `DF_avg`, `DF_min`, `DF_max` and the uniformity `DF_min / DF_avg` of equal cells, over
+/// the points of `grid` that count (as its illuminance's statistics).
+pub fn stats(daylight_factor: &[f64], grid: &GridReading) -> DaylightStats {
+    let s = grid.stats_of(daylight_factor);
+    DaylightStats { average: s.average, min: s.min, max: s.max, uniformity: s.u0 }
 }
 
 /// The daylight readouts of a solve under a `[sky]`.

@@ -15,4 +15,5 @@ pub mod illuminance;
 pub mod luminance;
 pub mod meter;
 pub mod mirrored;
+pub mod obstructed;
 pub mod probe;

@@ -7,7 +7,7 @@
 use super::check::Context;
 use super::description::Scene;
 use super::error::SceneError;
-use crate::geometry::{Emission, Shape, tessellate};
+use crate::geometry::{Emission, Shape, Surface, tessellate};
 use crate::luminaire::LuminaireKind;
 use crate::material::MaterialModel;
 use glam::DVec3;
@@ -88,8 +88,8 @@ pub fn warnings(scene: &Scene) -> Vec<SceneError> {
             out.push(at.error(key, format!("{length:.4e} m across: lengths are in metres (0.1 mm is {SHORTEST:e} m)")));
         }
     }
-    let whole = scene.surfaces.iter().fold(Bounds::EMPTY, |b, s| b.union(bounds(&s.shape)));
-    let span = (whole.1 - whole.0).length();
+    let (low, high) = surfaces_bounds(&scene.surfaces);
+    let span = (high - low).length();
     if span > LONGEST && !out.iter().any(|w| w.message().contains("lengths are in metres")) {
         out.push(SceneError::new(
             path,
@@ -132,6 +132,12 @@ impl Bounds {
     fn union(self, o: Bounds) -> Bounds {
         Bounds(self.0.min(o.0), self.1.max(o.1))
     }
+}
+
+/// The bounding box `(low, high)` of every surface, m.
+pub(super) fn surfaces_bounds(surfaces: &[Surface]) -> (DVec3, DVec3) {
+    let whole = surfaces.iter().fold(Bounds::EMPTY, |b, s| b.union(bounds(&s.shape)));
+    (whole.0, whole.1)
 }
 
 /// The bounding box of a shape's coarsest mesh.

@@ -35,7 +35,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let (mut surfaces, surface_tables) = surfaces(path, &source, &raw.surface, &materials, &files)?;
     let probes = probes(path, &raw.probe)?;
     let cameras = cameras(path, &raw.camera)?;
-    let grids = grids(path, &raw.grid)?;
+    let grids = grids(path, &raw.grid, &surfaces)?;
     let (mut luminaires, tables) = luminaires(path, &source, &raw.luminaire, &files)?;
     let (sky, openings) = daylight(path, raw.sky.as_ref(), &raw.window)?;
     if let Some(clash) = openings.iter().find(|o| luminaires.iter().any(|l| l.name == o.name)) {

@@ -139,6 +139,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         light_scenes: None,
     };
     solved.warnings = super::physics_warnings(scene, &solved.model, &solved.x, &solved.energy);
+    solved.warnings.extend(super::grid_points::left_out(scene, &solved.grids));
     if !scene.lighting.scenes.is_empty() {
         let how = GroupSolves { method: solved.runs[solved.reference].method, params: job.params, warm: true };
         solved.light_scenes = Some(solve_light_scenes(scene, &mut solved.model, &solved.x, &how, progress)?);

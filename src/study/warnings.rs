@@ -23,6 +23,8 @@
 //! * light escaping through a small opening (`openings.rs`): a missing wall or a gap;
 //! * a probe closer to a patch than `near::NEAR` of the patch's size (`near.rs`): it
 //!   reads the patch's mean where it sees mostly its nearest part;
+//! * a grid facing away from every source (`grid_points.rs`; its points left out of the
+//!   statistics are warned about from its readings, in the same file);
 //! * parallel light (the sun) and a glazed window: the glass's `τ(θ)` and the window's
 //!   maintenance factor apply to the sky and ground it lets in, not to the beam.
 //!
@@ -57,6 +59,7 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
     luminaires(scene, model, &mut out);
     parallel_through_glass(model, &mut out);
     sensors(scene, model, &mut out);
+    out.extend(super::grid_points::facing_away(scene, model));
     super::near::near_patches(scene, model, &mut out);
     let shares = || {
         let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();

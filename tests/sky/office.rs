@@ -50,7 +50,7 @@ fn the_daylit_office_receives_the_flux_of_its_window_and_its_components_add_up()
         front.daylight_factor > d.probes[1].daylight_factor
             && d.probes[1].daylight_factor > d.probes[2].daylight_factor
     );
-    let st = stats(&d.grids[0]);
+    let st = stats(&d.grids[0], &grids[0]);
     eprintln!(
         "work plane: DF_avg {:.3} %, DF_min {:.3} %, DF_max {:.3} %, U0 {:.3}",
         st.average, st.min, st.max, st.uniformity
