@@ -8,10 +8,12 @@ use anyhow::{Context, Result, bail};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 use ugo::io::{
-    MonteCarlo, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
+    MonteCarlo, Run, Solution, convergence_plot, write_daylight_map, write_grid_csv, write_grid_map, write_probes_csv,
+    write_solution,
 };
 use ugo::luminaire::{Light, Source};
 use ugo::model::HierarchyRecord;
+use ugo::readout::daylight::DaylightReadings;
 use ugo::readout::grid::GridReading;
 use ugo::scene::Scene;
 use ugo::solve::norms::Norms;
@@ -87,14 +89,15 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     super::kernel::print_record(&s.kernel);
     let lamps = positions(&s.model.sources);
     let names: Vec<String> = scene.surfaces.iter().map(|s| s.name.clone()).collect();
-    write_grids(&s.grids, &output.with_extension("").display().to_string(), &lamps, &names)?;
+    let files = GridFiles { lamps: &lamps, surfaces: &names };
+    write_grids(&s.grids, &output.with_extension("").display().to_string(), &files, s.daylight.as_ref())?;
     if !s.probes.is_empty() {
         let csv = super::beside(&output, "-probes.csv");
-        write_probes_csv(&csv, &s.probes)?;
+        write_probes_csv(&csv, &s.probes, s.daylight.as_ref())?;
         println!("  probes             {}", csv.display());
     }
     if let Some(light) = &s.light_scenes {
-        super::light_scenes::report(light, &output, &|grids, stem| write_grids(grids, stem, &lamps, &names))?;
+        super::light_scenes::report(light, &output, &|grids, stem| write_grids(grids, stem, &files, None))?;
     }
     if let Some(orders) = &s.orders {
         print_orders(orders, &s.x);
@@ -221,14 +224,26 @@ fn positions(sources: &[Source]) -> Vec<DVec3> {
         .collect()
 }
 
-/// Each grid's CSV and plan (`ugo::io::write_grid_map`), `<stem>-<grid>.{csv,png}`; the
-/// points left out of the statistics counted after them.
-fn write_grids(grids: &[GridReading], stem: &str, lamps: &[DVec3], surfaces: &[String]) -> Result<()> {
+/// What every grid's files are drawn with: the luminaires' positions and the surfaces' names.
+struct GridFiles<'a> {
+    lamps: &'a [DVec3],
+    surfaces: &'a [String],
+}
+
+/// Each grid's CSV and plan (`ugo::io::write_grid_map`), `<stem>-<grid>.{csv,png}`, and
+/// under a `[sky]` its daylight factor's (or ratio's) plan `<stem>-<grid>-DF.png` (`-DR`);
+/// the points left out of the statistics counted after them.
+fn write_grids(
+    grids: &[GridReading],
+    stem: &str,
+    files: &GridFiles,
+    daylight: Option<&DaylightReadings>,
+) -> Result<()> {
     if grids.is_empty() {
         return Ok(());
     }
     println!("  grids                      E_avg lx     E_min lx     E_max lx      U0");
-    for g in grids {
+    for (i, g) in grids.iter().enumerate() {
         let st = g.stats();
         let left_out = match g.left_out() {
             0 => String::new(),
@@ -240,9 +255,15 @@ fn write_grids(grids: &[GridReading], stem: &str, lamps: &[DVec3], surfaces: &[S
         );
         let base = format!("{stem}-{}", file_name(&g.grid.name));
         let (csv, png) = (PathBuf::from(format!("{base}.csv")), PathBuf::from(format!("{base}.png")));
-        write_grid_csv(&csv, g, surfaces)?;
-        write_grid_map(&png, g, lamps)?;
+        let df = daylight.map(|d| (d.symbol(), d.grids[i].as_slice()));
+        write_grid_csv(&csv, g, files.surfaces, df)?;
+        write_grid_map(&png, g, files.lamps)?;
         println!("      {}\n      {}", csv.display(), png.display());
+        if let Some((symbol, values)) = df {
+            let png = PathBuf::from(format!("{base}-{symbol}.png"));
+            write_daylight_map(&png, g, values, symbol, files.lamps)?;
+            println!("      {}", png.display());
+        }
     }
     Ok(())
 }

@@ -3,9 +3,12 @@
 //! (`/daylight/probes/{name,sky_component,externally_reflected,internally_reflected,daylight_factor}`,
 //! %) and the daylight factor on every grid (`/daylight/grids/<name>/daylight_factor`,
 //! `nv × nu`, %, with `DF_avg`, `DF_min`, `DF_max` and `uniformity` as attributes); the
-//! attribute `E_h` (lx) is the unobstructed sky's horizontal illuminance they are shares of.
+//! attribute `E_h` (lx) is the unobstructed sky's horizontal illuminance they are shares of,
+//! the attribute `quantity` says whether `E / E_h` is the `"daylight factor"` or the
+//! `"daylight ratio"` (a sky that depends on the sun, or the sun shining; the datasets keep
+//! the name `daylight_factor`).
 
-use super::dataset::{dataset, strings};
+use super::dataset::{dataset, strings, text_attr};
 use crate::readout::daylight::{Daylight, DaylightReadings, stats};
 use crate::readout::grid::GridReading;
 use crate::readout::probe::ProbeReading;
@@ -18,6 +21,7 @@ pub(super) fn write_daylight(
     grids: &[GridReading],
 ) -> hdf5::Result<()> {
     g.new_attr::<f64>().create("E_h")?.write_scalar(&d.horizontal_illuminance)?;
+    text_attr(g, "quantity", d.quantity())?;
     let p = g.create_group("probes")?;
     strings(&p, "name", probes.iter().map(|r| r.name.as_str()))?;
     let column = |f: fn(&Daylight) -> f64| Array1::from_iter(d.probes.iter().map(f));

@@ -39,7 +39,7 @@ pub use estimate_file::{EstimateFile, write_estimate};
 pub use export::{ExportError, Format, export};
 pub use exr_file::{read_exr, write_exr, write_exr_as};
 pub use false_colour::{LEGEND_WIDTH, Scale, colour, position, write_false_colour};
-pub use grid_map::{GridPlan, write_grid_map};
+pub use grid_map::{GridPlan, write_daylight_map, write_grid_map};
 pub use hdf5_file::write_solution;
 pub use isolines::isolines;
 pub use kernel_file::{StoredKernel, read_kernel};

@@ -8,7 +8,9 @@
 //! (`crate::sky::through_window`, one ray per test point); `E` is the probe's or grid
 //! point's illuminance from the solved field (`probe.rs`), and `IRC = E − E_direct`, the
 //! direct light of every source (openings, sun, luminaires) taken away. Under a sky
-//! without sun or luminaires `DF = SC + ERC + IRC`.
+//! without sun or luminaires `DF = SC + ERC + IRC`. `E / E_h` is the daylight factor only
+//! under a sky whose luminance does not depend on the sun, with no sun shining
+//! (`Sky::gives_daylight_factor`); otherwise it is the daylight ratio, and is labelled so.
 
 use crate::geometry::Frame;
 use crate::luminaire::Light;
@@ -99,16 +101,32 @@ pub fn stats(daylight_factor: &[f64], grid: &GridReading) -> DaylightStats {
 pub struct DaylightReadings {
     /// `E_h`, lx: the unobstructed sky's horizontal illuminance every quantity is a share of.
     pub horizontal_illuminance: f64,
+    /// `E / E_h` is the daylight factor (an overcast or uniform sky, no sun), not the
+    /// daylight ratio.
+    pub factor: bool,
     /// One per probe.
     pub probes: Vec<Daylight>,
     /// The daylight factor (%) at every point of every grid, grid by grid.
     pub grids: Vec<Vec<f64>>,
 }
 
+impl DaylightReadings {
+    /// What `E / E_h` is: `"daylight factor"` or `"daylight ratio"`.
+    pub fn quantity(&self) -> &'static str {
+        if self.factor { "daylight factor" } else { "daylight ratio" }
+    }
+
+    /// Its symbol in tables and plans: `"DF"` or `"DR"`.
+    pub fn symbol(&self) -> &'static str {
+        if self.factor { "DF" } else { "DR" }
+    }
+}
+
 /// The daylight at the probes and grids already read, under `sky`.
 pub fn read_daylight(model: &Model, sky: &Sky, probes: &[ProbeReading], grids: &[GridReading]) -> DaylightReadings {
     DaylightReadings {
         horizontal_illuminance: sky.horizontal_illuminance,
+        factor: sky.gives_daylight_factor(),
         probes: probe_daylight(model, sky, probes),
         grids: grids.iter().map(|g| grid_daylight_factor(sky, g)).collect(),
     }

@@ -2,6 +2,7 @@
 //! closed forms, the normalisation by integration, the sun's position.
 
 mod glazing;
+mod labels;
 mod maintenance;
 mod office;
 mod position;
