@@ -28,8 +28,8 @@ pub fn report(d: &DaylightReadings, probes: &[ProbeReading], grids: &[GridReadin
     }
     if !grids.is_empty() {
         println!("    grid                   {x}_avg %   {x}_min %   {x}_max %   {x}_min/{x}_avg");
-        for (g, df) in grids.iter().zip(&d.grids) {
-            let st = stats(df, g);
+        for (i, g) in grids.iter().enumerate() {
+            let st = stats(&d.grid_factor(i), g);
             println!(
                 "    {:<22} {:>8.3} {:>10.3} {:>10.3} {:>10.4}",
                 g.grid.name, st.average, st.min, st.max, st.uniformity

@@ -255,7 +255,8 @@ fn write_grids(
         );
         let base = format!("{stem}-{}", file_name(&g.grid.name));
         let (csv, png) = (PathBuf::from(format!("{base}.csv")), PathBuf::from(format!("{base}.png")));
-        let df = daylight.map(|d| (d.symbol(), d.grids[i].as_slice()));
+        let df = daylight.map(|d| (d.symbol(), d.grid_factor(i)));
+        let df = df.as_ref().map(|(x, values)| (*x, values.as_slice()));
         write_grid_csv(&csv, g, files.surfaces, df)?;
         write_grid_map(&png, g, files.lamps)?;
         println!("      {}\n      {}", csv.display(), png.display());

@@ -15,8 +15,10 @@
 use crate::geometry::Frame;
 use crate::luminaire::Light;
 use crate::model::Model;
+use crate::readout::cylindrical::openings;
 use crate::readout::grid::GridReading;
 use crate::readout::probe::ProbeReading;
+use crate::scene::ProbeKind;
 use crate::sky::{Component, ETA, Sky, through_window};
 use crate::visibility::NO_FACE;
 use glam::DVec3;
@@ -69,7 +71,12 @@ pub fn sky_and_ground(model: &Model, p: DVec3, n: DVec3) -> (f64, f64) {
 /// The daylight at `p` facing `n` whose illuminance is `illuminance` lx, `direct` lx of it
 /// directly from the sources, under `sky`.
 pub fn daylight_at(model: &Model, sky: &Sky, p: DVec3, n: DVec3, illuminance: f64, direct: f64) -> Daylight {
-    let (s, g) = sky_and_ground(model, p, n);
+    components(sky, sky_and_ground(model, p, n), illuminance, direct)
+}
+
+/// The daylight in % of `E_h` of a reading of `illuminance` lx, `direct` lx of it directly
+/// from the sources, `(s, g)` lx of that from the sky and the ground through the openings.
+fn components(sky: &Sky, (s, g): (f64, f64), illuminance: f64, direct: f64) -> Daylight {
     let percent = 100.0 / sky.horizontal_illuminance;
     Daylight {
         sky_component: s * percent,
@@ -79,14 +86,28 @@ pub fn daylight_at(model: &Model, sky: &Sky, p: DVec3, n: DVec3, illuminance: f6
     }
 }
 
-/// The daylight at every probe.
+/// The daylight at every probe; a cylindrical or semi-cylindrical probe's SC and ERC are
+/// the openings' light on its curved side (`cylindrical::openings`), as its reading.
 pub fn probe_daylight(model: &Model, sky: &Sky, probes: &[ProbeReading]) -> Vec<Daylight> {
-    probes.iter().map(|r| daylight_at(model, sky, r.position, r.normal, r.illuminance, r.direct)).collect()
+    probes
+        .iter()
+        .map(|r| {
+            let (p, n) = (r.position, r.normal);
+            let (s, g) = match r.kind {
+                ProbeKind::Cylindrical => openings(model, p, n, None),
+                ProbeKind::SemiCylindrical { axis } => openings(model, p, axis, Some(n)),
+                ProbeKind::Point | ProbeKind::LuminanceMeter { .. } => sky_and_ground(model, p, n),
+            };
+            components(sky, (s, g), r.illuminance, r.direct)
+        })
+        .collect()
 }
 
-/// The daylight factor (%) at every point of a grid.
-pub fn grid_daylight_factor(sky: &Sky, grid: &GridReading) -> Vec<f64> {
-    grid.illuminance.iter().map(|e| 100.0 * e / sky.horizontal_illuminance).collect()
+/// The daylight at every point of a grid.
+pub fn grid_daylight(model: &Model, sky: &Sky, grid: &GridReading) -> Vec<Daylight> {
+    let n = grid.grid.normal;
+    let at = |(p, (e, direct)): (&DVec3, (&f64, &f64))| daylight_at(model, sky, *p, n, *e, *direct);
+    grid.points.iter().zip(grid.illuminance.iter().zip(&grid.direct)).map(at).collect()
 }
 
 /// `DF_avg`, `DF_min`, `DF_max` and the uniformity `DF_min / DF_avg` of equal cells, over
@@ -106,14 +127,19 @@ pub struct DaylightReadings {
     pub factor: bool,
     /// One per probe.
     pub probes: Vec<Daylight>,
-    /// The daylight factor (%) at every point of every grid, grid by grid.
-    pub grids: Vec<Vec<f64>>,
+    /// The daylight at every point of every grid, grid by grid.
+    pub grids: Vec<Vec<Daylight>>,
 }
 
 impl DaylightReadings {
     /// What `E / E_h` is: `"daylight factor"` or `"daylight ratio"`.
     pub fn quantity(&self) -> &'static str {
         if self.factor { "daylight factor" } else { "daylight ratio" }
+    }
+
+    /// The daylight factor (or ratio), %, at every point of grid `g`.
+    pub fn grid_factor(&self, g: usize) -> Vec<f64> {
+        self.grids[g].iter().map(|d| d.daylight_factor).collect()
     }
 
     /// Its symbol in tables and plans: `"DF"` or `"DR"`.
@@ -128,6 +154,6 @@ pub fn read_daylight(model: &Model, sky: &Sky, probes: &[ProbeReading], grids: &
         horizontal_illuminance: sky.horizontal_illuminance,
         factor: sky.gives_daylight_factor(),
         probes: probe_daylight(model, sky, probes),
-        grids: grids.iter().map(|g| grid_daylight_factor(sky, g)).collect(),
+        grids: grids.iter().map(|g| grid_daylight(model, sky, g)).collect(),
     }
 }

@@ -7,7 +7,7 @@
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::readout::field::Field;
-use crate::readout::gather::illuminance_at;
+use crate::readout::gather::illuminance_and_direct_at;
 use crate::readout::obstructed::{Obstruction, obstructions};
 use crate::scene::Grid;
 use glam::DVec3;
@@ -21,6 +21,8 @@ pub struct GridReading {
     pub points: Vec<DVec3>,
     /// lx, one value per point.
     pub illuminance: Vec<f64>,
+    /// The part of `illuminance` directly from the sources, lx.
+    pub direct: Vec<f64>,
     /// Per point, what makes it left out of the statistics (inside a solid, under a
     /// surface nearer than the spacing), or `None` for a point that counts.
     pub obstructed: Vec<Option<Obstruction>>,
@@ -45,16 +47,16 @@ impl GridReading {
     /// The illuminance at every calculation point of `grid`, each point told to `progress`.
     pub fn of(grid: &Grid, model: &Model, field: &Field, progress: &dyn Progress) -> GridReading {
         let points = grid.points();
-        let illuminance = points
+        let (illuminance, direct) = points
             .iter()
             .map(|&p| {
-                let e = illuminance_at(model, field, p, grid.normal);
+                let reading = illuminance_and_direct_at(model, field, p, grid.normal);
                 progress.advance(1);
-                e
+                reading
             })
-            .collect();
+            .unzip();
         let obstructed = obstructions(model, grid, &points);
-        GridReading { grid: grid.clone(), points, illuminance, obstructed }
+        GridReading { grid: grid.clone(), points, illuminance, direct, obstructed }
     }
 
     /// The statistics of the illuminance over the points that count.

@@ -1,6 +1,7 @@
 //! The sky model (`src/sky/`): the CIE distributions against their published values and
 //! closed forms, the normalisation by integration, the sun's position.
 
+mod components;
 mod glazing;
 mod labels;
 mod maintenance;
