@@ -8,8 +8,8 @@ use anyhow::{Context, Result, bail};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 use ugo::io::{
-    MonteCarlo, Run, Solution, convergence_plot, write_daylight_map, write_grid_csv, write_grid_map, write_probes_csv,
-    write_solution,
+    MonteCarlo, Run, Solution, Warning, convergence_plot, one_line, told, write_daylight_map, write_grid_csv,
+    write_grid_map, write_probes_csv, write_solution,
 };
 use ugo::luminaire::{Light, Source};
 use ugo::model::HierarchyRecord;
@@ -68,21 +68,21 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     if let Some(plot) = &job.plot {
         check_writable(plot)?;
     }
-    let study = study::Job { params, ..job.run };
+    let study = study::Job { params, strict, ..job.run };
     let outputs: Vec<&Path> = std::iter::once(output.as_path()).chain(job.plot.as_deref()).collect();
     let s = solve_case(&scene, &study, &Bars::default()).map_err(|e| super::stop::not_written(e, &outputs))?;
     for (method, e) in &s.failures {
         eprintln!("ugo: {} failed: {e}", method.name());
     }
-    for warning in &s.warnings {
-        eprintln!("ugo: warning: {warning}");
+    let (notes, warnings): (Vec<&Warning>, Vec<&Warning>) = s.warnings.iter().partition(|w| w.is_note());
+    for line in told(&warnings, job.stopping.verbose) {
+        eprintln!("ugo: warning: {line}");
     }
-    if strict && !s.warnings.is_empty() {
-        bail!(
-            "--strict: {} warning(s) about the solved field, nothing written: {}",
-            s.warnings.len(),
-            s.warnings.iter().map(ToString::to_string).collect::<Vec<_>>().join("; ")
-        );
+    for line in told(&notes, job.stopping.verbose) {
+        eprintln!("ugo: note: {line}");
+    }
+    if !warnings.is_empty() && !job.stopping.verbose {
+        eprintln!("ugo: the whole text of every warning: --verbose, or /warnings in {}", output.display());
     }
     write_solution(&output, &scene, &s).with_context(|| format!("writing {}", output.display()))?;
     summary(&scene, &s, &output);
@@ -114,6 +114,14 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     if let Some(plot) = &job.plot {
         convergence_plot(plot, &format!("{}: convergence of every method", scene.name), &s.runs)?;
         println!("  plot               {}", plot.display());
+    }
+    if strict && !warnings.is_empty() {
+        bail!(
+            "--strict: {} warning(s) about the solved field (the solution is written with them to {}): {}",
+            warnings.len(),
+            output.display(),
+            warnings.iter().map(|w| one_line(&w.to_string())).collect::<Vec<_>>().join("; ")
+        );
     }
     Ok(())
 }
@@ -197,8 +205,9 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
     println!("  flux absorbed      {:>12.4} lm", e.absorbed);
     println!("  flux escaped       {:>12.4} lm", e.escaped);
     println!("  imbalance          {:>12.3e} (relative to emitted)", e.imbalance / e.emitted);
-    if !s.warnings.is_empty() {
-        println!("  warnings           {:>12}   (on stderr and in /warnings)", s.warnings.len());
+    let warnings = s.warnings.iter().filter(|w| !w.is_note()).count();
+    if warnings > 0 {
+        println!("  warnings           {warnings:>12}   (on stderr and in /warnings)");
     }
     if !s.probes.is_empty() {
         println!("  probes                   luminance cd/m²   illuminance lx   of it direct lx");

@@ -31,6 +31,7 @@ mod spectrum_plot;
 mod ticks;
 mod triptych;
 mod warning;
+mod warning_lines;
 
 pub use basis_plot::basis_plot;
 pub use bytes_file::write_bytes;
@@ -55,5 +56,6 @@ pub use spectrum_plot::{RateLine, spectrum_plot};
 pub use ticks::{log_ticks, round_125, round_top, step, tick_label, ticks};
 pub use triptych::{CAPTION_HEIGHT, write_triptych};
 pub use warning::{LeftOut, NegativeEscape, SensorFault, Warning};
+pub use warning_lines::{LINE, NOTE_SHARE, merged, one_line, told};
 
 use atomic::{atomic, atomic_png};

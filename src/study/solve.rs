@@ -48,6 +48,9 @@ pub struct Job {
     pub kernel_file: Option<PathBuf>,
     /// Keep the kernel's fingerprint so that the output saves it (`--save-kernel`).
     pub save_kernel: bool,
+    /// Refuse, before the solve, a case with a warning that the model alone shows
+    /// (`--strict`; `super::warnings::before_solve`).
+    pub strict: bool,
 }
 
 impl Default for Job {
@@ -64,6 +67,7 @@ impl Default for Job {
             seed: 1,
             kernel_file: None,
             save_kernel: false,
+            strict: false,
         }
     }
 }
@@ -73,6 +77,12 @@ impl Default for Job {
 pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<Solution, StudyError> {
     let methods = if job.methods.is_empty() { vec![scene.solver.method] } else { job.methods.clone() };
     let (model, kernel) = model_with_kernel(scene, job.kernel_file.as_deref(), job.save_kernel, progress)?;
+    if job.strict {
+        let found: Vec<_> = super::warnings::before_solve(scene, &model).into_iter().filter(|w| !w.is_note()).collect();
+        if !found.is_empty() {
+            return Err(StudyError::Strict(found));
+        }
+    }
     let factors =
         job.basis.map(|b| Factorization::new(b, &model.kernel.blocks, &model.kernel.directions)).transpose()?;
     let reduced = factors.as_ref().map(|f| Reduced::new(&model.kernel, f));

@@ -28,6 +28,9 @@
 //! * parallel light (the sun) and a glazed window: the glass's `τ(θ)` and the window's
 //!   maintenance factor apply to the sky and ground it lets in, not to the beam.
 //!
+//! The ones the model alone shows ([`before_solve`]: luminaires, probes, grids, parallel
+//! light through glass) are what `--strict` refuses before solving.
+//!
 //! The rays are stratified with fixed seeds: the same case gives the same warnings.
 
 use crate::geometry::Frame;
@@ -52,15 +55,24 @@ const SENSOR_RAYS: usize = 256;
 /// Share of the emitted flux lost on backs above which it is reported.
 const BACKS: f64 = 0.02;
 
-/// Every warning of the solved field `x` of `model` (of `scene`), with its energy balance.
-pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance) -> Vec<Warning> {
+/// The warnings the model of `scene` shows before any solve: luminaires inside or behind
+/// surfaces, parallel light through glass, probes and grids not in the room, probes near
+/// patches, grids facing away from every source (`--strict` refuses them before solving).
+pub fn before_solve(scene: &Scene, model: &Model) -> Vec<Warning> {
     let mut out = Vec::new();
-    backs(scene, model, x, energy, &mut out);
     luminaires(scene, model, &mut out);
     parallel_through_glass(model, &mut out);
     sensors(scene, model, &mut out);
     out.extend(super::grid_points::facing_away(scene, model));
     super::near::near_patches(scene, model, &mut out);
+    out
+}
+
+/// Every warning of the solved field `x` of `model` (of `scene`), with its energy balance.
+pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance) -> Vec<Warning> {
+    let mut out = Vec::new();
+    backs(scene, model, x, energy, &mut out);
+    out.extend(before_solve(scene, model));
     let shares = || {
         let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
         sent_shares(&model.kernel, &areas, &model.mirrors)
