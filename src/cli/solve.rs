@@ -204,7 +204,10 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
     println!("  flux emitted       {:>12.4} lm", e.emitted);
     println!("  flux absorbed      {:>12.4} lm", e.absorbed);
     println!("  flux escaped       {:>12.4} lm", e.escaped);
-    println!("  imbalance          {:>12.3e} (relative to emitted)", e.imbalance / e.emitted);
+    match e.emitted {
+        0.0 => println!("  imbalance          {:>12.3e} lm (nothing emitted)", e.imbalance),
+        emitted => println!("  imbalance          {:>12.3e} (relative to emitted)", e.imbalance / emitted),
+    }
     let warnings = s.warnings.iter().filter(|w| !w.is_note()).count();
     if warnings > 0 {
         println!("  warnings           {warnings:>12}   (on stderr and in /warnings)");

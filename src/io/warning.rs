@@ -107,6 +107,11 @@ pub enum Warning {
         /// Its normal (the receiving side).
         normal: [f64; 3],
     },
+    /// A window none of whose light lands on a surface.
+    WindowDark {
+        /// The window's name.
+        window: String,
+    },
     /// Parallel light through a glazed window, which does not attenuate it.
     ParallelThroughGlass {
         /// The parallel light's name.
@@ -269,6 +274,11 @@ impl fmt::Display for Warning {
                 "grid \"{grid}\": its receiving side (normal ({x}, {y}, {z})) faces away from every luminaire, sun, \
                  opening and emitting surface, so it reads only light reflected back at it; reverse `normal` (or \
                  swap `edge_u` and `edge_v`)"
+            ),
+            Warning::WindowDark { window } => write!(
+                f,
+                "window \"{window}\" lets in no light: none of it lands on a surface, so no surface sees its \
+                 opening (it lies behind the room's surfaces or away from them); check its `origin` and edges"
             ),
             Warning::ParallelThroughGlass { beam, window, transmittance, incidence } => write!(
                 f,

@@ -9,6 +9,7 @@
 //!   receive most. A ray starts from the patch's centroid, or where that lies inside a
 //!   solid (a patch partly under furniture) from the first of its stratified points outside;
 //!   a patch with none sends no ray;
+//! * a `[[window]]` whose light lands on no surface (no surface sees its opening);
 //! * a luminaire whose light never reaches a front side, or mostly meets backs (inside a
 //!   box, above a ceiling);
 //! * a probe or grid whose normal points into the surface it lies on, or which sees mostly
@@ -61,6 +62,7 @@ const BACKS: f64 = 0.02;
 pub fn before_solve(scene: &Scene, model: &Model) -> Vec<Warning> {
     let mut out = Vec::new();
     luminaires(scene, model, &mut out);
+    dark_windows(model, &mut out);
     parallel_through_glass(model, &mut out);
     sensors(scene, model, &mut out);
     out.extend(super::grid_points::facing_away(scene, model));
@@ -128,6 +130,16 @@ fn parallel_through_glass(model: &Model, out: &mut Vec<Warning>) {
                 transmittance: glazing.transmittance(cos),
                 incidence: cos.acos().to_degrees(),
             });
+        }
+    }
+}
+
+/// Every `[[window]]` none of whose light lands on a surface: no surface sees its opening
+/// (it lies behind the room's surfaces), so it lets in nothing.
+fn dark_windows(model: &Model, out: &mut Vec<Warning>) {
+    for (source, landed) in model.sources.iter().zip(&model.direct.intercepted) {
+        if matches!(source.light, Light::Window { .. }) && *landed <= 0.0 {
+            out.push(Warning::WindowDark { window: source.name.clone() });
         }
     }
 }

@@ -85,3 +85,21 @@ fn a_sky_that_does_not_use_the_sun_needs_no_position_and_one_that_does_is_refuse
         parse("type = \"overcast\"\nsun_altitude_deg = 60\nsun_azimuth_deg = 0\nsun_illuminance = 5e4").unwrap();
     assert!(!sunny.sky.unwrap().gives_daylight_factor(), "the sun shines: a daylight ratio");
 }
+
+/// A `[[window]]` below the floor, whose light lands on no surface, is warned about, and
+/// the summary's imbalance is not NaN (issue 37, point 7).
+#[test]
+fn a_window_no_surface_sees_is_warned_about_and_the_imbalance_is_not_nan() {
+    let turned = case("type = \"overcast\"").replace(
+        "origin = [0, 1, 0]\nedge_u = [1, 0, 0]\nedge_v = [0, 0, 1]",
+        "origin = [0, -1, 0]\nedge_u = [1, 0, 0]\nedge_v = [0, 0, 1]",
+    );
+    let dir = scratch("dark-window");
+    let path = dir.write("room.toml", &turned);
+    let h5 = dir.join("room.h5");
+    let o = ugo(&["solve", path.to_str().unwrap(), "-o", h5.to_str().unwrap()]);
+    let (out, err) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{out}{err}");
+    assert!(err.contains("window \"roof\" lets in no light"), "{err}");
+    assert!(!out.contains("NaN") && out.contains("nothing emitted"), "{out}");
+}
