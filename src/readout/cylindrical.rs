@@ -21,16 +21,16 @@
 //! probe's (`gather.rs`): exact for a uniform enclosure; for the light of a small bright
 //! patch (the worst case: the rule integrates the kink of `max(0, cos)`) within 0.32 % of
 //! `E_z`, and within 0.24 % of the head-on `E_sc`. The openings' light (the sky and the
-//! ground through them, `crate::readout::daylight::sky_and_ground`) is taken on the same
+//! ground through them, `openings.rs`) is taken on the same
 //! vertical planes, exactly on each: it is part of the direct light, and the daylight
 //! components SC and ERC of such a probe are its two parts (so `DF = SC + ERC + IRC`).
 
 use crate::geometry::Frame;
 use crate::luminaire::incoming;
 use crate::model::Model;
-use crate::readout::daylight::sky_and_ground;
 use crate::readout::field::Field;
 use crate::readout::gather::gather;
+use crate::readout::openings::sky_and_ground;
 use crate::visibility::NO_FACE;
 use glam::DVec3;
 use rayon::prelude::*;

@@ -5,22 +5,20 @@
 //! of the unobstructed sky's horizontal illuminance `E_h` (the sun excluded).
 //!
 //! SC and ERC come from the openings piece by piece exactly as the source term does
-//! (`crate::sky::through_window`, one ray per test point); `E` is the probe's or grid
+//! (`openings.rs`); `E` is the probe's or grid
 //! point's illuminance from the solved field (`probe.rs`), and `IRC = E − E_direct`, the
 //! direct light of every source (openings, sun, luminaires) taken away. Under a sky
 //! without sun or luminaires `DF = SC + ERC + IRC`. `E / E_h` is the daylight factor only
 //! under a sky whose luminance does not depend on the sun, with no sun shining
 //! (`Sky::gives_daylight_factor`); otherwise it is the daylight ratio, and is labelled so.
 
-use crate::geometry::Frame;
-use crate::luminaire::Light;
 use crate::model::Model;
 use crate::readout::cylindrical::openings;
 use crate::readout::grid::GridReading;
+use crate::readout::openings::sky_and_ground;
 use crate::readout::probe::ProbeReading;
 use crate::scene::ProbeKind;
-use crate::sky::{Component, ETA, Sky, through_window};
-use crate::visibility::NO_FACE;
+use crate::sky::Sky;
 use glam::DVec3;
 
 /// The daylight at one point, in % of `E_h`.
@@ -47,25 +45,6 @@ pub struct DaylightStats {
     pub max: f64,
     /// `DF_min / DF_avg` (0 when the average is 0).
     pub uniformity: f64,
-}
-
-/// The illuminance (lx) at `p` (receiving side facing the unit `n`) from the sky and from
-/// the ground through every opening of the model: `(SC, ERC)` in lx.
-pub fn sky_and_ground(model: &Model, p: DVec3, n: DVec3) -> (f64, f64) {
-    let patch = model.faces.under(&model.mesh, &model.visibility, p, n);
-    let ignore = patch.map_or(NO_FACE, |i| model.mesh.patches[i].face);
-    let normal = patch.map_or_else(|| Frame::around(n), |i| model.mesh.patches[i].frame()).normal;
-    let sees = |x: DVec3| model.visibility.closest_hit(p, x - p, ignore).is_none();
-    let (mut sky, mut ground) = (0.0, 0.0);
-    for source in &model.sources {
-        if let Light::Window { window, sky: outside } = &source.light {
-            through_window(ETA, outside, window, p, normal, &sees, 0.0, &mut |_, e, component| match component {
-                Component::Sky => sky += e,
-                Component::Ground => ground += e,
-            });
-        }
-    }
-    (sky, ground)
 }
 
 /// The daylight at `p` facing `n` whose illuminance is `illuminance` lx, `direct` lx of it

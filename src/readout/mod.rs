@@ -16,4 +16,5 @@ pub mod luminance;
 pub mod meter;
 pub mod mirrored;
 pub mod obstructed;
+pub mod openings;
 pub mod probe;

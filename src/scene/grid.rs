@@ -2,9 +2,9 @@
 //! calculation points (the evaluation is `crate::readout::grid`). A grid is its corner,
 //! edges and resolution, or the `work_plane` shorthand (`work_plane.rs`).
 
+use super::bounds::surfaces_bounds;
 use super::check::{Context, REL_TOL, show, unique_names};
 use super::error::SceneError;
-use super::plausible::surfaces_bounds;
 use super::work_plane::{RawWorkPlane, work_plane};
 use crate::geometry::Surface;
 use glam::DVec3;

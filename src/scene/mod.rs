@@ -6,6 +6,7 @@
 
 mod arrays;
 mod automatic;
+mod bounds;
 mod check;
 mod description;
 mod discretization;
