@@ -374,7 +374,7 @@ def office():
                  "and a door. Twelve recessed batwing downlights (office-downlight.ies, 3,400 lm each)",
                  "1 cm below the ceiling. Reflectances: floor 0.2, ceiling 0.8, walls 0.6, furniture",
                  "0.05 to 0.8. Probes on the desks and walls, a work plane at 0.75 m (its points",
-                 "inside chair backs, screens and the partition read 0 lx), one camera.",
+                 "inside furniture are left out of its statistics, with a warning), one camera.",
                  "Solved with the hierarchical kernel (roots of 1 m, links to 1e-2, elements down to",
                  "0.125 m: every probe within 0.9 % of Monte Carlo, docs/hierarchy.md); the uniform",
                  "kernel is one option away: --kernel uniform --patch-size 0.25 (slow).",
@@ -451,7 +451,8 @@ def office():
     case.probe("floor, open", (3.0, 0, 3.3), (0, 1, 0))
     case.probe("ceiling, centre", (4.0, h, 3.0), (0, -1, 0))
     # 0.5 m spacing: every grid point costs a gather over all patches. Points that fall
-    # inside a chair back, a screen or the partition read 0 lx (so the plane's U0 is 0).
+    # inside a chair back, a screen or the partition are left out of E_avg, E_min and U0
+    # (readout::obstructed; the one in the partition's panel, with a warning).
     case.grid("work plane", (0.5, 0.75, 0.5), (0, 0, d - 1.0), (w - 1.0, 0, 0), (10, 14), (0, 1, 0))
     case.camera("room", (7.7, 1.65, 5.75), (2.0, 0.6, 1.6), 72, (800, 600))
     return case, books

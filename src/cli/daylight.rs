@@ -1,5 +1,6 @@
 //! The daylight lines of `ugo solve`'s summary: SC, ERC, IRC and DF (%) at every probe, the
-//! daylight factor's statistics on every grid (`docs/daylight.md`).
+//! daylight factor's statistics on every grid (`docs/daylight.md`); under a sky that
+//! depends on the sun, or with the sun, `E / E_h` is the daylight ratio DR and is labelled so.
 
 use ugo::readout::daylight::{DaylightReadings, stats};
 use ugo::readout::grid::GridReading;
@@ -7,23 +8,28 @@ use ugo::readout::probe::ProbeReading;
 
 /// Prints the daylight readouts under `E_h`.
 pub fn report(d: &DaylightReadings, probes: &[ProbeReading], grids: &[GridReading]) {
+    let x = d.symbol();
     println!(
-        "  daylight           E_h = {:.1} lx (the unobstructed sky, no sun); in % of E_h:",
-        d.horizontal_illuminance
+        "  daylight           E_h = {:.1} lx (the unobstructed sky, no sun); in % of E_h, {x} the {}:",
+        d.horizontal_illuminance,
+        d.quantity()
     );
+    if !d.factor {
+        println!("    (this sky depends on the sun, or the sun shines: E/E_h is not the daylight factor)");
+    }
     if !probes.is_empty() {
-        println!("    probe                      SC %      ERC %      IRC %       DF %");
-        for (p, x) in probes.iter().zip(&d.probes) {
+        println!("    probe                      SC %      ERC %      IRC %       {x} %");
+        for (p, y) in probes.iter().zip(&d.probes) {
             println!(
                 "    {:<22} {:>8.3} {:>10.3} {:>10.3} {:>10.3}",
-                p.name, x.sky_component, x.externally_reflected, x.internally_reflected, x.daylight_factor
+                p.name, y.sky_component, y.externally_reflected, y.internally_reflected, y.daylight_factor
             );
         }
     }
     if !grids.is_empty() {
-        println!("    grid                   DF_avg %   DF_min %   DF_max %   DF_min/DF_avg");
-        for (g, df) in grids.iter().zip(&d.grids) {
-            let st = stats(df);
+        println!("    grid                   {x}_avg %   {x}_min %   {x}_max %   {x}_min/{x}_avg");
+        for (i, g) in grids.iter().enumerate() {
+            let st = stats(&d.grid_factor(i), g);
             println!(
                 "    {:<22} {:>8.3} {:>10.3} {:>10.3} {:>10.4}",
                 g.grid.name, st.average, st.min, st.max, st.uniformity

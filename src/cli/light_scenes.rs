@@ -40,7 +40,7 @@ pub fn report(
                 println!("      {:<20} {:>15.4} {:>16.4} {:>17.4}", p.name, p.luminance, p.illuminance, p.direct);
             }
             let csv = PathBuf::from(format!("{base}-probes.csv"));
-            write_probes_csv(&csv, &scene.probes)?;
+            write_probes_csv(&csv, &scene.probes, None)?;
             println!("      {}", csv.display());
         }
         write_grids(&scene.grids, &base)?;

@@ -28,8 +28,20 @@ use ugo::scene::{KernelKind, Scene};
 /// record of its discretization), telling its old spellings and a kernel chosen by size.
 pub fn load(case: &Path, d: &Discretize) -> Result<Scene> {
     let mut scene = Scene::load(case)?;
-    for warning in scene.warnings() {
-        eprintln!("ugo: warning: {warning}");
+    let warnings = scene.warnings();
+    // the same key and message in several tables (a hint on each instance of an OBJ) once
+    let mut alike: Vec<(&ugo::scene::SceneError, usize)> = Vec::new();
+    for w in &warnings {
+        match alike.iter_mut().find(|(f, _)| f.key() == w.key() && f.message() == w.message()) {
+            Some((_, n)) => *n += 1,
+            None => alike.push((w, 1)),
+        }
+    }
+    for (warning, n) in alike {
+        match n {
+            1 => eprintln!("ugo: warning: {warning}"),
+            n => eprintln!("ugo: warning: {warning} (and {} more tables alike)", n - 1),
+        }
     }
     for old in &scene.old_spelling {
         eprintln!("ugo: note: {old}");

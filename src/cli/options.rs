@@ -75,9 +75,14 @@ pub struct Stopping {
     /// Most iterations (default: the case's `[solver]`).
     #[arg(long, allow_negative_numbers = true)]
     pub max_iterations: Option<usize>,
-    /// Turn every warning (the case's and the solved field's) into an error: nothing is written.
+    /// Turn every warning into an error: the case's and those found before the solve stop
+    /// it; those about the solved field stop after the solution is written with them.
     #[arg(long)]
     pub strict: bool,
+    /// Print every warning's whole text (by default one line each; the whole text is in
+    /// the output's /warnings).
+    #[arg(long)]
+    pub verbose: bool,
 }
 
 /// `--directions`.

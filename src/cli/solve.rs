@@ -8,10 +8,12 @@ use anyhow::{Context, Result, bail};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 use ugo::io::{
-    MonteCarlo, Run, Solution, convergence_plot, write_grid_csv, write_grid_map, write_probes_csv, write_solution,
+    MonteCarlo, Run, Solution, Warning, convergence_plot, one_line, told, write_daylight_map, write_grid_csv,
+    write_grid_map, write_probes_csv, write_solution,
 };
 use ugo::luminaire::{Light, Source};
 use ugo::model::HierarchyRecord;
+use ugo::readout::daylight::DaylightReadings;
 use ugo::readout::grid::GridReading;
 use ugo::scene::Scene;
 use ugo::solve::norms::Norms;
@@ -66,34 +68,36 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     if let Some(plot) = &job.plot {
         check_writable(plot)?;
     }
-    let study = study::Job { params, ..job.run };
+    let study = study::Job { params, strict, ..job.run };
     let outputs: Vec<&Path> = std::iter::once(output.as_path()).chain(job.plot.as_deref()).collect();
     let s = solve_case(&scene, &study, &Bars::default()).map_err(|e| super::stop::not_written(e, &outputs))?;
     for (method, e) in &s.failures {
         eprintln!("ugo: {} failed: {e}", method.name());
     }
-    for warning in &s.warnings {
-        eprintln!("ugo: warning: {warning}");
+    let (notes, warnings): (Vec<&Warning>, Vec<&Warning>) = s.warnings.iter().partition(|w| w.is_note());
+    for line in told(&warnings, job.stopping.verbose) {
+        eprintln!("ugo: warning: {line}");
     }
-    if strict && !s.warnings.is_empty() {
-        bail!(
-            "--strict: {} warning(s) about the solved field, nothing written: {}",
-            s.warnings.len(),
-            s.warnings.iter().map(ToString::to_string).collect::<Vec<_>>().join("; ")
-        );
+    for line in told(&notes, job.stopping.verbose) {
+        eprintln!("ugo: note: {line}");
+    }
+    if !warnings.is_empty() && !job.stopping.verbose {
+        eprintln!("ugo: the whole text of every warning: --verbose, or /warnings in {}", output.display());
     }
     write_solution(&output, &scene, &s).with_context(|| format!("writing {}", output.display()))?;
     summary(&scene, &s, &output);
     super::kernel::print_record(&s.kernel);
     let lamps = positions(&s.model.sources);
-    write_grids(&s.grids, &output.with_extension("").display().to_string(), &lamps)?;
+    let names: Vec<String> = scene.surfaces.iter().map(|s| s.name.clone()).collect();
+    let files = GridFiles { lamps: &lamps, surfaces: &names };
+    write_grids(&s.grids, &output.with_extension("").display().to_string(), &files, s.daylight.as_ref())?;
     if !s.probes.is_empty() {
         let csv = super::beside(&output, "-probes.csv");
-        write_probes_csv(&csv, &s.probes)?;
+        write_probes_csv(&csv, &s.probes, s.daylight.as_ref())?;
         println!("  probes             {}", csv.display());
     }
     if let Some(light) = &s.light_scenes {
-        super::light_scenes::report(light, &output, &|grids, stem| write_grids(grids, stem, &lamps))?;
+        super::light_scenes::report(light, &output, &|grids, stem| write_grids(grids, stem, &files, None))?;
     }
     if let Some(orders) = &s.orders {
         print_orders(orders, &s.x);
@@ -110,6 +114,14 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     if let Some(plot) = &job.plot {
         convergence_plot(plot, &format!("{}: convergence of every method", scene.name), &s.runs)?;
         println!("  plot               {}", plot.display());
+    }
+    if strict && !warnings.is_empty() {
+        bail!(
+            "--strict: {} warning(s) about the solved field (the solution is written with them to {}): {}",
+            warnings.len(),
+            output.display(),
+            warnings.iter().map(|w| one_line(&w.to_string())).collect::<Vec<_>>().join("; ")
+        );
     }
     Ok(())
 }
@@ -192,9 +204,13 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
     println!("  flux emitted       {:>12.4} lm", e.emitted);
     println!("  flux absorbed      {:>12.4} lm", e.absorbed);
     println!("  flux escaped       {:>12.4} lm", e.escaped);
-    println!("  imbalance          {:>12.3e} (relative to emitted)", e.imbalance / e.emitted);
-    if !s.warnings.is_empty() {
-        println!("  warnings           {:>12}   (on stderr and in /warnings)", s.warnings.len());
+    match e.emitted {
+        0.0 => println!("  imbalance          {:>12.3e} lm (nothing emitted)", e.imbalance),
+        emitted => println!("  imbalance          {:>12.3e} (relative to emitted)", e.imbalance / emitted),
+    }
+    let warnings = s.warnings.iter().filter(|w| !w.is_note()).count();
+    if warnings > 0 {
+        println!("  warnings           {warnings:>12}   (on stderr and in /warnings)");
     }
     if !s.probes.is_empty() {
         println!("  probes                   luminance cd/m²   illuminance lx   error bar lx   of it direct lx");
@@ -221,20 +237,47 @@ fn positions(sources: &[Source]) -> Vec<DVec3> {
         .collect()
 }
 
-/// Each grid's CSV and plan (`ugo::io::write_grid_map`), `<stem>-<grid>.{csv,png}`.
-fn write_grids(grids: &[GridReading], stem: &str, lamps: &[DVec3]) -> Result<()> {
+/// What every grid's files are drawn with: the luminaires' positions and the surfaces' names.
+struct GridFiles<'a> {
+    lamps: &'a [DVec3],
+    surfaces: &'a [String],
+}
+
+/// Each grid's CSV and plan (`ugo::io::write_grid_map`), `<stem>-<grid>.{csv,png}`, and
+/// under a `[sky]` its daylight factor's (or ratio's) plan `<stem>-<grid>-DF.png` (`-DR`);
+/// the points left out of the statistics counted after them.
+fn write_grids(
+    grids: &[GridReading],
+    stem: &str,
+    files: &GridFiles,
+    daylight: Option<&DaylightReadings>,
+) -> Result<()> {
     if grids.is_empty() {
         return Ok(());
     }
     println!("  grids                      E_avg lx     E_min lx     E_max lx      U0");
-    for g in grids {
+    for (i, g) in grids.iter().enumerate() {
         let st = g.stats();
-        println!("    {:<22} {:>12.4} {:>12.4} {:>12.4} {:>7.4}", g.grid.name, st.average, st.min, st.max, st.u0);
+        let left_out = match g.left_out() {
+            0 => String::new(),
+            n => format!("   ({n} of {} points left out)", g.points.len()),
+        };
+        println!(
+            "    {:<22} {:>12.4} {:>12.4} {:>12.4} {:>7.4}{left_out}",
+            g.grid.name, st.average, st.min, st.max, st.u0
+        );
         let base = format!("{stem}-{}", file_name(&g.grid.name));
         let (csv, png) = (PathBuf::from(format!("{base}.csv")), PathBuf::from(format!("{base}.png")));
-        write_grid_csv(&csv, g)?;
-        write_grid_map(&png, g, lamps)?;
+        let df = daylight.map(|d| (d.symbol(), d.grid_factor(i)));
+        let df = df.as_ref().map(|(x, values)| (*x, values.as_slice()));
+        write_grid_csv(&csv, g, files.surfaces, df)?;
+        write_grid_map(&png, g, files.lamps)?;
         println!("      {}\n      {}", csv.display(), png.display());
+        if let Some((symbol, values)) = df {
+            let png = PathBuf::from(format!("{base}-{symbol}.png"));
+            write_daylight_map(&png, g, values, symbol, files.lamps)?;
+            println!("      {}", png.display());
+        }
     }
     Ok(())
 }

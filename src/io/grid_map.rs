@@ -2,8 +2,11 @@
 //! one: the grid seen from the side its normal points to (`super::plan`, never mirrored),
 //! its cells in false colour with a legend in lx at round values, axes in metres with
 //! round ticks, the grid's outline, the luminaires' positions (circles), the statistics
-//! `E_avg`, `E_min`, `E_max`, `U0` in the title, and on request (`[[grid]] map = { … }`)
+//! `E_avg`, `E_min`, `E_max`, `U0` in the title, the cells of points left out of them
+//! (`readout::obstructed`) hatched in grey and counted in the title, and on request (`[[grid]] map = { … }`)
 //! a log scale, the value of every cell and lines of equal illuminance (isolux lines).
+//! Under a `[sky]` the same plan shows the daylight factor (or ratio) in %
+//! ([`write_daylight_map`], `OUT-<grid>-DF.png`).
 
 use super::IoError;
 use super::false_colour::{Scale, bounds, colour, legend, position};
@@ -74,13 +77,37 @@ fn extent(points: &[DVec2]) -> (DVec2, DVec2) {
     (low, high)
 }
 
-/// Writes the plan of `grid`, with the luminaires at `luminaires` (m), to `path` (PNG).
-pub fn write_grid_map(path: &Path, grid: &GridReading, luminaires: &[DVec3]) -> Result<(), IoError> {
-    let plan = GridPlan::of(grid, luminaires);
-    super::atomic_png(path, |png| draw(png, grid, &plan, luminaires).map_err(|e| e.to_string()))
+/// What a plan shows: one value per point of the grid, its symbol and its unit.
+struct Shown<'a> {
+    values: &'a [f64],
+    symbol: &'a str,
+    unit: &'a str,
 }
 
-fn draw(path: &Path, grid: &GridReading, plan: &GridPlan, luminaires: &[DVec3]) -> Drawn {
+/// Writes the plan of `grid`'s illuminance, with the luminaires at `luminaires` (m), to
+/// `path` (PNG).
+pub fn write_grid_map(path: &Path, grid: &GridReading, luminaires: &[DVec3]) -> Result<(), IoError> {
+    write_map(path, grid, &Shown { values: &grid.illuminance, symbol: "E", unit: "lx" }, luminaires)
+}
+
+/// Writes the plan of the daylight factor (`symbol` `"DF"`) or ratio (`"DR"`) on `grid`, %,
+/// one value per point, to `path` (PNG).
+pub fn write_daylight_map(
+    path: &Path,
+    grid: &GridReading,
+    values: &[f64],
+    symbol: &str,
+    luminaires: &[DVec3],
+) -> Result<(), IoError> {
+    write_map(path, grid, &Shown { values, symbol, unit: "%" }, luminaires)
+}
+
+fn write_map(path: &Path, grid: &GridReading, shown: &Shown, luminaires: &[DVec3]) -> Result<(), IoError> {
+    let plan = GridPlan::of(grid, luminaires);
+    super::atomic_png(path, |png| draw(png, grid, shown, &plan, luminaires).map_err(|e| e.to_string()))
+}
+
+fn draw(path: &Path, grid: &GridReading, shown: &Shown, plan: &GridPlan, luminaires: &[DVec3]) -> Drawn {
     super::plot::register_font();
     let root = BitMapBackend::new(path, plan.size).into_drawing_area();
     root.fill(&WHITE)?;
@@ -89,14 +116,14 @@ fn draw(path: &Path, grid: &GridReading, plan: &GridPlan, luminaires: &[DVec3]) 
         MapScale::Linear => Scale::Linear,
         MapScale::Log => Scale::Log,
     };
-    let range = scale_range(grid, scale);
-    title(&root, grid)?;
-    cells(&root, grid, plan, scale, range)?;
+    let range = scale_range(grid, shown.values, scale);
+    title(&root, grid, shown)?;
+    cells(&root, grid, shown.values, plan, scale, range)?;
     if style.isolines {
-        isolux(&root, grid, plan, scale, range)?;
+        isolux(&root, grid, shown.values, plan, scale, range)?;
     }
     if style.values {
-        values(&root, grid, plan)?;
+        values(&root, grid, shown.values, plan)?;
     }
     let corners: Vec<(i32, i32)> = outline(grid).iter().map(|&p| pixel(plan, p)).collect();
     root.draw(&PathElement::new([&corners[..], &corners[..1]].concat(), BLACK.stroke_width(2)))?;
@@ -104,7 +131,7 @@ fn draw(path: &Path, grid: &GridReading, plan: &GridPlan, luminaires: &[DVec3]) 
     axes(&root, plan)?;
     let [_, top, right, _] = plan.layout.plot;
     let bottom = (plan.size.1 as i32 - BOTTOM).max(top + 200);
-    legend(&root, (right + 40, top, bottom), scale, range, "lx")?;
+    legend(&root, (right + 40, top, bottom), scale, range, shown.unit)?;
     root.present()?;
     Ok(())
 }
@@ -115,12 +142,12 @@ fn pixel(plan: &GridPlan, p: DVec3) -> (i32, i32) {
 }
 
 /// The colour scale: linear from 0 to a round top, or the log scale of the luminance maps.
-fn scale_range(grid: &GridReading, scale: Scale) -> (f64, f64) {
-    let max = grid.illuminance.iter().copied().fold(0.0, f64::max);
+fn scale_range(grid: &GridReading, values: &[f64], scale: Scale) -> (f64, f64) {
+    let max = values.iter().copied().fold(0.0, f64::max);
     match scale {
         Scale::Log => {
             let [nu, nv] = grid.grid.resolution;
-            let (lo, hi) = bounds(&Image { width: nu, height: nv, luminance: grid.illuminance.clone() }, scale);
+            let (lo, hi) = bounds(&Image { width: nu, height: nv, luminance: values.to_vec() }, scale);
             (round_125(lo, false), round_125(hi, true))
         }
         _ if max > 0.0 => (0.0, round_top(0.0, max, 6)),
@@ -138,9 +165,9 @@ fn lux(e: f64) -> String {
     }
 }
 
-fn title(root: &Area, grid: &GridReading) -> Drawn {
+fn title(root: &Area, grid: &GridReading, shown: &Shown) -> Drawn {
     let g = &grid.grid;
-    let st = grid.stats();
+    let st = grid.stats_of(shown.values);
     let n = g.normal;
     let side = match (0..3).find(|&k| n[k].abs() > 1.0 - 1e-9) {
         Some(k) => format!("{}{}", if n[k] > 0.0 { "+" } else { "−" }, ["x", "y", "z"][k]),
@@ -148,8 +175,20 @@ fn title(root: &Area, grid: &GridReading) -> Drawn {
     };
     let [nu, nv] = g.resolution;
     let head = format!("grid \"{}\", {nu} × {nv} points, seen from {side}", g.name);
-    let stats =
-        format!("E_avg {} lx   E_min {} lx   E_max {} lx   U0 {:.2}", lux(st.average), lux(st.min), lux(st.max), st.u0);
+    let left_out = match grid.left_out() {
+        0 => String::new(),
+        1 => "   (hatched: 1 point left out)".to_string(),
+        n => format!("   (hatched: {n} points left out)"),
+    };
+    let (x, unit) = (shown.symbol, shown.unit);
+    let ratio = if x == "E" { "U0".to_string() } else { format!("{x}_min/{x}_avg") };
+    let stats = format!(
+        "{x}_avg {} {unit}   {x}_min {} {unit}   {x}_max {} {unit}   {ratio} {:.2}{left_out}",
+        lux(st.average),
+        lux(st.min),
+        lux(st.max),
+        st.u0
+    );
     root.draw(&Text::new(head, (LEFT, 10), ("sans-serif", 18).into_font().color(&BLACK)))?;
     root.draw(&Text::new(stats, (LEFT, 34), ("sans-serif", 18).into_font().color(&BLACK)))?;
     Ok(())
@@ -183,7 +222,7 @@ impl Cells {
     }
 }
 
-fn cells(root: &Area, grid: &GridReading, plan: &GridPlan, scale: Scale, (lo, hi): (f64, f64)) -> Drawn {
+fn cells(root: &Area, grid: &GridReading, shown: &[f64], plan: &GridPlan, scale: Scale, (lo, hi): (f64, f64)) -> Drawn {
     let [nu, nv] = grid.grid.resolution;
     let on = Cells::of(grid, &plan.frame);
     let [left, top, right, bottom] = plan.layout.plot;
@@ -191,8 +230,14 @@ fn cells(root: &Area, grid: &GridReading, plan: &GridPlan, scale: Scale, (lo, hi
         for x in left..right {
             let Some((a, b)) = on.at(plan.layout.point(x as f64 + 0.5, y as f64 + 0.5)) else { continue };
             let (i, j) = (((a * nu as f64) as usize).min(nu - 1), ((b * nv as f64) as usize).min(nv - 1));
-            let e = grid.illuminance[j * nu + i];
-            root.draw_pixel((x, y), &colour(position(e, lo, hi, scale)))?;
+            let e = shown[j * nu + i];
+            let shade = match grid.obstructed[j * nu + i] {
+                // grey, hatched along the plan's diagonals
+                Some(_) if (x + y).rem_euclid(8) < 2 => RGBColor(110, 110, 110),
+                Some(_) => RGBColor(200, 200, 200),
+                None => colour(position(e, lo, hi, scale)),
+            };
+            root.draw_pixel((x, y), &shade)?;
         }
     }
     root.draw(&Rectangle::new([(left, top), (right, bottom)], RGBColor(160, 160, 160)))?;
@@ -200,7 +245,14 @@ fn cells(root: &Area, grid: &GridReading, plan: &GridPlan, scale: Scale, (lo, hi
 }
 
 /// Lines of equal illuminance at the legend's values inside the scale.
-fn isolux(root: &Area, grid: &GridReading, plan: &GridPlan, scale: Scale, (lo, hi): (f64, f64)) -> Drawn {
+fn isolux(
+    root: &Area,
+    grid: &GridReading,
+    shown: &[f64],
+    plan: &GridPlan,
+    scale: Scale,
+    (lo, hi): (f64, f64),
+) -> Drawn {
     let levels = match scale {
         Scale::Log => log_ticks(lo, hi, 9),
         _ => ticks(lo, hi, 6),
@@ -209,7 +261,7 @@ fn isolux(root: &Area, grid: &GridReading, plan: &GridPlan, scale: Scale, (lo, h
     let resolution = grid.grid.resolution;
     let ink = RGBColor(30, 30, 30);
     for level in levels.into_iter().filter(|&l| l > lo && l < hi) {
-        for segment in isolines(&grid.illuminance, resolution, level) {
+        for segment in isolines(shown, resolution, level) {
             let ends: Vec<(i32, i32)> = segment
                 .iter()
                 .map(|&p| plan.layout.pixel(on.point(p, resolution)))
@@ -222,10 +274,10 @@ fn isolux(root: &Area, grid: &GridReading, plan: &GridPlan, scale: Scale, (lo, h
 }
 
 /// Each cell's value at its centre; every k-th cell where the cells are too small for all.
-fn values(root: &Area, grid: &GridReading, plan: &GridPlan) -> Drawn {
+fn values(root: &Area, grid: &GridReading, shown: &[f64], plan: &GridPlan) -> Drawn {
     let [nu, nv] = grid.grid.resolution;
     let on = Cells::of(grid, &plan.frame);
-    let widest = grid.illuminance.iter().map(|&e| lux(e).len()).max().unwrap_or(1) as f64;
+    let widest = shown.iter().map(|&e| lux(e).len()).max().unwrap_or(1) as f64;
     let cell_u = on.u.length() * plan.layout.scale / nu as f64;
     let cell_v = on.v.length() * plan.layout.scale / nv as f64;
     // A label is about 7 px per character and 14 px tall, whichever way the cells run.
@@ -235,7 +287,7 @@ fn values(root: &Area, grid: &GridReading, plan: &GridPlan) -> Drawn {
     for j in (step_v / 2..nv).step_by(step_v) {
         for i in (step_u / 2..nu).step_by(step_u) {
             let q = plan.layout.pixel(on.point((i as f64, j as f64), [nu, nv]));
-            let text = lux(grid.illuminance[j * nu + i]);
+            let text = lux(shown[j * nu + i]);
             root.draw(&Text::new(text, (q.x.round() as i32, q.y.round() as i32), style.clone()))?;
         }
     }

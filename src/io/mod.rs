@@ -31,6 +31,7 @@ mod spectrum_plot;
 mod ticks;
 mod triptych;
 mod warning;
+mod warning_lines;
 
 pub use basis_plot::basis_plot;
 pub use bytes_file::write_bytes;
@@ -39,7 +40,7 @@ pub use estimate_file::{EstimateFile, write_estimate};
 pub use export::{ExportError, Format, export};
 pub use exr_file::{read_exr, write_exr, write_exr_as};
 pub use false_colour::{LEGEND_WIDTH, Scale, colour, position, write_false_colour};
-pub use grid_map::{GridPlan, write_grid_map};
+pub use grid_map::{GridPlan, write_daylight_map, write_grid_map};
 pub use hdf5_file::write_solution;
 pub use isolines::isolines;
 pub use kernel_file::{StoredKernel, read_kernel};
@@ -54,6 +55,7 @@ pub use spectrum_file::{Mode, read_mode};
 pub use spectrum_plot::{RateLine, spectrum_plot};
 pub use ticks::{log_ticks, round_125, round_top, step, tick_label, ticks};
 pub use triptych::{CAPTION_HEIGHT, write_triptych};
-pub use warning::{NegativeEscape, SensorFault, Warning};
+pub use warning::{LeftOut, NegativeEscape, SensorFault, Warning};
+pub use warning_lines::{LINE, NOTE_SHARE, merged, one_line, told};
 
 use atomic::{atomic, atomic_png};

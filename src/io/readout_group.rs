@@ -19,11 +19,13 @@ pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Re
     dataset(g, "error", &Array1::from_iter(probes.iter().map(|p| p.error.unwrap_or(f64::NAN))))
 }
 
-/// Points and illuminance as `nv × nu` arrays (row `b` runs along `edge_u`).
+/// Points, illuminance and `counted` (1 for a point in the statistics, 0 for one left out,
+/// `readout::obstructed`) as `nv × nu` arrays (row `b` runs along `edge_u`).
 pub(super) fn write_grid(g: &hdf5::Group, grid: &GridReading) -> hdf5::Result<()> {
     let [nu, nv] = grid.grid.resolution;
     dataset(g, "points", &Array3::from_shape_fn((nv, nu, 3), |(b, a, c)| grid.points[b * nu + a][c]))?;
     dataset(g, "illuminance", &Array2::from_shape_fn((nv, nu), |(b, a)| grid.illuminance[b * nu + a]))?;
+    dataset(g, "counted", &Array2::from_shape_fn((nv, nu), |(b, a)| u8::from(grid.obstructed[b * nu + a].is_none())))?;
     let st = grid.stats();
     let n = grid.grid.normal;
     g.new_attr::<f64>().shape(3).create("normal")?.write_raw(&[n.x, n.y, n.z])?;

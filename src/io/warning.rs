@@ -86,6 +86,32 @@ pub enum Warning {
         /// The (at most three) surfaces that see most of it, most first.
         seen_by: Vec<String>,
     },
+    /// Points of a grid left out of its statistics: inside a solid or under a surface
+    /// nearer than the grid's spacing (`readout::obstructed`).
+    GridPointsLeftOut {
+        /// The grid's name.
+        grid: String,
+        /// Points left out.
+        left_out: usize,
+        /// Points of the grid.
+        points: usize,
+        /// The grid's spacing, m.
+        spacing: f64,
+        /// The first few left out.
+        named: Vec<LeftOut>,
+    },
+    /// A grid whose receiving side faces no luminaire, sun, opening or emitting surface.
+    GridFacesAway {
+        /// The grid's name.
+        grid: String,
+        /// Its normal (the receiving side).
+        normal: [f64; 3],
+    },
+    /// A window none of whose light lands on a surface.
+    WindowDark {
+        /// The window's name.
+        window: String,
+    },
     /// Parallel light through a glazed window, which does not attenuate it.
     ParallelThroughGlass {
         /// The parallel light's name.
@@ -120,6 +146,30 @@ pub struct NegativeEscape {
     pub over: f64,
     /// Their deviation from 1 either way, weighted the same, lm.
     pub either: f64,
+}
+
+/// A grid point left out of the statistics: its cell and what stands over it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LeftOut {
+    /// The cell `[u, v]` (as the CSV's columns `u`, `v`).
+    pub cell: [usize; 2],
+    /// The surface met first along the grid's normal.
+    pub surface: String,
+    /// The point is inside that surface's solid (the ray met its back).
+    pub inside: bool,
+    /// Distance to it along the normal, m.
+    pub distance: f64,
+}
+
+impl fmt::Display for LeftOut {
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        let [u, v] = self.cell;
+        if self.inside {
+            write!(f, "(u {u}, v {v}) inside \"{}\"", self.surface)
+        } else {
+            write!(f, "(u {u}, v {v}) {:.3} m under \"{}\"", self.distance, self.surface)
+        }
+    }
 }
 
 /// What is wrong with a sensor (a probe, a grid's point).
@@ -208,6 +258,28 @@ impl fmt::Display for Warning {
                     named.join(", ")
                 )
             }
+            Warning::GridPointsLeftOut { grid, left_out, points, spacing, named } => {
+                let listed: Vec<String> = named.iter().map(ToString::to_string).collect();
+                let more = left_out - named.len();
+                write!(
+                    f,
+                    "grid \"{grid}\": {left_out} of its {points} points left out of E_avg, E_min, E_max and U0, inside \
+                     a solid or under a surface nearer than the spacing {spacing:.3} m: {}{}",
+                    listed.join(", "),
+                    if more > 0 { format!(" and {more} more") } else { String::new() }
+                )
+            }
+            Warning::GridFacesAway { grid, normal: [x, y, z] } => write!(
+                f,
+                "grid \"{grid}\": its receiving side (normal ({x}, {y}, {z})) faces away from every luminaire, sun, \
+                 opening and emitting surface, so it reads only light reflected back at it; reverse `normal` (or \
+                 swap `edge_u` and `edge_v`)"
+            ),
+            Warning::WindowDark { window } => write!(
+                f,
+                "window \"{window}\" lets in no light: none of it lands on a surface, so no surface sees its \
+                 opening (it lies behind the room's surfaces or away from them); check its `origin` and edges"
+            ),
             Warning::ParallelThroughGlass { beam, window, transmittance, incidence } => write!(
                 f,
                 "\"{beam}\" (parallel light) passes the glazed window \"{window}\" unattenuated: the glass's \

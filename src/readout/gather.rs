@@ -36,8 +36,14 @@ use std::f64::consts::PI;
 /// space), the luminaires' direct light included; not corrected near geometry (a grid
 /// point's: `correction.rs` says why).
 pub fn illuminance_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> f64 {
+    illuminance_and_direct_at(model, field, p, n).0
+}
+
+/// [`illuminance_at`] and its part directly from the sources (luminaires, sun, openings), lx.
+pub fn illuminance_and_direct_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (f64, f64) {
     let (_, incident, direct) = incident_at(model, field, p, n);
-    PI * incident.iter().chain(&direct).sum::<f64>()
+    let direct = PI * direct.iter().sum::<f64>();
+    (PI * incident.iter().sum::<f64>() + direct, direct)
 }
 
 /// A receiver at a point: the patch it lies on (if any), the frame its light is binned

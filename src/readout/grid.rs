@@ -1,12 +1,14 @@
 //! Illuminance calculation grids (`[[grid]]`): the illuminance `E = π Σ_d I_d` (lx) at
 //! the centre of every grid cell, gathered from the solved field exactly as a probe's
 //! (`probe.rs`, `docs/design.md` §5), and the statistics lighting designers judge a
-//! lighting scheme by: average, minimum, maximum and the uniformity `U0 = E_min/E_avg`.
+//! lighting scheme by: average, minimum, maximum and the uniformity `U0 = E_min/E_avg`,
+//! over the points that stand in the room (`obstructed.rs` finds the others).
 
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::readout::field::Field;
-use crate::readout::gather::illuminance_at;
+use crate::readout::gather::illuminance_and_direct_at;
+use crate::readout::obstructed::{Obstruction, obstructions};
 use crate::scene::Grid;
 use glam::DVec3;
 
@@ -19,6 +21,11 @@ pub struct GridReading {
     pub points: Vec<DVec3>,
     /// lx, one value per point.
     pub illuminance: Vec<f64>,
+    /// The part of `illuminance` directly from the sources, lx.
+    pub direct: Vec<f64>,
+    /// Per point, what makes it left out of the statistics (inside a solid, under a
+    /// surface nearer than the spacing), or `None` for a point that counts.
+    pub obstructed: Vec<Option<Obstruction>>,
 }
 
 /// Summary of a grid's illuminance, lx (and `u0`, dimensionless).
@@ -32,30 +39,47 @@ pub struct GridStats {
     pub max: f64,
     /// Uniformity `E_min / E_avg` (0 when the average is 0).
     pub u0: f64,
+    /// Points counted (not obstructed); every statistic is NaN when none is.
+    pub counted: usize,
 }
 
 impl GridReading {
     /// The illuminance at every calculation point of `grid`, each point told to `progress`.
     pub fn of(grid: &Grid, model: &Model, field: &Field, progress: &dyn Progress) -> GridReading {
         let points = grid.points();
-        let illuminance = points
+        let (illuminance, direct) = points
             .iter()
             .map(|&p| {
-                let e = illuminance_at(model, field, p, grid.normal);
+                let reading = illuminance_and_direct_at(model, field, p, grid.normal);
                 progress.advance(1);
-                e
+                reading
             })
-            .collect();
-        GridReading { grid: grid.clone(), points, illuminance }
+            .unzip();
+        let obstructed = obstructions(model, grid, &points);
+        GridReading { grid: grid.clone(), points, illuminance, direct, obstructed }
     }
 
-    /// Every point has the same weight: the cells are equal.
+    /// The statistics of the illuminance over the points that count.
     pub fn stats(&self) -> GridStats {
-        let e = &self.illuminance;
+        self.stats_of(&self.illuminance)
+    }
+
+    /// The statistics of `values` (one per point, as the illuminance) over the points that
+    /// count; every point has the same weight: the cells are equal.
+    pub fn stats_of(&self, values: &[f64]) -> GridStats {
+        let e: Vec<f64> = values.iter().zip(&self.obstructed).filter(|(_, o)| o.is_none()).map(|(e, _)| *e).collect();
+        if e.is_empty() {
+            return GridStats { average: f64::NAN, min: f64::NAN, max: f64::NAN, u0: f64::NAN, counted: 0 };
+        }
         let average = e.iter().sum::<f64>() / e.len() as f64;
         let min = e.iter().copied().fold(f64::INFINITY, f64::min);
         let max = e.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        GridStats { average, min, max, u0: if average > 0.0 { min / average } else { 0.0 } }
+        GridStats { average, min, max, u0: if average > 0.0 { min / average } else { 0.0 }, counted: e.len() }
+    }
+
+    /// The points left out of the statistics.
+    pub fn left_out(&self) -> usize {
+        self.obstructed.iter().filter(|o| o.is_some()).count()
     }
 }
 

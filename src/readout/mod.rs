@@ -16,4 +16,6 @@ pub mod illuminance;
 pub mod luminance;
 pub mod meter;
 pub mod mirrored;
+pub mod obstructed;
+pub mod openings;
 pub mod probe;

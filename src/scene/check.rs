@@ -45,21 +45,21 @@ impl<'a> Context<'a> {
     pub(super) fn finite(&self, key: &str, x: f64) -> Result<f64, SceneError> {
         match x.is_finite() {
             true => Ok(x),
-            false => Err(self.error(key, format!("must be a finite number, got {x}"))),
+            false => Err(self.error(key, format!("must be a finite number, got {}", number(x)))),
         }
     }
 
     pub(super) fn positive(&self, key: &str, x: f64) -> Result<f64, SceneError> {
         match self.finite(key, x)? > 0.0 {
             true => Ok(x),
-            false => Err(self.error(key, format!("must be greater than 0, got {x}"))),
+            false => Err(self.error(key, format!("must be greater than 0, got {}", number(x)))),
         }
     }
 
     pub(super) fn non_negative(&self, key: &str, x: f64) -> Result<f64, SceneError> {
         match self.finite(key, x)? >= 0.0 {
             true => Ok(x),
-            false => Err(self.error(key, format!("must be at least 0, got {x}"))),
+            false => Err(self.error(key, format!("must be at least 0, got {}", number(x)))),
         }
     }
 
@@ -114,9 +114,15 @@ pub(super) fn out_of_range(got: String) -> String {
     )
 }
 
-/// `[x, y, z]` as written in TOML.
+/// `[x, y, z]` as written in TOML (each coordinate as [`number`]).
 pub(super) fn show(v: DVec3) -> String {
-    format!("[{}, {}, {}]", v.x, v.y, v.z)
+    format!("[{}, {}, {}]", number(v.x), number(v.y), number(v.z))
+}
+
+/// A number as a message quotes it: as written between 1e-4 and 1e7 in size (and 0),
+/// else in exponent form (`1e308`, not 309 digits).
+pub(super) fn number(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-4..1e7).contains(&x.abs()) { format!("{x}") } else { format!("{x:e}") }
 }
 
 /// Names must be non-empty and unique among the `[[kind]]` tables.

@@ -8,6 +8,7 @@
 //! `link_tolerance` the error its oracle allows a link. Without `kernel` (or with
 //! `kernel = "auto"`) the kernel is chosen by size (`automatic.rs`).
 
+use super::check::number;
 use super::error::SceneError;
 use crate::directions::Scheme;
 use crate::kernel::Precision;
@@ -245,8 +246,10 @@ impl Asked {
         };
         let link_tolerance = at.positive(given, "a number")?;
         if link_tolerance >= 1.0 {
-            let message =
-                format!("must be below 1 (an error per link relative to the mean luminance), got {link_tolerance}");
+            let message = format!(
+                "must be below 1 (an error per link relative to the mean luminance), got {}",
+                number(link_tolerance)
+            );
             return Err(at.error(given.origin, message));
         }
         Ok(Hierarchical { root_size, link_tolerance })
@@ -280,7 +283,9 @@ impl Checker<'_> {
     fn positive(&self, given: Given<f64>, what: &str) -> Result<f64, SceneError> {
         match given.value.is_finite() && given.value > 0.0 {
             true => Ok(given.value),
-            false => Err(self.error(given.origin, format!("must be {what} greater than 0, got {}", given.value))),
+            false => {
+                Err(self.error(given.origin, format!("must be {what} greater than 0, got {}", number(given.value))))
+            }
         }
     }
 }

@@ -1,8 +1,12 @@
 //! `[[grid]]` tables: illuminance calculation grids as written, as validated, and their
-//! calculation points (the evaluation is `crate::readout::grid`).
+//! calculation points (the evaluation is `crate::readout::grid`). A grid is its corner,
+//! edges and resolution, or the `work_plane` shorthand (`work_plane.rs`).
 
+use super::bounds::surfaces_bounds;
 use super::check::{Context, REL_TOL, show, unique_names};
 use super::error::SceneError;
+use super::work_plane::{RawWorkPlane, work_plane};
+use crate::geometry::Surface;
 use glam::DVec3;
 use serde::Deserialize;
 use std::path::Path;
@@ -12,14 +16,16 @@ use std::path::Path;
 #[serde(deny_unknown_fields)]
 pub struct RawGrid {
     pub name: String,
-    #[serde(deserialize_with = "super::arrays::exact")]
-    pub origin: [f64; 3],
-    #[serde(deserialize_with = "super::arrays::exact")]
-    pub edge_u: [f64; 3],
-    #[serde(deserialize_with = "super::arrays::exact")]
-    pub edge_v: [f64; 3],
-    #[serde(deserialize_with = "super::arrays::exact")]
-    pub resolution: [i64; 2],
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub origin: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub edge_u: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub edge_v: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub resolution: Option<[i64; 2]>,
+    #[serde(default)]
+    pub work_plane: Option<RawWorkPlane>,
     #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub normal: Option<[f64; 3]>,
     #[serde(default)]
@@ -83,15 +89,30 @@ impl Grid {
     }
 }
 
-pub(super) fn grids(path: &Path, raw: &[RawGrid]) -> Result<Vec<Grid>, SceneError> {
+pub(super) fn grids(path: &Path, raw: &[RawGrid], surfaces: &[Surface]) -> Result<Vec<Grid>, SceneError> {
     unique_names(path, "grid", raw.iter().map(|g| g.name.as_str()))?;
-    raw.iter().enumerate().map(|(index, g)| grid(&Context::item(path, "grid", &g.name, index), g)).collect()
+    let bounds = surfaces_bounds(surfaces);
+    raw.iter().enumerate().map(|(index, g)| grid(&Context::item(path, "grid", &g.name, index), g, bounds)).collect()
 }
 
-fn grid(at: &Context, g: &RawGrid) -> Result<Grid, SceneError> {
-    let origin = at.place("origin", g.origin)?;
-    let edge_u = at.place("edge_u", g.edge_u)?;
-    let edge_v = at.place("edge_v", g.edge_v)?;
+fn grid(at: &Context, g: &RawGrid, bounds: (DVec3, DVec3)) -> Result<Grid, SceneError> {
+    if let Some(w) = &g.work_plane {
+        let given = [("origin", g.origin.is_some()), ("edge_u", g.edge_u.is_some()), ("edge_v", g.edge_v.is_some())];
+        let given = given.into_iter().chain([("resolution", g.resolution.is_some()), ("normal", g.normal.is_some())]);
+        if let Some((key, _)) = given.into_iter().find(|(_, given)| *given) {
+            return Err(at.error(key, "give `work_plane` or the grid's `origin`, edges and `resolution`, not both"));
+        }
+        let (origin, edge_u, edge_v, resolution) = work_plane(at, w, bounds)?;
+        return Ok(Grid { name: g.name.clone(), origin, edge_u, edge_v, normal: DVec3::Y, resolution, map: g.map });
+    }
+    let needed = |key: &str, value: Option<[f64; 3]>| {
+        value.ok_or_else(|| {
+            at.error(key, "is missing: give it (with the other corner keys) or `work_plane = { height }`")
+        })
+    };
+    let origin = at.place("origin", needed("origin", g.origin)?)?;
+    let edge_u = at.place("edge_u", needed("edge_u", g.edge_u)?)?;
+    let edge_v = at.place("edge_v", needed("edge_v", g.edge_v)?)?;
     let across = edge_u.cross(edge_v);
     if across.length() <= REL_TOL * edge_u.length() * edge_v.length() || across == DVec3::ZERO {
         return Err(at.error("edge_v", "must be non-zero and not parallel to a non-zero `edge_u`"));
@@ -108,7 +129,9 @@ fn grid(at: &Context, g: &RawGrid) -> Result<Grid, SceneError> {
             n
         }
     };
-    let [nu, nv] = g.resolution;
+    let Some([nu, nv]) = g.resolution else {
+        return Err(at.error("resolution", "is missing: give it as [nu, nv] or use `work_plane = { height }`"));
+    };
     let points = |n: i64| usize::try_from(n).ok().filter(|&n| (1..=1000).contains(&n));
     let (Some(nu), Some(nv)) = (points(nu), points(nv)) else {
         return Err(at.error("resolution", format!("must be two point counts from 1 to 1000, got [{nu}, {nv}]")));

@@ -244,5 +244,13 @@ fn light_scene(
             }
         };
     }
+    if factors.iter().all(|&f| f == 0.0) {
+        let message = format!(
+            "{}turns every group off ({}): nothing would light it; give a group a factor above 0",
+            line(source, &raw.name),
+            groups.iter().map(|g| format!("\"{}\"", g.name)).collect::<Vec<_>>().join(", ")
+        );
+        return Err(at.error("groups", message));
+    }
     Ok(LightScene { name: name.clone(), factors })
 }

@@ -6,6 +6,7 @@
 
 mod arrays;
 mod automatic;
+mod bounds;
 mod check;
 mod description;
 mod discretization;
@@ -26,6 +27,7 @@ mod shape_keys;
 mod sky;
 mod surface;
 mod validate;
+mod work_plane;
 
 pub use automatic::{UNIFORM_PAIRS, by_size};
 pub use description::{Camera, Material, Scene, SolverSettings};
@@ -40,6 +42,7 @@ pub use light_scene::{DEFAULT_GROUP, LightGroup, LightScene, Lighting};
 pub use probe::{Probe, ProbeKind};
 pub use schema::RawCamera;
 pub use sky::{DEFAULT_GROUND_REFLECTANCE, DEFAULT_HORIZONTAL_ILLUMINANCE};
+pub use work_plane::{BORDER, en12464_spacing};
 
 use std::path::Path;
 

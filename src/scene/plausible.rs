@@ -4,13 +4,13 @@
 //! long (a model in millimetres read as metres) or thinner than a hair, a reflectance no
 //! paint reaches. Hard limits (overflow, NaN) are errors in `validate`.
 
+use super::bounds::{bounds, surfaces_bounds};
 use super::check::Context;
 use super::description::Scene;
 use super::error::SceneError;
-use crate::geometry::{Emission, Shape, tessellate};
+use crate::geometry::{Emission, Shape};
 use crate::luminaire::LuminaireKind;
 use crate::material::MaterialModel;
-use glam::DVec3;
 
 /// The sun's disc, cd/m²: nothing in a lit scene is brighter.
 const LUMINANCE: f64 = 1.6e9;
@@ -88,8 +88,8 @@ pub fn warnings(scene: &Scene) -> Vec<SceneError> {
             out.push(at.error(key, format!("{length:.4e} m across: lengths are in metres (0.1 mm is {SHORTEST:e} m)")));
         }
     }
-    let whole = scene.surfaces.iter().fold(Bounds::EMPTY, |b, s| b.union(bounds(&s.shape)));
-    let span = (whole.1 - whole.0).length();
+    let (low, high) = surfaces_bounds(&scene.surfaces);
+    let span = (high - low).length();
     if span > LONGEST && !out.iter().any(|w| w.message().contains("lengths are in metres")) {
         out.push(SceneError::new(
             path,
@@ -120,29 +120,6 @@ pub fn warnings(scene: &Scene) -> Vec<SceneError> {
         }
     }
     out
-}
-
-/// A bounding box `(lo, hi)`.
-#[derive(Clone, Copy)]
-struct Bounds(DVec3, DVec3);
-
-impl Bounds {
-    const EMPTY: Bounds = Bounds(DVec3::INFINITY, DVec3::NEG_INFINITY);
-
-    fn union(self, o: Bounds) -> Bounds {
-        Bounds(self.0.min(o.0), self.1.max(o.1))
-    }
-}
-
-/// The bounding box of a shape's coarsest mesh.
-fn bounds(shape: &Shape) -> Bounds {
-    let mut b = Bounds::EMPTY;
-    for e in tessellate(shape, f64::INFINITY) {
-        for &v in e.vertices() {
-            b = b.union(Bounds(v, v));
-        }
-    }
-    b
 }
 
 /// The diagonal of the bounding box of a shape's coarsest mesh, m.

@@ -105,7 +105,8 @@ pub(super) fn daylight(
     if north.y.abs() > REL_TOL {
         return Err(at.error("north", format!("must be horizontal (y = 0; y is up), got {}", show(north))));
     }
-    let position = sun_position(&at, raw)?;
+    let needs_sun = distribution.uses_sun() || raw.sun_illuminance.is_some_and(|e| e != 0.0);
+    let position = sun_position(&at, raw, needs_sun)?;
     let sun = position.direction(north);
     let brightness = match (raw.zenith_luminance, raw.horizontal_illuminance) {
         (Some(_), Some(_)) => {
@@ -146,10 +147,13 @@ pub(super) fn daylight(
     Ok((Some(sky), luminaires))
 }
 
-/// The sun's position: `sun_altitude_deg` and `sun_azimuth_deg`, or the site and time.
-fn sun_position(at: &Context, raw: &RawSky) -> Result<SunPosition, SceneError> {
+/// The sun's position: `sun_altitude_deg` and `sun_azimuth_deg`, or the site and time;
+/// none asked for when `needed` is false (a sky whose luminance does not depend on it, no
+/// sun shining), the zenith standing in then.
+fn sun_position(at: &Context, raw: &RawSky, needed: bool) -> Result<SunPosition, SceneError> {
     let site = [raw.latitude_deg.is_some(), raw.longitude_deg.is_some(), raw.date.is_some(), raw.time.is_some()];
     match (raw.sun_altitude_deg, raw.sun_azimuth_deg) {
+        (None, None) if !needed && !site.contains(&true) => Ok(SunPosition { altitude_deg: 90.0, azimuth_deg: 0.0 }),
         (Some(h), Some(a)) if !site.contains(&true) => {
             let altitude_deg = at.finite("sun_altitude_deg", h)?;
             if altitude_deg.abs() > 90.0 {
@@ -161,7 +165,7 @@ fn sun_position(at: &Context, raw: &RawSky) -> Result<SunPosition, SceneError> {
         _ => Err(at.error(
             "sun_altitude_deg",
             "give the sun as `sun_altitude_deg` and `sun_azimuth_deg`, or as `latitude_deg`, `longitude_deg`, \
-             `date` and `time`",
+             `date` and `time` (this sky's luminance or its `sun_illuminance` depends on where the sun is)",
         )),
     }
 }

@@ -7,7 +7,7 @@
 //! (`[[surface]] "floor" (#3)`) and the key.
 
 use super::automatic::by_size;
-use super::check::{Context, REL_TOL, show, unique_names};
+use super::check::{Context, REL_TOL, number, show, unique_names};
 use super::description::{Camera, Scene, SolverSettings};
 use super::discretization_keys;
 use super::error::SceneError;
@@ -35,7 +35,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let (mut surfaces, surface_tables) = surfaces(path, &source, &raw.surface, &materials, &files)?;
     let probes = probes(path, &raw.probe)?;
     let cameras = cameras(path, &raw.camera)?;
-    let grids = grids(path, &raw.grid)?;
+    let grids = grids(path, &raw.grid, &surfaces)?;
     let (mut luminaires, tables) = luminaires(path, &source, &raw.luminaire, &files)?;
     let (sky, openings) = daylight(path, raw.sky.as_ref(), &raw.window)?;
     if let Some(clash) = openings.iter().find(|o| luminaires.iter().any(|l| l.name == o.name)) {
@@ -98,7 +98,7 @@ fn solver(path: &Path, raw: Option<RawSolver>) -> Result<SolverSettings, SceneEr
     let Some(raw) = raw else { return Ok(default) };
     let tolerance = at.finite("tolerance", raw.tolerance.unwrap_or(default.tolerance))?;
     if tolerance <= 0.0 || tolerance >= 1.0 {
-        let message = format!("must be greater than 0 and less than 1, got {tolerance}");
+        let message = format!("must be greater than 0 and less than 1, got {}", number(tolerance));
         return Err(at.error("tolerance", message));
     }
     let max_iterations = match raw.max_iterations {
@@ -138,7 +138,7 @@ fn camera(at: &Context, c: &RawCamera) -> Result<Camera, SceneError> {
     }
     let fov_deg = at.finite("fov_deg", c.fov_deg.unwrap_or(40.0))?;
     if fov_deg <= 0.0 || fov_deg >= 180.0 {
-        return Err(at.error("fov_deg", format!("must be greater than 0 and less than 180, got {fov_deg}")));
+        return Err(at.error("fov_deg", format!("must be greater than 0 and less than 180, got {}", number(fov_deg))));
     }
     let [w, h] = c.resolution.unwrap_or([512, 512]);
     let pixels = |n: i64| usize::try_from(n).ok().filter(|&n| (1..=16384).contains(&n));

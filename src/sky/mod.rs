@@ -62,6 +62,13 @@ pub enum Brightness {
 }
 
 impl Sky {
+    /// `E / E_h` is the daylight factor proper: the sky's luminance does not depend on the
+    /// sun (the overcast and uniform skies) and no sun shines. Otherwise it is the daylight
+    /// ratio, which depends on the hour and the orientation.
+    pub fn gives_daylight_factor(&self) -> bool {
+        !self.distribution.uses_sun() && self.sun_horizontal == 0.0
+    }
+
     /// The sky of `distribution` with the sun towards `sun`, scaled by `brightness`; the
     /// ground of reflectance `ground_reflectance` is also lit by `sun_horizontal` lx.
     pub fn new(

@@ -67,6 +67,18 @@ impl Distribution {
         }
     }
 
+    /// The luminance depends on where the sun is (CIE S 011's indicatrix `c` or `e` is not
+    /// 0): every general sky but types 1, 3 and 5 (uniform); not the traditional overcast.
+    pub fn uses_sun(&self) -> bool {
+        match self {
+            Distribution::Overcast => false,
+            Distribution::General(t) => {
+                let p = GENERAL[(*t as usize).clamp(1, 15) - 1];
+                p.c != 0.0 || p.e != 0.0
+            }
+        }
+    }
+
     /// The names [`Distribution::parse`] accepts.
     pub const NAMES: &'static str = "1 to 15 (the CIE standard general skies), \"overcast\", \"clear\" or \"uniform\"";
 

@@ -31,4 +31,7 @@ pub enum StudyError {
     /// Every method asked for failed; each with its error.
     #[error("every method failed: {}", .0.iter().map(|(m, e)| format!("{}: {e}", m.name())).collect::<Vec<_>>().join("; "))]
     EveryMethodFailed(Vec<(Method, SolveError)>),
+    /// `--strict`: warnings found before the solve (the model alone shows them).
+    #[error("--strict: {} warning(s) found before the solve, nothing solved or written: {}", .0.len(), .0.iter().map(|w| crate::io::one_line(&w.to_string())).collect::<Vec<_>>().join("; "))]
+    Strict(Vec<crate::io::Warning>),
 }

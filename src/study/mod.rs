@@ -8,6 +8,7 @@
 mod bases;
 pub mod bench;
 mod error;
+mod grid_points;
 mod kernel;
 mod light_scenes;
 mod near;

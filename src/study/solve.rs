@@ -49,6 +49,9 @@ pub struct Job {
     pub kernel_file: Option<PathBuf>,
     /// Keep the kernel's fingerprint so that the output saves it (`--save-kernel`).
     pub save_kernel: bool,
+    /// Refuse, before the solve, a case with a warning that the model alone shows
+    /// (`--strict`; `super::warnings::before_solve`).
+    pub strict: bool,
 }
 
 impl Default for Job {
@@ -65,6 +68,7 @@ impl Default for Job {
             seed: 1,
             kernel_file: None,
             save_kernel: false,
+            strict: false,
         }
     }
 }
@@ -74,6 +78,12 @@ impl Default for Job {
 pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<Solution, StudyError> {
     let methods = if job.methods.is_empty() { vec![scene.solver.method] } else { job.methods.clone() };
     let (model, kernel) = model_with_kernel(scene, job.kernel_file.as_deref(), job.save_kernel, progress)?;
+    if job.strict {
+        let found: Vec<_> = super::warnings::before_solve(scene, &model).into_iter().filter(|w| !w.is_note()).collect();
+        if !found.is_empty() {
+            return Err(StudyError::Strict(found));
+        }
+    }
     let factors =
         job.basis.map(|b| Factorization::new(b, &model.kernel.blocks, &model.kernel.directions)).transpose()?;
     let reduced = factors.as_ref().map(|f| Reduced::new(&model.kernel, f));
@@ -141,6 +151,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         light_scenes: None,
     };
     solved.warnings = super::physics_warnings(scene, &solved.model, &solved.x, &solved.energy);
+    solved.warnings.extend(super::grid_points::left_out(scene, &solved.grids));
     if !scene.lighting.scenes.is_empty() {
         let how = GroupSolves { method: solved.runs[solved.reference].method, params: job.params, warm: true };
         solved.light_scenes = Some(solve_light_scenes(scene, &mut solved.model, &solved.x, &how, progress)?);

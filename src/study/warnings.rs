@@ -9,6 +9,7 @@
 //!   receive most. A ray starts from the patch's centroid, or where that lies inside a
 //!   solid (a patch partly under furniture) from the first of its stratified points outside;
 //!   a patch with none sends no ray;
+//! * a `[[window]]` whose light lands on no surface (no surface sees its opening);
 //! * a luminaire whose light never reaches a front side, or mostly meets backs (inside a
 //!   box, above a ceiling);
 //! * a probe or grid whose normal points into the surface it lies on, or which sees mostly
@@ -23,8 +24,13 @@
 //! * light escaping through a small opening (`openings.rs`): a missing wall or a gap;
 //! * a probe closer to a patch than `near::NEAR` of the patch's size (`near.rs`): it
 //!   reads the patch's mean where it sees mostly its nearest part;
+//! * a grid facing away from every source (`grid_points.rs`; its points left out of the
+//!   statistics are warned about from its readings, in the same file);
 //! * parallel light (the sun) and a glazed window: the glass's `τ(θ)` and the window's
 //!   maintenance factor apply to the sky and ground it lets in, not to the beam.
+//!
+//! The ones the model alone shows ([`before_solve`]: luminaires, probes, grids, parallel
+//! light through glass) are what `--strict` refuses before solving.
 //!
 //! The rays are stratified with fixed seeds: the same case gives the same warnings.
 
@@ -50,14 +56,25 @@ const SENSOR_RAYS: usize = 256;
 /// Share of the emitted flux lost on backs above which it is reported.
 const BACKS: f64 = 0.02;
 
+/// The warnings the model of `scene` shows before any solve: luminaires inside or behind
+/// surfaces, parallel light through glass, probes and grids not in the room, probes near
+/// patches, grids facing away from every source (`--strict` refuses them before solving).
+pub fn before_solve(scene: &Scene, model: &Model) -> Vec<Warning> {
+    let mut out = Vec::new();
+    luminaires(scene, model, &mut out);
+    dark_windows(model, &mut out);
+    parallel_through_glass(model, &mut out);
+    sensors(scene, model, &mut out);
+    out.extend(super::grid_points::facing_away(scene, model));
+    super::near::near_patches(scene, model, &mut out);
+    out
+}
+
 /// Every warning of the solved field `x` of `model` (of `scene`), with its energy balance.
 pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance) -> Vec<Warning> {
     let mut out = Vec::new();
     backs(scene, model, x, energy, &mut out);
-    luminaires(scene, model, &mut out);
-    parallel_through_glass(model, &mut out);
-    sensors(scene, model, &mut out);
-    super::near::near_patches(scene, model, &mut out);
+    out.extend(before_solve(scene, model));
     let shares = || {
         let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
         sent_shares(&model.kernel, &areas, &model.mirrors)
@@ -113,6 +130,16 @@ fn parallel_through_glass(model: &Model, out: &mut Vec<Warning>) {
                 transmittance: glazing.transmittance(cos),
                 incidence: cos.acos().to_degrees(),
             });
+        }
+    }
+}
+
+/// Every `[[window]]` none of whose light lands on a surface: no surface sees its opening
+/// (it lies behind the room's surfaces), so it lets in nothing.
+fn dark_windows(model: &Model, out: &mut Vec<Warning>) {
+    for (source, landed) in model.sources.iter().zip(&model.direct.intercepted) {
+        if matches!(source.light, Light::Window { .. }) && *landed <= 0.0 {
+            out.push(Warning::WindowDark { window: source.name.clone() });
         }
     }
 }

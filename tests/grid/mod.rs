@@ -2,6 +2,8 @@
 //! closed-form point-to-rectangle factor, the statistics, and `ugo solve` writing the
 //! CSVs (grid and probes) and the map.
 
+mod points;
+
 use crate::support::{build, corner_factor, lambert, rectangle, scene, scratch, solve, surface, ugo};
 use glam::DVec3;
 use std::f64::consts::PI;
@@ -127,7 +129,7 @@ fn solve_writes_each_grid_as_csv_and_a_map_in_lux() {
     let rows: Vec<Vec<f64>> = csv
         .lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with('u'))
-        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .map(|l| l.split(',').take(7).map(|v| v.parse().unwrap()).collect())
         .collect();
     assert_eq!(rows.len(), 18);
     for r in &rows {
@@ -135,6 +137,7 @@ fn solve_writes_each_grid_as_csv_and_a_map_in_lux() {
         assert!((r[5] / reference - 1.0).abs() < 1e-2, "{r:?}: closed form {reference}");
     }
     assert!(csv.contains("# E_avg") && csv.contains("U0"), "{csv}");
+    assert!(rows.iter().all(|r| r[6] == 1.0) && csv.contains("u,v,x,y,z,E_lx,counted,left_out_by"), "{csv}");
     let map = image::open(dir.join("lamp-work_plane.png")).unwrap();
     assert!(map.width() > 400 && map.height() >= 240);
     let probes = std::fs::read_to_string(dir.join("lamp-probes.csv")).unwrap();
@@ -145,6 +148,8 @@ fn solve_writes_each_grid_as_csv_and_a_map_in_lux() {
     let file = hdf5::File::open(&h5).unwrap();
     let e = file.dataset("grids/work plane/illuminance").unwrap().read_2d::<f64>().unwrap();
     assert_eq!(e.shape(), [3, 6]);
+    let counted = file.dataset("grids/work plane/counted").unwrap().read_2d::<u8>().unwrap();
+    assert!(counted.shape() == [3, 6] && counted.iter().all(|&c| c == 1));
     let avg: f64 = file.group("grids/work plane").unwrap().attr("E_avg").unwrap().read_scalar().unwrap();
     assert!((avg - rows.iter().map(|r| r[5]).sum::<f64>() / 18.0).abs() < 1e-6 * avg);
 }

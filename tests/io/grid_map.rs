@@ -24,7 +24,7 @@ fn reading(edge_u: DVec3, edge_v: DVec3, normal: DVec3, (i, j): (usize, usize)) 
     let points = grid.points();
     let mut illuminance = vec![10.0; 32];
     illuminance[j * 8 + i] = 100.0;
-    GridReading { grid, points, illuminance }
+    GridReading { grid, points, illuminance, direct: vec![0.0; 32], obstructed: vec![None; 32] }
 }
 
 /// Where the brightest cell is drawn, relative to the plot's centre: (+1 right, +1 up).

@@ -145,3 +145,12 @@ fn a_misspelled_key_of_a_light_scene_is_refused() {
     assert!(error.to_string().contains("unknown field `gruops`"), "{error}");
     assert!(error.table().contains("light_scene"), "{error}");
 }
+
+#[test]
+fn a_light_scene_that_turns_every_group_off_is_refused() {
+    let text = grouped("\n[[light_scene]]\nname = \"dark\"\ngroups = { left = 0, ceiling = false }\n");
+    let line = line_of(&text, "name = \"dark\"");
+    let error = rejected(&text);
+    assert_error(&error, "[[light_scene]] \"dark\" (#1)", "groups", &[&line, "turns every group off", "\"left\""]);
+    assert!(parse(&grouped("\n[[light_scene]]\nname = \"dim\"\ngroups = { left = 0.01 }\n")).is_ok());
+}

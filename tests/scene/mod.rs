@@ -15,6 +15,7 @@ mod rooms;
 mod sky;
 mod valid;
 mod validation_errors;
+mod work_plane;
 
 use std::path::Path;
 use ugo::scene::{Scene, SceneError};

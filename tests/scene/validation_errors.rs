@@ -315,5 +315,18 @@ fn grid_defaults_and_rules() {
     let flat = grid("resolution = [4, 2]").replace("edge_v = [0, 0, 1]", "edge_v = [4, 0, 0]");
     assert_error(&rejected(&flat), at, "edge_v", &["parallel"]);
     let missing = rejected(&grid(""));
-    assert!(missing.to_string().contains("missing field `resolution`"), "{missing}");
+    assert_error(&missing, at, "resolution", &["is missing", "work_plane"]);
+}
+
+/// A huge or tiny number is quoted in exponent form, not with hundreds of digits (issue 37,
+/// point 7).
+#[test]
+fn huge_and_tiny_numbers_are_quoted_in_exponent_form() {
+    let error = rejected(&lit("[solver]\ntolerance = 1e308\n"));
+    assert_error(&error, "[solver]", "tolerance", &["got 1e308"]);
+    assert!(error.message().len() < 80, "{error}");
+    let error = rejected(&format!("{LAMP}{}", BASE.replace("patch_size = 0.1", "patch_size = -1e-300")));
+    assert!(error.to_string().contains("got -1e-300") && error.to_string().len() < 200, "{error}");
+    let error = rejected(&lit("[solver]\ntolerance = 2\n"));
+    assert_error(&error, "[solver]", "tolerance", &["got 2"]);
 }

@@ -1,7 +1,9 @@
 //! The sky model (`src/sky/`): the CIE distributions against their published values and
 //! closed forms, the normalisation by integration, the sun's position.
 
+mod components;
 mod glazing;
+mod labels;
 mod maintenance;
 mod office;
 mod position;

@@ -50,13 +50,15 @@ fn the_daylit_office_receives_the_flux_of_its_window_and_its_components_add_up()
         front.daylight_factor > d.probes[1].daylight_factor
             && d.probes[1].daylight_factor > d.probes[2].daylight_factor
     );
-    let st = stats(&d.grids[0]);
+    let st = stats(&d.grid_factor(0), &grids[0]);
     eprintln!(
         "work plane: DF_avg {:.3} %, DF_min {:.3} %, DF_max {:.3} %, U0 {:.3}",
         st.average, st.min, st.max, st.uniformity
     );
     assert!(st.min <= st.average && st.average <= st.max && (st.uniformity - st.min / st.average).abs() < 1e-12);
-    for (df, e) in d.grids[0].iter().zip(&grids[0].illuminance) {
-        assert!((df - 100.0 * e / 10_000.0).abs() < 1e-12);
+    for (x, e) in d.grids[0].iter().zip(&grids[0].illuminance) {
+        assert!((x.daylight_factor - 100.0 * e / 10_000.0).abs() < 1e-12);
+        let sum = x.sky_component + x.externally_reflected + x.internally_reflected;
+        assert!((sum - x.daylight_factor).abs() < 1e-9 * x.daylight_factor, "a grid point's components add up");
     }
 }

@@ -218,3 +218,72 @@ fn a_probe_in_the_near_field_of_a_patch_is_reported_with_the_patch() {
         near[0]
     );
 }
+
+/// A warning's one-line form is its first sentence, at most `LINE` characters; identical
+/// lines are merged with their count; a small negative escaped flux is a note.
+#[test]
+fn warnings_are_told_in_one_line_merged_and_a_small_negative_escape_is_a_note() {
+    use ugo::io::{LINE, NOTE_SHARE, NegativeEscape, merged, one_line, told};
+    assert_eq!(one_line("first part; second. third"), "first part");
+    assert_eq!(one_line("a. b; c"), "a");
+    let long = "x".repeat(3 * LINE);
+    assert_eq!(one_line(&long).chars().count(), LINE);
+    assert!(one_line(&long).ends_with('…'));
+    let lines = ["a", "b", "a", "a"].map(String::from);
+    assert_eq!(merged(lines), [("a".to_string(), 3), ("b".to_string(), 1)]);
+    let escape = |escaped: f64, either: f64| {
+        Warning::NegativeEscape(NegativeEscape {
+            escaped,
+            emitted: 1000.0,
+            luminaires: None,
+            low: 0.99,
+            high: 1.01,
+            worst: None,
+            over: 0.0,
+            either,
+        })
+    };
+    // the classroom's −0.088 %: a note; 1 % of the flux emitted, either way: a warning
+    assert!(escape(-0.88, 0.9).is_note());
+    assert!(!escape(-NOTE_SHARE * 1000.0, 0.9).is_note() && !escape(-0.88, NOTE_SHARE * 1000.0).is_note());
+    let probe =
+        Warning::Probe { probe: "p".into(), fault: ugo::io::SensorFault::IntoSurface { surface: "floor".into() } };
+    assert!(!probe.is_note());
+    let both = [&probe, &probe];
+    let lines = told(&both, false);
+    assert_eq!(lines.len(), 1);
+    assert!(lines[0].ends_with("(×2)") && !lines[0].contains("readings are not of the room"), "{lines:?}");
+    assert!(told(&both, true)[0].contains("its readings are not of the room"));
+}
+
+/// `--strict` stops before the solve for a warning the model shows (nothing written), and
+/// after it for one about the solved field, with the solution written with its warnings;
+/// a warning is one line on the terminal unless `--verbose`.
+#[test]
+fn strict_fails_before_the_solve_or_writes_the_solution_and_verbose_gives_the_whole_text() {
+    use crate::support::{scratch, ugo};
+    let dir = scratch("strict-warnings");
+    let run = |name: &str, text: &str, flags: &[&str]| {
+        let case = dir.write(&format!("{name}.toml"), text);
+        let out = dir.join(format!("{name}.h5"));
+        let args = [&["solve", case.to_str().unwrap(), "-o", out.to_str().unwrap()], flags].concat();
+        let o = ugo(&args);
+        (o.status.success(), String::from_utf8_lossy(&o.stderr).into_owned(), out)
+    };
+    // a probe facing into the floor: found before the solve
+    let probe = "[[probe]]\nname = \"down\"\nposition = [0.5, 0, 0.5]\nnormal = [0, -1, 0]\n";
+    let (ok, err, out) = run("before", &room(false, probe), &["--strict"]);
+    assert!(!ok && err.contains("before the solve") && err.contains("\"down\""), "{err}");
+    assert!(!out.exists(), "nothing written");
+    // the floor facing the wrong way: light lost on its back, found in the solved field
+    let (ok, err, out) = run("after", &room(true, ""), &["--strict"]);
+    assert!(!ok && err.contains("the solution is written with them"), "{err}");
+    let file = hdf5::File::open(&out).unwrap();
+    let stored: Vec<hdf5::types::VarLenUnicode> = file.dataset("warnings").unwrap().read_raw().unwrap();
+    let whole = stored.iter().find(|w| w.as_str().contains("back of one-sided")).unwrap().to_string();
+    assert!(whole.contains("two_sided"), "the whole text in /warnings: {whole}");
+    let warning_lines: Vec<&str> = err.lines().filter(|l| l.contains("back of one-sided")).collect();
+    assert!(warning_lines.iter().all(|l| !l.contains("two_sided")), "one line: {err}");
+    let (ok, err, _) = run("verbose", &room(true, ""), &["--verbose"]);
+    assert!(ok && err.contains("two_sided"), "--verbose gives the whole text: {err}");
+}
