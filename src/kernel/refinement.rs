@@ -9,7 +9,7 @@
 //! factor `‖L0‖/‖r‖` by which it may relax its relative tolerance for the same absolute
 //! one. Each pass's record is made here, from the work the hierarchy counts.
 
-use super::hierarchy::{Hierarchy, Pass, Work};
+use super::hierarchy::{Hierarchy, Pass, Stopped, Work};
 use super::operator::{Factored, Kernel};
 use crate::geometry::Mesh;
 use std::time::Instant;
@@ -38,7 +38,7 @@ pub struct Refined {
 
 /// Solves, refines and solves again until a pass refines nothing or `options.passes`
 /// passes ran.
-pub fn refine_with_solves<E>(
+pub fn refine_with_solves<E: From<Stopped>>(
     hierarchy: &mut Hierarchy,
     source: &mut SourceTerm<E>,
     solve: &mut Solver<E>,
@@ -51,7 +51,7 @@ pub fn refine_with_solves<E>(
     let mut history = vec![record(hierarchy, &kernel, 0, 1, &mut before, start)];
     while history.len() < hierarchy.options().passes {
         let solved_on = hierarchy.tree().leaves();
-        let refined = hierarchy.refine(&x);
+        let refined = hierarchy.refine(&x)?;
         if refined == 0 {
             break;
         }

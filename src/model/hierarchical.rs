@@ -84,11 +84,15 @@ pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -
     let root_light_seconds = t.elapsed().as_secs_f64();
     let mut light_seconds = 0.0;
     let t = Instant::now();
-    let hierarchy_options =
-        Options { tolerance: parameters.link_tolerance, patch_size: d.patch_size, ..Options::default() };
+    let hierarchy_options = Options {
+        tolerance: parameters.link_tolerance,
+        patch_size: d.patch_size,
+        memory_limit: d.memory_limit,
+        ..Options::default()
+    };
     // The passes grow in cost as the links multiply: counted, with no time left forecast.
     progress.begin("refinement", 0);
-    let mut h = Hierarchy::new(&roots, directions.clone(), blocks.clone(), hierarchy_options, &root_l0);
+    let mut h = Hierarchy::new(&roots, directions.clone(), blocks.clone(), hierarchy_options, &root_l0)?;
     let mut cache = LightCache { lights: Vec::new() };
     let mut pass = 0;
     let mut source = |h: &mut Hierarchy| -> Result<Vec<f64>, ModelError> {

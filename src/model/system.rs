@@ -5,7 +5,7 @@
 use super::range::OutOfRange;
 use crate::geometry::Mesh;
 use crate::interrupt::Interrupted;
-use crate::kernel::hierarchy::{Census, Pass};
+use crate::kernel::hierarchy::{Census, Pass, Stopped};
 use crate::kernel::{BalanceReport, Kernel, TooLarge};
 use crate::luminaire::{DirectLight, Source};
 use crate::material::MaterialModel;
@@ -31,6 +31,15 @@ pub enum ModelError {
     /// A solve between the hierarchy's refinement passes failed.
     #[error("refining the hierarchical kernel: {0}")]
     Refinement(#[from] SolveError),
+}
+
+impl From<Stopped> for ModelError {
+    fn from(stopped: Stopped) -> Self {
+        match stopped {
+            Stopped::Interrupted(i) => ModelError::Interrupted(i),
+            Stopped::TooLarge(t) => ModelError::TooLarge(t),
+        }
+    }
 }
 
 /// Timings and counts of the assembly.

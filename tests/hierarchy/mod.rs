@@ -6,6 +6,7 @@ mod clusters;
 mod coverage;
 mod explicit;
 mod growth;
+mod memory;
 mod model;
 mod monte_carlo;
 mod open_box;
@@ -32,7 +33,7 @@ pub fn hierarchy(scene: &Scene, root_size: f64, directions: DirectionSet, option
     let blocks = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
     let k = directions.len();
     let l0: Vec<f64> = roots.emission.iter().flat_map(|&e| std::iter::repeat_n(e, k)).collect();
-    Hierarchy::new(&roots, directions, blocks, options, &l0)
+    Hierarchy::new(&roots, directions, blocks, options, &l0).expect("the linking fits in memory")
 }
 
 /// Options with `tolerance` and `patch_size` (m, the finest leaves), the rest default.
@@ -52,8 +53,13 @@ pub fn solver(method: Method) -> impl FnMut(&Kernel, &[f64], f64) -> Result<Vec<
 
 /// Solves and refines in passes with `method`: the field and the kernel on the final leaves.
 pub fn solved(h: &mut Hierarchy, method: Method) -> (Vec<f64>, Kernel) {
+    type Failure = Box<dyn std::error::Error + Send + Sync>;
+    let mut solve = solver(method);
     let Refined { x, kernel, history, .. } =
-        refine_with_solves(h, &mut |h| Ok(h.emission()), &mut solver(method)).expect("the solve converges");
+        refine_with_solves(h, &mut |h| Ok::<_, Failure>(h.emission()), &mut |k: &Kernel, b: &[f64], s: f64| {
+            solve(k, b, s).map_err(Failure::from)
+        })
+        .expect("the solve converges");
     eprintln!("passes: {history:?}");
     (x, kernel)
 }

@@ -13,6 +13,7 @@ use super::memo::Memo;
 use super::node::NONE;
 use super::options::Options;
 use super::oracle::Oracle;
+use super::refine::Stopped;
 use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
@@ -46,8 +47,15 @@ impl Hierarchy {
     /// The roots are the patches of `roots` (e.g. `Mesh::build(scene, root_size)`), with
     /// one block per material; `l0` is the source term on the roots (`x[root·K + k]`,
     /// cd/m²), which with the ambient term of its interreflections is the first guess of
-    /// the field. Links start from the top cluster's self-link.
-    pub fn new(roots: &Mesh, directions: DirectionSet, blocks: Vec<Block>, options: Options, l0: &[f64]) -> Hierarchy {
+    /// the field. Links start from the top cluster's self-link; the linking stops with the
+    /// reason on a signal or beyond `options.memory_limit`.
+    pub fn new(
+        roots: &Mesh,
+        directions: DirectionSet,
+        blocks: Vec<Block>,
+        options: Options,
+        l0: &[f64],
+    ) -> Result<Hierarchy, Stopped> {
         let start = Instant::now();
         let albedo: Vec<f64> = blocks.iter().map(|b| largest_albedo(b, &directions)).collect();
         let visibility = Visibility::build(roots);
@@ -73,9 +81,9 @@ impl Hierarchy {
         let mut brightness = h.brightness(&roots, &guess);
         let top = h.tree.top();
         let candidates = if top == NONE { Vec::new() } else { vec![(top, top)] };
-        h.refine_candidates(&mut brightness, candidates);
+        h.refine_candidates(&mut brightness, candidates)?;
         h.work.seconds += start.elapsed().as_secs_f64();
-        h
+        Ok(h)
     }
 
     /// The element trees and the cluster tree above them.

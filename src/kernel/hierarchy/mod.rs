@@ -42,5 +42,6 @@ pub use operator::Operator;
 pub use options::{DEFAULT_TOLERANCE, Options};
 pub use oracle::sample_points;
 pub use push::SeenCache;
+pub use refine::Stopped;
 pub use sight::Sight;
 pub use tree::Tree;

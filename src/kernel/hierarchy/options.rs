@@ -1,6 +1,6 @@
 //! How the hierarchical kernel refines (`docs/design.md` §3b, "Oracle"): the link tolerance,
-//! the finest patches, the element factors' quadrature, the most passes, and whether the
-//! operator is balanced; one default each.
+//! the finest patches, the element factors' quadrature, the most passes, whether the
+//! operator is balanced and the memory it may take; one default each.
 
 use crate::transfer::form_factor::Quadrature;
 
@@ -29,6 +29,9 @@ pub struct Options {
     /// Balance the operator to the leaves' closures (`balance.rs`). Default true; off, the
     /// links' own row and column sums stand.
     pub balance: bool,
+    /// Bytes the links, the candidates and the tree may take: refinement stops with a
+    /// refusal when a round would start beyond it. Default half the machine's memory.
+    pub memory_limit: u64,
 }
 
 impl Default for Options {
@@ -39,6 +42,7 @@ impl Default for Options {
             quadrature: Quadrature { eta: 1.0, max_depth: 4 },
             passes: 4,
             balance: true,
+            memory_limit: crate::kernel::memory::default_limit(),
         }
     }
 }

@@ -4,6 +4,8 @@
 //! children's pairs are the next round's candidates, until no candidate is left. A candidate
 //! `(p, q)` covers every pair of a leaf under `p` and a leaf under `q`, and its children's
 //! pairs partition that set, so every pair of leaves stays covered by exactly one link.
+//! Every round starts only if no signal asked to stop and the links, candidates and tree
+//! fit in the memory limit; else refinement stops with the reason ([`Stopped`]).
 
 use super::link::{Link, cluster_factor, element_factor};
 use super::node::Node;
@@ -12,6 +14,9 @@ use super::sight::{Sight, sight, stand_in_sight, stand_ins};
 use super::tree::{Exposure, Tree};
 use crate::directions::DirectionSet;
 use crate::geometry::{Patch, facing};
+use crate::interrupt::Interrupted;
+use crate::kernel::TooLarge;
+use crate::kernel::memory::Footprint;
 use crate::transfer::exposure::Backs;
 use crate::transfer::form_factor::{Binning, Quadrature};
 use crate::transfer::occlusion::polygon_points;
@@ -30,6 +35,19 @@ pub struct Settings<'a> {
     pub quadrature: &'a Quadrature,
     /// The direction cells factors are split by.
     pub directions: &'a DirectionSet,
+    /// Bytes the refinement may take.
+    pub memory_limit: u64,
+}
+
+/// Why refinement stopped before every candidate was settled.
+#[derive(Debug, thiserror::Error)]
+pub enum Stopped {
+    /// A signal asked the process to stop.
+    #[error(transparent)]
+    Interrupted(#[from] Interrupted),
+    /// The next round would not fit in the memory limit.
+    #[error(transparent)]
+    TooLarge(#[from] TooLarge),
 }
 
 /// What became of one candidate.
@@ -47,10 +65,15 @@ pub fn refine(
     settings: &Settings,
     mut candidates: Vec<(u32, u32)>,
     links: &mut Vec<Link>,
-) -> usize {
+) -> Result<usize, Stopped> {
     let binning = (settings.directions.len() > 1).then(|| Binning::new(settings.directions));
     let mut rays = 0;
     while !candidates.is_empty() {
+        let (held, pending) = (links.len(), candidates.len());
+        crate::interrupt::check(|| {
+            format!("the hierarchical kernel's linking ({held} links, {pending} candidate pairs to settle)")
+        })?;
+        footprint(tree, held, pending, settings.directions.len()).check(settings.memory_limit)?;
         let outcomes: Vec<(Outcome, usize)> = candidates
             .par_iter()
             .map_init(
@@ -73,7 +96,21 @@ pub fn refine(
             children_pairs(tree, p, q, n, &mut candidates);
         }
     }
-    rays
+    Ok(rays)
+}
+
+/// What a round holds: the links so far, and the candidates, each of which may become a
+/// link or split into up to four pairs; with the tree's nodes.
+fn footprint(tree: &Tree, links: usize, candidates: usize, cells: usize) -> Footprint {
+    let pairs = links + 4 * candidates;
+    let bytes = (pairs * size_of::<Link>() + tree.len() * size_of::<Node>()) as f64;
+    Footprint {
+        what: "hierarchical kernel's linking (links, candidate pairs and elements)",
+        bytes,
+        nonzeros: pairs as f64,
+        patches: tree.len(),
+        cells,
+    }
 }
 
 /// Splits `n` (a no-op for a cluster or an element already split); new nodes inherit
