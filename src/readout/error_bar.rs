@@ -18,8 +18,8 @@
 //!
 //! `δE = |ΔE_near − ΔE/(1 − ρ̄)| + 2σ`.
 //!
-//! It is a bar, not a correction: with 64 rays its noise (`2σ`, about 1 % of the reading on
-//! the Cornell box) exceeds the error it finds on most probes; added to the reading it would
+//! It is a bar, not a correction: with 64 rays its noise (`2σ`, 1.3 % of the reading on
+//! average on the Cornell box's hard probes, 1.9 % on the open box's) exceeds the error it finds on most probes; added to the reading it would
 //! make the Cornell box's hard probes worse (`docs/accuracy.md`, "Error bars"). Each ray
 //! costs a gather, so a probe costs [`RAYS`] gathers; grids have no bar.
 
@@ -29,7 +29,7 @@ use crate::progress::Progress;
 use crate::random::Stratified;
 use crate::readout::field::Field;
 use crate::readout::gather::Receiver;
-use crate::readout::glossy::{is_diffuse, stream};
+use crate::readout::glossy::{ModelSurroundings, is_diffuse, stream};
 use crate::readout::luminance::gathered;
 use crate::readout::probe::ProbeReading;
 use crate::scene::ProbeKind;
@@ -79,12 +79,13 @@ pub fn estimate_errors(readings: &mut [ProbeReading], model: &Model, field: &Fie
 /// The residual at `p` on a receiver facing the unit `n`, over `rays` directions.
 pub fn residual(model: &Model, field: &Field, p: DVec3, n: DVec3, rays: usize) -> Residual {
     let at = Receiver::at(model, p, n);
+    let stored = ModelSurroundings::new(model, field);
     let set = Stratified::new(rays, &mut stream(p, n));
     let samples: Vec<(f64, f64)> = (0..rays)
         .into_par_iter()
         .map(|r| {
             let [u, v] = set.point(r);
-            seen(model, field, p, at.frame.world(cosine_direction(u, v)), at.ignore)
+            seen(&stored, p, at.frame.world(cosine_direction(u, v)), at.ignore)
         })
         .collect();
     let m = rays as f64;
@@ -94,10 +95,12 @@ pub fn residual(model: &Model, field: &Field, p: DVec3, n: DVec3, rays: usize) -
     Residual { illuminance: mean, standard_error: (variance / m).sqrt(), albedo }
 }
 
-/// `(π (L_gathered − L_h), ρ)` of the point `p` sees along `w` (ignoring face `ignore`):
+/// `(π (L_gathered − L_h), ρ)` of the point `p` sees along `w` (ignoring face `ignore`),
+/// `L_h` as `stored` holds it:
 /// zero for a miss, the back of a surface, and a surface that is not Lambertian (a glossy
 /// surface's reading is relit already, a mirror's is its images').
-fn seen(model: &Model, field: &Field, p: DVec3, w: DVec3, ignore: u32) -> (f64, f64) {
+fn seen(stored: &ModelSurroundings, p: DVec3, w: DVec3, ignore: u32) -> (f64, f64) {
+    let (model, field) = (stored.model, stored.field);
     let sphere = model.kernel.directions.is_sphere();
     let Some((j, y)) = model.faces.landing_patch(&model.mesh, &model.visibility, p, w, ignore, sphere) else {
         return (0.0, 0.0);
@@ -106,8 +109,6 @@ fn seen(model: &Model, field: &Field, p: DVec3, w: DVec3, ignore: u32) -> (f64, 
     if s.normal.dot(w) >= 0.0 || !is_diffuse(&model.materials[s.material as usize]) {
         return (0.0, 0.0);
     }
-    let directions = &model.kernel.directions;
-    let stored = field.at(j, directions.lookup(s.frame().local(-w)));
-    let albedo = model.kernel.blocks[model.kernel.patch_material[j] as usize].albedo(0, directions).0;
-    (PI * (gathered(model, field, j, y, -w) - stored), albedo)
+    let albedo = model.kernel.blocks[model.kernel.patch_material[j] as usize].albedo(0, &model.kernel.directions).0;
+    (PI * (gathered(model, field, j, y, -w) - stored.stored(j, w)), albedo)
 }

@@ -8,8 +8,8 @@
 //! whatever the distance), or any face nearer than the spacing (a desk top over the plane).
 
 use crate::model::Model;
+use crate::readout::gather::Receiver;
 use crate::scene::Grid;
-use crate::visibility::NO_FACE;
 use glam::DVec3;
 
 /// Why a grid point is left out: the surface over it and how.
@@ -33,7 +33,7 @@ pub fn spacing(grid: &Grid) -> f64 {
 /// wide, if it is to be left out.
 pub fn obstruction(model: &Model, p: DVec3, n: DVec3, spacing: f64) -> Option<Obstruction> {
     let (mesh, faces) = (&model.mesh, &model.faces);
-    let ignore = faces.under(mesh, &model.visibility, p, n).map_or(NO_FACE, |i| mesh.patches[i].face);
+    let ignore = Receiver::at(model, p, n).ignore;
     let hit = faces.landing(mesh, &model.visibility, p, n, ignore)?;
     let distance = (hit.point - p).dot(n);
     let inside = hit.facing.is_none();

@@ -4,19 +4,17 @@
 //! externally reflected component ERC of a point sensor, and of each vertical plane of a
 //! cylindrical probe (`cylindrical.rs`).
 
-use crate::geometry::Frame;
 use crate::luminaire::Light;
 use crate::model::Model;
+use crate::readout::gather::Receiver;
 use crate::sky::{Component, ETA, through_window};
-use crate::visibility::NO_FACE;
 use glam::DVec3;
 
 /// The illuminance (lx) at `p` (receiving side facing the unit `n`) from the sky and from
 /// the ground through every opening of the model: `(SC, ERC)` in lx.
 pub fn sky_and_ground(model: &Model, p: DVec3, n: DVec3) -> (f64, f64) {
-    let patch = model.faces.under(&model.mesh, &model.visibility, p, n);
-    let ignore = patch.map_or(NO_FACE, |i| model.mesh.patches[i].face);
-    let normal = patch.map_or_else(|| Frame::around(n), |i| model.mesh.patches[i].frame()).normal;
+    let Receiver { frame, ignore, .. } = Receiver::at(model, p, n);
+    let normal = frame.normal;
     let sees = |x: DVec3| model.visibility.closest_hit(p, x - p, ignore).is_none();
     let (mut sky, mut ground) = (0.0, 0.0);
     for source in &model.sources {
