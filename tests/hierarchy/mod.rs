@@ -1,6 +1,7 @@
 //! The hierarchical kernel (`docs/design.md` §3b) against the uniform kernel on the same leaves,
 //! closed forms, and its own invariants (coverage of leaf pairs, growth of links).
 
+mod bundles;
 mod closure;
 mod clusters;
 mod coverage;

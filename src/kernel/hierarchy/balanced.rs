@@ -8,7 +8,8 @@ impl Hierarchy {
     /// `G` on the current leaves, balanced to their closures unless `options.balance` is
     /// off (the rays of new leaves' closures count in the work).
     pub fn operator(&mut self) -> Operator {
-        let mut operator = Operator::new(&self.tree, &self.links, &self.directions, &mut self.memo.seen);
+        let mut operator =
+            Operator::new(&self.tree, &self.visibility, &self.links, &self.directions, &mut self.memo.seen);
         if self.options.balance {
             let leaves = operator.leaves().to_vec();
             self.work.rays += self.memo.measure_closure(&self.tree, &self.backs, &self.visibility, &leaves);

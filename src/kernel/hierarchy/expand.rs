@@ -1,6 +1,6 @@
 //! The hierarchy's `G` written out on the leaves (`docs/design.md` §3b, "Apply K x" read as a
 //! matrix): for the methods and norms that need the explicit product `B·G`. Row `(a, d)` of leaf
-//! `a` sums, over each ancestor `p` that gathers (with `a`'s push share `w`) and each piece
+//! `a` sums, over each bundle of an ancestor `p` (with `a`'s push share `w`) and each piece
 //! `f` of `p`'s links from `q`, `w f` times the pull weight `ω_b` of every leaf `b` under
 //! `q` (the product of area shares down the tree): in `b`'s cell `m` when `q` is an
 //! element, spread as `μ_m/π` over all `b`'s cells when `q` is a cluster (whose value is
@@ -16,9 +16,9 @@ impl Operator {
     /// (a column may come twice when two cell pieces meet; callers sum).
     pub fn for_each_in_row(&self, row: usize, mut f: impl FnMut(usize, f64)) {
         let (k, a, d) = (self.k, row / self.k, row % self.k);
-        for &(pos, w) in &self.push[self.push_row[a]..self.push_row[a + 1]] {
-            let (pos, w) = (pos as usize, w * self.receive[a]);
-            for e in &self.entries[self.row[pos]..self.row[pos + 1]] {
+        for &(bundle, w) in &self.push[self.push_row[a]..self.push_row[a + 1]] {
+            let (bundle, w) = (bundle as usize, w * self.receive[a]);
+            for e in &self.entries[self.row[bundle]..self.row[bundle + 1]] {
                 let c = match e.d {
                     ALL_CELLS => w * e.f * self.share[d],
                     cell if cell as usize == d => w * e.f,
@@ -41,9 +41,9 @@ impl Operator {
     pub fn row_len(&self, row: usize) -> usize {
         let (k, a, d) = (self.k, row / self.k, row % self.k);
         let mut count = 0;
-        for &(pos, _) in &self.push[self.push_row[a]..self.push_row[a + 1]] {
-            let pos = pos as usize;
-            for e in &self.entries[self.row[pos]..self.row[pos + 1]] {
+        for &(bundle, _) in &self.push[self.push_row[a]..self.push_row[a + 1]] {
+            let bundle = bundle as usize;
+            for e in &self.entries[self.row[bundle]..self.row[bundle + 1]] {
                 if e.d == ALL_CELLS || e.d as usize == d {
                     let source = e.source as usize;
                     let leaves = self.leaf_range(source).len();

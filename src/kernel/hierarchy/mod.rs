@@ -13,6 +13,7 @@
 
 mod balance;
 mod balanced;
+mod bundle;
 mod census;
 mod cluster;
 mod expand;

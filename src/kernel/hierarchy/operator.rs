@@ -7,12 +7,14 @@
 //! sweep; gather (over receivers) and push (over leaves) run in parallel. Nothing is
 //! allocated per application.
 
+use super::bundle::Bundles;
 use super::link::{ALL_CELLS, Link};
 use super::node::{Kind, NONE};
 use super::push::{SeenCache, push_rows};
 use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::kernel::BalanceReport;
+use crate::visibility::Visibility;
 use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::sync::Mutex;
@@ -26,7 +28,7 @@ pub(super) struct Entry {
     pub(super) f: f64,
 }
 
-/// Work arrays: `nodes × K` (means, gathered light) and `leaves × K` (sent light), shared
+/// Work arrays: `nodes × K` (means), `bundles × K` (gathered light) and `leaves × K` (sent light), shared
 /// by `G x` and `Gᵀ y` (`transpose.rs`).
 pub(super) struct Scratch {
     sent: Vec<f64>,
@@ -41,7 +43,7 @@ pub struct Operator {
     leaves: Vec<u32>,
     /// Depth-first position of each leaf (ascending).
     pub(super) leaf_position: Vec<u32>,
-    /// Each leaf's ancestors with links and its share of their light (CSR, `push.rs`).
+    /// The bundles each leaf's ancestors receive and its share of their light (CSR, `push.rs`).
     pub(super) push_row: Vec<usize>,
     pub(super) push: Vec<(u32, f64)>,
     /// By depth-first position: parent position ([`NONE`] at the top), area share in the
@@ -53,7 +55,7 @@ pub struct Operator {
     /// a cluster (for the expansion, `expand.rs`).
     pub(super) subtree_end: Vec<u32>,
     pub(super) cluster: Vec<bool>,
-    /// Gathered pieces by receiver position (CSR).
+    /// Gathered pieces by bundle (CSR, `bundle.rs`).
     pub(super) row: Vec<usize>,
     pub(super) entries: Vec<Entry>,
     links: usize,
@@ -69,9 +71,15 @@ pub struct Operator {
 }
 
 impl Operator {
-    /// The operator of `links` over the leaves of `tree`; the push's weights are kept in
-    /// `seen` from one build to the next.
-    pub fn new(tree: &Tree, links: &[Link], directions: &DirectionSet, seen: &mut SeenCache) -> Operator {
+    /// The operator of `links` over the leaves of `tree` (whose faces `visibility` holds);
+    /// the push's weights are kept in `seen` from one build to the next.
+    pub fn new(
+        tree: &Tree,
+        visibility: &Visibility,
+        links: &[Link],
+        directions: &DirectionSet,
+        seen: &mut SeenCache,
+    ) -> Operator {
         let k = directions.len();
         let order = tree.preorder();
         let mut position = vec![NONE; tree.len()];
@@ -83,8 +91,9 @@ impl Operator {
         let subtree_end = subtree_ends(&parent);
         let leaves: Vec<u32> = order.iter().copied().filter(|&id| tree.node(id).is_leaf()).collect();
         let leaf_position = leaves.iter().map(|&id| position[id as usize]).collect();
-        let (push_row, push) = push_rows(tree, links, &position, &leaves, seen);
-        let (row, entries) = gather_rows(links, &position, order.len());
+        let bundles = Bundles::new(tree, links, &position);
+        let (push_row, push) = push_rows(tree, visibility, links, &bundles, &leaves, seen);
+        let (row, entries) = gather_rows(links, &bundles, &position);
         let (nodes, dim) = (order.len(), leaves.len() * k);
         Operator {
             k,
@@ -107,7 +116,7 @@ impl Operator {
             scratch: Mutex::new(Scratch {
                 sent: vec![0.0; dim],
                 mean: vec![0.0; nodes * k],
-                gathered: vec![0.0; nodes * k],
+                gathered: vec![0.0; bundles.len() * k],
             }),
         }
     }
@@ -193,12 +202,12 @@ impl Operator {
         }
     }
 
-    /// `z_p = Σ_q F_pq x̄_q` over every node's links, in parallel over receivers.
+    /// `z_b = Σ_q F_pq x̄_q` over every bundle's links, in parallel over bundles.
     fn gather(&self, mean: &[f64], gathered: &mut [f64]) {
         let k = self.k;
-        gathered.par_chunks_mut(k).enumerate().for_each(|(pos, z)| {
+        gathered.par_chunks_mut(k).enumerate().for_each(|(b, z)| {
             z.fill(0.0);
-            for e in &self.entries[self.row[pos]..self.row[pos + 1]] {
+            for e in &self.entries[self.row[b]..self.row[b + 1]] {
                 let v = e.f * mean[e.source as usize * k + e.m as usize];
                 if e.d == ALL_CELLS {
                     z.iter_mut().zip(&self.share).for_each(|(z, s)| *z += v * s);
@@ -209,14 +218,14 @@ impl Operator {
         });
     }
 
-    /// Every leaf's share of the light gathered at its ancestors (times its receiving
+    /// Every leaf's share of the light its ancestors' bundles gathered (times its receiving
     /// factor), in parallel over leaves.
     fn push(&self, gathered: &[f64], arriving: &mut [f64]) {
         let k = self.k;
         arriving.par_chunks_mut(k).enumerate().for_each(|(l, z)| {
             z.fill(0.0);
-            for &(pos, w) in &self.push[self.push_row[l]..self.push_row[l + 1]] {
-                let g = &gathered[pos as usize * k..(pos as usize + 1) * k];
+            for &(b, w) in &self.push[self.push_row[l]..self.push_row[l + 1]] {
+                let g = &gathered[b as usize * k..(b as usize + 1) * k];
                 let w = w * self.receive[l];
                 z.iter_mut().zip(g).for_each(|(z, g)| *z += w * g);
             }
@@ -252,28 +261,21 @@ fn subtree_ends(parent: &[u32]) -> Vec<u32> {
     end
 }
 
-/// The links' pieces as CSR rows by receiver position.
-fn gather_rows(links: &[Link], position: &[u32], nodes: usize) -> (Vec<usize>, Vec<Entry>) {
-    let pieces = |l: &Link| l.pieces.len().max(1);
-    let mut row = vec![0usize; nodes + 1];
-    for l in links {
-        row[position[l.receiver as usize] as usize + 1] += pieces(l);
+/// The links' pieces as CSR rows by bundle.
+fn gather_rows(links: &[Link], bundles: &Bundles, position: &[u32]) -> (Vec<usize>, Vec<Entry>) {
+    let pieces = |l: u32| links[l as usize].pieces.len().max(1);
+    let mut row = Vec::with_capacity(bundles.len() + 1);
+    row.push(0);
+    for b in 0..bundles.len() {
+        row.push(row[b] + bundles.links_of(b).iter().map(|&l| pieces(l)).sum::<usize>());
     }
-    for r in 0..nodes {
-        row[r + 1] += row[r];
-    }
-    let mut fill = row.clone();
-    let mut entries = vec![Entry { source: 0, d: 0, m: 0, f: 0.0 }; row[nodes]];
-    for l in links {
-        let r = position[l.receiver as usize] as usize;
+    let mut entries = Vec::with_capacity(row[bundles.len()]);
+    for &l in &bundles.links {
+        let l = &links[l as usize];
         let source = position[l.source as usize];
-        let mut put = |d: u16, m: u16, f: f64| {
-            entries[fill[r]] = Entry { source, d, m, f };
-            fill[r] += 1;
-        };
         match l.pieces.is_empty() {
-            true => put(0, 0, l.factor),
-            false => l.pieces.iter().for_each(|&(d, m, f)| put(d, m, f)),
+            true => entries.push(Entry { source, d: 0, m: 0, f: l.factor }),
+            false => entries.extend(l.pieces.iter().map(|&(d, m, f)| Entry { source, d, m, f })),
         }
     }
     (row, entries)

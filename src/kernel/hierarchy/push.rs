@@ -1,58 +1,65 @@
 //! The push of `docs/design.md` §3b ("each node's gathered value added to all its leaves"),
-//! weighted by each leaf's own view of the node's sources. A link `(a, q)` holds the factor
-//! averaged over `a`; a leaf `i` of `a` sees `q` more or less than that average (a leaf by a
-//! corner sees the adjacent walls more). Each leaf takes the share `w_ia` of the light
-//! gathered at its ancestor `a`, from `S_ia = Σ_q v_aq F̄_{i→q}`: the exact point factors
-//! to `a`'s sources averaged over the leaf's four stratified points (a cluster source counts
+//! weighted by each leaf's own view of the sources of each bundle its ancestors gather
+//! (`bundle.rs`, (3b.5)). A link `(a, q)` holds the factor averaged over `a`; a leaf `i` of
+//! `a` sees `q` more or less than that average (a leaf by a corner sees the adjacent walls
+//! more). Each leaf takes the share `w_iab` of the light gathered in bundle `b` of its
+//! ancestor `a`, from `S_iab = Σ_{q ∈ b} v_aq F̄_{i→q}`: the exact point factors to the
+//! bundle's sources averaged over the leaf's four stratified points, with the leaf's own
+//! visible fraction of a source the ancestor sees partly (a cluster source counts
 //! with its link factor; under a cluster ancestor with the leaf's own projected area towards it
 //! instead of the cluster's, so that an element facing away gets nothing, Sillion 1995).
 //!
-//! * Under an element, `w_ia = S_ia / S̄_a`, `S̄_a` the area-weighted mean of `S_ia` over the
-//!   leaves of `a`: the light `a` gathers with its accurate factors is distributed, never
-//!   created or lost. For a source field uniform over `a`'s sources every leaf gets its own
-//!   view, so the leaves of a closed scene close whatever the level of their links (the
-//!   first-order variation of the factors over `a` is corrected for any field).
-//! * Under a cluster, whose factors are estimates, `w_ia = S_ia / C_a` with `C_a = Σ_q F_aq`:
-//!   each leaf gets its own estimate `S_ia x̄_q` (normalising by `S̄_a` instead was measured
-//!   worse: CIE 171 5.8 at ρ = 0.95 and tolerance 1e-2 absorbs 7.0 % too much flux, against
-//!   2.3 % this way).
+//! * Under an element, `w_iab = S_iab / S̄_ab`, `S̄_ab` the area-weighted mean of `S_iab` over
+//!   the leaves of `a`: the light `a` gathers with its accurate factors is distributed, never
+//!   created or lost. For a source field uniform over the bundle's sources every leaf gets its
+//!   own view, so the leaves of a closed scene close whatever the level of their links; for
+//!   any other field the shares are right only as far as the bundle's sources are alike,
+//!   which is why emitters are a bundle of their own.
+//! * Under a cluster, whose factors are estimates, `w_iab = S_iab / C_ab` with
+//!   `C_ab = Σ_{q ∈ b} F_aq`: each leaf gets its own estimate `S_iab x̄_q` (normalising by
+//!   `S̄_ab` instead was measured worse: CIE 171 5.8 at ρ = 0.95 and tolerance 1e-2 absorbs
+//!   7.0 % too much flux, against 2.3 % this way).
 //!
-//! `S_ia` depends only on the leaf and on the links `a` receives, and a refinement pass after
+//! `S_iab` depends only on the leaf and on the bundle's links, and a refinement pass after
 //! the first changes a few thousand of a million links: each build keeps every leaf's
-//! `S_ia` with a fingerprint of `a`'s links ([`SeenCache`]) and reuses it while the
+//! `S_iab` with a fingerprint of the bundle's links ([`SeenCache`]) and reuses it while the
 //! fingerprint holds (the lecture hall's later builds: 3.1–3.5 s each before).
 
+use super::bundle::Bundles;
 use super::link::{Link, axis};
 use super::node::NONE;
+use super::sight::Sight;
 use super::tree::Tree;
 use crate::geometry::Patch;
 use crate::random::mix;
 use crate::transfer::contour::point_to_patch;
-use crate::transfer::occlusion::polygon_points;
+use crate::transfer::occlusion::{polygon_points, visible_fraction};
+use crate::visibility::{NO_BLOCKER, Visibility};
 use rayon::prelude::*;
 
-/// Each leaf's `S_ia` of the last build, by leaf node id: `(a, fingerprint of a's links, S_ia)`.
+/// Each leaf's `S_iab` of the last build, by leaf node id: `(a, fingerprint of the bundle's
+/// links, S_iab)`.
 #[derive(Debug, Default)]
 pub struct SeenCache {
     rows: Vec<Vec<(u32, u64, f64)>>,
 }
 
-/// For each leaf (in `leaves` order), its ancestors with links (themselves included) as
-/// `(depth-first position, weight)`, CSR; `cache` is read and replaced.
+/// For each leaf (in `leaves` order), the bundles its ancestors (itself included) receive,
+/// as `(bundle, weight)`, CSR; `cache` is read and replaced.
 pub fn push_rows(
     tree: &Tree,
+    visibility: &Visibility,
     links: &[Link],
-    position: &[u32],
+    bundles: &Bundles,
     leaves: &[u32],
     cache: &mut SeenCache,
 ) -> (Vec<usize>, Vec<(u32, f64)>) {
-    let by_receiver = links_by_receiver(tree.len(), links);
-    let own = |a: u32| &by_receiver.1[by_receiver.0[a as usize]..by_receiver.0[a as usize + 1]];
-    let fingerprints: Vec<u64> = (0..tree.len() as u32).into_par_iter().map(|a| fingerprint(links, own(a))).collect();
+    let fingerprints: Vec<u64> =
+        (0..bundles.len()).into_par_iter().map(|b| fingerprint(links, bundles.links_of(b))).collect();
     let previous = std::mem::take(&mut cache.rows);
-    let cached = |leaf: u32, a: u32| {
+    let cached = |leaf: u32, a: u32, b: usize| {
         let row = previous.get(leaf as usize)?;
-        row.iter().find(|e| e.0 == a && e.1 == fingerprints[a as usize]).map(|e| e.2)
+        row.iter().find(|e| e.0 == a && e.1 == fingerprints[b]).map(|e| e.2)
     };
     let rows: Vec<Vec<(u32, u64, f64)>> = leaves
         .par_iter()
@@ -61,9 +68,10 @@ pub fn push_rows(
             let Some(patch) = tree.node(leaf).patch().filter(|p| p.exposed > 0.0) else { return row };
             let mut a = leaf;
             while a != NONE {
-                if !own(a).is_empty() {
-                    let s = cached(leaf, a).unwrap_or_else(|| seen(tree, links, own(a), a, patch));
-                    row.push((a, fingerprints[a as usize], s));
+                for b in bundles.of_node(a) {
+                    let s = cached(leaf, a, b)
+                        .unwrap_or_else(|| seen(tree, visibility, links, bundles.links_of(b), a, (leaf, patch)));
+                    row.push((b as u32, fingerprints[b], s));
                 }
                 a = tree.node(a).parent;
             }
@@ -72,18 +80,18 @@ pub fn push_rows(
         .collect();
     cache.rows = vec![Vec::new(); tree.len()];
     for (row, &leaf) in rows.iter().zip(leaves) {
-        cache.rows[leaf as usize].clone_from(row);
+        cache.rows[leaf as usize] = row.iter().map(|&(b, f, s)| (bundles.receiver[b as usize], f, s)).collect();
     }
     let rows: Vec<Vec<(u32, f64)>> =
-        rows.into_iter().map(|r| r.into_iter().map(|(a, _, s)| (a, s)).collect()).collect();
-    // S̄_a: Σ A_i^exp S_ia / Σ A_i over the leaves of an element a, so that the leaves'
-    // exposed areas take all the flux a gathers
-    let (mut sum, mut area) = (vec![0.0; tree.len()], vec![0.0; tree.len()]);
+        rows.into_iter().map(|r| r.into_iter().map(|(b, _, s)| (b, s)).collect()).collect();
+    // S̄_ab: Σ A_i^exp S_iab / Σ A_i over the leaves of an element a, so that the leaves'
+    // exposed areas take all the flux a bundle gathers
+    let (mut sum, mut area) = (vec![0.0; bundles.len()], vec![0.0; bundles.len()]);
     for (row, &leaf) in rows.iter().zip(leaves) {
         let node = tree.node(leaf);
-        for &(a, s) in row {
-            sum[a as usize] += node.exposed * s;
-            area[a as usize] += node.area;
+        for &(b, s) in row {
+            sum[b as usize] += node.exposed * s;
+            area[b as usize] += node.area;
         }
     }
     let mut row = Vec::with_capacity(rows.len() + 1);
@@ -91,35 +99,50 @@ pub fn push_rows(
     for r in &rows {
         row.push(row[row.len() - 1] + r.len());
     }
-    let entries = rows.into_iter().flatten().map(|(a, s)| {
-        let total = match tree.node(a).patch() {
-            Some(_) => sum[a as usize] / area[a as usize],
-            None => own(a).iter().map(|&l| links[l as usize].factor).sum(),
+    let entries = rows.into_iter().flatten().map(|(b, s)| {
+        let bu = b as usize;
+        let total = match tree.node(bundles.receiver[bu]).patch() {
+            Some(_) => sum[bu] / area[bu],
+            None => bundles.links_of(bu).iter().map(|&l| links[l as usize].factor).sum(),
         };
-        (position[a as usize], if total > 0.0 { s / total } else { 1.0 })
+        (b, if total > 0.0 { s / total } else { 1.0 })
     });
     (row, entries.collect())
 }
 
-/// `S_ia` of `leaf` under `a`, whose links are `own`.
-fn seen(tree: &Tree, links: &[Link], own: &[u32], a: u32, leaf: &Patch) -> f64 {
+/// `S_iab` of `leaf` under `a`, whose bundle's links are `own`: from an ancestor, each
+/// element source's factor with the leaf's own visible fraction of it (the link's is the
+/// ancestor's, an average over lit and shadowed leaves), unless the leaf straddles a
+/// contact.
+fn seen(tree: &Tree, visibility: &Visibility, links: &[Link], own: &[u32], a: u32, leaf: (u32, &Patch)) -> f64 {
+    let (id, patch) = leaf;
     let under_cluster = tree.node(a).patch().is_none();
-    let points = polygon_points(&leaf.polygon);
+    // a leaf across a contact: its points inside the solid see nothing
+    let straddles = tree.node(id).straddles_contact();
+    let points = polygon_points(&patch.polygon);
+    let mut blocker = NO_BLOCKER;
     own.iter()
         .map(|&l| {
             let link = &links[l as usize];
             let source = tree.node(link.source);
             match source.patch() {
                 Some(q) => {
-                    let f: f64 = points.iter().map(|&x| point_to_patch(x, leaf.normal, q)).sum();
-                    link.visible * f / points.len() as f64
+                    let f: f64 = points.iter().map(|&x| point_to_patch(x, patch.normal, q)).sum();
+                    let visible = match a == id || f == 0.0 || straddles || link.sight == Sight::Clear {
+                        true => link.visible,
+                        false => {
+                            visible_fraction(visibility, patch, &points, q, &polygon_points(&q.polygon), &mut blocker)
+                                .fraction
+                        }
+                    };
+                    visible * f / points.len() as f64
                 }
                 None if under_cluster => {
                     // the link's factor with the leaf's own projected area for the cluster's
                     let (u, _) = axis(tree.node(a), source);
                     let projected = tree.node(a).projected(u);
                     if projected > 0.0 {
-                        link.factor * tree.node(a).area * leaf.normal.dot(u).max(0.0) / projected
+                        link.factor * tree.node(a).area * patch.normal.dot(u).max(0.0) / projected
                     } else {
                         0.0
                     }
@@ -138,20 +161,4 @@ fn fingerprint(links: &[Link], own: &[u32]) -> u64 {
         let h = u64::from(link.source) ^ link.factor.to_bits().rotate_left(21) ^ link.visible.to_bits().rotate_left(42);
         sum.wrapping_add(mix(h))
     })
-}
-
-/// Link indices by receiver node id, CSR.
-fn links_by_receiver(nodes: usize, links: &[Link]) -> (Vec<usize>, Vec<u32>) {
-    let mut row = vec![0usize; nodes + 1];
-    links.iter().for_each(|l| row[l.receiver as usize + 1] += 1);
-    for r in 0..nodes {
-        row[r + 1] += row[r];
-    }
-    let mut fill = row.clone();
-    let mut index = vec![0u32; links.len()];
-    for (i, l) in links.iter().enumerate() {
-        index[fill[l.receiver as usize]] = i as u32;
-        fill[l.receiver as usize] += 1;
-    }
-    (row, index)
 }

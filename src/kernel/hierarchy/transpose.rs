@@ -20,15 +20,15 @@ impl Operator {
         gathered.fill(0.0);
         mean.fill(0.0);
         for (l, z) in y.chunks(k).enumerate() {
-            for &(pos, w) in &self.push[self.push_row[l]..self.push_row[l + 1]] {
-                let g = &mut gathered[pos as usize * k..][..k];
+            for &(b, w) in &self.push[self.push_row[l]..self.push_row[l + 1]] {
+                let g = &mut gathered[b as usize * k..][..k];
                 let w = w * self.receive[l];
                 g.iter_mut().zip(z).for_each(|(g, z)| *g += w * z);
             }
         }
-        for (pos, z) in gathered.chunks(k).enumerate() {
+        for (b, z) in gathered.chunks(k).enumerate() {
             let all: f64 = z.iter().zip(&self.share).map(|(z, s)| z * s).sum();
-            for e in &self.entries[self.row[pos]..self.row[pos + 1]] {
+            for e in &self.entries[self.row[b]..self.row[b + 1]] {
                 let v = if e.d == ALL_CELLS { all } else { z[e.d as usize] };
                 mean[e.source as usize * k + e.m as usize] += e.f * v;
             }

@@ -1,0 +1,92 @@
+//! Bundles of links (`docs/design.md` (3b.5)): the links of one receiver
+//! node from sources of one kind, gathered into one value and pushed to the receiver's leaves
+//! with one set of shares (`push.rs`). A receiver's links from emitting elements form one
+//! bundle and the rest another, so that each leaf takes the emitters' light by its own view
+//! of the emitters, not by its view of everything its ancestor links to: under a node by a
+//! wall and a block the leaves see the near faces very differently and the far lamp alike,
+//! and one share for both moved a lamp's light by one leaf (the open box's floor by the
+//! right wall read −15 … −19 % and the next column +11 … +34 %).
+
+use super::link::Link;
+use super::tree::Tree;
+
+/// The kind of source a link gathers from: emitting elements are kept apart, and the other
+/// sources near the receiver (closer than its own size) from those far from it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum SourceKind {
+    /// An element that emits (a lamp surface): bright and small, seen alike by neighbours.
+    Emitting,
+    /// A reflecting node closer to the receiver than the receiver's diagonal: its leaves
+    /// see it very differently.
+    Near,
+    /// Any other node: seen alike by the receiver's leaves.
+    Far,
+}
+
+impl SourceKind {
+    /// The kind of the link's source.
+    pub fn of(tree: &Tree, link: &Link) -> SourceKind {
+        let (p, q) = (tree.node(link.receiver), tree.node(link.source));
+        if q.emission > 0.0 {
+            SourceKind::Emitting
+        } else if p.box_distance(q) < p.diagonal() {
+            SourceKind::Near
+        } else {
+            SourceKind::Far
+        }
+    }
+}
+
+/// The links grouped into bundles, ordered by receiver (depth-first position) and kind.
+#[derive(Debug, Default)]
+pub struct Bundles {
+    /// Receiver node id of each bundle.
+    pub receiver: Vec<u32>,
+    /// The link indices of each bundle, CSR: `links[row[b]..row[b + 1]]`.
+    pub row: Vec<usize>,
+    pub links: Vec<u32>,
+    /// By node id: its first bundle and how many it receives.
+    by_node: Vec<(u32, u32)>,
+}
+
+impl Bundles {
+    /// Groups `links` by receiver and source kind; `position` is each node's depth-first
+    /// position, which orders the bundles.
+    pub fn new(tree: &Tree, links: &[Link], position: &[u32]) -> Bundles {
+        let key = |l: u32| {
+            let link = &links[l as usize];
+            (position[link.receiver as usize], SourceKind::of(tree, link))
+        };
+        let mut order: Vec<u32> = (0..links.len() as u32).collect();
+        order.sort_unstable_by_key(|&l| key(l));
+        let mut bundles = Bundles { row: vec![0], by_node: vec![(0, 0); tree.len()], ..Bundles::default() };
+        for bundle in order.chunk_by(|&a, &b| key(a) == key(b)) {
+            let receiver = links[bundle[0] as usize].receiver;
+            let own = &mut bundles.by_node[receiver as usize];
+            if own.1 == 0 {
+                own.0 = bundles.receiver.len() as u32;
+            }
+            own.1 += 1;
+            bundles.receiver.push(receiver);
+            bundles.row.push(bundles.row[bundles.row.len() - 1] + bundle.len());
+        }
+        bundles.links = order;
+        bundles
+    }
+
+    /// Number of bundles.
+    pub fn len(&self) -> usize {
+        self.receiver.len()
+    }
+
+    /// The link indices of bundle `b`.
+    pub fn links_of(&self, b: usize) -> &[u32] {
+        &self.links[self.row[b]..self.row[b + 1]]
+    }
+
+    /// The bundles received by node `a`.
+    pub fn of_node(&self, a: u32) -> std::ops::Range<usize> {
+        let (first, count) = self.by_node[a as usize];
+        first as usize..(first + count) as usize
+    }
+}
