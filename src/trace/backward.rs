@@ -83,11 +83,8 @@ pub fn luminance_along(world: &World, start: Start, rng: &mut Rng, options: &Tra
             Cast::Lands(hit) => hit,
             Cast::Absorbed => break,
             Cast::Escapes => {
-                // The sky through an opening lights the last vertex (or the probe); the eye
-                // does not see it directly.
-                if (order > 0 || start.drawn.is_some())
-                    && let Some(seen) = world.openings.seen(origin, direction)
-                {
+                // The sky through an opening lights the last vertex, the probe, or the eye.
+                if let Some(seen) = world.openings.seen(origin, direction) {
                     let weight = scattered.map_or(1.0, |pdf| power_heuristic(pdf, seen.pdf));
                     total += beta * seen.luminance * weight;
                 }
