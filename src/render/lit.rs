@@ -11,16 +11,15 @@
 //!
 //! What the eye meets first along a ray is a [`Sight`]: a patch to shade, or a light
 //! source's own luminance: a luminaire's luminous opening nearer than the patch
-//! (`luminaires.rs`), or, where the ray leaves the scene through a `[[window]]`, the sky
+//! (`crate::luminaire::luminous_along`), or, where the ray leaves the scene through a `[[window]]`, the sky
 //! above the horizon and the ground below it times the glazing's `τ(θ)`
 //! (`crate::trace::openings`, the boundary condition of `docs/design.md` §1).
 
-use super::luminaires;
 use super::smooth::Corners;
 use super::solved::Solved;
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, NO_TWIN};
-use crate::luminaire::Source;
+use crate::luminaire::{Source, luminous_along};
 use crate::material::MaterialModel;
 use crate::random::Rng;
 use crate::readout::final_gather::final_gather;
@@ -113,7 +112,7 @@ impl LitScene {
     pub fn sight(&self, origin: DVec3, direction: DVec3) -> Option<Sight> {
         let hit = self.solved.hit(origin, direction);
         let before = hit.map_or(f64::INFINITY, |(_, q)| (q - origin).length());
-        if let Some(luminance) = luminaires::seen(&self.solved.sources, origin, direction, before) {
+        if let Some(luminance) = luminous_along(&self.solved.sources, origin, direction, before) {
             return Some(Sight::Light(luminance));
         }
         match hit {

@@ -6,12 +6,11 @@
 //! patches of one surface) or by a final gather (one more reflection at the hit point).
 //! Where the ray meets a luminaire's luminous opening first, or leaves the scene through a
 //! `[[window]]`, the pixel shows the luminaire's luminance, or the sky's and the ground's
-//! (`lit.rs`, `luminaires.rs`).
+//! (`lit.rs`, `crate::luminaire::luminous_along`).
 
 mod camera;
 mod image;
 mod lit;
-mod luminaires;
 mod smooth;
 mod solved;
 

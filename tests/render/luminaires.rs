@@ -1,18 +1,21 @@
 //! Luminaires drawn with their luminous opening: a camera looking at a panel of an IES file
 //! sized 0.6 × 0.6 m reads `I(γ) / (A cos γ)`, dimmed with its light scene's factor; a
 //! luminaire without an opening is a sphere of 0.1 m at `I / (π r²)`; a surface in front
-//! hides it; the files' openings are read in metres.
+//! hides it; the files' openings are read in metres; `ugo trace`'s camera sees the panel
+//! and the sky as the render does.
 
 use super::lit_scene;
-use crate::support::{lambert, rectangle, surface};
+use crate::support::{lambert, rectangle, scene, surface};
 use glam::DVec3;
 use std::f64::consts::PI;
 use std::path::Path;
-use ugo::geometry::Surface;
-use ugo::luminaire::{Light, Source, frame};
+use ugo::geometry::{ConvexPolygon, Mesh, Surface};
+use ugo::luminaire::{Light, Luminaire, LuminaireKind, PointLuminaire, Source, frame};
 use ugo::photometry::{Distribution, FALLBACK_DIAMETER, LuminousOpening, parse_ies, read_ldt};
 use ugo::random::Rng;
 use ugo::render::LitScene;
+use ugo::sky::{Brightness, Distribution as SkyDistribution, Opening, Sky};
+use ugo::trace::{Start, TraceOptions, World, luminance_along};
 
 /// A 0.6 × 0.6 m panel (metres, units type 2), 1000 cd at the nadir, 600 cd at 45°, none
 /// at 90°, axially symmetric.
@@ -93,4 +96,42 @@ fn the_files_size_their_luminous_openings_in_metres() {
     assert_eq!(parse_ies(Path::new("point.ies"), &none).expect("valid").luminous, None);
     let ldt = read_ldt(Path::new("tests/data/photometry/isym4-quadrant.ldt")).expect("valid");
     assert_eq!(ldt.luminous, Some(LuminousOpening::Box { length: 0.58, width: 0.58, height: 0.0 }));
+}
+
+#[test]
+fn the_traced_camera_sees_the_panel_and_the_sky_as_the_render_does_and_a_probe_neither() {
+    let at = DVec3::new(0.0, 2.8, 0.0);
+    let mut s = scene(vec![lambert("black", 0.0)], floor(), 0.5);
+    let placed = PointLuminaire {
+        position: at,
+        aim: DVec3::NEG_Y,
+        rotate_deg: 0.0,
+        multiplier: 1.0,
+        distribution: table(),
+        file: None,
+    };
+    let sky = Sky::new(SkyDistribution::Overcast, DVec3::Y, Brightness::Zenith(1000.0), 0.2, 0.0);
+    let roof = ConvexPolygon::quad(
+        DVec3::new(2.0, 4.0, -2.0),
+        DVec3::new(4.0, 4.0, -2.0),
+        DVec3::new(4.0, 4.0, 2.0),
+        DVec3::new(2.0, 4.0, 2.0),
+    );
+    let window = LuminaireKind::Window { window: Opening { polygon: roof, glazing: None }, sky };
+    s.luminaires.push(Luminaire { name: "panel".into(), kind: LuminaireKind::Point(placed) });
+    s.luminaires.push(Luminaire { name: "roof".into(), kind: window });
+    let world = World::new(&s, Mesh::build(&s.surfaces, 0.5));
+    let lit = lit_scene(vec![lambert("black", 0.0)], floor(), s.luminaires.iter().map(Source::of).collect());
+    let options = TraceOptions::default();
+    for towards in [at, DVec3::new(3.0, 4.0, 0.5)] {
+        let d = towards.normalize();
+        let traced = luminance_along(&world, Start::camera(DVec3::ZERO, d), &mut Rng::keyed(1), &options, &mut 0);
+        let rendered = seen(&lit, DVec3::ZERO, towards);
+        assert!(
+            rendered > 0.0 && (traced - rendered).abs() < 1e-9 * rendered,
+            "towards {towards}: {traced} {rendered}"
+        );
+        let probe = luminance_along(&world, Start::eye(DVec3::ZERO, d), &mut Rng::keyed(1), &options, &mut 0);
+        assert_eq!(probe, 0.0, "a probe's luminance is its first surface's");
+    }
 }

@@ -2,16 +2,17 @@
 //! (`crate::photometry::LuminousOpening`, from its IES or EULUMDAT file, else a sphere of
 //! `FALLBACK_DIAMETER`) placed at its position in its frame, shining towards the eye `l`
 //! with the luminance `L(l) = I(l) / A_p(l)`, `A_p` the opening's projected area: the
-//! intensity spread evenly over what the eye sees of it (`docs/rendering.md`). A dimmed
-//! luminaire shows its dimmed intensity; one switched off is black. The openings are seen
-//! only by the eye: the solve and the final gather take a luminaire as a point.
+//! intensity spread evenly over what the eye sees of it (`docs/rendering.md`, `docs/photometry.md`).
+//! A dimmed luminaire shows its dimmed intensity; one switched off is black. Only the eye
+//! sees the openings (the render's and the traced camera's): the solve, the final gather
+//! and the paths take a luminaire as a point.
 
-use crate::luminaire::{Light, Source};
+use super::{Light, Source};
 use glam::DVec3;
 
 /// The luminance of the nearest luminous opening along the unit `direction` from
 /// `origin`, if one lies nearer than `before` (m), cd/m².
-pub fn seen(sources: &[Source], origin: DVec3, direction: DVec3, before: f64) -> Option<f64> {
+pub fn luminous_along(sources: &[Source], origin: DVec3, direction: DVec3, before: f64) -> Option<f64> {
     let mut nearest = (before, None);
     for source in sources {
         let Light::Point { position, frame, distribution, .. } = &source.light else { continue };
