@@ -37,15 +37,19 @@ fn behind() -> Vec<ugo::geometry::Surface> {
     vec![surface("back", rectangle([-1.0, -1.0, -3.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]), 0, false, None)]
 }
 
-#[test]
-fn a_camera_looking_up_through_a_roof_opening_reads_the_overcast_sky_in_every_shading() {
-    let roof = ConvexPolygon::quad(
+/// A 4 × 4 m opening 2 m above the camera.
+fn roof() -> ConvexPolygon {
+    ConvexPolygon::quad(
         DVec3::new(-2.0, 2.0, -2.0),
         DVec3::new(2.0, 2.0, -2.0),
         DVec3::new(2.0, 2.0, 2.0),
         DVec3::new(-2.0, 2.0, 2.0),
-    );
-    let mut lit = lit_scene(vec![lambert("black", 0.0)], behind(), vec![window(roof, None)]);
+    )
+}
+
+#[test]
+fn a_camera_looking_up_through_a_roof_opening_reads_the_overcast_sky_in_every_shading() {
+    let mut lit = lit_scene(vec![lambert("black", 0.0)], behind(), vec![window(roof(), None)]);
     let view = camera(DVec3::Y, DVec3::Z, 30.0);
     let expected = sample_mean(&view, cie_overcast);
     for shading in [Shading::Flat, Shading::Smooth, Shading::Gather { rays: 16 }] {
@@ -91,15 +95,9 @@ fn a_camera_looking_out_of_a_glazed_window_reads_the_horizon_and_the_ground_time
 
 #[test]
 fn a_surface_in_the_way_hides_the_sky_and_a_ray_leaving_elsewhere_sees_none() {
-    let roof = ConvexPolygon::quad(
-        DVec3::new(-2.0, 2.0, -2.0),
-        DVec3::new(2.0, 2.0, -2.0),
-        DVec3::new(2.0, 2.0, 2.0),
-        DVec3::new(-2.0, 2.0, 2.0),
-    );
     // A black ceiling panel at 1 m under the opening, facing down.
     let panel = surface("panel", rectangle([-0.5, 1.0, -0.5], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]), 0, false, None);
-    let lit = lit_scene(vec![lambert("black", 0.0)], vec![panel], vec![window(roof, None)]);
+    let lit = lit_scene(vec![lambert("black", 0.0)], vec![panel], vec![window(roof(), None)]);
     let mut rng = Rng::keyed(1);
     assert_eq!(lit.luminance_along(DVec3::ZERO, DVec3::Y, 0, &mut rng), 0.0, "the panel hides the sky");
     let beside = DVec3::new(0.8, 1.0, 0.0).normalize();
