@@ -54,6 +54,12 @@ impl Projection {
         (self.forward + u * self.right + v * self.up).normalize()
     }
 
+    /// The unit direction through the centre of every pixel, row by row from the top left.
+    pub fn centres(&self) -> impl Iterator<Item = DVec3> + '_ {
+        (0..self.height)
+            .flat_map(move |py| (0..self.width).map(move |px| self.direction(px as f64 + 0.5, py as f64 + 0.5)))
+    }
+
     /// Direction of sample `s` (of [`Projection::samples`]) of pixel `(px, py)`.
     pub fn sample(&self, px: usize, py: usize, s: usize) -> DVec3 {
         self.point(px, py, s, self.samples)
