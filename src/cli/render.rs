@@ -197,12 +197,13 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
     Ok(())
 }
 
-/// The pixels of `image` whose centre sees a surface, not a light source's own luminance
-/// (what the automatic exposure is taken from).
+/// The pixels of `image` whose samples all see surfaces, none a light source's own
+/// luminance (what the automatic exposure is taken from).
 fn surfaces_seen(lit: &LitScene, camera: &Camera, image: &Image) -> Vec<f64> {
     let view = Projection::of(camera);
     let light = |d: DVec3| matches!(lit.sight(view.eye, d), Some(Sight::Light(_)));
-    image.luminance.iter().zip(view.centres()).filter(|(_, d)| !light(*d)).map(|(l, _)| *l).collect()
+    let pixels = image.luminance.iter().zip(view.pixels());
+    pixels.filter(|(_, p)| !view.any_sample(*p, &light)).map(|(l, _)| *l).collect()
 }
 
 /// `--shading` and `--gather-rays` as a [`Shading`]; shared with `ugo agree`.

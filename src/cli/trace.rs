@@ -8,6 +8,7 @@ use super::options::Discretize;
 use super::render::chosen;
 use super::{bar, check_writable, load, sibling};
 use anyhow::{Result, bail};
+use glam::DVec3;
 use std::path::{Path, PathBuf};
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
@@ -179,8 +180,9 @@ fn camera_images(case: &Path, scene: &Scene, world: &World, job: &TraceJob) -> R
             &format!("standard error of the luminance, cd/m2 (ugo trace, {} spp, seed {seed})", job.spp),
         )?;
         let view = Projection::of(camera);
-        let seen = traced.mean.luminance.iter().zip(view.centres());
-        let surfaces: Vec<f64> = seen.filter(|(_, d)| !world.sees_light(view.eye, *d)).map(|(l, _)| *l).collect();
+        let light = |d: DVec3| world.sees_light(view.eye, d);
+        let seen = traced.mean.luminance.iter().zip(view.pixels());
+        let surfaces: Vec<f64> = seen.filter(|(_, p)| !view.any_sample(*p, &light)).map(|(l, _)| *l).collect();
         let white = auto_exposure(&surfaces);
         write_png(&png, &traced.mean, white)?;
         let (lo, hi) = traced.mean.range();

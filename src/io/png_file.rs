@@ -8,7 +8,7 @@ use std::path::Path;
 
 /// The luminance mapped to white when none is given: the 99th percentile of the pixel
 /// values `luminance` (their maximum if that is zero; 1 cd/m² for none or a black image).
-/// The renders give it the pixels whose centre sees a surface: a luminaire's luminous
+/// The renders give it the pixels whose samples all see surfaces: a luminaire's luminous
 /// opening or the sky through a window, far brighter, would set it.
 pub fn auto_exposure(luminance: &[f64]) -> f64 {
     let mut sorted: Vec<f64> = luminance.iter().copied().filter(|l| l.is_finite()).collect();

@@ -54,10 +54,14 @@ impl Projection {
         (self.forward + u * self.right + v * self.up).normalize()
     }
 
-    /// The unit direction through the centre of every pixel, row by row from the top left.
-    pub fn centres(&self) -> impl Iterator<Item = DVec3> + '_ {
-        (0..self.height)
-            .flat_map(move |py| (0..self.width).map(move |px| self.direction(px as f64 + 0.5, py as f64 + 0.5)))
+    /// Whether any sample ray of pixel `(px, py)` satisfies `test`.
+    pub fn any_sample(&self, [px, py]: [usize; 2], test: &dyn Fn(DVec3) -> bool) -> bool {
+        (0..self.samples).any(|s| test(self.sample(px, py, s)))
+    }
+
+    /// Every pixel, row by row from the top left.
+    pub fn pixels(&self) -> impl Iterator<Item = [usize; 2]> + '_ {
+        (0..self.height).flat_map(move |py| (0..self.width).map(move |px| [px, py]))
     }
 
     /// Direction of sample `s` (of [`Projection::samples`]) of pixel `(px, py)`.

@@ -2,10 +2,10 @@
 //! sized 0.6 × 0.6 m reads `I(γ) / (A cos γ)`, dimmed with its light scene's factor; a
 //! luminaire without an opening is a sphere of 0.1 m at `I / (π r²)`; a surface in front
 //! hides it; the files' openings are read in metres; `ugo trace`'s camera sees the panel
-//! and the sky as the render does.
+//! and the sky as the render does; a lamp filling the view does not set the exposure.
 
-use super::lit_scene;
-use crate::support::{lambert, rectangle, scene, surface};
+use super::{lit_scene, solved_lamp_room};
+use crate::support::{lambert, rectangle, scene, scratch, surface, ugo};
 use glam::DVec3;
 use std::f64::consts::PI;
 use std::path::Path;
@@ -134,4 +134,24 @@ fn the_traced_camera_sees_the_panel_and_the_sky_as_the_render_does_and_a_probe_n
         let probe = luminance_along(&world, Start::eye(DVec3::ZERO, d), &mut Rng::keyed(1), &options, &mut 0);
         assert_eq!(probe, 0.0, "a probe's luminance is its first surface's");
     }
+}
+
+#[test]
+fn a_luminaire_filling_the_view_does_not_set_the_automatic_exposure() {
+    // CIE 171's 5.4: an isotropic 10 000 lm lamp at (2, 1.5, 2), no luminous opening: a
+    // sphere of 0.1 m at I/(π r²) ≈ 1.0e5 cd/m², seen from 0.3 m over about a fifth of the
+    // image. The room it lights stays below 1000 cd/m²: the exposure must be the room's.
+    let dir = scratch("exposure");
+    let (_, h5) = solved_lamp_room(&dir);
+    let view = ["--position", "2,1.5,2.3", "--look-at", "2,1.5,0", "--resolution", "32,32", "--fov-deg", "40"];
+    let o = ugo(&[&["render", h5.to_str().unwrap(), "-o", dir.to_str().unwrap()][..], &view[..]].concat());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let note = std::fs::read_to_string(dir.join("5.4-flux-conservation-cli-flat.png.txt")).unwrap();
+    let number = |after: &str| -> f64 {
+        let rest = &note[note.find(after).unwrap_or_else(|| panic!("{after} in {note}")) + after.len()..];
+        rest.split_whitespace().next().unwrap().parse().unwrap()
+    };
+    let lamp = 10_000.0 / (4.0 * PI) / (PI * 0.05 * 0.05);
+    assert!((number(" .. ") / lamp - 1.0).abs() < 1e-6, "the lamp is seen: {note}");
+    assert!(number("exposure (white) ") < 1000.0, "the room sets the exposure: {note}");
 }

@@ -9,7 +9,9 @@ mod openings;
 mod pictures;
 mod pixels;
 
+use crate::support::ugo;
 use glam::DVec3;
+use std::path::{Path, PathBuf};
 use ugo::directions::DirectionSet;
 use ugo::geometry::{Mesh, Surface};
 use ugo::luminaire::Source;
@@ -35,4 +37,16 @@ fn sample_mean(camera: &Camera, f: impl Fn(DVec3) -> f64) -> Vec<f64> {
         }
     }
     means
+}
+
+/// CIE 171's case 5.4 (an isotropic 10 000 lm lamp at (2, 1.5, 2) in a room) copied into
+/// `dir` with its IES file and solved at 0.5 m patches: the case and the solution file.
+fn solved_lamp_room(dir: &Path) -> (PathBuf, PathBuf) {
+    for name in ["5.4-flux-conservation.toml", "isotropic-10000lm.ies"] {
+        std::fs::copy(Path::new("cases/cie171").join(name), dir.join(name)).unwrap();
+    }
+    let (case, h5) = (dir.join("5.4-flux-conservation.toml"), dir.join("lit.h5"));
+    let o = ugo(&["solve", case.to_str().unwrap(), "--patch-size", "0.5", "-o", h5.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    (case, h5)
 }
