@@ -7,14 +7,15 @@ use anyhow::Result;
 use std::path::{Path, PathBuf};
 use ugo::io::{LightScenes, write_probes_csv};
 use ugo::readout::grid::GridReading;
+use ugo::scene::LightScene;
+
+/// Writes a light scene's grids' files: its grids, the stem of their names, the light scene.
+pub type WriteGrids<'a> = dyn Fn(&[GridReading], &str, &LightScene) -> Result<()> + 'a;
 
 /// Prints the groups' solves and every light scene, and writes its CSV files and, with
-/// `write_grids` (the solve's: grids and the stem of their files), its grids' files.
-pub fn report(
-    light: &LightScenes,
-    output: &Path,
-    write_grids: &dyn Fn(&[GridReading], &str) -> Result<()>,
-) -> Result<()> {
+/// `write_grids` (the solve's: grids, the stem of their files and the light scene of
+/// `light_scenes`, the case's, whose dimmed luminaires the plans draw), its grids' files.
+pub fn report(light: &LightScenes, light_scenes: &[LightScene], output: &Path, write_grids: &WriteGrids) -> Result<()> {
     println!("  light groups             applications   start residual   residual      time s");
     for g in &light.groups {
         let s = &g.solve;
@@ -24,7 +25,7 @@ pub fn report(
         );
     }
     let stem = output.with_extension("").display().to_string();
-    for scene in &light.scenes {
+    for (scene, described) in light.scenes.iter().zip(light_scenes) {
         let factors: Vec<String> =
             light.groups.iter().zip(&scene.factors).map(|(g, f)| format!("{} {f}", g.name)).collect();
         let e = &scene.energy;
@@ -43,7 +44,7 @@ pub fn report(
             write_probes_csv(&csv, &scene.probes, None)?;
             println!("      {}", csv.display());
         }
-        write_grids(&scene.grids, &base)?;
+        write_grids(&scene.grids, &base, described)?;
     }
     Ok(())
 }

@@ -6,12 +6,13 @@
 use super::options::{ScaleArg, ShadingArg};
 use super::{file_name, sibling};
 use anyhow::{Result, bail};
+use glam::DVec3;
 use std::path::Path;
 use std::time::Instant;
 use ugo::io::{
     Scale, auto_exposure, read_mode, read_solution, write_exr, write_false_colour, write_png, write_triptych,
 };
-use ugo::render::{Shading, render};
+use ugo::render::{Image, LitScene, Projection, Shading, Sight, render};
 use ugo::scene::{Camera, RawCamera};
 
 /// A camera given on the command line (named `cli`), instead of the stored scene's.
@@ -142,6 +143,7 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
     let case = format!("{}{case_suffix}", stored.scene.path.file_stem().unwrap_or_default().to_string_lossy());
     let orders = chosen_orders(&stored.orders, look.orders)?;
     let (mut lit, case) = match look.light_scene {
+        None if look.mode.is_some() => (ugo::study::lit_scene_with(stored, Vec::new()), case),
         None => (ugo::study::lit_scene(stored), case),
         Some(_) if !orders.is_empty() => bail!("--orders draws the case's own light, not a light scene's"),
         Some(name) => (ugo::study::lit_light_scene(file, stored, name)?, format!("{case}-{}", file_name(name))),
@@ -155,7 +157,7 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
         let stem = dir.join(format!("{case}-{}-{}", file_name(&camera.name), tag(shading)));
         let (exr, png) = (sibling(&stem, ".exr"), sibling(&stem, ".png"));
         write_exr(&exr, &image)?;
-        let white = exposure.unwrap_or_else(|| auto_exposure(&image));
+        let white = exposure.unwrap_or_else(|| auto_exposure(&surfaces_seen(&lit, camera, &image)));
         write_png(&png, &image, white)?;
         let (lo, hi) = image.range();
         println!(
@@ -193,6 +195,15 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
         }
     }
     Ok(())
+}
+
+/// The pixels of `image` whose samples all see surfaces, none a light source's own
+/// luminance (what the automatic exposure is taken from).
+fn surfaces_seen(lit: &LitScene, camera: &Camera, image: &Image) -> Vec<f64> {
+    let view = Projection::of(camera);
+    let light = |d: DVec3| matches!(lit.sight(view.eye, d), Some(Sight::Light(_)));
+    let pixels = image.luminance.iter().zip(view.pixels());
+    pixels.filter(|(_, p)| !view.any_sample(*p, &light)).map(|(l, _)| *l).collect()
 }
 
 /// `--shading` and `--gather-rays` as a [`Shading`]; shared with `ugo agree`.

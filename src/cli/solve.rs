@@ -5,17 +5,17 @@
 use super::options::{Discretize, Stopping};
 use super::{Bars, bytes, check_writable, describe, file_name, load};
 use anyhow::{Context, Result, bail};
-use glam::DVec3;
 use std::path::{Path, PathBuf};
+use ugo::geometry::{Mesh, section};
 use ugo::io::{
-    MonteCarlo, Run, Solution, Warning, convergence_plot, one_line, told, write_daylight_map, write_grid_csv,
+    MonteCarlo, Overlay, Run, Solution, Warning, convergence_plot, one_line, told, write_daylight_map, write_grid_csv,
     write_grid_map, write_probes_csv, write_solution,
 };
-use ugo::luminaire::{Light, Source};
+use ugo::luminaire::Source;
 use ugo::model::HierarchyRecord;
 use ugo::readout::daylight::DaylightReadings;
 use ugo::readout::grid::GridReading;
-use ugo::scene::Scene;
+use ugo::scene::{LightScene, Scene};
 use ugo::solve::norms::Norms;
 use ugo::solve::orders::OrderRecord;
 use ugo::solve::{Method, SolveParams};
@@ -87,9 +87,8 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     write_solution(&output, &scene, &s).with_context(|| format!("writing {}", output.display()))?;
     summary(&scene, &s, &output);
     super::kernel::print_record(&s.kernel);
-    let lamps = positions(&s.model.sources);
     let names: Vec<String> = scene.surfaces.iter().map(|s| s.name.clone()).collect();
-    let files = GridFiles { lamps: &lamps, surfaces: &names };
+    let files = GridFiles { sources: &s.model.sources, mesh: &s.model.mesh, surfaces: &names };
     write_grids(&s.grids, &output.with_extension("").display().to_string(), &files, s.daylight.as_ref())?;
     if !s.probes.is_empty() {
         let csv = super::beside(&output, "-probes.csv");
@@ -97,7 +96,11 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         println!("  probes             {}", csv.display());
     }
     if let Some(light) = &s.light_scenes {
-        super::light_scenes::report(light, &output, &|grids, stem| write_grids(grids, stem, &files, None))?;
+        let lit = |grids: &[GridReading], stem: &str, light_scene: &LightScene| {
+            let dimmed = study::dimmed(&scene, &s.model.sources, light_scene);
+            write_grids(grids, stem, &GridFiles { sources: &dimmed, ..files }, None)
+        };
+        super::light_scenes::report(light, &scene.lighting.scenes, &output, &lit)?;
     }
     if let Some(orders) = &s.orders {
         print_orders(orders, &s.x);
@@ -225,21 +228,12 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
     println!("  written            {}", output.display());
 }
 
-/// Where the luminaires are, for the grids' plans (a parallel light and the sky through a
-/// window are nowhere).
-fn positions(sources: &[Source]) -> Vec<DVec3> {
-    sources
-        .iter()
-        .filter_map(|s| match &s.light {
-            Light::Point { position, .. } => Some(*position),
-            Light::Parallel { .. } | Light::Window { .. } => None,
-        })
-        .collect()
-}
-
-/// What every grid's files are drawn with: the luminaires' positions and the surfaces' names.
+/// What every grid's files are drawn with: the sources (dimmed as the light scene has
+/// them), the mesh whose section by each grid's plane the plan draws, and the surfaces'
+/// names.
 struct GridFiles<'a> {
-    lamps: &'a [DVec3],
+    sources: &'a [Source],
+    mesh: &'a Mesh,
     surfaces: &'a [String],
 }
 
@@ -271,11 +265,13 @@ fn write_grids(
         let df = daylight.map(|d| (d.symbol(), d.grid_factor(i)));
         let df = df.as_ref().map(|(x, values)| (*x, values.as_slice()));
         write_grid_csv(&csv, g, files.surfaces, df)?;
-        write_grid_map(&png, g, files.lamps)?;
+        let section = section(files.mesh, g.grid.origin, g.grid.normal);
+        let overlay = Overlay { sources: files.sources, section: &section };
+        write_grid_map(&png, g, &overlay)?;
         println!("      {}\n      {}", csv.display(), png.display());
         if let Some((symbol, values)) = df {
             let png = PathBuf::from(format!("{base}-{symbol}.png"));
-            write_daylight_map(&png, g, values, symbol, files.lamps)?;
+            write_daylight_map(&png, g, values, symbol, &overlay)?;
             println!("      {}", png.display());
         }
     }

@@ -8,10 +8,12 @@ use super::options::Discretize;
 use super::render::chosen;
 use super::{bar, check_writable, load, sibling};
 use anyhow::{Result, bail};
+use glam::DVec3;
 use std::path::{Path, PathBuf};
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
 use ugo::io::{EstimateFile, auto_exposure, read_solution, write_estimate, write_exr_as, write_png};
+use ugo::render::Projection;
 use ugo::scene::{ProbeKind, Scene};
 use ugo::trace::{TraceOptions, World, trace_camera, trace_photons, trace_probes};
 
@@ -177,7 +179,11 @@ fn camera_images(case: &Path, scene: &Scene, world: &World, job: &TraceJob) -> R
             &traced.standard_error,
             &format!("standard error of the luminance, cd/m2 (ugo trace, {} spp, seed {seed})", job.spp),
         )?;
-        let white = auto_exposure(&traced.mean);
+        let view = Projection::of(camera);
+        let light = |d: DVec3| world.sees_light(view.eye, d);
+        let seen = traced.mean.luminance.iter().zip(view.pixels());
+        let surfaces: Vec<f64> = seen.filter(|(_, p)| !view.any_sample(*p, &light)).map(|(l, _)| *l).collect();
+        let white = auto_exposure(&surfaces);
         write_png(&png, &traced.mean, white)?;
         let (lo, hi) = traced.mean.range();
         let relative: Vec<f64> = traced

@@ -1,10 +1,11 @@
-//! Geometry: surfaces as described, convex polygons, tessellation of shapes, and the patch
-//! mesh (`docs/design.md` §2).
+//! Geometry: surfaces as described, convex polygons, tessellation of shapes, the patch
+//! mesh (`docs/design.md` §2) and its section by a plane.
 
 mod facing;
 mod frame;
 mod mesh;
 mod polygon;
+mod section;
 mod surface;
 mod tessellate;
 mod warp;
@@ -13,6 +14,7 @@ pub use facing::facing;
 pub use frame::Frame;
 pub use mesh::{Mesh, NO_TWIN, Patch};
 pub use polygon::{ConvexPolygon, MAX_CLIPPED};
+pub use section::section;
 pub use surface::{Emission, Shape, Surface};
 pub use tessellate::{element_count, tessellate};
 pub use warp::{cone, cosine_direction};

@@ -1,7 +1,8 @@
 //! The plan of an illuminance grid (`OUT-<grid>.png`), drawn as a lighting engineer reads
 //! one: the grid seen from the side its normal points to (`super::plan`, never mirrored),
 //! its cells in false colour with a legend in lx at round values, axes in metres with
-//! round ticks, the grid's outline, the luminaires' positions (circles), the statistics
+//! round ticks, the grid's outline, the luminaires (full, dimmed or off) and the section
+//! of the surfaces by the grid's plane (`plan_marks.rs`), the statistics
 //! `E_avg`, `E_min`, `E_max`, `U0` in the title, the cells of points left out of them
 //! (`readout::obstructed`) hatched in grey and counted in the title, and on request (`[[grid]] map = { … }`)
 //! a log scale, the value of every cell and lines of equal illuminance (isolux lines).
@@ -12,6 +13,7 @@ use super::IoError;
 use super::false_colour::{Scale, bounds, colour, legend, position};
 use super::isolines::isolines;
 use super::plan::{Axis, Frame, Layout};
+use super::plan_marks::{Overlay, draw_lamps, draw_section};
 use super::ticks::{log_ticks, round_125, round_top, tick_label, ticks};
 use crate::readout::grid::GridReading;
 use crate::render::Image;
@@ -84,10 +86,10 @@ struct Shown<'a> {
     unit: &'a str,
 }
 
-/// Writes the plan of `grid`'s illuminance, with the luminaires at `luminaires` (m), to
-/// `path` (PNG).
-pub fn write_grid_map(path: &Path, grid: &GridReading, luminaires: &[DVec3]) -> Result<(), IoError> {
-    write_map(path, grid, &Shown { values: &grid.illuminance, symbol: "E", unit: "lx" }, luminaires)
+/// Writes the plan of `grid`'s illuminance, with the luminaires and the section of
+/// `overlay`, to `path` (PNG).
+pub fn write_grid_map(path: &Path, grid: &GridReading, overlay: &Overlay) -> Result<(), IoError> {
+    write_map(path, grid, &Shown { values: &grid.illuminance, symbol: "E", unit: "lx" }, overlay)
 }
 
 /// Writes the plan of the daylight factor (`symbol` `"DF"`) or ratio (`"DR"`) on `grid`, %,
@@ -97,17 +99,17 @@ pub fn write_daylight_map(
     grid: &GridReading,
     values: &[f64],
     symbol: &str,
-    luminaires: &[DVec3],
+    overlay: &Overlay,
 ) -> Result<(), IoError> {
-    write_map(path, grid, &Shown { values, symbol, unit: "%" }, luminaires)
+    write_map(path, grid, &Shown { values, symbol, unit: "%" }, overlay)
 }
 
-fn write_map(path: &Path, grid: &GridReading, shown: &Shown, luminaires: &[DVec3]) -> Result<(), IoError> {
-    let plan = GridPlan::of(grid, luminaires);
-    super::atomic_png(path, |png| draw(png, grid, shown, &plan, luminaires).map_err(|e| e.to_string()))
+fn write_map(path: &Path, grid: &GridReading, shown: &Shown, overlay: &Overlay) -> Result<(), IoError> {
+    let plan = GridPlan::of(grid, &overlay.positions());
+    super::atomic_png(path, |png| draw(png, grid, shown, &plan, overlay).map_err(|e| e.to_string()))
 }
 
-fn draw(path: &Path, grid: &GridReading, shown: &Shown, plan: &GridPlan, luminaires: &[DVec3]) -> Drawn {
+fn draw(path: &Path, grid: &GridReading, shown: &Shown, plan: &GridPlan, overlay: &Overlay) -> Drawn {
     super::plot::register_font();
     let root = BitMapBackend::new(path, plan.size).into_drawing_area();
     root.fill(&WHITE)?;
@@ -125,9 +127,10 @@ fn draw(path: &Path, grid: &GridReading, shown: &Shown, plan: &GridPlan, luminai
     if style.values {
         values(&root, grid, shown.values, plan)?;
     }
+    draw_section(&root, &plan.frame, &plan.layout, overlay.section)?;
     let corners: Vec<(i32, i32)> = outline(grid).iter().map(|&p| pixel(plan, p)).collect();
     root.draw(&PathElement::new([&corners[..], &corners[..1]].concat(), BLACK.stroke_width(2)))?;
-    lamps(&root, plan, luminaires)?;
+    draw_lamps(&root, &plan.frame, &plan.layout, overlay)?;
     axes(&root, plan)?;
     let [_, top, right, _] = plan.layout.plot;
     let bottom = (plan.size.1 as i32 - BOTTOM).max(top + 200);
@@ -290,22 +293,6 @@ fn values(root: &Area, grid: &GridReading, shown: &[f64], plan: &GridPlan) -> Dr
             let text = lux(shown[j * nu + i]);
             root.draw(&Text::new(text, (q.x.round() as i32, q.y.round() as i32), style.clone()))?;
         }
-    }
-    Ok(())
-}
-
-/// A circle with a cross at each luminaire over the plot.
-fn lamps(root: &Area, plan: &GridPlan, luminaires: &[DVec3]) -> Drawn {
-    let [left, top, right, bottom] = plan.layout.plot;
-    for &p in luminaires {
-        let (x, y) = pixel(plan, p);
-        if x < left || x > right || y < top || y > bottom {
-            continue;
-        }
-        root.draw(&Circle::new((x, y), 7, WHITE.filled()))?;
-        root.draw(&Circle::new((x, y), 7, BLACK.stroke_width(2)))?;
-        root.draw(&PathElement::new(vec![(x - 5, y - 5), (x + 5, y + 5)], BLACK.stroke_width(1)))?;
-        root.draw(&PathElement::new(vec![(x - 5, y + 5), (x + 5, y - 5)], BLACK.stroke_width(1)))?;
     }
     Ok(())
 }

@@ -6,10 +6,12 @@ use super::IoError;
 use crate::render::Image;
 use std::path::Path;
 
-/// The luminance mapped to white when none is given: the 99th percentile of the
-/// pixels (their maximum if that is zero; 1 cd/m² for a black image).
-pub fn auto_exposure(image: &Image) -> f64 {
-    let mut sorted: Vec<f64> = image.luminance.iter().copied().filter(|l| l.is_finite()).collect();
+/// The luminance mapped to white when none is given: the 99th percentile of the pixel
+/// values `luminance` (their maximum if that is zero; 1 cd/m² for none or a black image).
+/// The renders give it the pixels whose samples all see surfaces: a luminaire's luminous
+/// opening or the sky through a window, far brighter, would set it.
+pub fn auto_exposure(luminance: &[f64]) -> f64 {
+    let mut sorted: Vec<f64> = luminance.iter().copied().filter(|l| l.is_finite()).collect();
     sorted.sort_by(f64::total_cmp);
     let Some(&max) = sorted.last() else { return 1.0 };
     let p99 = sorted[((sorted.len() - 1) as f64 * 0.99).round() as usize];

@@ -12,18 +12,21 @@
 //!
 //! Owns the luminaires as described (`description.rs`), the placed sources ([`Source`]: a point source's frame from its aim, its
 //! multiplier and tilt factor; parallel light), the patch-averaged illuminance
-//! (`patch.rs`) and the exact illuminance at a point for probes (`point.rs`). An opening
+//! (`patch.rs`), the exact illuminance at a point for probes (`point.rs`) and the luminance
+//! of the luminous openings the eye sees (`seen.rs`). An opening
 //! (`[[window]]`) is a source too: the sky and the ground seen through it (`crate::sky`).
 
 mod aim;
 mod description;
 mod patch;
 mod point;
+mod seen;
 
 pub use aim::frame;
 pub use description::{Luminaire, LuminaireKind, PointLuminaire};
 pub use patch::{DirectLight, OPENING_ETA, PatchLight, direct_light, patch_lights};
 pub use point::{arriving_along, arriving_at, incoming};
+pub use seen::luminous_along;
 
 use crate::geometry::Frame;
 use crate::photometry::Distribution;

@@ -6,7 +6,7 @@
 //! Layout (after the version line and the `[KEYWORD]` lines): `TILT=…`, the tilt record if
 //! included (lamp-to-luminaire geometry, count, angles, factors), then the record
 //! `lamps, lumens per lamp, candela multiplier, N_v, N_h, type, units, width, length,
-//! height`, then `ballast factor, (1995: ballast-lamp photometric factor; later: unused or
+//! height` (the luminous opening, `super::luminous`), then `ballast factor, (1995: ballast-lamp photometric factor; later: unused or
 //! file-generation type), input watts`, the `N_v` vertical and `N_h` horizontal angles, and
 //! `N_h` blocks of `N_v` candela values. Candela are multiplied by the candela multiplier and
 //! the ballast factor (and, in 1995 files, the ballast-lamp photometric factor).
@@ -19,12 +19,16 @@
 //! within −90…90°; outside the tabulated range the intensity is 0.
 
 use super::error::PhotometryError;
+use super::luminous::LuminousOpening;
 use super::symmetry::{PLANE_C0, PLANE_C90, full_turn, signed};
 use super::system::System;
 use super::table::{Column, IntensityDistribution};
 use super::tilt::Tilt;
 use super::tokens::Tokens;
 use std::path::Path;
+
+/// One foot, m (the units type 1 of the luminous opening's sizes).
+const FOOT: f64 = 0.3048;
 
 /// Reads an IES file from the text of `file`.
 pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, PhotometryError> {
@@ -64,9 +68,13 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
         2 => System::B,
         _ => System::A,
     };
-    tokens.integer("the units type (1 = feet, 2 = metres)", 1..=2)?;
-    for what in ["the luminous opening's width", "its length", "its height"] {
-        tokens.number(&|| what.to_string())?;
+    let metres = match tokens.integer("the units type (1 = feet, 2 = metres)", 1..=2)? {
+        1 => FOOT,
+        _ => 1.0,
+    };
+    let mut size = [0.0; 3];
+    for (value, what) in size.iter_mut().zip(["the luminous opening's width", "its length", "its height"]) {
+        *value = tokens.number(&|| what.to_string())? * metres;
     }
     let ballast = positive(&mut tokens, "the ballast factor")?;
     let photometric_factor = if year <= 1995 {
@@ -125,6 +133,7 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
     }
     table.tilt = tilt;
     table.stated_flux = (lumens > 0.0).then_some(stated);
+    table.luminous = LuminousOpening::of_ies(size[0], size[1], size[2]);
     table.description = format!("IES LM-63-{year}, type {kind:?}, {}", layout.name);
     Ok(table)
 }

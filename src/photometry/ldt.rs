@@ -2,7 +2,7 @@
 //!
 //! Layout: 1 company; 2 `Ityp` (0–3); 3 `Isym` (0–4); 4 `Mc`, the number of C-planes;
 //! 5 `Dc`; 6 `Ng`, the number of γ angles; 7 `Dg`; 8–12 report, luminaire name and number,
-//! file name, date; 13–21 dimensions (mm); 22 downward flux fraction (%); 23 light output
+//! file name, date; 13–21 dimensions (mm; 16–21 the luminous area, `super::luminous`); 22 downward flux fraction (%); 23 light output
 //! ratio `LORL` (%); 24 conversion factor for intensities; 25 tilt during measurement;
 //! 26 the number `n` of lamp sets, then six lines per set (number of lamps, type,
 //! **total flux**, colour, colour rendering, watts); ten direct ratios; `Mc` C-angles; `Ng`
@@ -22,6 +22,7 @@
 //! C and γ are type C angles (γ = 0 at the nadir).
 
 use super::error::PhotometryError;
+use super::luminous::LuminousOpening;
 use super::symmetry::{PLANE_C0, PLANE_C90, full_turn};
 use super::system::System;
 use super::table::IntensityDistribution;
@@ -42,11 +43,14 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
     for what in ["the report number", "the luminaire name", "the luminaire number", "the file name", "the date"] {
         r.text(what)?;
     }
-    for what in ["the luminaire length", "its width", "its height", "the luminous area's length", "its width"] {
+    for what in ["the luminaire length", "its width", "its height"] {
         r.number(what)?;
     }
+    let length = r.number("the luminous area's length")? / 1000.0;
+    let width = r.number("the luminous area's width")? / 1000.0;
+    let mut height = 0.0;
     for plane in ["C0", "C90", "C180", "C270"] {
-        r.number(&format!("the luminous area's height at {plane}"))?;
+        height += r.number(&format!("the luminous area's height at {plane}"))? / 4000.0;
     }
     r.number("the downward flux fraction")?;
     let lorl = r.number("the light output ratio LORL (%)")?;
@@ -144,6 +148,7 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
         return Err(PhotometryError::at(file, conversion_line, message));
     }
     table.stated_flux = Some(lorl / 100.0 * lamp_flux);
+    table.luminous = LuminousOpening::of_ldt(length, width, height);
     table.description = format!("EULUMDAT, Isym {isym}: {name}");
     Ok(table)
 }

@@ -7,7 +7,7 @@
 //! module owns only the distributions: the closed set [`Distribution`], the table
 //! [`IntensityDistribution`] with its interpolation and exact flux, the goniometric systems
 //! A, B and C ([`System`]), the symmetries files imply, tilt factors, and the two file
-//! readers, whose errors ([`PhotometryError`]) name the file, the line and what was
+//! readers, the luminous opening they size ([`LuminousOpening`]), whose errors ([`PhotometryError`]) name the file, the line and what was
 //! expected there. It knows nothing of scenes, meshes or TOML.
 //!
 //! The luminaire frame: `x` along the luminaire (C0), `y` across it (C90), `z` up; the
@@ -16,6 +16,7 @@
 mod error;
 mod ies;
 mod ldt;
+mod luminous;
 mod symmetry;
 mod system;
 mod table;
@@ -23,6 +24,7 @@ mod tilt;
 mod tokens;
 
 pub use error::PhotometryError;
+pub use luminous::{FALLBACK_DIAMETER, LuminousOpening};
 pub use system::System;
 pub use table::{Column, IntensityDistribution};
 pub use tilt::Tilt;
@@ -56,6 +58,16 @@ impl Distribution {
             Distribution::Lambertian { peak } => peak * (-l.z).max(0.0),
             Distribution::Table(table) => table.intensity(l),
         }
+    }
+
+    /// What the eye sees of the luminaire: the file's luminous opening, else a sphere of
+    /// [`FALLBACK_DIAMETER`].
+    pub fn luminous(&self) -> LuminousOpening {
+        let file = match self {
+            Distribution::Table(table) => table.luminous,
+            Distribution::Isotropic { .. } | Distribution::Lambertian { .. } => None,
+        };
+        file.unwrap_or(LuminousOpening::Sphere { diameter: FALLBACK_DIAMETER })
     }
 
     /// The luminous flux, lm.

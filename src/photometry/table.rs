@@ -11,6 +11,7 @@
 //! form (trapezoid in `a`; in `θ` the weights `cosθ₀ − (sinθ₁ − sinθ₀)/h` and
 //! `(sinθ₁ − sinθ₀)/h − cosθ₁` of the two end values, `h = θ₁ − θ₀`).
 
+use super::luminous::LuminousOpening;
 use super::system::System;
 use super::tilt::Tilt;
 use glam::DVec3;
@@ -31,6 +32,8 @@ pub struct IntensityDistribution {
     pub tilt: Option<Tilt>,
     /// The luminaire flux the file states, lm (none for absolute photometry).
     pub stated_flux: Option<f64>,
+    /// The luminous opening the file sizes, if any (what the eye sees of the luminaire).
+    pub luminous: Option<LuminousOpening>,
     /// What the file was, for reports (`"IES LM-63-2002, type C, 0–90° quadrant symmetry"`).
     pub description: String,
 }
@@ -51,6 +54,7 @@ impl IntensityDistribution {
             periodic,
             tilt: None,
             stated_flux: None,
+            luminous: None,
             description: String::new(),
         }
     }

@@ -54,6 +54,16 @@ impl Projection {
         (self.forward + u * self.right + v * self.up).normalize()
     }
 
+    /// Whether any sample ray of pixel `(px, py)` satisfies `test`.
+    pub fn any_sample(&self, [px, py]: [usize; 2], test: &dyn Fn(DVec3) -> bool) -> bool {
+        (0..self.samples).any(|s| test(self.sample(px, py, s)))
+    }
+
+    /// Every pixel, row by row from the top left.
+    pub fn pixels(&self) -> impl Iterator<Item = [usize; 2]> + '_ {
+        (0..self.height).flat_map(move |py| (0..self.width).map(move |px| [px, py]))
+    }
+
     /// Direction of sample `s` (of [`Projection::samples`]) of pixel `(px, py)`.
     pub fn sample(&self, px: usize, py: usize, s: usize) -> DVec3 {
         self.point(px, py, s, self.samples)

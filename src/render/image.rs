@@ -7,8 +7,10 @@
 //! the pixel is `Σ_c (n_c/S) L̄_c`. A surface that covers samples but none of the points
 //! is shaded at its first sample. The gather's rays per pixel are spread over the points.
 //! With no more samples than points both sets are the same and every sample is shaded.
+//! A sample that meets a light source's own luminance (a luminaire, the sky through an
+//! opening: [`Sight::Light`]) adds it as flat shading does; it is not gathered.
 
-use super::{LitScene, Projection, Shading};
+use super::{LitScene, Projection, Shading, Sight};
 use crate::random::Rng;
 use crate::scene::Camera;
 use glam::DVec3;
@@ -82,13 +84,18 @@ fn gathered(
     let points = view.samples.min(GATHER_POINTS);
     let rays = rays.div_ceil(points);
     seen.clear();
+    let mut lights = 0.0;
     for s in 0..view.samples {
-        if let Some((patch, _)) = scene.hit(view.eye, view.sample(px, py, s)) {
-            let key = scene.side_of(patch);
-            match seen.iter_mut().find(|c| c.key == key) {
-                Some(c) => c.covered += 1,
-                None => seen.push(Seen { key, covered: 1, first: s, sum: 0.0, shaded: 0 }),
+        match scene.sight(view.eye, view.sample(px, py, s)) {
+            Some(Sight::Patch(patch, _)) => {
+                let key = scene.side_of(patch);
+                match seen.iter_mut().find(|c| c.key == key) {
+                    Some(c) => c.covered += 1,
+                    None => seen.push(Seen { key, covered: 1, first: s, sum: 0.0, shaded: 0 }),
+                }
             }
+            Some(Sight::Light(luminance)) => lights += luminance,
+            None => {}
         }
     }
     for s in 0..points {
@@ -99,13 +106,14 @@ fn gathered(
             shade(scene, view.eye, view.sample(px, py, seen[i].first), rays, rng, seen);
         }
     }
-    seen.iter().map(|c| c.covered as f64 * c.sum / c.shaded.max(1) as f64).sum::<f64>() / view.samples as f64
+    let surfaces: f64 = seen.iter().map(|c| c.covered as f64 * c.sum / c.shaded.max(1) as f64).sum();
+    (surfaces + lights) / view.samples as f64
 }
 
 /// Shades the point seen along `direction` into the surface side it lies on, if that side
 /// covers samples of the pixel (`seen`).
 fn shade(scene: &LitScene, eye: DVec3, direction: DVec3, rays: usize, rng: &mut Rng, seen: &mut [Seen]) {
-    let Some((patch, q)) = scene.hit(eye, direction) else { return };
+    let Some(Sight::Patch(patch, q)) = scene.sight(eye, direction) else { return };
     let key = scene.side_of(patch);
     if let Some(c) = seen.iter_mut().find(|c| c.key == key) {
         c.sum += scene.shade(patch, q, -direction, rays, rng);

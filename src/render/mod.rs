@@ -4,6 +4,9 @@
 //! leaving the first surface along each primary ray towards the eye, averaged over the
 //! pixel's samples, shaded flat (the stored patch value), smooth (interpolated between
 //! patches of one surface) or by a final gather (one more reflection at the hit point).
+//! Where the ray meets a luminaire's luminous opening first, or leaves the scene through a
+//! `[[window]]`, the pixel shows the luminaire's luminance, or the sky's and the ground's
+//! (`lit.rs`, `crate::luminaire::luminous_along`).
 
 mod camera;
 mod image;
@@ -13,5 +16,5 @@ mod solved;
 
 pub use camera::Projection;
 pub use image::{GATHER_POINTS, Image, render};
-pub use lit::{LitScene, Shading};
+pub use lit::{LitScene, Shading, Sight};
 pub use solved::Solved;

@@ -24,5 +24,5 @@ pub use kernel::{KernelError, model_with_kernel};
 pub use light_scenes::{GroupSolves, dimmed, lit_light_scene, solve_light_scenes};
 pub use solve::{Job, solve_case};
 pub use spectrum::{Rate, chebyshev_rate, measured_rate, rates};
-pub use view::lit_scene;
+pub use view::{lit_scene, lit_scene_with};
 pub use warnings::physics_warnings;

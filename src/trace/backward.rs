@@ -13,7 +13,8 @@
 //! their light, reflected once in `L0`, is kept at the vertices up to `n`. So is the sky
 //! through the openings (`openings.rs`): sampled towards an opening at every vertex, and
 //! met by a scattered ray that leaves the scene through one, the two weighted by the
-//! power heuristic (only the first at the last vertex kept).
+//! power heuristic (only the first at the last vertex kept). A camera sees the sky
+//! through an opening and a luminaire's luminous opening directly, as the render does.
 
 use super::openings::Openings;
 use super::world::{Cast, World};
@@ -59,12 +60,20 @@ pub struct Start {
     /// samples the emitters from `origin` (the emission met first is then weighted against
     /// that); `None` for a camera ray.
     pub drawn: Option<f64>,
+    /// A camera's ray: it sees the luminaires' luminous openings and the sky through an
+    /// opening directly (a probe's luminance is that of the first surface).
+    pub camera: bool,
 }
 
 impl Start {
     /// A ray from an eye in free space.
     pub fn eye(origin: DVec3, direction: DVec3) -> Start {
-        Start { origin, direction, ignore: NO_FACE, drawn: None }
+        Start { origin, direction, ignore: NO_FACE, drawn: None, camera: false }
+    }
+
+    /// A camera's ray from an eye in free space.
+    pub fn camera(origin: DVec3, direction: DVec3) -> Start {
+        Start { camera: true, ..Start::eye(origin, direction) }
     }
 }
 
@@ -77,15 +86,21 @@ pub fn luminance_along(world: &World, start: Start, rng: &mut Rng, options: &Tra
     let (mut beta, mut total) = (1.0, 0.0);
     // density of the direction just sampled, None after the eye or a mirror
     let mut scattered = start.drawn;
+    if start.camera {
+        *rays += 1;
+        if let Some(luminance) = world.luminaires.seen(&world.visibility, origin, direction) {
+            return luminance;
+        }
+    }
     for order in 0..=last {
         *rays += 1;
         let hit = match world.cast(origin, direction, ignore) {
             Cast::Lands(hit) => hit,
             Cast::Absorbed => break,
             Cast::Escapes => {
-                // The sky through an opening lights the last vertex (or the probe); the eye
-                // does not see it directly.
-                if (order > 0 || start.drawn.is_some())
+                // The sky through an opening lights the last vertex or the probe; a camera
+                // sees it directly.
+                if (order > 0 || start.drawn.is_some() || start.camera)
                     && let Some(seen) = world.openings.seen(origin, direction)
                 {
                     let weight = scattered.map_or(1.0, |pdf| power_heuristic(pdf, seen.pdf));

@@ -50,7 +50,7 @@ pub fn trace_camera(
                     for _ in 0..spp {
                         let (x, y) = (px as f64 + rng.uniform(), py as f64 + rng.uniform());
                         let d = view.direction(x, y);
-                        tally.add(luminance_along(world, Start::eye(view.eye, d), &mut rng, options, &mut rays));
+                        tally.add(luminance_along(world, Start::camera(view.eye, d), &mut rng, options, &mut rays));
                     }
                     tally.mean_and_error(spp as u64)
                 })

@@ -8,6 +8,9 @@
 //! backward estimate misses luminaires seen in mirrors, which the direction cells of the
 //! linear system do carry.
 //!
+//! The eye alone sees a luminaire's luminous opening (`luminaire::luminous_along`), as in
+//! the render of the solved field.
+//!
 //! For light tracing a luminaire is a photon source chosen by flux: a point luminaire
 //! sends a photon in a uniform direction with weight `4π I(ω)/Φ` (the weights average 1);
 //! parallel light enters through a disc across the beam covering the scene's bounding
@@ -15,7 +18,7 @@
 
 use super::emitters::Departure;
 use crate::geometry::{Frame, Mesh};
-use crate::luminaire::{Light, Source, incoming};
+use crate::luminaire::{Light, Source, incoming, luminous_along};
 use crate::material::MaterialModel;
 use crate::scene::Scene;
 use crate::visibility::{NO_FACE, Visibility};
@@ -34,6 +37,13 @@ pub struct Luminaires {
 }
 
 impl Luminaires {
+    /// The luminance of the luminous opening the eye at `origin` meets first along the
+    /// unit `direction`, if it lies nearer than every surface, cd/m².
+    pub fn seen(&self, visibility: &Visibility, origin: DVec3, direction: DVec3) -> Option<f64> {
+        let before = visibility.closest_hit(origin, direction, NO_FACE).map_or(f64::INFINITY, |h| h.distance);
+        luminous_along(&self.sources, origin, direction, before)
+    }
+
     /// The luminaires of `scene` placed, with the bounding sphere of `mesh` where parallel
     /// light enters.
     pub fn of(scene: &Scene, mesh: &Mesh) -> Luminaires {

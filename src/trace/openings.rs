@@ -13,8 +13,8 @@
 //! openings sees the sky once, times the product of their glazings (the deterministic
 //! path adds the openings, the same unless one opening is seen through another).
 //!
-//! The eye does not see the sky directly, as in the render of the solved field: the
-//! openings light surfaces (and probes), like a luminaire.
+//! A camera sees the sky through an opening as it does in the render of the solved field
+//! (`crate::render`, which reads it here); a probe's luminance is its first surface's.
 
 use super::emitters::{Incoming, point_on};
 use crate::geometry::ConvexPolygon;

@@ -102,7 +102,7 @@ fn read(
         }
         let local = cosine_direction(rng.uniform(), rng.uniform());
         let d = frame.world(local);
-        let start = Start { origin: p, direction: d, ignore, drawn: Some(local.z * FRAC_1_PI) };
+        let start = Start { origin: p, direction: d, ignore, drawn: Some(local.z * FRAC_1_PI), camera: false };
         e += PI * luminance_along(world, start, &mut rng, options, &mut rays);
         illuminance.add(e);
         report(s);

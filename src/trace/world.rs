@@ -12,7 +12,7 @@ use crate::luminaire::Source;
 use crate::material::MaterialModel;
 use crate::scene::Scene;
 use crate::transfer::exposure::measure_exposure;
-use crate::visibility::{Faces, Visibility};
+use crate::visibility::{Faces, NO_FACE, Visibility};
 use glam::DVec3;
 
 /// A ray's first surface, on the side it meets.
@@ -80,6 +80,15 @@ impl World {
     /// The patch that the point `p` lies on, facing the unit `n`, if any.
     pub fn under(&self, p: DVec3, n: DVec3) -> Option<usize> {
         self.faces.under(&self.mesh, &self.visibility, p, n)
+    }
+
+    /// Whether the eye at `origin` looking along the unit `direction` meets a light
+    /// source's own luminance first: a luminaire's luminous opening, or the sky through an
+    /// opening.
+    pub fn sees_light(&self, origin: DVec3, direction: DVec3) -> bool {
+        let escapes = || matches!(self.cast(origin, direction, NO_FACE), Cast::Escapes);
+        self.luminaires.seen(&self.visibility, origin, direction).is_some()
+            || (escapes() && self.openings.seen(origin, direction).is_some())
     }
 
     /// The first surface along the unit `direction` from `origin`, ignoring face `ignore`;

@@ -5,13 +5,13 @@
 use crate::support::scratch;
 use glam::DVec3;
 use std::path::Path;
-use ugo::io::{GridPlan, colour, write_grid_map};
+use ugo::io::{GridPlan, Overlay, colour, write_grid_map};
 use ugo::readout::grid::GridReading;
 use ugo::scene::{Grid, MapScale, MapStyle, Scene};
 
 /// A grid of 8 × 4 cells over `origin + s·edge_u + t·edge_v`, dark but for the cell
 /// `(i, j)` of 100 lx.
-fn reading(edge_u: DVec3, edge_v: DVec3, normal: DVec3, (i, j): (usize, usize)) -> GridReading {
+pub(super) fn reading(edge_u: DVec3, edge_v: DVec3, normal: DVec3, (i, j): (usize, usize)) -> GridReading {
     let grid = Grid {
         name: "g".into(),
         origin: DVec3::ZERO,
@@ -31,7 +31,7 @@ fn reading(edge_u: DVec3, edge_v: DVec3, normal: DVec3, (i, j): (usize, usize)) 
 fn bright_quadrant(g: &GridReading, name: &str) -> (f64, f64) {
     let dir = scratch("grid-plans");
     let path = dir.join(format!("{name}.png"));
-    write_grid_map(&path, g, &[]).unwrap();
+    write_grid_map(&path, g, &Overlay::default()).unwrap();
     let plan = GridPlan::of(g, &[]);
     let png = image::open(&path).unwrap().to_rgb8();
     assert_eq!((png.width(), png.height()), plan.size);

@@ -3,11 +3,13 @@
 //! temporary file that the next run removes; concurrent writers of one path all succeed
 //! and leave one whole file. The kernel file (`kernel_file.rs`, `kernel_check.py`) and its
 //! exports (`export.rs`). The grids' plans, their round ticks and isolux lines
-//! (`grid_map.rs`, `ticks.rs`, `isolines.rs`).
+//! (`grid_map.rs`, `ticks.rs`, `isolines.rs`), the luminaires and the section they draw
+//! (`plan_marks.rs`).
 
 mod export;
 mod faults;
 mod grid_map;
 mod isolines;
 mod kernel_file;
+mod plan_marks;
 mod ticks;

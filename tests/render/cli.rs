@@ -206,12 +206,7 @@ fn render_refuses_a_material_id_outside_the_stored_scene() {
 #[test]
 fn render_works_after_the_photometric_file_is_moved_away() {
     let dir = scratch("self-contained");
-    for name in ["5.4-flux-conservation.toml", "isotropic-10000lm.ies"] {
-        std::fs::copy(Path::new("cases/cie171").join(name), dir.join(name)).unwrap();
-    }
-    let (case, h5) = (dir.join("5.4-flux-conservation.toml"), dir.join("lit.h5"));
-    let o = ugo(&["solve", case.to_str().unwrap(), "--patch-size", "0.5", "-o", h5.to_str().unwrap()]);
-    assert!(o.status.success(), "{}", text(&o));
+    let (case, h5) = super::solved_lamp_room(&dir);
     std::fs::rename(dir.join("isotropic-10000lm.ies"), dir.join("moved.ies")).unwrap();
     let view = ["--position", "2,1.5,2", "--look-at", "0,0,0", "--resolution", "16,16", "--shading", "gather"];
     let o = ugo(&[&["render", h5.to_str().unwrap(), "-o", dir.to_str().unwrap()][..], &view[..]].concat());
