@@ -4,6 +4,7 @@
 mod arguments;
 mod hierarchical;
 mod light_scenes;
+mod messages;
 mod outputs;
 
 use crate::support::{scratch, ugo};
