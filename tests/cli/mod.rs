@@ -2,6 +2,7 @@
 //! failure a clear message with a non-zero exit, never a panic.
 
 mod arguments;
+mod classroom;
 mod hierarchical;
 mod light_scenes;
 mod messages;
