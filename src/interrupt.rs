@@ -11,6 +11,11 @@
 //! files being written (held by a [`Temporary`]) are removed and the process exits with the
 //! same status.
 //!
+//! Loops that return no `Result` (a render's pixels, the tracers' rows, chunks and paths, the
+//! readouts' probes and grid points) skip the rest of their work once [`asked`] is true and
+//! return what they have: the caller that owns the stage ends it with [`check`] before the
+//! result is used, so nothing partial is printed or written (issue 37, point 6).
+//!
 //! Nothing is installed until [`install`] is called: the command line does; a library
 //! caller keeps the default handlers, and [`requested`] stays `None`.
 
@@ -91,6 +96,12 @@ pub fn requested(during: impl FnOnce() -> String) -> Option<Interrupted> {
         0 => None,
         signal => Some(Interrupted { signal, during: during() }),
     }
+}
+
+/// Whether a stop has been asked for (see the module's documentation for the loops that
+/// poll it).
+pub fn asked() -> bool {
+    SIGNAL.load(Ordering::Relaxed) != 0
 }
 
 /// `Err` when a stop has been asked for; `during` names the work it interrupts.

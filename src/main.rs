@@ -237,6 +237,9 @@ fn main() -> ExitCode {
     if let Err(e) = ugo::interrupt::install() {
         eprintln!("ugo: warning: SIGINT and SIGTERM are not handled ({e}): they stop at once");
     }
+    if let Err(e) = ugo::io::survive_size_limit() {
+        eprintln!("ugo: warning: SIGXFSZ is not handled ({e}): a write past the file-size limit ends the process");
+    }
     let result = run(cli.command);
     if let Some(stop) = ugo::interrupt::requested(String::new) {
         match result {

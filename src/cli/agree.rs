@@ -12,6 +12,7 @@ use anyhow::{Result, bail};
 use std::path::Path;
 use ugo::io::{StoredSolution, read_exr, read_solution};
 use ugo::luminaire::Source;
+use ugo::model::{Fingerprint, Part};
 use ugo::placement::{Place, places};
 use ugo::render::render;
 use ugo::trace::{Agreement, World, agreement, leaf_errors};
@@ -69,6 +70,7 @@ pub fn run(solution: &Path, reference: &Path, rendering: &Rendering, precise: f6
     let mut lit = ugo::study::lit_scene(stored);
     lit.set_shading(shading);
     let image = render(&lit, &camera);
+    super::stop::after_stage(|| format!("the render of camera \"{}\"", camera.name), &[])?;
     println!(
         "ugo agree: {} through camera \"{}\" ({} rays/pixel, {} shading) against the traced image {}",
         solution.display(),
@@ -91,6 +93,7 @@ fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution, 
             reference.display()
         );
     };
+    same_scene(solution, stored, reference, &mc)?;
     let (n, k) = (stored.mesh.len(), stored.directions.len());
     if mc.mesh.len() != n || mc.directions.name() != stored.directions.name() {
         bail!(
@@ -148,6 +151,28 @@ fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution, 
         println!("  {:<26} {:>8.3} {:>10.3e} {:>10.3e}", name, a.rms_z, a.relative_l1, a.noise_l2);
     }
     Ok(())
+}
+
+/// Refuses two files of different scenes (their fingerprints' geometry, reflectances or
+/// luminaires differ) before their discretizations are compared.
+fn same_scene(solution: &Path, stored: &StoredSolution, reference: &Path, mc: &StoredSolution) -> Result<()> {
+    let scene = [Part::Geometry, Part::Reflectances, Part::Luminaires];
+    let changes = Fingerprint::of(&mc.scene).changes_from(&Fingerprint::of(&stored.scene));
+    let differ: Vec<&str> = changes.iter().filter(|c| scene.contains(&c.part)).map(|c| c.part.name()).collect();
+    if differ.is_empty() {
+        return Ok(());
+    }
+    bail!(
+        "the two files hold different scenes ({} differ): {} is \"{}\" ({}), {} is \"{}\" ({}); compare a solution \
+         with a trace of the same case",
+        differ.join(", "),
+        solution.display(),
+        stored.scene.name,
+        stored.scene.path.display(),
+        reference.display(),
+        mc.scene.name,
+        mc.scene.path.display()
+    )
 }
 
 /// The leaf-by-leaf errors of each kind of place (`placement::places`: near a contact, near

@@ -4,15 +4,15 @@
 
 use super::options::Discretize;
 use super::{bytes, describe, load};
-use anyhow::Result;
+use anyhow::{Context, Result};
 use std::path::Path;
-use ugo::kernel::Forecast;
+use ugo::kernel::{Forecast, figure};
 use ugo::luminaire::Source;
 use ugo::model::Model;
-use ugo::scene::KernelKind;
+use ugo::scene::{KernelKind, number};
 
-pub fn run(case: &Path, d: &Discretize) -> Result<()> {
-    let scene = load(case, d)?;
+pub fn run(case: &Path, asked: &Discretize) -> Result<()> {
+    let scene = load(case, asked)?;
     let d = &scene.discretization;
     let forecast = Model::forecast(&scene);
     print_forecast(&forecast, d.kernel.name());
@@ -20,13 +20,13 @@ pub fn run(case: &Path, d: &Discretize) -> Result<()> {
     if let (Some(chosen), KernelKind::Uniform) = (d.chosen_by_size, d.kernel) {
         println!("  kernel             not given: {chosen}");
     }
-    forecast.check(d.memory_limit)?;
+    forecast.check(d.memory_limit).with_context(|| super::size_key::sized_by(case, asked, &scene))?;
     let mesh = Model::starting_mesh(&scene);
     let directions = d.directions.set();
     let estimate = Forecast::counted(&mesh, scene.materials.len(), &directions);
     let areas = mesh.surface_areas(scene.surfaces.len());
     println!("ugo info: {} ({})", scene.name, case.display());
-    println!("  patch size         {:>12} m", d.patch_size);
+    println!("  patch size         {:>12} m", number(d.patch_size));
     if let KernelKind::Hierarchical(h) = d.kernel {
         println!("  root size          {:>12} m   (link tolerance {:.0e})", h.root_size, h.link_tolerance);
     }
@@ -60,14 +60,14 @@ pub fn run(case: &Path, d: &Discretize) -> Result<()> {
 /// The figures known before meshing.
 fn print_forecast(f: &Forecast, assembly: &str) {
     println!("ugo info: before meshing ({assembly} kernel, from the surfaces' areas and the patch size)");
-    println!("  patches N          {:>12.4e}", f.patches);
+    println!("  patches N          {:>12}", figure(f.patches));
     if let Some(leaves) = f.leaves {
-        println!("  leaves at most     {:>12.4e}   (links are known only after refinement)", leaves);
+        println!("  leaves at most     {:>12}   (links are known only after refinement)", figure(leaves));
     } else {
-        println!("  facing pairs       {:>12.4e}{}", f.facing_pairs, if f.sampled { " (sampled)" } else { "" });
-        println!("  non-zeros of G     {:>12.4e}", f.nonzeros);
+        println!("  facing pairs       {:>12}{}", figure(f.facing_pairs), if f.sampled { " (sampled)" } else { "" });
+        println!("  non-zeros of G     {:>12}", figure(f.nonzeros));
     }
-    println!("  unknowns           {:>12.4e}   ({} cells)", f.unknowns, f.cells);
+    println!("  unknowns           {:>12}   ({} cells)", figure(f.unknowns), f.cells);
     match f.leaves {
         Some(_) => println!(
             "  memory before links {:>11}   (the links' memory is checked against the limit after each refinement pass)",

@@ -11,6 +11,7 @@ pub mod light_scenes;
 pub mod options;
 pub mod probes;
 pub mod render;
+pub mod size_key;
 pub mod solve;
 pub mod spectrum;
 pub mod stop;
@@ -212,6 +213,7 @@ impl ugo::progress::Progress for Bars {
 pub fn bytes(b: f64) -> String {
     let gib = b / (1u64 << 30) as f64;
     match gib {
+        g if !g.is_finite() => "more than can be counted".to_string(),
         g if g >= 1e4 => format!("{g:.3e} GiB"),
         g if g >= 1.0 => format!("{g:.2} GiB"),
         _ => format!("{:.1} MiB", b / (1u64 << 20) as f64),

@@ -21,7 +21,7 @@ pub struct Discretize {
     pub memory_limit: Option<f64>,
     /// Direction cells per patch: a count K (equal solid angle), `klems` or `tregenza`
     /// (default: the case's `directions`, else 1).
-    #[arg(long, value_parser = scheme)]
+    #[arg(long, value_parser = scheme, allow_negative_numbers = true)]
     pub directions: Option<Scheme>,
     /// Precision of the stored transport matrix G: `f64` (16 bytes per non-zero) or `f32`
     /// (f32 values and u32 indices, 8 bytes; products still accumulate in f64).

@@ -156,6 +156,7 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
         let seconds = start.elapsed().as_secs_f64();
         let stem = dir.join(format!("{case}-{}-{}", file_name(&camera.name), tag(shading)));
         let (exr, png) = (sibling(&stem, ".exr"), sibling(&stem, ".png"));
+        super::stop::after_stage(|| format!("the render of camera \"{}\"", camera.name), &[&exr, &png])?;
         write_exr(&exr, &image)?;
         let white = exposure.unwrap_or_else(|| auto_exposure(&surfaces_seen(&lit, camera, &image)));
         write_png(&png, &image, white)?;
@@ -186,6 +187,10 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
                 lit.solved.luminance = sum.clone();
                 let caption = if *n == 1 { "after 1 reflection".to_string() } else { format!("after {n} reflections") };
                 panels.push((caption, render(&lit, camera)));
+                super::stop::after_stage(
+                    || format!("the render of {n} reflections"),
+                    &[&sibling(&stem, "-orders.png")],
+                )?;
             }
             lit.solved.luminance = solved;
             lit.set_shading(shading);

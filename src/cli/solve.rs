@@ -8,8 +8,8 @@ use anyhow::{Context, Result, bail};
 use std::path::{Path, PathBuf};
 use ugo::geometry::{Mesh, section};
 use ugo::io::{
-    MonteCarlo, Overlay, Run, Solution, Warning, convergence_plot, one_line, told, write_daylight_map, write_grid_csv,
-    write_grid_map, write_probes_csv, write_solution,
+    MonteCarlo, OutputLock, Overlay, Run, Solution, Warning, convergence_plot, one_line, told, write_daylight_map,
+    write_grid_csv, write_grid_map, write_probes_csv, write_solution,
 };
 use ugo::luminaire::Source;
 use ugo::model::HierarchyRecord;
@@ -65,12 +65,14 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
     let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}{}.h5", job.suffix)));
     check_writable(&output)?;
+    let _lock = OutputLock::take(&output)?;
     if let Some(plot) = &job.plot {
         check_writable(plot)?;
     }
     let study = study::Job { params, strict, ..job.run };
     let outputs: Vec<&Path> = std::iter::once(output.as_path()).chain(job.plot.as_deref()).collect();
-    let s = solve_case(&scene, &study, &Bars::default()).map_err(|e| super::stop::not_written(e, &outputs))?;
+    let s = solve_case(&scene, &study, &Bars::default())
+        .map_err(|e| super::stop::not_written(super::size_key::located(e, case, d, &scene), &outputs))?;
     for (method, e) in &s.failures {
         eprintln!("ugo: {} failed: {e}", method.name());
     }

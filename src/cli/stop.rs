@@ -15,3 +15,10 @@ pub fn not_written(error: impl Into<anyhow::Error>, outputs: &[&Path]) -> anyhow
         names.join(", ")
     )
 }
+
+/// Ends a stage whose loops skip the rest of their work once a signal asked to stop (a
+/// render, a trace: `ugo::interrupt`): `Err` naming what was `during` and the `outputs`
+/// not written, so that nothing partial is printed or written.
+pub fn after_stage(during: impl FnOnce() -> String, outputs: &[&Path]) -> anyhow::Result<()> {
+    ugo::interrupt::check(during).map_err(|e| not_written(e, outputs))
+}

@@ -127,6 +127,7 @@ fn forward(
     let progress = bar(photons, "photons");
     let estimate = trace_photons(world, directions, photons, &job.options, &|n| progress.inc(n));
     progress.finish_and_clear();
+    super::stop::after_stage(|| "the forward trace".to_string(), &[&output])?;
     let file = EstimateFile {
         scene,
         mesh: &world.mesh,
@@ -168,6 +169,7 @@ fn camera_images(case: &Path, scene: &Scene, world: &World, job: &TraceJob) -> R
         progress.finish_and_clear();
         let base = dir.join(format!("{stem}-{}-trace", file_name(&camera.name)));
         let (mean, error, png) = (sibling(&base, ".exr"), sibling(&base, "-stderr.exr"), sibling(&base, ".png"));
+        super::stop::after_stage(|| format!("the trace of camera \"{}\"", camera.name), &[&mean, &error, &png])?;
         let seed = job.options.seed;
         write_exr_as(
             &mean,
@@ -216,6 +218,7 @@ fn probes(scene: &Scene, world: &World, job: &TraceJob) -> Result<()> {
     let progress = bar(2 * sensors * job.probe_samples as u64, "probe paths");
     let readings = trace_probes(world, &scene.probes, job.probe_samples, &job.options, &|n| progress.inc(n));
     progress.finish_and_clear();
+    super::stop::after_stage(|| "the trace of the probes".to_string(), &[])?;
     println!(
         "  probes ({} paths each, {:.2} s)     luminance cd/m²            illuminance lx",
         job.probe_samples,

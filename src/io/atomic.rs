@@ -10,7 +10,9 @@
 //!   (`fsync`, which reports a delayed `EIO`/`ENOSPC`/`EFBIG`) and reopened in its format
 //!   (HDF5 is opened again, which refuses a truncated file; PNG and EXR headers are
 //!   read) before the rename.
-//! * A failure removes the temporary file. Temporary files of processes that are no
+//! * A failure removes the temporary file, and is told in plain words when the disk is
+//!   full or the file-size limit was reached (`io::no_room`, which also keeps SIGXFSZ from
+//!   killing the process mid-write). Temporary files of processes that are no
 //!   longer running (killed, out of power) are removed by the next write of the same path.
 //! * A stop asked for by a signal (`crate::interrupt`) is checked before the write and
 //!   again before the rename: the temporary file is removed and the target left as it
@@ -54,6 +56,7 @@ pub fn atomic(path: &Path, write: impl FnOnce(&Path) -> Result<(), String>) -> R
             Ok(())
         }
         Err(why) => {
+            let why = super::no_room::plain(&tmp, why);
             let _ = std::fs::remove_file(&tmp);
             Err(IoError::write(path, why))
         }

@@ -40,6 +40,12 @@ pub enum IoError {
         /// What it lacks.
         why: String,
     },
+    /// An HDF5 file without `/field`: not a solution, or one of an older layout.
+    #[error("{} has no /field: not a ugo solution, or written by an older version", path.display())]
+    NoField {
+        /// The file.
+        path: PathBuf,
+    },
     /// A file without a usable `/kernel` group (`ugo solve --save-kernel` writes one).
     #[error("{} holds no usable kernel: {why}", path.display())]
     NotAKernel {
@@ -65,6 +71,18 @@ pub enum IoError {
         name: String,
         /// The light scenes it holds, listed.
         known: String,
+    },
+    /// Another running process writes the same output (`io::lock`).
+    #[error(
+        "another ugo is writing {} (it holds {}): wait for it to end or give another output path",
+        path.display(),
+        lock.display()
+    )]
+    Busy {
+        /// The output path.
+        path: PathBuf,
+        /// Its lock file.
+        lock: PathBuf,
     },
     /// A signal asked the process to stop before the file was complete.
     #[error("{} not written ({stop}); a previous file of that name is left as it was", path.display())]

@@ -38,6 +38,9 @@ pub struct StoredSolution {
 /// of 10⁹ elements in a small file is refused before anything is allocated).
 pub fn read_solution(path: &Path) -> std::result::Result<StoredSolution, IoError> {
     let (file, bytes) = open(path)?;
+    if !file.link_exists("field") {
+        return Err(IoError::NoField { path: path.to_path_buf() });
+    }
     read_from(&File { h5: &file, bytes }).map_err(|Why(why)| IoError::NotASolution { path: path.to_path_buf(), why })
 }
 
@@ -89,6 +92,9 @@ impl File<'_> {
     /// The dataset `name`, if its declared size fits in the file (ugo stores datasets
     /// uncompressed, so a larger one is not ugo's and would allocate without bound).
     pub(super) fn dataset(&self, name: &str, element: usize) -> Result<hdf5::Dataset> {
+        if !self.h5.link_exists(name) {
+            bail!("it has no /{name}");
+        }
         let d = self.h5.dataset(name)?;
         let declared = (d.size() as u128) * element as u128;
         if declared > self.bytes as u128 {

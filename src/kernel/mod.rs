@@ -27,6 +27,6 @@ pub use memory::Footprint;
 pub use operator::{Explicit, Factored, Kernel};
 pub use reciprocity::sent_shares;
 pub use refinement::{Refined, Solver, SourceTerm, refine_with_solves};
-pub use refusal::{Need, TooLarge};
+pub use refusal::{Need, TooLarge, figure};
 pub use transport::Transport;
 pub use uniform::{Assembled, Precision, TransportMatrix, assemble, row_stride, spmv};

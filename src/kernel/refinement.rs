@@ -45,7 +45,7 @@ pub fn refine_with_solves<E: From<Stopped>>(
 ) -> Result<Refined, E> {
     let mut before = Work::default();
     let mut l0 = source(hierarchy)?;
-    let (mut kernel, mut leaves) = Kernel::on_leaves(hierarchy);
+    let (mut kernel, mut leaves) = balanced(hierarchy, 0)?;
     let start = Instant::now();
     let mut x = solve(&kernel, &l0, 1.0)?;
     let mut history = vec![record(hierarchy, &kernel, 0, 1, &mut before, start)];
@@ -56,7 +56,7 @@ pub fn refine_with_solves<E: From<Stopped>>(
             break;
         }
         l0 = source(hierarchy)?;
-        let (next, next_leaves) = Kernel::on_leaves(hierarchy);
+        let (next, next_leaves) = balanced(hierarchy, history.len())?;
         let start = Instant::now();
         let x0 = hierarchy.prolong(&solved_on, &x);
         let mut r = vec![0.0; x0.len()];
@@ -72,6 +72,15 @@ pub fn refine_with_solves<E: From<Stopped>>(
         history.push(record(hierarchy, &kernel, history.len(), refined, &mut before, start));
     }
     Ok(Refined { x, kernel, leaves, l0, history })
+}
+
+/// The kernel on the leaves (`Kernel::on_leaves`, seconds of balancing), or the stop a
+/// signal asked for meanwhile (`crate::interrupt`).
+fn balanced<E: From<Stopped>>(hierarchy: &mut Hierarchy, pass: usize) -> Result<(Kernel, Mesh), E> {
+    let built = Kernel::on_leaves(hierarchy);
+    crate::interrupt::check(|| format!("the hierarchical kernel's balancing, pass {pass}"))
+        .map_err(|stop| E::from(Stopped::from(stop)))?;
+    Ok(built)
 }
 
 /// The record of pass `pass`, which refined `refined` links: the work since `before`

@@ -72,16 +72,16 @@ impl std::fmt::Display for TooLarge {
 /// A model's refusal: its figures and the ways out for its kernel.
 fn model(f: &mut std::fmt::Formatter<'_>, e: &Forecast, limit: u64) -> std::fmt::Result {
     write!(f, "the model would need about {}, over the limit of {}: ", gib(e.peak_bytes()), gib(limit as f64))?;
-    write!(f, "{:.3e} patches × {} direction cells = {:.3e} unknowns", e.patches, e.cells, e.unknowns)?;
+    write!(f, "{} patches × {} direction cells = {} unknowns", figure(e.patches), e.cells, figure(e.unknowns))?;
     match e.leaves {
         None => write!(
             f,
-            ", {:.3e} facing pairs, {:.3e} non-zeros of G ({} to assemble)",
-            e.facing_pairs,
-            e.nonzeros,
+            ", {} facing pairs, {} non-zeros of G ({} to assemble)",
+            figure(e.facing_pairs),
+            figure(e.nonzeros),
             gib(e.assembly_bytes.max(e.kernel_bytes))
         )?,
-        Some(leaves) => write!(f, " (roots of the hierarchy; at most {leaves:.3e} leaves)")?,
+        Some(leaves) => write!(f, " (roots of the hierarchy; at most {} leaves)", figure(leaves))?,
     }
     write!(
         f,
@@ -98,10 +98,20 @@ fn model(f: &mut std::fmt::Formatter<'_>, e: &Forecast, limit: u64) -> std::fmt:
     )
 }
 
-/// Bytes as GiB, in scientific notation past 10⁴ GiB.
+/// Bytes as GiB, in scientific notation past 10⁴ GiB; past the largest number, in words.
 fn gib(bytes: f64) -> String {
     match bytes / GIB {
         g if g < 1e4 => format!("{g:.3} GiB"),
-        g => format!("{g:.3e} GiB"),
+        g if g.is_finite() => format!("{g:.3e} GiB"),
+        _ => "1e308 bytes or more".to_string(),
+    }
+}
+
+/// A forecast's count in scientific notation; past the largest number (a patch size of
+/// 1e-300 m), in words.
+pub fn figure(x: f64) -> String {
+    match x.is_finite() {
+        true => format!("{x:.3e}"),
+        false => "over 1e308".to_string(),
     }
 }

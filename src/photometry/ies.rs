@@ -22,7 +22,7 @@ use super::error::PhotometryError;
 use super::luminous::LuminousOpening;
 use super::symmetry::{PLANE_C0, PLANE_C90, full_turn, signed};
 use super::system::System;
-use super::table::{Column, IntensityDistribution};
+use super::table::{Column, IntensityDistribution, check_intensity};
 use super::tilt::Tilt;
 use super::tokens::Tokens;
 use std::path::Path;
@@ -95,9 +95,7 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
         for j in 0..n_v {
             let what = || format!("candela value {} of {n_v} for horizontal angle {h}°", j + 1);
             let c = tokens.number(&what)?;
-            if c < 0.0 {
-                return Err(tokens.error(format!("expected {} (at least 0), got {c}", what())));
-            }
+            check_intensity(c, &what()).map_err(|m| tokens.error(m))?;
             column.push(c);
         }
         columns.push((h, column));

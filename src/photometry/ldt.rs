@@ -25,7 +25,7 @@ use super::error::PhotometryError;
 use super::luminous::LuminousOpening;
 use super::symmetry::{PLANE_C0, PLANE_C90, full_turn};
 use super::system::System;
-use super::table::IntensityDistribution;
+use super::table::{IntensityDistribution, check_intensity};
 use std::ops::RangeInclusive;
 use std::path::Path;
 
@@ -122,9 +122,7 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
         for j in 0..ng {
             let what = format!("intensity {} of {ng} in plane C{plane}° (cd/klm)", j + 1);
             let value = r.number(&what)?;
-            if value < 0.0 {
-                return Err(r.error(format!("expected {what} (at least 0), got {value}")));
-            }
+            check_intensity(value, &what).map_err(|m| r.error(m))?;
             column.push(value);
         }
         columns.push((plane, column));

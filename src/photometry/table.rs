@@ -38,6 +38,25 @@ pub struct IntensityDistribution {
     pub description: String,
 }
 
+/// Most intensity a file may give one direction, as written: a source this intense in
+/// every direction emits 1e20 lm, the largest flux a scene takes (`scene::check::MAGNITUDE`).
+/// (A file's multipliers that take it further are refused at their own line.)
+pub const MOST_CANDELA: f64 = 1e20 / (2.0 * TAU);
+
+/// Checks one intensity `value` of a file: the message for the value's line when it is
+/// negative or over [`MOST_CANDELA`]; `what` names it.
+pub fn check_intensity(value: f64, what: &str) -> Result<(), String> {
+    if value < 0.0 {
+        return Err(format!("expected {what} (at least 0), got {value}"));
+    }
+    if value > MOST_CANDELA {
+        return Err(format!(
+            "expected {what} at most {MOST_CANDELA:.3e} (a source that intense all round emits 1e20 lm), got {value:e}"
+        ));
+    }
+    Ok(())
+}
+
 /// One column of the table: an azimuth and the candela at every polar angle.
 pub type Column = (f64, Vec<f64>);
 

@@ -64,10 +64,11 @@ impl Residual {
 }
 
 /// Sets the error bar of every point sensor's and luminance meter's reading (the
-/// cylindrical kinds keep none), telling `progress` of each.
+/// cylindrical kinds keep none), telling `progress` of each; a signal's stop leaves the
+/// rest without (`crate::interrupt`: the caller checks).
 pub fn estimate_errors(readings: &mut [ProbeReading], model: &Model, field: &Field, progress: &dyn Progress) {
     progress.begin("error bars", readings.len() as u64);
-    for r in readings.iter_mut() {
+    for r in readings.iter_mut().take_while(|_| !crate::interrupt::asked()) {
         if matches!(r.kind, ProbeKind::Point | ProbeKind::LuminanceMeter { .. }) {
             r.error = Some(residual(model, field, r.position, r.normal, RAYS).error_bar(r.correction));
         }
@@ -76,7 +77,8 @@ pub fn estimate_errors(readings: &mut [ProbeReading], model: &Model, field: &Fie
     progress.end();
 }
 
-/// The residual at `p` on a receiver facing the unit `n`, over `rays` directions.
+/// The residual at `p` on a receiver facing the unit `n`, over `rays` directions (a
+/// signal's stop leaves the rays after it unread: `crate::interrupt`).
 pub fn residual(model: &Model, field: &Field, p: DVec3, n: DVec3, rays: usize) -> Residual {
     let at = Receiver::at(model, p, n);
     let stored = ModelSurroundings::new(model, field);
@@ -84,6 +86,9 @@ pub fn residual(model: &Model, field: &Field, p: DVec3, n: DVec3, rays: usize) -
     let samples: Vec<(f64, f64)> = (0..rays)
         .into_par_iter()
         .map(|r| {
+            if crate::interrupt::asked() {
+                return (0.0, 0.0);
+            }
             let [u, v] = set.point(r);
             seen(&stored, p, at.frame.world(cosine_direction(u, v)), at.ignore)
         })

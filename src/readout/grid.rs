@@ -44,11 +44,13 @@ pub struct GridStats {
 }
 
 impl GridReading {
-    /// The illuminance at every calculation point of `grid`, each point told to `progress`.
+    /// The illuminance at every calculation point of `grid`, each point told to `progress`;
+    /// a signal's stop leaves the points after it unread (`crate::interrupt`: the caller checks).
     pub fn of(grid: &Grid, model: &Model, field: &Field, progress: &dyn Progress) -> GridReading {
         let points = grid.points();
         let (illuminance, direct) = points
             .iter()
+            .take_while(|_| !crate::interrupt::asked())
             .map(|&p| {
                 let reading = illuminance_and_direct_at(model, field, p, grid.normal);
                 progress.advance(1);

@@ -57,11 +57,13 @@ pub struct ProbeReading {
     pub error: Option<f64>,
 }
 
-/// Reads every probe from a solved field, telling `progress` of each.
+/// Reads every probe from a solved field, telling `progress` of each; a signal's stop
+/// leaves the probes after it unread (`crate::interrupt`: the caller checks).
 pub fn read_probes(probes: &[Probe], model: &Model, field: &Field, progress: &dyn Progress) -> Vec<ProbeReading> {
     progress.begin("probes", probes.len() as u64);
     let readings = probes
         .iter()
+        .take_while(|_| !crate::interrupt::asked())
         .map(|p| {
             let reading = read(p, model, field);
             progress.advance(1);

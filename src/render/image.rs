@@ -39,14 +39,15 @@ impl Image {
     }
 }
 
-/// Renders `camera`'s view of `scene`.
+/// Renders `camera`'s view of `scene`. A stop asked for by a signal leaves the pixels not
+/// yet shaded black (`crate::interrupt`: the caller checks before using the image).
 pub fn render(scene: &LitScene, camera: &Camera) -> Image {
     let view = Projection::of(camera);
     let (width, height) = (view.width, view.height);
     let mut luminance = vec![0.0; width * height];
     luminance.par_chunks_mut(width).enumerate().for_each(|(py, row)| {
         let mut surfaces = Vec::new();
-        for (px, pixel) in row.iter_mut().enumerate() {
+        for (px, pixel) in row.iter_mut().enumerate().take_while(|_| !crate::interrupt::asked()) {
             let mut rng = Rng::keyed(((py * width + px) as u64) << 20 | 0xA5);
             *pixel = match scene.shading() {
                 Shading::Gather { rays } => gathered(scene, &view, [px, py], rays, &mut rng, &mut surfaces),

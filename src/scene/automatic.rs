@@ -8,6 +8,7 @@
 //! `patch_size⁻⁴` and the hierarchical kernel takes over with its defaults
 //! ([`Hierarchical::over`]): leaves down to the patch size, roots [`super::ROOTS`] times it.
 
+use super::check::number;
 use super::discretization::{ChosenBySize, Hierarchical, KernelKind};
 use crate::directions::Scheme;
 use crate::geometry::Surface;
@@ -31,15 +32,16 @@ pub fn by_size(patch_size: f64, directions: Scheme, surfaces: &[Surface]) -> (Ke
 impl std::fmt::Display for ChosenBySize {
     /// The choice in a sentence, for `ugo info` and `ugo solve`.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let (pairs, h) = (self.facing_pairs, self.patch_size);
+        let (pairs, h) = (self.facing_pairs, number(self.patch_size));
         if pairs <= UNIFORM_PAIRS {
             return write!(f, "the uniform kernel: {pairs:.3e} facing pairs at {h} m, at most {UNIFORM_PAIRS:.0e}");
         }
         write!(
             f,
-            "the hierarchical kernel: the uniform one would have {pairs:.3e} facing pairs at {h} m, over \
+            "the hierarchical kernel: the uniform one would have {} facing pairs at {h} m, over \
              {UNIFORM_PAIRS:.0e}; roots of {} m, leaves down to {h} m (--kernel uniform for the uniform mesh)",
-            Hierarchical::over(h).root_size
+            crate::kernel::figure(pairs),
+            number(Hierarchical::over(self.patch_size).root_size)
         )
     }
 }

@@ -121,7 +121,7 @@ pub(super) fn show(v: DVec3) -> String {
 
 /// A number as a message quotes it: as written between 1e-4 and 1e7 in size (and 0),
 /// else in exponent form (`1e308`, not 309 digits).
-pub(super) fn number(x: f64) -> String {
+pub fn number(x: f64) -> String {
     if x == 0.0 || !x.is_finite() || (1e-4..1e7).contains(&x.abs()) { format!("{x}") } else { format!("{x:e}") }
 }
 

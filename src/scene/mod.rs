@@ -30,6 +30,7 @@ mod validate;
 mod work_plane;
 
 pub use automatic::{UNIFORM_PAIRS, by_size};
+pub use check::number;
 pub use description::{Camera, Material, Scene, SolverSettings};
 pub use discretization::{
     Asked, ChosenBySize, Discretization, Given, Hierarchical, KernelAsked, KernelKind, Origin, ROOTS,

@@ -2,6 +2,7 @@
 
 use super::kernel::KernelError;
 use crate::basis::BasisError;
+use crate::interrupt::Interrupted;
 use crate::kernel::TooLarge;
 use crate::model::ModelError;
 use crate::solve::{ArnoldiError, Method, SolveError};
@@ -31,7 +32,24 @@ pub enum StudyError {
     /// Every method asked for failed; each with its error.
     #[error("every method failed: {}", .0.iter().map(|(m, e)| format!("{}: {e}", m.name())).collect::<Vec<_>>().join("; "))]
     EveryMethodFailed(Vec<(Method, SolveError)>),
+    /// A signal stopped a stage whose loops return no `Result` (the readouts, the forward
+    /// reference): `crate::interrupt`.
+    #[error(transparent)]
+    Interrupted(#[from] Interrupted),
     /// `--strict`: warnings found before the solve (the model alone shows them).
     #[error("--strict: {} warning(s) found before the solve, nothing solved or written: {}", .0.len(), .0.iter().map(|w| crate::io::one_line(&w.to_string())).collect::<Vec<_>>().join("; "))]
     Strict(Vec<crate::io::Warning>),
+}
+
+impl StudyError {
+    /// Whether the model or one of its matrices was refused as too large for the memory
+    /// limit (`kernel::TooLarge`, however deep).
+    pub fn too_large(&self) -> bool {
+        let model = |e: &ModelError| matches!(e, ModelError::TooLarge(_));
+        match self {
+            StudyError::TooLarge(_) => true,
+            StudyError::Model(e) | StudyError::Kernel(KernelError::Model(e)) => model(e),
+            _ => false,
+        }
+    }
 }

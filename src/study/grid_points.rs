@@ -7,22 +7,27 @@
 use crate::io::{LeftOut, Warning};
 use crate::luminaire::Light;
 use crate::model::Model;
-use crate::readout::grid::GridReading;
-use crate::readout::obstructed::spacing;
+use crate::readout::obstructed::{Obstruction, obstructions, spacing};
 use crate::scene::{Grid, Scene};
 
 /// Left-out points named one by one in a warning; the rest are counted.
 pub const NAMED: usize = 4;
 
-/// One warning per grid with points left out of its statistics.
-pub fn left_out(scene: &Scene, grids: &[GridReading]) -> Vec<Warning> {
-    grids.iter().filter(|g| g.left_out() > 0).map(|g| left_out_of(scene, g)).collect()
+/// One warning per grid of `scene` with points left out of its statistics: the model alone
+/// shows them (the same test as `GridReading`'s), so `--strict` refuses them before the
+/// solve.
+pub fn left_out(scene: &Scene, model: &Model) -> Vec<Warning> {
+    let obstructed = |g: &Grid| obstructions(model, g, &g.points());
+    scene.grids.iter().map(|g| (g, obstructed(g))).filter_map(|(g, o)| left_out_of(scene, g, &o)).collect()
 }
 
-fn left_out_of(scene: &Scene, g: &GridReading) -> Warning {
-    let [nu, _] = g.grid.resolution;
-    let named = g
-        .obstructed
+fn left_out_of(scene: &Scene, grid: &Grid, obstructed: &[Option<Obstruction>]) -> Option<Warning> {
+    let left_out = obstructed.iter().filter(|o| o.is_some()).count();
+    if left_out == 0 {
+        return None;
+    }
+    let [nu, _] = grid.resolution;
+    let named = obstructed
         .iter()
         .enumerate()
         .filter_map(|(i, o)| o.as_ref().map(|o| (i, o)))
@@ -34,13 +39,13 @@ fn left_out_of(scene: &Scene, g: &GridReading) -> Warning {
             distance: o.distance,
         })
         .collect();
-    Warning::GridPointsLeftOut {
-        grid: g.grid.name.clone(),
-        left_out: g.left_out(),
-        points: g.points.len(),
-        spacing: spacing(&g.grid),
+    Some(Warning::GridPointsLeftOut {
+        grid: grid.name.clone(),
+        left_out,
+        points: obstructed.len(),
+        spacing: spacing(grid),
         named,
-    }
+    })
 }
 
 /// One warning per grid whose receiving side faces no source.

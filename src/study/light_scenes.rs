@@ -61,6 +61,7 @@ pub fn solve_light_scenes(
     if let Some((sources, term)) = own {
         model.relight(sources, term);
     }
+    crate::interrupt::check(|| "the light scenes' readouts".to_string())?;
     Ok(LightScenes { groups: fields, scenes })
 }
 

@@ -114,6 +114,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         let fields: Vec<Vec<f64>> = runs.iter().map(|(_, y)| field_of(y)).collect();
         forward_reference(scene, &model, photons, job.seed, &fields, progress)
     });
+    crate::interrupt::check(|| "the forward reference's photons".to_string())?;
     let basis = factors.map(|f| (f, relative_residual(&factored, &model.l0, &x)));
     let orders = order_record(job, &methods, &model);
     let norms = explicit.as_ref().filter(|_| job.norms).map(Norms::of);
@@ -126,6 +127,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     let mut probes = read_probes(&scene.probes, &model, &field, progress);
     estimate_errors(&mut probes, &model, &field, progress);
     let grids = read_grids(&scene.grids, &model, &field, progress);
+    crate::interrupt::check(|| "the readouts (probes, error bars, grid points)".to_string())?;
     let daylight = scene.sky.as_ref().map(|sky| read_daylight(&model, sky, &probes, &grids));
     let mut solved = Solution {
         model,
@@ -151,7 +153,6 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         light_scenes: None,
     };
     solved.warnings = super::physics_warnings(scene, &solved.model, &solved.x, &solved.energy);
-    solved.warnings.extend(super::grid_points::left_out(scene, &solved.grids));
     if !scene.lighting.scenes.is_empty() {
         let how = GroupSolves { method: solved.runs[solved.reference].method, params: job.params, warm: true };
         solved.light_scenes = Some(solve_light_scenes(scene, &mut solved.model, &solved.x, &how, progress)?);

@@ -24,8 +24,8 @@
 //! * light escaping through a small opening (`openings.rs`): a missing wall or a gap;
 //! * a probe closer to a patch than `near::NEAR` of the patch's size (`near.rs`): it
 //!   reads the patch's mean where it sees mostly its nearest part;
-//! * a grid facing away from every source (`grid_points.rs`; its points left out of the
-//!   statistics are warned about from its readings, in the same file);
+//! * a grid facing away from every source, or with points left out of its statistics
+//!   (inside a solid, under a surface nearer than its spacing: `grid_points.rs`);
 //! * parallel light (the sun) and a glazed window: the glass's `τ(θ)` and the window's
 //!   maintenance factor apply to the sky and ground it lets in, not to the beam.
 //!
@@ -58,7 +58,8 @@ const BACKS: f64 = 0.02;
 
 /// The warnings the model of `scene` shows before any solve: luminaires inside or behind
 /// surfaces, parallel light through glass, probes and grids not in the room, probes near
-/// patches, grids facing away from every source (`--strict` refuses them before solving).
+/// patches, grids facing away from every source or with points left out (inside a solid,
+/// under a surface: `--strict` refuses them before solving).
 pub fn before_solve(scene: &Scene, model: &Model) -> Vec<Warning> {
     let mut out = Vec::new();
     luminaires(scene, model, &mut out);
@@ -66,6 +67,7 @@ pub fn before_solve(scene: &Scene, model: &Model) -> Vec<Warning> {
     parallel_through_glass(model, &mut out);
     sensors(scene, model, &mut out);
     out.extend(super::grid_points::facing_away(scene, model));
+    out.extend(super::grid_points::left_out(scene, model));
     super::near::near_patches(scene, model, &mut out);
     out
 }

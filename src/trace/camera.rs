@@ -28,7 +28,8 @@ pub struct TracedImage {
     pub seconds: f64,
 }
 
-/// Traces `spp` paths through every pixel of `camera`; `progress(rows)` after each row.
+/// Traces `spp` paths through every pixel of `camera`; `progress(rows)` after each row. A
+/// signal's stop leaves the rows short (`crate::interrupt`: the caller checks).
 pub fn trace_camera(
     world: &World,
     camera: &Camera,
@@ -44,6 +45,7 @@ pub fn trace_camera(
         .map(|py| {
             let mut rays = 0;
             let row = (0..width)
+                .take_while(|_| !crate::interrupt::asked())
                 .map(|px| {
                     let mut rng = Rng::stream(options.seed, (py * width + px) as u64);
                     let mut tally = Tally::default();

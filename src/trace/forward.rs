@@ -54,7 +54,8 @@ pub struct FieldEstimate {
     pub seconds: f64,
 }
 
-/// Traces `photons` photons; `progress(n)` after every chunk of `n` photons.
+/// Traces `photons` photons; `progress(n)` after every chunk of `n` photons. A signal's
+/// stop ends it after the chunks under way (`crate::interrupt`: the caller checks).
 pub fn trace_photons(
     world: &World,
     directions: &DirectionSet,
@@ -71,7 +72,7 @@ pub fn trace_photons(
     let wave = (2 * rayon::current_num_threads()) as u64;
     let mut tallies = vec![Tally::default(); bins];
     let mut rays = 0;
-    for first in (0..chunks).step_by(wave as usize) {
+    for first in (0..chunks).step_by(wave as usize).take_while(|_| !crate::interrupt::asked()) {
         let results: Vec<(Vec<Tally>, u64)> = (first..(first + wave).min(chunks))
             .into_par_iter()
             .map(|c| {

@@ -36,7 +36,8 @@ pub struct ProbeEstimate {
 /// Reads every point sensor (`kind = "point"`; the other kinds have no estimator here)
 /// with `samples` paths for each quantity; probe `p`'s streams are keyed by `(seed, 2p)`
 /// and `(seed, 2p + 1)`. `progress(paths)` hears of every [`REPORT`] paths done, `2 ×
-/// samples` per point sensor in all.
+/// samples` per point sensor in all. A signal's stop cuts the paths short
+/// (`crate::interrupt`: the caller checks).
 pub fn trace_probes(
     world: &World,
     probes: &[Probe],
@@ -77,7 +78,7 @@ fn read(
     let mut rays = 0;
     let mut rng = Rng::stream(options.seed, 2 * index);
     let mut luminance = Tally::default();
-    for s in 0..samples {
+    for s in (0..samples).take_while(|_| !crate::interrupt::asked()) {
         let l = match under {
             Some(_) => luminance_along(world, Start::eye(p + n * delta, -n), &mut rng, options, &mut rays),
             None => luminance_along(world, Start::eye(p, n), &mut rng, options, &mut rays),
@@ -89,7 +90,7 @@ fn read(
     let direct = world.luminaires.illuminance(&world.visibility, p, n, ignore);
     let mut rng = Rng::stream(options.seed, 2 * index + 1);
     let mut illuminance = Tally::default();
-    for s in 0..samples {
+    for s in (0..samples).take_while(|_| !crate::interrupt::asked()) {
         let mut e = direct;
         if let Some(light) = world.emitters.sample_towards(&world.mesh, p, rng.uniform3()) {
             let cos = n.dot(light.direction);

@@ -134,7 +134,7 @@ fn a_model_over_the_memory_limit_is_refused_before_meshing_with_its_estimate() {
     assert!(out.contains("before meshing") && out.contains("memory at peak"), "{out}");
     let o = ugo(&["info", case, "--kernel", "hierarchical", "--root-size", "0.1", "--patch-size", "0.001"]);
     let out = String::from_utf8_lossy(&o.stdout);
-    assert!(out.contains("leaves at most") && out.contains("2.4000e7"), "{out}");
+    assert!(out.contains("leaves at most") && out.contains("2.400e7"), "{out}");
     assert!(out.contains("memory before links") && !out.contains("memory at peak"), "{out}");
 }
 
@@ -156,7 +156,11 @@ fn an_obj_model_in_millimetres_is_warned_about_and_refused_before_meshing() {
     let err = assert_clean_failure(&ugo(&["info", case.to_str().unwrap()]));
     assert!(started.elapsed().as_secs_f64() < 5.0, "{:?}", started.elapsed());
     assert!(err.starts_with("ugo: warning: ") && err.contains("scale = 0.001"), "{err}");
-    assert!(err.contains("ugo: error: the model would need") && err.contains("patches"), "{err}");
+    assert!(
+        err.contains("mm.toml at [discretization] patch_size = 0.1 m, [discretization] root_size = 0.4 m: "),
+        "{err}"
+    );
+    assert!(err.contains(": the model would need") && err.contains("patches"), "{err}");
 }
 
 #[test]

@@ -2,8 +2,10 @@
 //! failure a clear message with a non-zero exit, never a panic.
 
 mod arguments;
+mod classroom;
 mod hierarchical;
 mod light_scenes;
+mod messages;
 mod outputs;
 
 use crate::support::{scratch, ugo};

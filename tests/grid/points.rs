@@ -1,7 +1,7 @@
 //! Grid points that do not stand in the room (issue 37, point 1): a point inside a solid
 //! or under a surface nearer than the spacing is left out of `E_avg`, `E_min`, `E_max` and
 //! `U0`, counted and named in a warning; a grid facing away from every source is warned
-//! about, one facing it is not.
+//! about, one facing it is not; `--strict` refuses left-out points before the solve.
 
 use super::{grid, lamp_scene};
 use crate::support::{build, lambert, rectangle, solve, surface};
@@ -11,7 +11,7 @@ use ugo::io::Warning;
 use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::grid::GridReading;
-use ugo::study::{Job, solve_case};
+use ugo::study::{Job, StudyError, solve_case};
 
 /// The lamp over a floor, a block (0.7–1.4 × 0–0.5 × 0.6–1.4 m) standing on it and a
 /// shelf facing down at 0.45 m over the corner `x, z < 0`: on the grid at 0.25 m (cells
@@ -61,6 +61,20 @@ fn the_left_out_points_are_counted_and_named_in_a_warning() {
         assert!(text.contains(part), "{text} lacks {part}");
     }
     assert!(!solved.warnings.iter().any(|w| matches!(w, Warning::GridFacesAway { .. })), "{:?}", solved.warnings);
+}
+
+/// The model alone shows the points left out: `--strict` refuses them before the solve.
+#[test]
+fn strict_refuses_left_out_points_before_the_solve() {
+    let mut scene = furnished();
+    scene.grids.push(grid(0.25));
+    let strict = Job { strict: true, ..Job::default() };
+    match solve_case(&scene, &strict, &Silent) {
+        Err(StudyError::Strict(found)) => {
+            assert!(found.iter().any(|w| matches!(w, Warning::GridPointsLeftOut { left_out: 5, .. })), "{found:?}")
+        }
+        other => panic!("not refused before the solve: {:?}", other.map(|s| s.warnings)),
+    }
 }
 
 #[test]

@@ -5,20 +5,20 @@ use std::process::{Command, Output};
 const CASE: &str = "cases/furnace-box.toml";
 
 /// The files beside `out` whose names mark them temporary.
-fn temporaries(dir: &Path) -> Vec<PathBuf> {
+pub fn temporaries(dir: &Path) -> Vec<PathBuf> {
     let entries = std::fs::read_dir(dir).unwrap();
     entries.map(|e| e.unwrap().path()).filter(|p| p.to_string_lossy().contains(".tmp")).collect()
 }
 
 /// Stderr without the progress lines a slow run prints every few seconds.
-fn messages(o: &Output) -> String {
+pub fn messages(o: &Output) -> String {
     let err = String::from_utf8_lossy(&o.stderr);
     err.lines().filter(|l| !l.starts_with("ugo: progress:")).map(|l| format!("{l}\n")).collect()
 }
 
 /// `ugo args` under `ulimit -f blocks` (the shell's unit: 512 or 1024 bytes), with
-/// SIGXFSZ ignored when `ignore` (so writes fail with EFBIG, as on a full disk) or
-/// left to kill the process.
+/// SIGXFSZ ignored by the shell when `ignore`, or left to ugo (which catches it: either
+/// way writes fail with EFBIG).
 fn limited(blocks: u64, ignore: bool, args: &[&str]) -> Output {
     let trap = if ignore { "trap '' XFSZ; " } else { "" };
     let script = format!("{trap}ulimit -f {blocks} && exec \"$0\" \"$@\"");
@@ -42,6 +42,7 @@ fn a_write_cut_short_by_a_size_limit_keeps_the_previous_file_and_fails() {
         let err = messages(&o);
         assert!(!o.status.success(), "ulimit -f {blocks}: exit 0");
         assert!(err.starts_with("ugo: error:") && err.contains("res.h5") && !err.contains("panicked"), "{err}");
+        assert!(err.contains("the file-size limit was reached") && !err.contains("HDF5"), "{err}");
         assert_eq!(std::fs::read(&out).unwrap(), before, "ulimit -f {blocks}: the previous file changed");
         assert!(temporaries(&dir).is_empty(), "{:?}", temporaries(&dir));
     }
@@ -49,16 +50,20 @@ fn a_write_cut_short_by_a_size_limit_keeps_the_previous_file_and_fails() {
 }
 
 #[test]
-fn a_process_killed_mid_write_leaves_the_previous_file_and_the_next_run_sweeps_its_temporary() {
+fn sigxfsz_does_not_kill_a_write_and_the_next_run_sweeps_a_dead_process_temporary() {
     let dir = scratch("killed");
     let out = dir.join("res.h5");
     assert!(solve_to(&out).status.success());
     let before = std::fs::read(&out).unwrap();
     let o = limited(64, false, &["solve", CASE, "-o", out.to_str().unwrap()]);
-    assert!(!o.status.success());
+    let err = messages(&o);
+    assert_eq!(o.status.code(), Some(1), "SIGXFSZ is caught, the write fails with EFBIG: {err}");
+    assert!(err.contains("cannot write") && err.contains("res.h5: the file-size limit was reached"), "{err}");
     assert_eq!(std::fs::read(&out).unwrap(), before);
-    let left = temporaries(&dir);
-    assert_eq!(left.len(), 1, "SIGXFSZ kills before any clean-up: {left:?}");
+    assert!(temporaries(&dir).is_empty(), "{:?}", temporaries(&dir));
+    // A temporary of a process that no longer runs (killed by a signal it could not catch).
+    let dead = dir.join("res.h5.4194303.0123abcd.tmp");
+    std::fs::write(&dead, b"cut short").unwrap();
     assert!(solve_to(&out).status.success());
     assert!(temporaries(&dir).is_empty(), "{:?}", temporaries(&dir));
     // A temporary of a running process (this one) is not touched.
@@ -69,7 +74,7 @@ fn a_process_killed_mid_write_leaves_the_previous_file_and_the_next_run_sweeps_i
 }
 
 #[test]
-fn concurrent_writers_of_one_path_all_succeed_and_leave_one_whole_file() {
+fn concurrent_writers_of_one_path_write_one_whole_file_and_the_others_are_refused() {
     let dir = scratch("concurrent");
     let out = dir.join("res.h5");
     let children: Vec<_> = (0..4)
@@ -82,17 +87,43 @@ fn concurrent_writers_of_one_path_all_succeed_and_leave_one_whole_file() {
                 .unwrap()
         })
         .collect();
+    let mut written = 0;
     for child in children {
         let o = child.wait_with_output().unwrap();
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let err = messages(&o);
+        match o.status.success() {
+            true => written += 1,
+            false => assert!(err.contains("another ugo is writing") && err.contains("res.h5"), "{err}"),
+        }
     }
+    assert!(written >= 1);
     let file = hdf5::File::open(&out).unwrap();
     assert_eq!(file.dataset("field/luminance").unwrap().shape(), vec![600, 1, 1]);
     assert!(temporaries(&dir).is_empty(), "{:?}", temporaries(&dir));
+    assert!(!dir.join("res.h5.lock").exists());
+}
+
+#[test]
+fn a_solve_to_an_output_another_run_writes_is_refused_naming_it() {
+    let dir = scratch("locked");
+    let out = dir.join("res.h5");
+    let held = ugo::io::OutputLock::take(&out).unwrap();
+    let o = solve_to(&out);
+    let err = messages(&o);
+    assert!(!o.status.success());
+    assert!(err.starts_with("ugo: error: another ugo is writing") && err.contains("res.h5 (it holds"), "{err}");
+    assert!(!out.exists() && !dir.join("res-probes.csv").exists());
+    drop(held);
+    assert!(!dir.join("res.h5.lock").exists());
+    // A lock file left by a killed process holds no lock: taken over, then removed.
+    std::fs::write(dir.join("res.h5.lock"), b"").unwrap();
+    let o = solve_to(&out);
+    assert!(o.status.success(), "{}", messages(&o));
+    assert!(!dir.join("res.h5.lock").exists());
 }
 
 /// Whether process `pid` has a handler for `signal` (`SigCgt` of `/proc/PID/status`).
-fn catches(pid: u32, signal: u32) -> bool {
+pub fn catches(pid: u32, signal: u32) -> bool {
     let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap_or_default();
     let mask = status.lines().find_map(|l| l.strip_prefix("SigCgt:")).map(str::trim).unwrap_or("0");
     u64::from_str_radix(mask, 16).is_ok_and(|m| m & (1 << (signal - 1)) != 0)

@@ -52,7 +52,8 @@ impl Operator {
         let free = |l: usize| targets[l] > 0.0 && areas[l] > 0.0;
         let mut report = BalanceReport::default();
         let mut last = f64::INFINITY;
-        for sweep in 1..=MAX_SWEEPS {
+        // A signal ends the sweeps (`crate::interrupt`: the caller checks).
+        for sweep in (1..=MAX_SWEEPS).take_while(|_| !crate::interrupt::asked()) {
             x.chunks_mut(k).zip(&send).for_each(|(x, s)| x.fill(*s));
             self.arriving(&x, &mut z);
             let rows = sums(&z, k, |_| 1.0);

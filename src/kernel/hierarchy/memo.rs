@@ -24,7 +24,8 @@ pub(super) struct Memo {
 }
 
 impl Memo {
-    /// Measures the closure of the `leaves` not yet measured; returns the rays taken.
+    /// Measures the closure of the `leaves` not yet measured; returns the rays taken. A
+    /// signal's stop leaves the rest unmeasured (`crate::interrupt`: the caller checks).
     pub(super) fn measure_closure(
         &mut self,
         tree: &Tree,
@@ -34,15 +35,16 @@ impl Memo {
     ) -> usize {
         self.closure.resize(tree.len(), None);
         let todo: Vec<u32> = leaves.iter().copied().filter(|&id| self.closure[id as usize].is_none()).collect();
-        let measured: Vec<(Closure, usize)> = todo
+        let measured: Vec<Option<(Closure, usize)>> = todo
             .par_iter()
             .map(|&id| match tree.node(id).patch() {
-                Some(p) if p.exposed > 0.0 => backs.closure(visibility, p),
-                _ => (Closure::default(), 0),
+                _ if crate::interrupt::asked() => None,
+                Some(p) if p.exposed > 0.0 => Some(backs.closure(visibility, p)),
+                _ => Some((Closure::default(), 0)),
             })
             .collect();
-        todo.iter().zip(&measured).for_each(|(&id, &(c, _))| self.closure[id as usize] = Some(c));
-        measured.iter().map(|m| m.1).sum()
+        todo.iter().zip(&measured).for_each(|(&id, m)| self.closure[id as usize] = m.map(|(c, _)| c));
+        measured.iter().flatten().map(|m| m.1).sum()
     }
 
     /// The closure rays of node `id` (none cast if never measured).

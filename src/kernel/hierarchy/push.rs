@@ -65,6 +65,10 @@ pub fn push_rows(
         .par_iter()
         .map(|&leaf| {
             let mut row = Vec::new();
+            // Seconds on a large tree: a signal leaves the rest empty (`crate::interrupt`).
+            if crate::interrupt::asked() {
+                return row;
+            }
             let Some(patch) = tree.node(leaf).patch().filter(|p| p.exposed > 0.0) else { return row };
             let mut a = leaf;
             while a != NONE {

@@ -70,17 +70,25 @@ pub fn refine(
     let mut rays = 0;
     while !candidates.is_empty() {
         let (held, pending) = (links.len(), candidates.len());
-        crate::interrupt::check(|| {
-            format!("the hierarchical kernel's linking ({held} links, {pending} candidate pairs to settle)")
-        })?;
+        let stop = || {
+            crate::interrupt::check(|| {
+                format!("the hierarchical kernel's linking ({held} links, {pending} candidate pairs to settle)")
+            })
+        };
+        stop()?;
         footprint(tree, held, pending, settings.directions.len()).check(settings.memory_limit)?;
+        // A round can take seconds: a signal skips the rest of its pairs, and ends it.
         let outcomes: Vec<(Outcome, usize)> = candidates
             .par_iter()
             .map_init(
                 || NO_BLOCKER,
-                |blocker, &(p, q)| evaluate(tree, brightness, settings, binning.as_ref(), p, q, blocker),
+                |blocker, &(p, q)| match crate::interrupt::asked() {
+                    true => (Outcome::Drop, 0),
+                    false => evaluate(tree, brightness, settings, binning.as_ref(), p, q, blocker),
+                },
             )
             .collect();
+        stop()?;
         let mut split = Vec::new();
         for ((outcome, r), &(p, q)) in outcomes.into_iter().zip(&candidates) {
             rays += r;

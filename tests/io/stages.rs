@@ -1,0 +1,99 @@
+//! Every long stage stops within a second of a signal (issue 37, point 6): a final-gather
+//! render and a hierarchical refinement, each run long enough (over 5 s) to be stopped
+//! midway by SIGTERM, exit 143 within 2 s with the interrupt's message and leave no output
+//! and no temporary file.
+
+use super::faults::{catches, messages, temporaries};
+use crate::support::{scratch, ugo};
+use std::io::{BufRead, BufReader};
+use std::path::Path;
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// Most time from the signal to the exit.
+const PROMPT: Duration = Duration::from_secs(2);
+
+/// Sends SIGTERM to `child` and waits for it: its exit status and the time from the signal
+/// to its end.
+fn terminate(mut child: Child) -> (Option<i32>, Duration) {
+    let start = Instant::now();
+    assert!(child.try_wait().unwrap().is_none(), "the run ended before the signal");
+    assert!(Command::new("kill").args(["-TERM", &child.id().to_string()]).status().unwrap().success());
+    let status = child.wait().unwrap();
+    (status.code(), start.elapsed())
+}
+
+/// The names in `dir` other than `keep`.
+fn only(dir: &Path, keep: &[&str]) -> Vec<String> {
+    let names = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned());
+    names.filter(|n| !keep.contains(&n.as_str())).collect()
+}
+
+#[test]
+fn sigterm_stops_a_final_gather_render_within_two_seconds() {
+    let dir = scratch("stop-render");
+    let solution = dir.join("res.h5");
+    let o = ugo(&["solve", "cases/furnace-box.toml", "-o", solution.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", messages(&o));
+    let images = dir.join("images");
+    // 256 × 256 pixels of 4,096 gathered rays: about a minute on two cores.
+    let args = ["render", solution.to_str().unwrap(), "--shading", "gather", "--gather-rays", "4096"];
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ugo"))
+        .args(args)
+        .args(["--resolution", "256,256", "-o", images.to_str().unwrap()])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    while !catches(child.id(), 15) {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_secs(1));
+    let mut stderr = child.stderr.take().unwrap();
+    let reader = std::thread::spawn(move || {
+        let mut err = String::new();
+        std::io::Read::read_to_string(&mut stderr, &mut err).unwrap();
+        err
+    });
+    let (code, took) = terminate(child);
+    let err = reader.join().unwrap();
+    assert_eq!(code, Some(143), "{err}");
+    assert!(took < PROMPT, "stopped {took:?} after the signal");
+    assert!(err.contains("ugo: stopped: interrupted by SIGTERM during the render of camera \"inside\""), "{err}");
+    assert!(err.contains("not written: ") && err.contains("inside-gather-4096.exr"), "{err}");
+    assert!(only(&images, &[]).is_empty(), "{:?}", only(&images, &[]));
+    let keep = ["res.h5", "res-probes.csv", "images"];
+    assert!(only(&dir, &keep).is_empty(), "{:?}", only(&dir, &keep));
+}
+
+#[test]
+fn sigterm_stops_a_hierarchical_refinement_within_two_seconds() {
+    let dir = scratch("stop-refinement");
+    let out = dir.join("res.h5");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ugo"))
+        .args(["solve", "cases/office.toml", "-o", out.to_str().unwrap()])
+        .env("UGO_PROGRESS_SECONDS", "0")
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // The signal goes a second into the refinement (its progress lines say when it began).
+    let mut lines = BufReader::new(child.stderr.take().unwrap()).lines();
+    let mut err = String::new();
+    for line in lines.by_ref() {
+        let line = line.unwrap();
+        err += &format!("{line}\n");
+        if line.contains("refinement") {
+            break;
+        }
+    }
+    std::thread::sleep(Duration::from_secs(1));
+    let reader = std::thread::spawn(move || lines.map(|l| l.unwrap() + "\n").collect::<String>());
+    let (code, took) = terminate(child);
+    err += &reader.join().unwrap();
+    assert_eq!(code, Some(143), "{err}");
+    assert!(took < PROMPT, "stopped {took:?} after the signal");
+    assert!(err.contains("ugo: stopped: interrupted by SIGTERM during the hierarchical kernel's"), "{err}");
+    assert!(err.contains("not written: ") && err.contains("res.h5"), "{err}");
+    assert!(only(&dir, &[]).is_empty() && temporaries(&dir).is_empty(), "{:?}", only(&dir, &[]));
+}
