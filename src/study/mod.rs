@@ -7,6 +7,7 @@
 
 mod bases;
 pub mod bench;
+mod daylight_alone;
 mod error;
 mod grid_points;
 mod kernel;

@@ -4,6 +4,7 @@
 //! illuminance, energy balance, probes, grids, reflection orders, norms, the leading
 //! eigenpairs of `K` (`solve/arnoldi.rs`) and, on request, each run's agreement with a forward Monte Carlo estimate of the same discretization.
 
+use super::daylight_alone::daylight_readings;
 use super::error::StudyError;
 use super::kernel::model_with_kernel;
 use super::light_scenes::{GroupSolves, solve_light_scenes};
@@ -12,7 +13,6 @@ use crate::io::{MonteCarlo, Run, Solution};
 use crate::kernel::{Explicit, Factored};
 use crate::model::Model;
 use crate::progress::Progress;
-use crate::readout::daylight::read_daylight;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::error_bar::estimate_errors;
 use crate::readout::field::Field;
@@ -128,7 +128,6 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     estimate_errors(&mut probes, &model, &field, progress);
     let grids = read_grids(&scene.grids, &model, &field, progress);
     crate::interrupt::check(|| "the readouts (probes, error bars, grid points)".to_string())?;
-    let daylight = scene.sky.as_ref().map(|sky| read_daylight(&model, sky, &probes, &grids));
     let mut solved = Solution {
         model,
         params: job.params,
@@ -143,7 +142,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         energy,
         probes,
         grids,
-        daylight,
+        daylight: None,
         orders,
         norms,
         spectrum,
@@ -153,8 +152,10 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         light_scenes: None,
     };
     solved.warnings = super::physics_warnings(scene, &solved.model, &solved.x, &solved.energy);
+    let how = GroupSolves { method: solved.runs[solved.reference].method, params: job.params, warm: true };
+    let readings = (solved.probes.as_slice(), solved.grids.as_slice());
+    solved.daylight = daylight_readings(scene, &mut solved.model, readings, &how, progress)?;
     if !scene.lighting.scenes.is_empty() {
-        let how = GroupSolves { method: solved.runs[solved.reference].method, params: job.params, warm: true };
         solved.light_scenes = Some(solve_light_scenes(scene, &mut solved.model, &solved.x, &how, progress)?);
     }
     Ok(solved)

@@ -87,3 +87,30 @@ fn every_probe_and_grid_point_has_df_equal_to_sc_plus_erc_plus_irc() {
         assert!((sc / e - 1.0).abs() < 5e-3, "{name}: SC {sc} lx, brute force {e} lx");
     }
 }
+
+#[test]
+fn a_lamp_beside_the_daylight_changes_no_daylight_quantity() {
+    // the same room with a 2,000 lm bulb under the opening: E holds its light, but SC, ERC,
+    // IRC and DF are the daylight's alone (solved alone on the case's kernel), as without it;
+    // before, DF and IRC counted the bulb's light (docs/daylight.md, "Daylight beside
+    // electric light")
+    let lamp = "[[luminaire]]\nname = \"bulb\"\ntype = \"isotropic\"\nflux = 2000\nposition = [0.5, 0.8, 0.5]\n";
+    let solved = |case: String| {
+        let scene = Scene::parse(std::path::Path::new("cases/test.toml"), case).unwrap();
+        solve_case(&scene, &Job::default(), &Silent).unwrap()
+    };
+    let (alone, lit) = (solved(CASE.to_string()), solved(format!("{CASE}{lamp}")));
+    assert!(lit.probes[0].illuminance > alone.probes[0].illuminance + 100.0, "the bulb lights the probe");
+    let (a, b) = (alone.daylight.as_ref().unwrap(), lit.daylight.as_ref().unwrap());
+    let pairs = a.probes.iter().zip(&b.probes).chain(a.grids[0].iter().zip(&b.grids[0]));
+    for (x, y) in pairs {
+        for (p, q) in [
+            (x.sky_component, y.sky_component),
+            (x.externally_reflected, y.externally_reflected),
+            (x.internally_reflected, y.internally_reflected),
+            (x.daylight_factor, y.daylight_factor),
+        ] {
+            assert!((p - q).abs() <= 1e-6 * x.daylight_factor, "daylight alone {x:?}, beside the bulb {y:?}");
+        }
+    }
+}

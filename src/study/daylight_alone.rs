@@ -1,0 +1,75 @@
+//! The daylight readings of a case (`docs/daylight.md`, "Daylight beside electric light"):
+//! SC, ERC, IRC and `DF = E / E_h` are shares of the light of the sky, the ground and the
+//! sun alone. In a case lit by luminaires or emitting surfaces as well, `E` of the case's
+//! own field holds their light too (a desk by the window read DF 23 % for SC 15 % and IRC
+//! 3 %), so the daylight sources (every `[[window]]` and the `[sky]`'s sun) are solved
+//! alone on the case's kernel (`docs/design.md` (1.6): the field is linear in its sources)
+//! and the probes and grids read again on that field. A case lit by daylight alone reads
+//! its own field, with no second solve.
+
+use super::error::StudyError;
+use super::light_scenes::GroupSolves;
+use crate::kernel::{Explicit, Factored};
+use crate::luminaire::Light;
+use crate::model::Model;
+use crate::progress::Progress;
+use crate::readout::daylight::{DaylightReadings, read_daylight};
+use crate::readout::field::Field;
+use crate::readout::grid::{GridReading, read_grids};
+use crate::readout::probe::{ProbeReading, read_probes};
+use crate::scene::Scene;
+use crate::solve::{System, solve};
+
+/// The daylight readings of `scene` on `model`, whose solved readings are `probes` and
+/// `grids`; `None` without a sky. With other sources lit, the daylight is solved alone
+/// (`how`) on the model relit by it, and the model is given back as it came.
+pub fn daylight_readings(
+    scene: &Scene,
+    model: &mut Model,
+    (probes, grids): (&[ProbeReading], &[GridReading]),
+    how: &GroupSolves,
+    progress: &dyn Progress,
+) -> Result<Option<DaylightReadings>, StudyError> {
+    let Some(sky) = scene.sky.as_ref() else { return Ok(None) };
+    let daylight: Vec<usize> = (0..model.sources.len()).filter(|&i| is_daylight(scene, model, i)).collect();
+    let electric = daylight.len() < model.sources.len() || model.mesh.emission.iter().any(|&e| e > 0.0);
+    if !electric {
+        return Ok(Some(read_daylight(model, sky, probes, grids)));
+    }
+    let term = model.source_term_of(&daylight, &[]);
+    let explicit = match how.method.needs_explicit() {
+        true => Some(Explicit(model.kernel.explicit(how.params.memory_limit)?)),
+        false => None,
+    };
+    let factored = Factored::new(&model.kernel);
+    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
+    let system = System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &term.l0);
+    progress.begin("daylight alone", how.params.max_iterations as u64);
+    let solved = solve(how.method, &system, &how.params, &mut |n, r| {
+        progress.at(n as u64, &format!("daylight alone: {} {r:.1e}", how.method.name()))
+    });
+    progress.end();
+    let (x, _) = solved?;
+    let sources = model.sources.iter().enumerate().map(|(i, s)| s.scaled(f64::from(daylight.contains(&i)))).collect();
+    let own = model.relight(sources, term);
+    let field = Field::from_unknowns(&x, model.kernel.cells());
+    let probes = read_probes(&scene.probes, model, &field, progress);
+    let grids = read_grids(&scene.grids, model, &field, progress);
+    let readings = read_daylight(model, sky, &probes, &grids);
+    model.relight(own.0, own.1);
+    crate::interrupt::check(|| "the daylight's readouts".to_string())?;
+    Ok(Some(readings))
+}
+
+/// True for source `i` of `model` when it is daylight: a window's sky and ground, or the
+/// shining sun of the `[sky]` (the parallel source it names "sun", a name no `[[luminaire]]`
+/// may take then).
+fn is_daylight(scene: &Scene, model: &Model, i: usize) -> bool {
+    match &model.sources[i].light {
+        Light::Window { .. } => true,
+        Light::Parallel { .. } => {
+            scene.sky.as_ref().is_some_and(|sky| sky.sun_horizontal > 0.0) && model.sources[i].name == "sun"
+        }
+        Light::Point { .. } => false,
+    }
+}
