@@ -10,8 +10,12 @@ use std::path::Path;
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
-/// Most time from the signal to the exit.
-const PROMPT: Duration = Duration::from_secs(2);
+/// Most time from the signal to the exit. Measured 0.11–0.42 s for the office's refinement
+/// (`ugo solve cases/office.toml`, SIGTERM 0.2–7 s into it, one other build running); the
+/// bound leaves room for a loaded machine running the other tests beside this one (CI
+/// measured 2.19 s once), and still fails a stage that does not check: the office's first
+/// refinement round runs on for about 50 s.
+const PROMPT: Duration = Duration::from_secs(5);
 
 /// Sends SIGTERM to `child` and waits for it: its exit status and the time from the signal
 /// to its end.
@@ -30,7 +34,7 @@ fn only(dir: &Path, keep: &[&str]) -> Vec<String> {
 }
 
 #[test]
-fn sigterm_stops_a_final_gather_render_within_two_seconds() {
+fn sigterm_stops_a_final_gather_render_promptly() {
     let dir = scratch("stop-render");
     let solution = dir.join("res.h5");
     let o = ugo(&["solve", "cases/furnace-box.toml", "-o", solution.to_str().unwrap()]);
@@ -67,7 +71,7 @@ fn sigterm_stops_a_final_gather_render_within_two_seconds() {
 }
 
 #[test]
-fn sigterm_stops_a_hierarchical_refinement_within_two_seconds() {
+fn sigterm_stops_a_hierarchical_refinement_promptly() {
     let dir = scratch("stop-refinement");
     let out = dir.join("res.h5");
     let mut child = Command::new(env!("CARGO_BIN_EXE_ugo"))
