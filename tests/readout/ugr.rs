@@ -130,3 +130,11 @@ fn an_observer_is_validated_key_by_key() {
     let scene = Scene::parse(std::path::Path::new("cases/test.toml"), text).expect("valid");
     assert_eq!((scene.observers[0].position, scene.observers[0].look), (eye, DVec3::X));
 }
+
+#[test]
+fn a_panel_close_to_the_eye_is_outside_the_formulas_solid_angles() {
+    // 0.36 cos γ / r² = 0.28 sr at 0.92 m.
+    let r = reading(WALLS, &[AHEAD, [1.5, 1.8, 2.0]], 1.0, "");
+    assert_eq!((r.sources.len(), r.outside_validity()), (2, 1));
+    assert!(r.sources[1].solid_angle > 0.1, "ω = {} sr", r.sources[1].solid_angle);
+}
