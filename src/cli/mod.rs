@@ -5,6 +5,7 @@ pub mod basis;
 pub mod bench;
 pub mod daylight;
 pub mod export;
+pub mod glare;
 pub mod info;
 pub mod kernel;
 pub mod light_scenes;

@@ -224,6 +224,9 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
             println!("    {:<22} {:>15.4} {:>16.4} {:>14} {:>17.4}", p.name, p.luminance, p.illuminance, bar, p.direct);
         }
     }
+    if !s.observers.is_empty() {
+        super::glare::report(&s.observers);
+    }
     if let Some(d) = s.daylight.as_ref() {
         super::daylight::report(d, &s.probes, &s.grids);
     }

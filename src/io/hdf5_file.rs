@@ -9,7 +9,10 @@
 //! `/orders/{orders,term_norms,partial_sums}` (the reflection-order record), `/norms` (attributes),
 //! `/spectrum/…` (the leading eigenpairs of `K`, `spectrum_file.rs`),
 //! `/energy/{surface_emitted,surface_absorbed}`,
-//! `/probes/{name,kind,position,normal,luminance,illuminance}`, `/basis/{coefficients,psi,front,back}`
+//! `/probes/{name,kind,position,normal,luminance,illuminance}`,
+//! `/observers/{name,position,look,ugr,ugr_limit,background_luminance}` and
+//! `/observers/sources/{observer,name,luminance,solid_angle,position_index}` (the UGR,
+//! `observer_group.rs`), `/basis/{coefficients,psi,front,back}`
 //! (a solve in a factored angular basis),
 //! `/grids/<name>/{points,illuminance}` (with the statistics as attributes),
 //! `/luminaires/{name,kind,position,direction,flux,distribution_flux,file_flux,on_surfaces}`
@@ -22,6 +25,7 @@
 
 use super::dataset::{dataset, strings, text_attr};
 use super::daylight_group::write_daylight;
+use super::observer_group::write_observers;
 use super::readout_group::{write_grid, write_probes};
 use super::solution::Solution;
 use crate::basis::{Factorization, MaterialFactor};
@@ -91,6 +95,7 @@ fn write_to(path: &Path, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     dataset(&energy, "surface_absorbed", &Array1::from(s.energy.surface_absorbed.clone()))?;
 
     write_probes(&file.create_group("probes")?, &s.probes)?;
+    write_observers(&file.create_group("observers")?, &s.observers)?;
     s.daylight.as_ref().map(|d| write_daylight(&file.create_group("daylight")?, d, &s.probes, &s.grids)).transpose()?;
     let grids = file.create_group("grids")?;
     for grid in &s.grids {

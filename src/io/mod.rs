@@ -21,6 +21,7 @@ mod kernel_file;
 mod light_scene_group;
 mod lock;
 mod no_room;
+mod observer_group;
 mod plan;
 mod plan_marks;
 mod plot;

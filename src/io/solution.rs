@@ -9,6 +9,7 @@ use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
 use crate::readout::grid::GridReading;
 use crate::readout::probe::ProbeReading;
+use crate::readout::ugr::UgrReading;
 use crate::solve::norms::Norms;
 use crate::solve::orders::OrderRecord;
 use crate::solve::{Method, SolveError, SolveInfo, SolveParams, Spectrum};
@@ -41,6 +42,8 @@ pub struct Solution {
     pub energy: EnergyBalance,
     /// The `[[probe]]` readings.
     pub probes: Vec<ProbeReading>,
+    /// The UGR at the `[[observer]]`s.
+    pub observers: Vec<UgrReading>,
     /// The `[[grid]]` readings.
     pub grids: Vec<GridReading>,
     /// SC, ERC, IRC and DF at the probes and grids, under a `[sky]`.

@@ -26,7 +26,7 @@ pub use aim::frame;
 pub use description::{Luminaire, LuminaireKind, PointLuminaire};
 pub use patch::{DirectLight, OPENING_ETA, PatchLight, direct_light, patch_lights};
 pub use point::{arriving_along, arriving_at, incoming};
-pub use seen::luminous_along;
+pub use seen::{Shining, luminous_along, seen_from};
 
 use crate::geometry::Frame;
 use crate::photometry::Distribution;

@@ -5,6 +5,7 @@ use super::discretization_keys::OldSpelling;
 use super::files::CaseFile;
 use super::grid::Grid;
 use super::light_scene::Lighting;
+use super::observer::Observer;
 use super::probe::Probe;
 use crate::geometry::Surface;
 use crate::luminaire::Luminaire;
@@ -40,6 +41,8 @@ pub struct Scene {
     pub surfaces: Vec<Surface>,
     /// The `[[probe]]` tables, in file order.
     pub probes: Vec<Probe>,
+    /// The `[[observer]]` tables, in file order: where the UGR is read.
+    pub observers: Vec<Observer>,
     /// The `[[camera]]` tables, in file order.
     pub cameras: Vec<Camera>,
     /// The `[[grid]]` tables, in file order.

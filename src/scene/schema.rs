@@ -22,6 +22,8 @@ pub struct RawScene {
     #[serde(default)]
     pub probe: Vec<super::probe::RawProbe>,
     #[serde(default)]
+    pub observer: Vec<super::observer::RawObserver>,
+    #[serde(default)]
     pub camera: Vec<RawCamera>,
     #[serde(default)]
     pub grid: Vec<super::grid::RawGrid>,

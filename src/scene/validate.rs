@@ -3,7 +3,7 @@
 //! Owns every rule of `docs/design.md` §7 that serde cannot express for the scene as a whole
 //! and its small tables (`[scene]`, `[discretization]`, `[solver]`, cameras); the
 //! large tables have their own files (`material.rs`, `surface.rs`, `grid.rs`,
-//! `luminaire.rs`, `probe.rs`). Each failure is a [`SceneError`] naming the table
+//! `luminaire.rs`, `probe.rs`, `observer.rs`). Each failure is a [`SceneError`] naming the table
 //! (`[[surface]] "floor" (#3)`) and the key.
 
 use super::automatic::by_size;
@@ -16,6 +16,7 @@ use super::grid::grids;
 use super::light_scene::{Sources, lighting};
 use super::luminaire::luminaires;
 use super::material::materials;
+use super::observer::observers;
 use super::probe::probes;
 use super::schema::{RawCamera, RawScene, RawSceneInfo, RawSolver};
 use super::sky::daylight;
@@ -34,6 +35,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let materials = materials(path, &raw.material)?;
     let (mut surfaces, surface_tables) = surfaces(path, &source, &raw.surface, &materials, &files)?;
     let probes = probes(path, &raw.probe)?;
+    let observers = observers(path, &raw.observer)?;
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid, &surfaces)?;
     let (mut luminaires, tables) = luminaires(path, &source, &raw.luminaire, &files)?;
@@ -74,6 +76,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         materials,
         surfaces,
         probes,
+        observers,
         cameras,
         grids,
         luminaires,

@@ -19,6 +19,7 @@ use crate::readout::field::Field;
 use crate::readout::grid::read_grids;
 use crate::readout::illuminance::{arriving, patch_illuminance};
 use crate::readout::probe::read_probes;
+use crate::readout::ugr::read_observers;
 use crate::scene::Scene;
 use crate::solve::norms::Norms;
 use crate::solve::orders::{OrderRecord, reflection_orders};
@@ -126,8 +127,9 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
     let mut probes = read_probes(&scene.probes, &model, &field, progress);
     estimate_errors(&mut probes, &model, &field, progress);
+    let observers = read_observers(&scene.observers, &model, &field);
     let grids = read_grids(&scene.grids, &model, &field, progress);
-    crate::interrupt::check(|| "the readouts (probes, error bars, grid points)".to_string())?;
+    crate::interrupt::check(|| "the readouts (probes, error bars, observers, grid points)".to_string())?;
     let mut solved = Solution {
         model,
         params: job.params,
@@ -141,6 +143,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         illuminance,
         energy,
         probes,
+        observers,
         grids,
         daylight: None,
         orders,

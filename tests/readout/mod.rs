@@ -1,14 +1,17 @@
 //! Tests of the readouts at points (`ugo::readout`): the luminance meter and the
-//! cylindrical and semi-cylindrical illuminance against closed forms (issue 17, item 7).
+//! cylindrical and semi-cylindrical illuminance against closed forms (issue 17, item 7);
+//! the UGR at observers against a calculation by hand (issue 38).
 
 mod correction;
 mod cylindrical;
 mod error_bar;
 mod glossy;
 mod meter;
+mod ugr;
 
 use crate::support::{build, solve};
 use std::path::Path;
+use ugo::model::Model;
 use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::probe::{ProbeReading, read_probes};
@@ -17,12 +20,18 @@ use ugo::scene::Scene;
 /// The probes of the case `text`, read from its solved field.
 fn readings(text: &str) -> Vec<ProbeReading> {
     let scene = Scene::parse(Path::new("cases/test.toml"), text.to_string()).unwrap_or_else(|e| panic!("{e}"));
-    let model = build(&scene);
+    let (model, field) = solved(&scene);
+    read_probes(&scene.probes, &model, &field, &Silent)
+}
+
+/// The model of `scene` and its solved field.
+fn solved(scene: &Scene) -> (Model, Field) {
+    let model = build(scene);
     // A black room lit only by luminaires has L0 = 0, and so is its field.
     let black = model.l0.iter().all(|&l| l == 0.0);
     let x = if black { vec![0.0; model.l0.len()] } else { solve(&model) };
     let field = Field::from_unknowns(&x, model.kernel.cells());
-    read_probes(&scene.probes, &model, &field, &Silent)
+    (model, field)
 }
 
 /// A closed box `[0, side]³` seen from inside, of reflectance `rho`, each face emitting

@@ -33,6 +33,7 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         materials,
         surfaces,
         probes: Vec::new(),
+        observers: Vec::new(),
         cameras: Vec::new(),
         grids: Vec::new(),
         luminaires: Vec::new(),

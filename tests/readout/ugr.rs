@@ -1,0 +1,140 @@
+//! The UGR of CIE 117 at an `[[observer]]` (`ugo::readout::ugr`, `docs/photometry.md` "UGR")
+//! against a calculation by hand from first principles: a 0.6 × 0.6 m panel in a black
+//! 4 m box whose walls shine at `L_e`, so that the background luminance is exactly `L_e`
+//! (a closed enclosure of uniform luminance gives `E = π L_e` on any plane inside).
+
+use super::{room, solved};
+use crate::support::scratch;
+use glam::DVec3;
+use ugo::readout::ugr::{UgrReading, read_observers};
+use ugo::scene::Scene;
+
+/// A 0.6 × 0.6 m panel (metres, units type 2), axially symmetric: 1000 cd at the nadir,
+/// 600 cd at 45°, none at 90°.
+const PANEL: &str = "IESNA:LM-63-2002\n[TEST] panel\nTILT=NONE\n1 -1 1 3 1 1 2 0.6 0.6 0\n1 1 0\n\
+                     0 45 90\n0\n1000 600 0\n";
+
+/// The walls' luminance, cd/m².
+const WALLS: f64 = 10.0;
+const EYE: [f64; 3] = [0.8, 1.2, 2.0];
+const AHEAD: [f64; 3] = [3.0, 3.0, 2.5];
+
+/// The observer's reading in the black box of walls at `walls` cd/m² with panels at
+/// `panels` (each dimmed by `multiplier`) and the tables `more`, the eye at [`EYE`]
+/// looking along `+x`.
+fn reading(walls: f64, panels: &[[f64; 3]], multiplier: f64, more: &str) -> UgrReading {
+    let dir = scratch("ugr");
+    std::fs::write(dir.as_ref().join("panel.ies"), PANEL).expect("writable");
+    let mut text = room(4.0, 0.0, walls) + more;
+    for (i, [x, y, z]) in panels.iter().enumerate() {
+        text += &format!(
+            "[[luminaire]]\nname = \"panel {i}\"\ntype = \"ies\"\nfile = \"panel.ies\"\nposition = [{x}, {y}, {z}]\n\
+             multiplier = {multiplier}\n"
+        );
+    }
+    text += &format!("[[observer]]\nname = \"desk\"\nposition = {EYE:?}\nlook = [1, 0, 0]\nugr_limit = 19\n");
+    let path = dir.as_ref().join("case.toml");
+    std::fs::write(&path, text).expect("writable");
+    let scene = Scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+    let (model, field) = solved(&scene);
+    read_observers(&scene.observers, &model, &field).remove(0)
+}
+
+/// UGR by hand for the panel at `at` seen from [`EYE`] looking along `+x`.
+fn by_hand(at: [f64; 3], background: f64) -> f64 {
+    let [dx, dy, dz] = [at[0] - EYE[0], at[1] - EYE[1], at[2] - EYE[2]];
+    let r2 = dx * dx + dy * dy + dz * dz;
+    let r = r2.sqrt();
+    // The panel faces down: seen at γ from its nadir, its projected area is 0.36 cos γ.
+    let cos_gamma = dy / r;
+    let gamma = cos_gamma.acos().to_degrees();
+    let intensity = if gamma <= 45.0 { 1000.0 - 400.0 * gamma / 45.0 } else { 600.0 * (90.0 - gamma) / 45.0 };
+    let area = 0.36 * cos_gamma;
+    let luminance = intensity / area;
+    let omega = area / r2;
+    // Guth: σ from the line of sight (+x), τ from the vertical about it.
+    let sigma = (dx / r).acos().to_degrees();
+    let tau = dz.abs().atan2(dy).to_degrees();
+    let ln_p = (35.2 - 0.31889 * tau - 1.22 * (-2.0 * tau / 9.0).exp()) / 1000.0 * sigma
+        + (21.0 + 0.26667 * tau - 0.002963 * tau.powi(2)) / 100000.0 * sigma.powi(2);
+    let p = ln_p.exp();
+    8.0 * (0.25 / background * luminance.powi(2) * omega / (p * p)).log10()
+}
+
+#[test]
+fn one_panel_ahead_matches_the_hand_calculation() {
+    let r = reading(WALLS, &[AHEAD], 1.0, "");
+    assert!((r.background - WALLS).abs() < 1e-9 * WALLS, "L_b {} against {WALLS}", r.background);
+    assert_eq!(r.sources.len(), 1);
+    let (ugr, expected) = (r.ugr(), by_hand(AHEAD, WALLS));
+    assert!((ugr - expected).abs() < 1e-6, "UGR {ugr} against {expected} by hand");
+    assert!(r.sources[0].valid(), "ω = {} sr", r.sources[0].solid_angle);
+}
+
+#[test]
+fn a_panel_behind_the_eye_or_below_its_line_of_sight_adds_nothing() {
+    let alone = reading(WALLS, &[AHEAD], 1.0, "");
+    let behind = reading(WALLS, &[AHEAD, [0.3, 3.0, 2.0]], 1.0, "");
+    let below = reading(WALLS, &[AHEAD, [3.0, 0.5, 2.0]], 1.0, "");
+    for r in [&behind, &below] {
+        assert_eq!(r.sources.len(), 1);
+        assert!((r.ugr() - alone.ugr()).abs() < 1e-12, "{} against {}", r.ugr(), alone.ugr());
+    }
+}
+
+#[test]
+fn a_panel_hidden_behind_a_plate_adds_nothing() {
+    // A plate between the eye and a second panel, shining like the walls on both sides.
+    let plate = format!(
+        "[[surface]]\nname = \"plate\"\nshape = \"rectangle\"\nmaterial = \"grey\"\norigin = [2, 2.5, 0.3]\n\
+         edge_u = [1.5, 0, 0]\nedge_v = [0, 0, 1]\ntwo_sided = true\nemission = {{ luminance = {WALLS} }}\n"
+    );
+    let r = reading(WALLS, &[AHEAD, [3.0, 3.0, 0.8]], 1.0, &plate);
+    assert_eq!(r.sources.len(), 1);
+    let (ugr, expected) = (r.ugr(), by_hand(AHEAD, r.background));
+    assert!((ugr - expected).abs() < 1e-6, "UGR {ugr} against {expected} by hand");
+}
+
+#[test]
+fn halving_every_light_lowers_the_ugr_by_8_log10_2() {
+    // ω and p stay; L² falls by 4 and L_b by 2.
+    let full = reading(WALLS, &[AHEAD], 1.0, "");
+    let half = reading(WALLS / 2.0, &[AHEAD], 0.5, "");
+    let drop = full.ugr() - half.ugr();
+    assert!((drop - 8.0 * 2f64.log10()).abs() < 1e-9, "dropped by {drop}");
+}
+
+#[test]
+fn no_panel_in_view_has_no_glare() {
+    let r = reading(WALLS, &[[0.3, 3.0, 2.0]], 1.0, "");
+    assert!(r.sources.is_empty() && r.ugr() == f64::NEG_INFINITY);
+}
+
+#[test]
+fn an_observer_is_validated_key_by_key() {
+    let base = room(4.0, 0.5, 10.0);
+    let rejected = |observer: &str, key: &str, words: &str| {
+        let text = format!("{base}[[observer]]\nname = \"eye\"\nposition = [1, 1.2, 1]\n{observer}");
+        let error = Scene::parse(std::path::Path::new("cases/test.toml"), text).expect_err("rejected");
+        let shown = error.to_string();
+        assert!(shown.contains("[[observer]] \"eye\" (#1)") && shown.contains(key) && shown.contains(words), "{shown}");
+    };
+    rejected("look = [0, -1, 0]\n", "look", "from the vertical");
+    rejected("look = [0, 0, 0]\n", "look", "non-zero");
+    rejected("look = [1, 0, 0]\nugr_limit = 50\n", "ugr_limit", "within 0 and 40");
+    let misspelled =
+        format!("{base}[[observer]]\nname = \"eye\"\nposition = [1, 1.2, 1]\nlook = [1, 0, 0]\nugr_lim = 19\n");
+    assert!(Scene::parse(std::path::Path::new("cases/test.toml"), misspelled).is_err());
+    let eye = DVec3::new(1.0, 1.2, 1.0);
+    let text = format!("{base}[[observer]]\nname = \"eye\"\nposition = [1, 1.2, 1]\nlook = [2, 0, 0]\n");
+    let scene = Scene::parse(std::path::Path::new("cases/test.toml"), text).expect("valid");
+    assert_eq!((scene.observers[0].position, scene.observers[0].look), (eye, DVec3::X));
+}
+
+#[test]
+fn a_panel_close_to_the_eye_is_outside_the_formulas_solid_angles() {
+    // 0.36 cos γ / r² = 0.28 sr at 0.92 m.
+    let r = reading(WALLS, &[AHEAD, [1.5, 1.8, 2.0]], 1.0, "");
+    assert_eq!((r.sources.len(), r.outside_validity()), (2, 1));
+    assert!(r.sources[1].solid_angle > 0.1, "ω = {} sr", r.sources[1].solid_angle);
+}
