@@ -36,7 +36,7 @@ pub struct ExportOptions {
     /// Folder for K.<ext>, I-K.<ext> and L0.<ext> (it must exist).
     #[arg(short, long, default_value = ".")]
     pub output: PathBuf,
-    /// Largest explicit product K = B·G allowed, GiB (default: half the machine's RAM).
+    /// Largest explicit product K = B·G allowed, GiB (default: half of the least of the machine's RAM, the control group's limit and `ulimit -v`).
     #[arg(long, allow_negative_numbers = true)]
     pub memory_limit: Option<f64>,
 }

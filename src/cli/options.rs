@@ -16,7 +16,7 @@ pub struct Discretize {
     /// hierarchical one splits down to (default: the case's `patch_size`).
     #[arg(long, allow_negative_numbers = true)]
     pub patch_size: Option<f64>,
-    /// Largest kernel memory allowed, GiB (default: half the machine's RAM).
+    /// Largest kernel memory allowed, GiB (default: half of the least of the machine's RAM, the control group's limit and `ulimit -v`).
     #[arg(long, allow_negative_numbers = true)]
     pub memory_limit: Option<f64>,
     /// Direction cells per patch: a count K (equal solid angle), `klems` or `tregenza`

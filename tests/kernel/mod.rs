@@ -2,4 +2,5 @@ mod assembly;
 mod cells;
 mod forecast;
 mod form_factor;
+mod memory_limit;
 mod precision;
