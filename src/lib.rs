@@ -11,9 +11,10 @@
 //! 5. scene: [`scene`]
 //! 6. model: [`model`]
 //! 7. readouts: [`readout`]
-//! 8. render/trace: [`render`], [`trace`]
-//! 9. io, probe placement: [`io`], [`placement`]
-//! 10. study: [`study`]
+//! 8. Monte Carlo references: [`trace`]
+//! 9. images: [`render`]
+//! 10. io, probe placement: [`io`], [`placement`]
+//! 11. study: [`study`]
 //!
 //! The command line (`src/main.rs`, `src/cli/`) stands on top and only calls the library.
 

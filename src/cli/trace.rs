@@ -14,8 +14,9 @@ use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
 use ugo::io::{EstimateFile, auto_exposure, read_solution, write_estimate, write_exr_as, write_png};
 use ugo::render::Projection;
+use ugo::render::trace_camera;
 use ugo::scene::{ProbeKind, Scene};
-use ugo::trace::{TraceOptions, World, trace_camera, trace_photons, trace_probes};
+use ugo::trace::{TraceOptions, World, trace_photons, trace_probes};
 
 /// What `ugo trace` was asked for.
 pub struct TraceJob {

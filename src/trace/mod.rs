@@ -4,8 +4,8 @@
 //! linear system.
 //!
 //! * [`backward`] (from the eye): path tracing with next-event estimation, multiple
-//!   importance sampling and Russian roulette; [`camera`] makes per-pixel means and
-//!   standard errors of a `[[camera]]`, [`probe`] the readings of a `[[probe]]`.
+//!   importance sampling and Russian roulette; [`probe`] makes the readings of a
+//!   `[[probe]]` (a `[[camera]]`'s traced image is `crate::render`'s, one floor up).
 //! * [`forward`] (from the sources): light tracing into the `(patch, direction cell)` bins,
 //!   a Monte Carlo estimate of the discrete field `L(i,k)` with standard errors.
 //! * [`agreement`]: a deterministic result against either, in units of the standard error;
@@ -19,7 +19,6 @@
 
 pub mod agreement;
 pub mod backward;
-pub mod camera;
 pub mod emitters;
 pub mod forward;
 pub mod leaf_errors;
@@ -31,7 +30,6 @@ pub mod world;
 
 pub use agreement::{Agreement, agreement};
 pub use backward::{Start, TraceOptions, luminance_along};
-pub use camera::{TracedImage, trace_camera};
 pub use forward::{FieldEstimate, trace_photons};
 pub use leaf_errors::{LeafErrors, leaf_errors};
 pub use openings::Openings;

@@ -11,6 +11,9 @@ pub enum Fault {
     Up { from: String, to: String, floors: (usize, usize) },
     /// These files import each other round a loop.
     Circle(Vec<String>),
+    /// These top-level modules of one floor import each other round a loop (through
+    /// different files, so no file circle shows it).
+    ModuleCircle(Vec<String>),
     /// A top-level module of `lib.rs` that the floor list does not place.
     NoFloor(String),
 }
@@ -22,6 +25,7 @@ impl fmt::Display for Fault {
                 write!(f, "{from} (floor {}) imports `{to}` from floor {} above it", floors.0, floors.1)
             }
             Fault::Circle(files) => write!(f, "these files import each other: {}", files.join(" → ")),
+            Fault::ModuleCircle(m) => write!(f, "these modules import each other: {}", m.join(" → ")),
             Fault::NoFloor(m) => write!(f, "module `{m}` is on no floor of the list in lib.rs"),
         }
     }
@@ -48,8 +52,27 @@ pub fn analyse(sources: &[(String, String)]) -> Vec<Fault> {
     for (from, targets) in &edges {
         faults.extend(targets.iter().filter_map(|to| up(&files[*from], &files[*to], &floors)));
     }
-    faults.extend(circles(&files, &edges));
+    let paths: Vec<String> = files.iter().map(|f| f.path.clone()).collect();
+    faults.extend(circles(&paths, &edges).into_iter().map(Fault::Circle));
+    let (modules, module_edges) = module_graph(&files, &edges);
+    faults.extend(circles(&modules, &module_edges).into_iter().map(Fault::ModuleCircle));
     faults
+}
+
+/// The library's top-level modules and, for each, the others its files import.
+fn module_graph(
+    files: &[File],
+    edges: &BTreeMap<usize, BTreeSet<usize>>,
+) -> (Vec<String>, BTreeMap<usize, BTreeSet<usize>>) {
+    let top = |f: &File| (f.root == "lib" && f.module.len() > 1).then(|| f.module[0].clone());
+    let modules: Vec<String> = files.iter().filter_map(top).collect::<BTreeSet<_>>().into_iter().collect();
+    let index = |f: &File| top(f).and_then(|m| modules.iter().position(|x| *x == m));
+    let mut out: BTreeMap<usize, BTreeSet<usize>> = BTreeMap::new();
+    for (from, targets) in edges {
+        let Some(a) = index(&files[*from]) else { continue };
+        out.entry(a).or_default().extend(targets.iter().filter_map(|t| index(&files[*t])).filter(|&b| b != a));
+    }
+    (modules, out)
 }
 
 /// Every import between two files, as (importing file, imported file), paths relative to
@@ -189,8 +212,8 @@ fn up(from: &File, to: &File, floors: &BTreeMap<String, usize>) -> Option<Fault>
     (b > a).then(|| Fault::Up { from: from.path.clone(), to: to.module[0].clone(), floors: (a, b) })
 }
 
-/// Strongly connected components of more than one file (Tarjan).
-fn circles(files: &[File], edges: &BTreeMap<usize, BTreeSet<usize>>) -> Vec<Fault> {
+/// Strongly connected components of more than one node (Tarjan), as sorted names.
+fn circles(names: &[String], edges: &BTreeMap<usize, BTreeSet<usize>>) -> Vec<Vec<String>> {
     struct State<'a> {
         edges: &'a BTreeMap<usize, BTreeSet<usize>>,
         index: Vec<Option<usize>>,
@@ -230,7 +253,7 @@ fn circles(files: &[File], edges: &BTreeMap<usize, BTreeSet<usize>>) -> Vec<Faul
             }
         }
     }
-    let n = files.len();
+    let n = names.len();
     let mut s = State {
         edges,
         index: vec![None; n],
@@ -248,9 +271,9 @@ fn circles(files: &[File], edges: &BTreeMap<usize, BTreeSet<usize>>) -> Vec<Faul
     s.found
         .into_iter()
         .map(|c| {
-            let mut names: Vec<String> = c.into_iter().map(|i| files[i].path.clone()).collect();
-            names.sort();
-            Fault::Circle(names)
+            let mut circle: Vec<String> = c.into_iter().map(|i| names[i].clone()).collect();
+            circle.sort();
+            circle
         })
         .collect()
 }

@@ -1,9 +1,10 @@
 //! The floors of `src/lib.rs` hold: no `use crate::…` (or inline `crate::…` path) points
-//! from a module to one on a higher floor, and no files import each other, directly or
-//! round a longer loop. The floors are read from the list at the top of `src/lib.rs`, so
-//! that list is the one source of truth; the binary (`main.rs`, `cli/`) stands above it.
-//! The analyser is also run on small made-up trees with a known fault each, so that it is
-//! seen to fail.
+//! from a module to one on a higher floor, no files import each other, directly or round a
+//! longer loop, and no two modules of one floor import each other (through different
+//! files, which no file circle shows). The floors are read from the list at the top of
+//! `src/lib.rs`, so that list is the one source of truth; the binary (`main.rs`, `cli/`)
+//! stands above it. The analyser is also run on small made-up trees with a known fault
+//! each, so that it is seen to fail.
 
 mod graph;
 mod paths;
@@ -101,6 +102,26 @@ fn files_importing_each_other_through_a_parent_re_export_are_found() {
     ]);
     assert!(
         matches!(faults.as_slice(), [Fault::Circle(files)] if files.len() == 2 && files.contains(&"high/a.rs".to_string())),
+        "{faults:?}"
+    );
+}
+
+#[test]
+fn modules_of_one_floor_importing_each_other_through_different_files_are_found() {
+    let lib = "//! 1. pictures and paths: [`render`], [`trace`]\npub mod render;\npub mod trace;\n";
+    let files = [
+        ("lib.rs", lib),
+        ("render/mod.rs", "mod image;\nmod lit;\npub use image::Image;\n"),
+        ("render/image.rs", "pub struct Image;\n"),
+        ("render/lit.rs", "use crate::trace::openings::Openings;\n"),
+        ("trace/mod.rs", "pub mod camera;\npub mod openings;\n"),
+        ("trace/camera.rs", "use crate::render::Image;\n"),
+        ("trace/openings.rs", "pub struct Openings;\n"),
+    ];
+    let sources: Vec<(String, String)> = files.iter().map(|(p, t)| (p.to_string(), t.to_string())).collect();
+    let faults = analyse(&sources);
+    assert!(
+        matches!(faults.as_slice(), [Fault::ModuleCircle(m)] if *m == ["render".to_string(), "trace".to_string()]),
         "{faults:?}"
     );
 }

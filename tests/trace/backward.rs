@@ -9,9 +9,10 @@
 use crate::support::build;
 use glam::DVec3;
 use std::path::Path;
+use ugo::render::trace_camera;
 use ugo::render::{LitScene, render};
 use ugo::scene::{Camera, Scene};
-use ugo::trace::{TraceOptions, World, agreement, trace_camera};
+use ugo::trace::{TraceOptions, World, agreement};
 
 /// The study's error beyond noise of the flat image at h = 0.1 m (docs/experiments.md):
 /// 12.6 % against the 16,384-path reference.

@@ -7,8 +7,9 @@ use glam::DVec3;
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
 use ugo::material::MaterialModel;
+use ugo::render::trace_camera;
 use ugo::scene::{Camera, Scene};
-use ugo::trace::{TraceOptions, World, agreement, trace_camera, trace_photons};
+use ugo::trace::{TraceOptions, World, agreement, trace_photons};
 
 const EXACT: f64 = 5.0;
 

@@ -2,14 +2,14 @@
 //! a uniformly jittered point of the pixel (the pixel-area average that `ugo render`
 //! approximates with stratified rays), the pixel's mean and its standard error from the
 //! spread of its own samples. Rayon runs over rows; pixel `p`'s random stream is keyed
-//! by `(seed, p)`, so the image does not depend on the thread count.
+//! by `(seed, p)`, so the image does not depend on the thread count. The paths are
+//! `crate::trace`'s; this file only lays them over the pixels.
 
-use super::backward::{Start, TraceOptions, luminance_along};
-use super::statistics::Tally;
-use super::world::World;
+use super::{Image, Projection};
 use crate::random::Rng;
-use crate::render::{Image, Projection};
 use crate::scene::Camera;
+use crate::trace::statistics::Tally;
+use crate::trace::{Start, TraceOptions, World, luminance_along};
 use rayon::prelude::*;
 use std::time::Instant;
 
