@@ -21,6 +21,7 @@ use crate::material::Block;
 use crate::progress::Progress;
 use crate::scene::{Hierarchical, Scene};
 use crate::solve::{Method, SolveParams, System, solve};
+use crate::transfer::exposure::measure_exposure;
 use crate::visibility::{Faces, Visibility};
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -69,7 +70,7 @@ fn worth_cutting(h: &Hierarchy, id: u32) -> f64 {
 pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -> Result<Model, ModelError> {
     let t = Instant::now();
     let d = &scene.discretization;
-    let roots = Mesh::build(&scene.surfaces, parameters.root_size);
+    let mut roots = Mesh::build(&scene.surfaces, parameters.root_size);
     let directions = d.directions.set();
     let k = directions.len();
     let blocks: Vec<Block> = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
@@ -78,6 +79,8 @@ pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -
     let mesh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let root_visibility = Visibility::build(&roots);
+    measure_exposure(&mut roots, &root_visibility, progress);
+    crate::interrupt::check(|| "the roots' exposed areas".into())?;
     let root_light = seed_light(&sources, &roots, &root_visibility, &directions);
     let root_l0 = source_term(&blocks, &roots, &root_light, k);
     check_source(scene, &roots, &root_light, &root_l0, k)?;
@@ -92,7 +95,8 @@ pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -
     };
     // The passes grow in cost as the links multiply: counted, with no time left forecast.
     progress.begin("refinement", 0);
-    let mut h = Hierarchy::new(&roots, directions.clone(), blocks.clone(), hierarchy_options, &root_l0)?;
+    let mut h =
+        Hierarchy::new(&roots, root_visibility, directions.clone(), blocks.clone(), hierarchy_options, &root_l0)?;
     let mut cache = LightCache { lights: Vec::new() };
     let mut pass = 0;
     let mut source = |h: &mut Hierarchy| -> Result<Vec<f64>, ModelError> {

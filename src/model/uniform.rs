@@ -28,7 +28,8 @@ pub fn build(scene: &Scene, progress: &dyn Progress) -> Result<Model, ModelError
     let mesh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let visibility = Visibility::build(&mesh);
-    measure_exposure(&mut mesh, &visibility);
+    measure_exposure(&mut mesh, &visibility, progress);
+    crate::interrupt::check(|| "the patches' exposed areas".into())?;
     let bvh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let n = mesh.len() as u64;

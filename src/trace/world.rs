@@ -10,6 +10,7 @@ use super::openings::Openings;
 use crate::geometry::Mesh;
 use crate::luminaire::Source;
 use crate::material::MaterialModel;
+use crate::progress::Silent;
 use crate::scene::Scene;
 use crate::transfer::exposure::measure_exposure;
 use crate::visibility::{Faces, NO_FACE, Visibility};
@@ -57,7 +58,7 @@ impl World {
     /// exposed areas are measured (`transfer::exposure`), which the forward tracer bins by.
     pub fn new(scene: &Scene, mut mesh: Mesh) -> World {
         let visibility = Visibility::build(&mesh);
-        measure_exposure(&mut mesh, &visibility);
+        measure_exposure(&mut mesh, &visibility, &Silent);
         World::with_visibility(scene, mesh, visibility)
     }
 

@@ -3,7 +3,7 @@
 //! `Options::memory_limit`; beyond it the hierarchy is refused with the figures, not
 //! built until the allocator aborts.
 
-use super::{hierarchy, options};
+use super::{hierarchy, measured_roots, options};
 use std::path::Path;
 use ugo::directions::DirectionSet;
 use ugo::kernel::hierarchy::{Options, Stopped};
@@ -12,11 +12,12 @@ use ugo::scene::Scene;
 #[test]
 fn a_linking_beyond_the_memory_limit_is_refused_with_its_figures() {
     let scene = Scene::load(Path::new("cases/cornell-box.toml")).expect("the case loads");
-    let roots = ugo::geometry::Mesh::build(&scene.surfaces, 0.25);
+    let (roots, visibility) = measured_roots(&scene, 0.25);
     let blocks = scene.materials.iter().map(|m| m.model.block(&DirectionSet::single())).collect();
     let l0: Vec<f64> = roots.emission.clone();
     let tight = Options { memory_limit: 1 << 20, ..options(1e-2, 0.05) };
-    let refused = ugo::kernel::hierarchy::Hierarchy::new(&roots, DirectionSet::single(), blocks, tight, &l0);
+    let refused =
+        ugo::kernel::hierarchy::Hierarchy::new(&roots, visibility, DirectionSet::single(), blocks, tight, &l0);
     let Err(Stopped::TooLarge(too_large)) = refused else { panic!("a 1 MiB limit is not refused") };
     let message = too_large.to_string();
     eprintln!("{message}");

@@ -23,18 +23,30 @@ use ugo::geometry::Mesh;
 use ugo::geometry::{Emission, Shape};
 use ugo::kernel::hierarchy::{Hierarchy, Options};
 use ugo::kernel::{Factored, Kernel, Refined, refine_with_solves};
+use ugo::progress::Silent;
 use ugo::scene::Scene;
 use ugo::solve::{Method, SolveError, SolveParams, System, solve};
+use ugo::transfer::exposure::measure_exposure;
+use ugo::visibility::Visibility;
 
 use crate::support::{furnace, lambert, surface};
 
 /// The hierarchy of `scene` over roots meshed at `root_size` (m).
 pub fn hierarchy(scene: &Scene, root_size: f64, directions: DirectionSet, options: Options) -> Hierarchy {
-    let roots = Mesh::build(&scene.surfaces, root_size);
+    let (roots, visibility) = measured_roots(scene, root_size);
     let blocks = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
     let k = directions.len();
     let l0: Vec<f64> = roots.emission.iter().flat_map(|&e| std::iter::repeat_n(e, k)).collect();
-    Hierarchy::new(&roots, directions, blocks, options, &l0).expect("the linking fits in memory")
+    Hierarchy::new(&roots, visibility, directions, blocks, options, &l0).expect("the linking fits in memory")
+}
+
+/// The roots of `scene` meshed at `root_size` (m) with their exposed areas, and their ray
+/// caster, as `Hierarchy::new` takes them.
+pub fn measured_roots(scene: &Scene, root_size: f64) -> (Mesh, Visibility) {
+    let mut roots = Mesh::build(&scene.surfaces, root_size);
+    let visibility = Visibility::build(&roots);
+    measure_exposure(&mut roots, &visibility, &Silent);
+    (roots, visibility)
 }
 
 /// Options with `tolerance` and `patch_size` (m, the finest leaves), the rest default.

@@ -16,7 +16,7 @@ fn every_exposed_patch_of_a_closed_room_closes_exactly() {
     let scene = furnace_with_standing_block(0.125);
     let mut mesh = Mesh::build(&scene.surfaces, 0.125);
     let visibility = Visibility::build(&mesh);
-    measure_exposure(&mut mesh, &visibility);
+    measure_exposure(&mut mesh, &visibility, &ugo::progress::Silent);
     let backs = Backs::of(&mesh);
     let (mut rays, mut partly) = (0, 0);
     for p in mesh.patches.iter().filter(|p| p.exposed > 0.0) {

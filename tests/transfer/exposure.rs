@@ -28,7 +28,7 @@ fn with_block(lo: [f64; 3], hi: [f64; 3], patch: f64) -> Scene {
 fn floor_shares(scene: &Scene, patch: f64) -> Vec<(f64, f64, f64)> {
     let mut mesh = Mesh::build(&scene.surfaces, patch);
     let visibility = Visibility::build(&mesh);
-    measure_exposure(&mut mesh, &visibility);
+    measure_exposure(&mut mesh, &visibility, &ugo::progress::Silent);
     let floor = mesh.patches.iter().filter(|p| p.surface == 0 && p.normal.y > 0.5 && p.centroid.y.abs() < 1e-9);
     floor.map(|p| (p.centroid.x, p.centroid.z, p.exposed / p.area)).collect()
 }

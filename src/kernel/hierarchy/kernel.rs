@@ -20,7 +20,6 @@ use crate::geometry::Mesh;
 use crate::material::Block;
 use crate::transfer::exposure::Backs;
 use crate::visibility::Visibility;
-use rayon::prelude::*;
 use std::time::Instant;
 
 /// The hierarchical form of `G` over a coarse mesh's patches, and what refines it.
@@ -44,13 +43,15 @@ pub struct Hierarchy {
 const AMBIENT_ALBEDO: f64 = 0.95;
 
 impl Hierarchy {
-    /// The roots are the patches of `roots` (e.g. `Mesh::build(scene, root_size)`), with
-    /// one block per material; `l0` is the source term on the roots (`x[root·K + k]`,
+    /// The roots are the patches of `roots` (e.g. `Mesh::build(scene, root_size)`, with
+    /// their exposed areas measured by `transfer::exposure::measure_exposure` through
+    /// `visibility`, the roots' ray caster), with one block per material; `l0` is the source term on the roots (`x[root·K + k]`,
     /// cd/m²), which with the ambient term of its interreflections is the first guess of
     /// the field. Links start from the top cluster's self-link; the linking stops with the
     /// reason on a signal or beyond `options.memory_limit`.
     pub fn new(
         roots: &Mesh,
+        visibility: Visibility,
         directions: DirectionSet,
         blocks: Vec<Block>,
         options: Options,
@@ -58,9 +59,8 @@ impl Hierarchy {
     ) -> Result<Hierarchy, Stopped> {
         let start = Instant::now();
         let albedo: Vec<f64> = blocks.iter().map(|b| largest_albedo(b, &directions)).collect();
-        let visibility = Visibility::build(roots);
         let backs = Backs::of(roots);
-        let exposed: Vec<f64> = roots.patches.par_iter().map(|p| backs.exposed_area(&visibility, p)).collect();
+        let exposed: Vec<f64> = roots.patches.iter().map(|p| p.exposed).collect();
         let tree = Tree::new(roots, &albedo, &exposed);
         let share = cell_shares(&directions);
         let (guess, ambient) = first_guess(&tree, l0, &share);
