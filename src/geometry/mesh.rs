@@ -7,7 +7,7 @@
 use super::frame::Frame;
 use super::polygon::ConvexPolygon;
 use super::surface::{Emission, Surface};
-use super::tessellate::tessellate;
+use super::tessellate::{element_count, tessellate};
 use glam::DVec3;
 use std::f64::consts::PI;
 
@@ -91,8 +91,11 @@ pub struct Mesh {
 impl Mesh {
     /// Meshes every surface with target edge length `patch_size` (m).
     pub fn build(surfaces: &[Surface], patch_size: f64) -> Mesh {
-        let mut patches = Vec::new();
-        let mut emission = Vec::new();
+        // Reserved once from the count: grown by doubling, the patches would pass through
+        // three times their bytes, past the memory forecast (issue 37, point 7).
+        let count = Mesh::count(surfaces, patch_size);
+        let mut patches = Vec::with_capacity(count as usize);
+        let mut emission = Vec::with_capacity(count as usize);
         let mut faces = 0u32;
         for (s, surface) in surfaces.iter().enumerate() {
             let first = patches.len();
@@ -119,6 +122,13 @@ impl Mesh {
             emission.resize(patches.len(), luminance);
         }
         Mesh { patches, emission, faces: faces as usize }
+    }
+
+    /// The patches [`Mesh::build`] makes of `surfaces` at `patch_size`, counted without making
+    /// them (`element_count`; a two-sided surface twice), in floating point.
+    pub fn count(surfaces: &[Surface], patch_size: f64) -> f64 {
+        let sides = |s: &Surface| if s.two_sided { 2.0 } else { 1.0 };
+        surfaces.iter().map(|s| sides(s) * element_count(&s.shape, patch_size)).sum()
     }
 
     /// The patches with a self-emission.

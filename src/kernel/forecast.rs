@@ -26,12 +26,19 @@
 
 use super::memory::{ASSEMBLY_BYTES_PER_PAIR, BYTES_PER_NONZERO};
 use crate::directions::DirectionSet;
-use crate::geometry::{Mesh, Patch, Surface, element_count, facing};
+use crate::geometry::{ConvexPolygon, Mesh, Patch, Surface, element_count, facing};
 use crate::random::Rng;
 use rayon::prelude::*;
 
-/// Bytes of one patch with its share of the ray caster and the face table.
-const BYTES_PER_PATCH: f64 = (std::mem::size_of::<Patch>() + 160) as f64;
+/// Bytes of one patch at the mesh's peak, the building of its ray caster: the patch, its
+/// polygon as tessellated, its emission, and the BVH's build over its two triangles,
+/// [`BVH_BUILD_BYTES_PER_PATCH`].
+const BYTES_PER_PATCH: f64 =
+    (std::mem::size_of::<Patch>() + std::mem::size_of::<ConvexPolygon>() + 8 + BVH_BUILD_BYTES_PER_PATCH) as f64;
+/// What obvhs's build of the ray caster adds at its peak per patch of quads, bytes:
+/// measured 766 MB over the mesh (519 MB) for the furnace box's 1.5·10⁶ roots (2 mm), about 510 B
+/// (`tests/kernel/peak.rs` holds the whole forecast to the measured peak).
+const BVH_BUILD_BYTES_PER_PATCH: usize = 520;
 /// Vectors of the unknowns' length a solve keeps (field, source, residual, work).
 const VECTORS: f64 = 6.0;
 /// Elements up to which every pair is tested.
@@ -121,14 +128,11 @@ impl Forecast {
         directions: &DirectionSet,
     ) -> Forecast {
         let cells = directions.len();
-        let count = |h: f64| -> f64 {
-            surfaces.iter().map(|s| element_count(&s.shape, h) * if s.two_sided { 2.0 } else { 1.0 }).sum()
-        };
-        let patches = count(root_size);
+        let patches = Mesh::count(surfaces, root_size);
         let unknowns = patches * cells as f64;
         Forecast {
             patches,
-            leaves: Some(count(patch_size / 2.0)),
+            leaves: Some(Mesh::count(surfaces, patch_size / 2.0)),
             cells,
             unknowns,
             facing_pairs: 0.0,
