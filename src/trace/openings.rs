@@ -94,7 +94,7 @@ impl Openings {
 }
 
 /// The index whose share of `[0, 1)` holds `u`, and `u` rescaled to `[0, 1)` within it.
-fn pick(chance: &[f64], u: f64) -> Option<(usize, f64)> {
+pub(super) fn pick(chance: &[f64], u: f64) -> Option<(usize, f64)> {
     let mut start = 0.0;
     for (i, &c) in chance.iter().enumerate() {
         if u < start + c || i + 1 == chance.len() {
