@@ -100,10 +100,18 @@ pub fn describe(source: &Source) -> String {
             let at = format!("[{}, {}, {}]", position.x, position.y, position.z);
             format!("at {at}, scale {scale:.4}, {what}")
         }
-        Light::Parallel { direction, illuminance } => {
+        Light::Parallel { direction, illuminance, glass } => {
+            let through: Vec<String> = glass
+                .panes()
+                .iter()
+                .map(|p| format!(", through \"{}\" times τ·M = {:.4}", p.name, p.share(-*direction)))
+                .collect();
             format!(
-                "parallel light along [{:.4}, {:.4}, {:.4}], {illuminance} lx normal to the beam",
-                direction.x, direction.y, direction.z
+                "parallel light along [{:.4}, {:.4}, {:.4}], {illuminance} lx normal to the beam{}",
+                direction.x,
+                direction.y,
+                direction.z,
+                through.concat()
             )
         }
         Light::Window { window, sky } => format!(

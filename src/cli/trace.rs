@@ -46,13 +46,6 @@ pub fn run(case: &Path, d: &Discretize, job: &TraceJob) -> Result<()> {
         bail!("nothing in {} emits light: give a surface an emission or add a [[luminaire]]", case.display());
     }
     if let Some(photons) = job.photons {
-        if !world.openings.is_empty() {
-            bail!(
-                "{} has [[window]] openings, which light tracing (--forward) does not emit yet: trace backward \
-                 (--camera, or the probes)",
-                case.display()
-            );
-        }
         return forward(case, &scene, &world, &directions, job, photons);
     }
     if job.spp == 0 {
@@ -135,7 +128,7 @@ fn forward(
         directions,
         estimate: &estimate,
         options: &job.options,
-        emitted: world.emitters.flux() + world.luminaires.flux(),
+        emitted: world.photon_flux(),
     };
     write_estimate(&output, &file)?;
     let lit: Vec<f64> = estimate
@@ -149,7 +142,7 @@ fn forward(
     println!("  patches N × cells K  {} × {} ({})", world.mesh.len(), directions.len(), directions.name());
     println!("  photons              {photons}");
     throughput(photons, estimate.rays, estimate.seconds, "photons");
-    println!("  emitted flux         {:.6e} lm", world.emitters.flux() + world.luminaires.flux());
+    println!("  emitted flux         {:.6e} lm", world.photon_flux());
     println!("  scattered flux       {:.6e} ± {:.2e} lm", estimate.scattered.0, estimate.scattered.1);
     println!("  relative std. error  median {:.2e} over {} lit (patch, cell) bins", median(lit.clone()), lit.len());
     println!("  written              {}", output.display());

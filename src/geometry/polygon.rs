@@ -112,6 +112,24 @@ impl ConvexPolygon {
         (0..v.len()).map(|i| segment_distance(p, v[i], v[(i + 1) % v.len()])).fold(f64::INFINITY, f64::min)
     }
 
+    /// The distance `t > 0` at which the ray `x + t·d` crosses the polygon, if it does (a
+    /// ray in its plane never does).
+    pub fn crossing(&self, x: DVec3, d: DVec3) -> Option<f64> {
+        let n = self.normal();
+        let v = self.vertices();
+        let across = d.dot(n);
+        if across.abs() <= 1e-12 {
+            return None;
+        }
+        let t = (v[0] - x).dot(n) / across;
+        if t <= 0.0 || !t.is_finite() {
+            return None;
+        }
+        let q = x + d * t;
+        let inside = (0..v.len()).all(|i| (v[(i + 1) % v.len()] - v[i]).cross(q - v[i]).dot(n) >= 0.0);
+        inside.then_some(t)
+    }
+
     /// Four pieces of about a quarter each (a quad by the midpoints of its edges and its
     /// centre, a triangle by the midpoints of its edges), covering it exactly.
     pub fn split(&self) -> [ConvexPolygon; 4] {

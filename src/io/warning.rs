@@ -112,17 +112,6 @@ pub enum Warning {
         /// The window's name.
         window: String,
     },
-    /// Parallel light through a glazed window, which does not attenuate it.
-    ParallelThroughGlass {
-        /// The parallel light's name.
-        beam: String,
-        /// The window's name.
-        window: String,
-        /// The glass's transmittance at the beam's incidence.
-        transmittance: f64,
-        /// The beam's incidence on the window, degrees.
-        incidence: f64,
-    },
 }
 
 /// A negative escaped flux of a closed scene: not light but discretization error, the
@@ -279,14 +268,6 @@ impl fmt::Display for Warning {
                 f,
                 "window \"{window}\" lets in no light: none of it lands on a surface, so no surface sees its \
                  opening (it lies behind the room's surfaces or away from them); check its `origin` and edges"
-            ),
-            Warning::ParallelThroughGlass { beam, window, transmittance, incidence } => write!(
-                f,
-                "\"{beam}\" (parallel light) passes the glazed window \"{window}\" unattenuated: the glass's \
-                 transmittance (τ = {transmittance:.3} at the beam's {incidence:.1}° incidence) and the window's \
-                 maintenance factor apply to the sky and the ground it lets in, not to the beam, so the direct light \
-                 through it, and all it lights, is too high by at least 1/τ; leave the window open or the beam out \
-                 for a result without this error"
             ),
         }
     }

@@ -3,7 +3,7 @@
 //! into these; nothing here sees TOML.
 
 use crate::photometry::Distribution;
-use crate::sky::{Opening, Sky};
+use crate::sky::{BeamGlass, Opening, Sky};
 use glam::DVec3;
 use std::path::PathBuf;
 
@@ -27,6 +27,8 @@ pub enum LuminaireKind {
         direction: DVec3,
         /// Illuminance normal to the beam, lx.
         illuminance: f64,
+        /// The glazed openings it may pass, which attenuate it (the scene's `[[window]]`s).
+        glass: BeamGlass,
     },
     /// An opening (`[[window]]`): the sky and the ground seen through the polygon.
     Window {

@@ -30,7 +30,7 @@ pub use seen::{Shining, luminous_along, seen_from};
 
 use crate::geometry::Frame;
 use crate::photometry::Distribution;
-use crate::sky::{Opening, Sky};
+use crate::sky::{BeamGlass, Opening, Sky};
 use glam::DVec3;
 
 /// A luminaire placed in the scene.
@@ -60,12 +60,15 @@ pub enum Light {
         /// Multiplier times tilt factor.
         scale: f64,
     },
-    /// Illuminance `illuminance` normal to a beam travelling along `direction`.
+    /// Illuminance `illuminance` normal to a beam travelling along `direction`, times the
+    /// share `glass` lets through where the beam crosses glazed openings.
     Parallel {
         /// Unit direction of travel.
         direction: DVec3,
         /// Illuminance normal to the beam, lx.
         illuminance: f64,
+        /// The glazed openings it may pass.
+        glass: BeamGlass,
     },
     /// The sky and the ground seen through the opening `window` (`crate::sky`).
     Window {
@@ -97,8 +100,8 @@ impl Source {
                     scale: p.multiplier * tilt,
                 }
             }
-            LuminaireKind::Parallel { direction, illuminance } => {
-                Light::Parallel { direction: *direction, illuminance: *illuminance }
+            LuminaireKind::Parallel { direction, illuminance, glass } => {
+                Light::Parallel { direction: *direction, illuminance: *illuminance, glass: glass.clone() }
             }
             LuminaireKind::Window { window, sky } => Light::Window { window: *window, sky: sky.clone() },
         };
@@ -115,8 +118,8 @@ impl Source {
                 distribution: distribution.clone(),
                 scale: scale * factor,
             },
-            Light::Parallel { direction, illuminance } => {
-                Light::Parallel { direction: *direction, illuminance: illuminance * factor }
+            Light::Parallel { direction, illuminance, glass } => {
+                Light::Parallel { direction: *direction, illuminance: illuminance * factor, glass: glass.clone() }
             }
             Light::Window { window, sky } => Light::Window { window: *window, sky: sky.scaled(factor) },
         };

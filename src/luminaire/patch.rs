@@ -12,7 +12,8 @@
 //!
 //! Parallel light along `l` with normal illuminance `E_n`: each piece receives
 //! `E_n cosθ A` times the fraction of its points from which a ray towards `−l` escapes the
-//! scene. Each piece's light goes to the cell of the patch frame it arrives from.
+//! scene, times the share `T` the glazed openings that ray crosses let through
+//! (`sky::BeamGlass`; the mean of `V T` over the points where `T` differs among them). Each piece's light goes to the cell of the patch frame it arrives from.
 //!
 //! An opening: the patch is cut while it is large seen from the opening, and each piece
 //! gets the sky and ground through it at its centroid (`crate::sky::through_window`),
@@ -21,9 +22,9 @@
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Frame, Mesh, Patch};
-use crate::sky::{Opening, Sky, through_window};
+use crate::sky::{BeamGlass, Opening, Sky, through_window};
 use crate::transfer::image::PlaneMirror;
-use crate::transfer::occlusion::cut_along_shadows;
+use crate::transfer::occlusion::{cut_along_shadows, polygon_points};
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -150,10 +151,10 @@ pub fn patch_lights(
                             }
                             mirrors.iter().for_each(|mirror| onto.mirrored(source, *position, mirror));
                         }
-                        Light::Parallel { direction, illuminance } => {
+                        Light::Parallel { direction, illuminance, glass } => {
                             let cos = -direction.dot(patch.normal);
                             if cos > 0.0 {
-                                onto.parallel(*direction, illuminance * cos, &patch.polygon);
+                                onto.parallel(*direction, glass, illuminance * cos, &patch.polygon);
                             }
                         }
                         Light::Window { window, sky } => onto.window(sky, window, &patch.polygon, 0),
@@ -227,14 +228,18 @@ impl Onto<'_> {
         self.flux = flux;
     }
 
-    fn parallel(&mut self, direction: DVec3, normal_share: f64, piece: &ConvexPolygon) {
+    /// Parallel light of `normal_share = E_n cos θ` along `direction` onto `piece`, each lit
+    /// part times the share `glass` lets through there.
+    fn parallel(&mut self, direction: DVec3, glass: &BeamGlass, normal_share: f64, piece: &ConvexPolygon) {
         let (visibility, face) = (self.visibility, self.patch.face);
         let escapes = |x: DVec3| visibility.closest_hit(x, -direction, face).is_none();
         let mut flux = 0.0;
         let least = self.least;
         let worth = |part: &ConvexPolygon| normal_share * part.area() > least;
-        let rays =
-            cut_along_shadows(piece, 0, &escapes, &worth, &mut |part, seen| flux += normal_share * part.area() * seen);
+        let rays = cut_along_shadows(piece, 0, &escapes, &worth, &mut |part, seen| {
+            let through = glass.over_points(&polygon_points(part), -direction, seen, &escapes);
+            flux += normal_share * part.area() * through
+        });
         self.rays += rays;
         self.add(-direction, flux);
     }

@@ -1,6 +1,6 @@
 //! The luminaires' direct light at one point, exactly: for a probe, `E = I(w) cosθ / r²`
 //! with one shadow ray to the source (parallel light: `E_n cosθ` when a ray towards the sun
-//! escapes), split by the direction cell of `frame` it arrives in. An opening gives the sky
+//! escapes, times the share the glazed openings it crosses let through, `sky::BeamGlass`), split by the direction cell of `frame` it arrives in. An opening gives the sky
 //! and ground through it piece by piece (`crate::sky::through_window`); it has no single
 //! direction, so [`incoming`] knows none.
 
@@ -26,8 +26,10 @@ pub fn incoming(source: &Source, visibility: &Visibility, p: DVec3, ignore: u32)
             let w = r / distance2.sqrt();
             Some((-w, source.intensity(w) / distance2))
         }
-        Light::Parallel { direction, illuminance } => {
-            visibility.closest_hit(p, -*direction, ignore).is_none().then_some((-*direction, *illuminance))
+        Light::Parallel { direction, illuminance, glass } => {
+            let towards = -*direction;
+            let escapes = visibility.closest_hit(p, towards, ignore).is_none();
+            escapes.then(|| (towards, illuminance * glass.share(p, towards)))
         }
         Light::Window { .. } => None,
     }

@@ -51,8 +51,8 @@ pub fn lit(world: &World, sources: &[Source], p: DVec3, n: DVec3, face: u32, rng
                 let e = source.intensity(w) * (-w).dot(n) / distance2;
                 lit.add(e, e > 0.0 && visibility.visible(*position, p, [NO_FACE, face]));
             }
-            Light::Parallel { direction, illuminance } => {
-                let e = illuminance * (-*direction).dot(n);
+            Light::Parallel { direction, illuminance, glass } => {
+                let e = illuminance * (-*direction).dot(n) * glass.share(p, -*direction);
                 lit.add(e, e > 0.0 && visibility.closest_hit(p, -*direction, face).is_none());
             }
             Light::Window { .. } => {}

@@ -13,6 +13,7 @@ use super::files::CaseFiles;
 use super::luminaire_array::{Member, RawArray, members};
 use crate::luminaire::{Luminaire, LuminaireKind, PointLuminaire};
 use crate::photometry::{Distribution, PhotometryError, parse_ies, parse_ldt};
+use crate::sky::BeamGlass;
 use glam::DVec3;
 use serde::Deserialize;
 use std::collections::HashMap;
@@ -127,7 +128,8 @@ fn kind(at: &Context, l: &RawLuminaire, files: &CaseFiles) -> Result<LuminaireKi
         )?;
         let illuminance = at.positive("illuminance", required("illuminance", l.illuminance)?)?;
         let illuminance = at.magnitude("illuminance", illuminance, " lx")?;
-        return Ok(LuminaireKind::Parallel { direction, illuminance });
+        // the windows' glass is attached with the [sky]'s (`sky::glaze`)
+        return Ok(LuminaireKind::Parallel { direction, illuminance, glass: BeamGlass::default() });
     }
     // An array over a rectangle places its members itself (`luminaire_array.rs`).
     let position = match (l.position, &l.array) {

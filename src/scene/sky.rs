@@ -5,13 +5,16 @@
 //! `Window` (the sky and ground seen through it, times the window's `maintenance_factor`:
 //! BRE's and CIBSE's glazing maintenance factor, so the daylight factor scales by it while
 //! `E_h` outside does not); `sun_illuminance` adds the sun as a parallel luminaire named
-//! `"sun"`. The luminance model is `crate::sky`.
+//! `"sun"`. The sun, and every other parallel luminaire, passes the windows' glass and dirt
+//! where it crosses them (`τ(θ) M`, `crate::sky::BeamGlass`). The luminance model is `crate::sky`.
 
 use super::check::{Context, REL_TOL, show, unique_names};
 use super::error::SceneError;
 use crate::geometry::ConvexPolygon;
 use crate::luminaire::{Luminaire, LuminaireKind};
-use crate::sky::{Brightness, Distribution, Fresnel, Glazing, Opening, SiteTime, Sky, SunPosition, day_of_year};
+use crate::sky::{
+    BeamGlass, Brightness, Distribution, Fresnel, Glazing, Opening, Pane, SiteTime, Sky, SunPosition, day_of_year,
+};
 use serde::Deserialize;
 use std::path::Path;
 
@@ -81,16 +84,17 @@ pub const DEFAULT_REFRACTIVE_INDEX: f64 = 1.52;
 /// The ground's reflectance when `ground_reflectance` is not given.
 pub const DEFAULT_GROUND_REFLECTANCE: f64 = 0.2;
 
-/// The sky of `[sky]` (if any) and the luminaires it brings: one per `[[window]]`, and the
-/// sun when `sun_illuminance` is given.
+/// The sky of `[sky]` (if any), the luminaires it brings (one per `[[window]]`, and the
+/// sun when `sun_illuminance` is given) and the windows' glass, which the sun's beam and any
+/// other parallel light crossing them pass ([`glaze`]).
 pub(super) fn daylight(
     path: &Path,
     raw: Option<&RawSky>,
     windows: &[RawWindow],
-) -> Result<(Option<Sky>, Vec<Luminaire>), SceneError> {
+) -> Result<(Option<Sky>, Vec<Luminaire>, BeamGlass), SceneError> {
     let Some(raw) = raw else {
         return match windows.first() {
-            None => Ok((None, Vec::new())),
+            None => Ok((None, Vec::new(), BeamGlass::default())),
             Some(w) => Err(Context::item(path, "window", &w.name, 0)
                 .error("", "a [[window]] lets the sky in: the case needs a [sky] table")),
         };
@@ -135,16 +139,28 @@ pub(super) fn daylight(
     let sun_horizontal = sun_normal * sun.y.max(0.0);
     let sky = Sky::new(distribution, sun, brightness, ground, sun_horizontal);
     unique_names(path, "window", windows.iter().map(|w| w.name.as_str()))?;
-    let mut luminaires = windows
+    let (mut luminaires, panes): (Vec<Luminaire>, Vec<Pane>) = windows
         .iter()
         .enumerate()
         .map(|(index, w)| window(&Context::item(path, "window", &w.name, index), w, &sky))
-        .collect::<Result<Vec<_>, _>>()?;
+        .collect::<Result<Vec<_>, _>>()?
+        .into_iter()
+        .unzip();
+    let glass = BeamGlass::new(panes);
     if sun_normal > 0.0 && sun.y > 0.0 {
-        let kind = LuminaireKind::Parallel { direction: -sun, illuminance: sun_normal };
+        let kind = LuminaireKind::Parallel { direction: -sun, illuminance: sun_normal, glass: glass.clone() };
         luminaires.push(Luminaire { name: "sun".to_string(), kind });
     }
-    Ok((Some(sky), luminaires))
+    Ok((Some(sky), luminaires, glass))
+}
+
+/// Every parallel light among `luminaires` passes the windows' `glass` where it crosses them.
+pub(super) fn glaze(luminaires: &mut [Luminaire], glass: &BeamGlass) {
+    for luminaire in luminaires {
+        if let LuminaireKind::Parallel { glass: own, .. } = &mut luminaire.kind {
+            own.clone_from(glass);
+        }
+    }
 }
 
 /// The sun's position: `sun_altitude_deg` and `sun_azimuth_deg`, or the site and time;
@@ -199,7 +215,9 @@ fn parse_time(text: &str) -> Option<f64> {
     (h < 24 && m < 60).then(|| h as f64 + m as f64 / 60.0)
 }
 
-fn window(at: &Context, w: &RawWindow, sky: &Sky) -> Result<Luminaire, SceneError> {
+/// The window's source (the sky and ground through it, times its maintenance factor) and
+/// its pane for a beam.
+fn window(at: &Context, w: &RawWindow, sky: &Sky) -> Result<(Luminaire, Pane), SceneError> {
     let origin = at.place("origin", w.origin)?;
     let u = at.place("edge_u", w.edge_u)?;
     let v = at.place("edge_v", w.edge_v)?;
@@ -215,7 +233,9 @@ fn window(at: &Context, w: &RawWindow, sky: &Sky) -> Result<Luminaire, SceneErro
     }
     // The light through the opening, dirt included: the sky (and ground) seen through it
     // times the maintenance factor; the unobstructed sky outside (E_h) is unchanged.
-    Ok(Luminaire { name: w.name.clone(), kind: LuminaireKind::Window { window, sky: sky.scaled(maintenance) } })
+    let kind = LuminaireKind::Window { window, sky: sky.scaled(maintenance) };
+    let pane = Pane { name: w.name.clone(), opening: window, maintenance };
+    Ok((Luminaire { name: w.name.clone(), kind }, pane))
 }
 
 /// `glass` (`"fresnel"` when `transmittance` is given), and for Fresnel panes

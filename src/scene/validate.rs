@@ -19,7 +19,7 @@ use super::material::materials;
 use super::observer::observers;
 use super::probe::probes;
 use super::schema::{RawCamera, RawScene, RawSceneInfo, RawSolver};
-use super::sky::daylight;
+use super::sky::{daylight, glaze};
 use super::surface::{emits, surfaces};
 use crate::solve::Method;
 use std::path::Path;
@@ -39,7 +39,8 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid, &surfaces)?;
     let (mut luminaires, tables) = luminaires(path, &source, &raw.luminaire, &files)?;
-    let (sky, openings) = daylight(path, raw.sky.as_ref(), &raw.window)?;
+    let (sky, openings, glass) = daylight(path, raw.sky.as_ref(), &raw.window)?;
+    glaze(&mut luminaires, &glass);
     if let Some(clash) = openings.iter().find(|o| luminaires.iter().any(|l| l.name == o.name)) {
         let message = format!("\"{}\" names a [[luminaire]] and a [[window]] or the [sky]'s sun", clash.name);
         return Err(SceneError::new(path, "[[luminaire]]", "name", message));

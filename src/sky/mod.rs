@@ -8,7 +8,8 @@
 //! illuminance (`integrate.rs`), and the light a receiving point gets through an opening
 //! (`window.rs`, glazed or not: `glazing.rs`, the models in `glazing_*.rs`): sky and ground
 //! seen through the opening's polygon, piece by piece, each piece's exact projected solid
-//! angle times the luminance towards it, shadows included.
+//! angle times the luminance towards it, shadows included; and the share of a parallel beam
+//! (the sun) the openings' glass lets through (`beam_glass.rs`).
 //! The sky enters the system exactly like a luminaire's direct light (`crate::luminaire`,
 //! `Light::Window`); nothing here knows about patches' cells or materials.
 //!
@@ -16,6 +17,7 @@
 //! The ground is a uniform Lambertian plane of reflectance `ρ_g` below the horizon:
 //! `L_g = ρ_g (E_h + E_sun,h)/π`, lit by the unobstructed sky and the sun.
 
+mod beam_glass;
 mod glazing;
 mod glazing_cie171;
 mod glazing_fresnel;
@@ -24,6 +26,7 @@ mod standard;
 mod sun;
 mod window;
 
+pub use beam_glass::{BeamGlass, Pane};
 pub use glazing::Glazing;
 pub use glazing_cie171::COEFFICIENTS as CIE171_GLASS;
 pub use glazing_fresnel::Fresnel;

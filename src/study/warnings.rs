@@ -57,14 +57,13 @@ const SENSOR_RAYS: usize = 256;
 const BACKS: f64 = 0.02;
 
 /// The warnings the model of `scene` shows before any solve: luminaires inside or behind
-/// surfaces, parallel light through glass, probes and grids not in the room, probes near
+/// surfaces, probes and grids not in the room, probes near
 /// patches, grids facing away from every source or with points left out (inside a solid,
 /// under a surface: `--strict` refuses them before solving).
 pub fn before_solve(scene: &Scene, model: &Model) -> Vec<Warning> {
     let mut out = Vec::new();
     luminaires(scene, model, &mut out);
     dark_windows(model, &mut out);
-    parallel_through_glass(model, &mut out);
     sensors(scene, model, &mut out);
     out.extend(super::grid_points::facing_away(scene, model));
     out.extend(super::grid_points::left_out(scene, model));
@@ -111,29 +110,6 @@ fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalan
     let beyond = landed - e.luminaire_emitted.iter().sum::<f64>();
     let luminaires = (beyond > 1e-9 * e.emitted).then_some(beyond);
     NegativeEscape { escaped: e.escaped, emitted: e.emitted, luminaires, low, high, worst, over, either }
-}
-
-/// Every pair of parallel light (the sun of `[sky]` or a `type = "parallel"` luminaire) and
-/// glazed window it meets at an incidence other than grazing: its beam passes the glass
-/// unattenuated (not modelled), so its direct light through that window is too high.
-fn parallel_through_glass(model: &Model, out: &mut Vec<Warning>) {
-    for beam in &model.sources {
-        let Light::Parallel { direction, .. } = beam.light else { continue };
-        for window in &model.sources {
-            let Light::Window { window: opening, .. } = &window.light else { continue };
-            let Some(glazing) = opening.glazing else { continue };
-            let cos = direction.dot(opening.polygon.normal()).abs();
-            if cos <= 0.0 {
-                continue;
-            }
-            out.push(Warning::ParallelThroughGlass {
-                beam: beam.name.clone(),
-                window: window.name.clone(),
-                transmittance: glazing.transmittance(cos),
-                incidence: cos.acos().to_degrees(),
-            });
-        }
-    }
 }
 
 /// Every `[[window]]` none of whose light lands on a surface: no surface sees its opening

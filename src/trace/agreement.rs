@@ -9,6 +9,8 @@
 //! independent errors, `√(‖x − m‖² − ‖σ‖²)/‖m‖` is the L2 difference with the reference's
 //! noise taken out: the error of `x` itself, even when the noise is not negligible.
 
+use std::fmt;
+
 /// The summary of `z` over the compared values.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Agreement {
@@ -82,4 +84,23 @@ pub fn agreement(values: &[f64], mean: &[f64], error: &[f64]) -> Agreement {
         a.excess_l2 = ((l2 - noise).max(0.0) / l2_ref).sqrt();
     }
     a
+}
+
+impl fmt::Display for Agreement {
+    /// `N compared (M unsampled), mean z, rms z, max |z|, beyond 3σ %, relative L1, noise L2`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} compared ({} unsampled), mean z {:+.3}, rms z {:.3}, max |z| {:.2}, beyond 3σ {:.2} %, relative L1 \
+             difference {:.2e}, noise L2 {:.2e}",
+            self.compared,
+            self.unsampled,
+            self.mean_z,
+            self.rms_z,
+            self.max_abs_z,
+            100.0 * self.beyond_3,
+            self.relative_l1,
+            self.noise_l2
+        )
+    }
 }

@@ -2,7 +2,8 @@
 //! the `(patch, direction cell)` bins, a view-independent estimate of the discrete field.
 //!
 //! Photons leave the emitters chosen by flux, each carrying `Φ/P` lm, from a uniform
-//! point in a cosine-distributed direction (luminaires: `luminaires.rs`, weighted). At every surface a photon first counts as
+//! point in a cosine-distributed direction (luminaires: `luminaires.rs`, the sky and the sun
+//! through the openings: `daylight_photons.rs`, weighted). At every surface a photon first counts as
 //! incident flux of the patch it meets (illuminance `E_i = Φ_in/A_i`), then scatters into
 //! a direction sampled from the continuous material (the same sampler as the backward
 //! estimator: the models are reciprocal) and deposits its outgoing flux `w'` into the bin
@@ -20,6 +21,7 @@
 //! are added in chunk order, so the result depends only on the seed and the count.
 
 use super::backward::{LONGEST_PATH, TraceOptions};
+use super::emitters::Departure;
 use super::statistics::Tally;
 use super::world::World;
 use crate::directions::DirectionSet;
@@ -67,7 +69,7 @@ pub fn trace_photons(
     let mesh = &world.mesh;
     let (n, k) = (mesh.len(), directions.len());
     let bins = n * k + n + 1;
-    let share = (world.emitters.flux() + world.luminaires.flux()) / photons.max(1) as f64;
+    let share = world.photon_flux() / photons.max(1) as f64;
     let chunks = photons.div_ceil(CHUNK);
     let wave = (2 * rayon::current_num_threads()) as u64;
     let mut tallies = vec![Tally::default(); bins];
@@ -168,17 +170,8 @@ fn follow(
 ) {
     let mesh = &world.mesh;
     let (n, k) = (mesh.len(), directions.len());
-    let mut u = [rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform()];
-    let surfaces = world.emitters.flux() / (world.emitters.flux() + world.luminaires.flux());
-    let (departure, weight) = if u[0] < surfaces {
-        u[0] /= surfaces;
-        let Some(departure) = world.emitters.emit(mesh, u) else { return };
-        (departure, 1.0)
-    } else {
-        u[0] = (u[0] - surfaces) / (1.0 - surfaces);
-        let Some(emitted) = world.luminaires.emit(u) else { return };
-        emitted
-    };
+    let u = [rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform(), rng.uniform()];
+    let Some((departure, weight)) = depart(world, u) else { return };
     let (mut origin, mut direction, mut ignore) = (departure.origin, departure.direction, departure.face);
     let mut flux = share * weight;
     let last = options.max_order.unwrap_or(LONGEST_PATH).min(LONGEST_PATH);
@@ -204,4 +197,26 @@ fn follow(
         origin = hit.point;
         ignore = patch.face;
     }
+}
+
+/// A photon's departure and weight: `u[0]` picks the emitting surfaces, the luminaires or
+/// the daylight through the openings by their flux, the rest place it.
+fn depart(world: &World, mut u: [f64; 5]) -> Option<(Departure, f64)> {
+    let fluxes = [world.emitters.flux(), world.luminaires.flux(), world.daylight.flux()];
+    let total: f64 = fluxes.iter().sum();
+    let mut start = 0.0;
+    for (group, flux) in fluxes.iter().enumerate() {
+        let share = flux / total;
+        let last = fluxes[group + 1..].iter().all(|&f| f <= 0.0);
+        if share > 0.0 && (u[0] < start + share || last) {
+            u[0] = ((u[0] - start) / share).clamp(0.0, 1.0 - f64::EPSILON);
+            return match group {
+                0 => world.emitters.emit(&world.mesh, u).map(|d| (d, 1.0)),
+                1 => world.luminaires.emit(u),
+                _ => world.daylight.emit(&world.visibility, u),
+            };
+        }
+        start += share;
+    }
+    None
 }

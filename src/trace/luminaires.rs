@@ -14,7 +14,8 @@
 //! For light tracing a luminaire is a photon source chosen by flux: a point luminaire
 //! sends a photon in a uniform direction with weight `4π I(ω)/Φ` (the weights average 1);
 //! parallel light enters through a disc across the beam covering the scene's bounding
-//! sphere, carrying `E_n π R²`.
+//! sphere, carrying `E_n π R²` (through the openings instead when the scene has some:
+//! `daylight_photons.rs`).
 
 use super::emitters::Departure;
 use crate::geometry::{Frame, Mesh};
@@ -63,6 +64,17 @@ impl Luminaires {
             })
             .collect();
         Luminaires { sources, flux, centre, radius }
+    }
+
+    /// The same luminaires with no photons from parallel light, whose beams enter through
+    /// the openings instead (`daylight_photons.rs`).
+    pub fn without_beams(mut self) -> Luminaires {
+        for (source, flux) in self.sources.iter().zip(self.flux.iter_mut()) {
+            if matches!(source.light, Light::Parallel { .. }) {
+                *flux = 0.0;
+            }
+        }
+        self
     }
 
     /// Total photon flux, lm.
@@ -114,7 +126,8 @@ impl Luminaires {
             pick -= f;
             here
         });
-        let source = &self.sources[i.unwrap_or(self.sources.len() - 1)];
+        let last = self.flux.iter().rposition(|&f| f > 0.0)?;
+        let source = &self.sources[i.unwrap_or(last)];
         match &source.light {
             Light::Point { position, .. } => {
                 let z = 1.0 - 2.0 * u[1];

@@ -13,12 +13,14 @@
 //!
 //! The pieces they share: [`world`] (geometry, materials, ray casting), [`emitters`]
 //! (sources sampled by flux), [`luminaires`] (delta lights gathered exactly, photon
-//! sources), [`openings`] (the sky and the ground through the `[[window]]`s) and
+//! sources), [`openings`] (the sky and the ground through the `[[window]]`s),
+//! [`daylight_photons`] (the sky's and the sun's photons through them) and
 //! [`statistics`] (means and standard errors). The continuous materials and their
 //! samplers are `crate::material`'s; the random streams `crate::random`'s.
 
 pub mod agreement;
 pub mod backward;
+pub mod daylight_photons;
 pub mod emitters;
 pub mod forward;
 pub mod leaf_errors;

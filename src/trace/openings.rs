@@ -17,7 +17,6 @@
 //! (`crate::render`, which reads it here); a probe's luminance is its first surface's.
 
 use super::emitters::{Incoming, point_on};
-use crate::geometry::ConvexPolygon;
 use crate::luminaire::{Light, Source};
 use crate::sky::{Opening, Sky};
 use crate::visibility::{NO_FACE, Visibility};
@@ -65,7 +64,7 @@ impl Openings {
     pub fn seen(&self, x: DVec3, direction: DVec3) -> Option<Seen> {
         let (mut nearest, mut sky, mut transmittance, mut pdf) = (f64::INFINITY, None, 1.0, 0.0);
         for ((opening, outside), chance) in self.list.iter().zip(&self.chance) {
-            let Some(t) = crossing(&opening.polygon, x, direction) else { continue };
+            let Some(t) = opening.polygon.crossing(x, direction) else { continue };
             let cos = direction.dot(opening.polygon.normal()).abs();
             pdf += chance / opening.polygon.area() * t * t / cos;
             transmittance *= opening.glazing.map_or(1.0, |g| g.transmittance(cos));
@@ -95,7 +94,7 @@ impl Openings {
 }
 
 /// The index whose share of `[0, 1)` holds `u`, and `u` rescaled to `[0, 1)` within it.
-fn pick(chance: &[f64], u: f64) -> Option<(usize, f64)> {
+pub(super) fn pick(chance: &[f64], u: f64) -> Option<(usize, f64)> {
     let mut start = 0.0;
     for (i, &c) in chance.iter().enumerate() {
         if u < start + c || i + 1 == chance.len() {
@@ -104,21 +103,4 @@ fn pick(chance: &[f64], u: f64) -> Option<(usize, f64)> {
         start += c;
     }
     None
-}
-
-/// The distance `t > 0` at which the ray `x + t·d` crosses the convex polygon, if it does.
-fn crossing(polygon: &ConvexPolygon, x: DVec3, d: DVec3) -> Option<f64> {
-    let n = polygon.normal();
-    let v = polygon.vertices();
-    let across = d.dot(n);
-    if across.abs() <= 1e-12 {
-        return None;
-    }
-    let t = (v[0] - x).dot(n) / across;
-    if t <= 0.0 || !t.is_finite() {
-        return None;
-    }
-    let q = x + d * t;
-    let inside = (0..v.len()).all(|i| (v[(i + 1) % v.len()] - v[i]).cross(q - v[i]).dot(n) >= 0.0);
-    inside.then_some(t)
 }

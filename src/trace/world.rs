@@ -1,9 +1,10 @@
 //! The scene as the Monte Carlo estimators see it: the patches only as geometry (where a
 //! ray lands, which side it meets, or whether it leaves the scene), the continuous material
-//! of every patch, the emitters, the luminaires, the openings and the ray caster. Nothing
+//! of every patch, the emitters, the luminaires, the openings (and their photons) and the ray caster. Nothing
 //! here is discretized in direction: the references of `docs/design.md` §4 share no
 //! kernel, block or cell with the linear system.
 
+use super::daylight_photons::DaylightPhotons;
 use super::emitters::Emitters;
 use super::luminaires::Luminaires;
 use super::openings::Openings;
@@ -48,6 +49,8 @@ pub struct World {
     pub luminaires: Luminaires,
     /// The openings through which the sky is seen.
     pub openings: Openings,
+    /// The photons of the sky and the sun through the openings.
+    pub daylight: DaylightPhotons,
     /// The material model of every patch.
     materials: Vec<MaterialModel>,
     faces: Faces,
@@ -67,9 +70,20 @@ impl World {
         let faces = Faces::of(&mesh);
         let materials = mesh.patches.iter().map(|p| scene.materials[p.material as usize].model.clone()).collect();
         let emitters = Emitters::of(&mesh);
-        let luminaires = Luminaires::of(scene, &mesh);
-        let openings = Openings::of(&scene.luminaires.iter().map(Source::of).collect::<Vec<_>>());
-        World { mesh, visibility, emitters, luminaires, openings, materials, faces }
+        let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
+        let openings = Openings::of(&sources);
+        let daylight = DaylightPhotons::of(&sources, &visibility);
+        let luminaires = match openings.is_empty() {
+            true => Luminaires::of(scene, &mesh),
+            false => Luminaires::of(scene, &mesh).without_beams(),
+        };
+        World { mesh, visibility, emitters, luminaires, openings, daylight, materials, faces }
+    }
+
+    /// The flux the photons of light tracing carry: the emitting surfaces', the luminaires'
+    /// and the daylight's through the openings, lm.
+    pub fn photon_flux(&self) -> f64 {
+        self.emitters.flux() + self.luminaires.flux() + self.daylight.flux()
     }
 
     /// The material of patch `i`.

@@ -59,7 +59,11 @@ fn photons_from_an_ies_luminaire_and_the_sun_agree_with_the_solve() {
     p.rotate_deg = 25.0;
     let sun = ugo::luminaire::Luminaire {
         name: "sun".into(),
-        kind: LuminaireKind::Parallel { direction: DVec3::new(0.3, -0.8, 0.5).normalize(), illuminance: 2000.0 },
+        kind: LuminaireKind::Parallel {
+            direction: DVec3::new(0.3, -0.8, 0.5).normalize(),
+            illuminance: 2000.0,
+            glass: Default::default(),
+        },
     };
     let s = floor_under(vec![spot, sun]);
     let directions = DirectionSet::hemisphere(16);

@@ -83,7 +83,7 @@ illuminance = 50000
     assert_eq!(spot.file.as_deref(), Some(dir.join("down.ies").as_path()), "relative to the case file");
     assert!(matches!(&point(&scene, 3).distribution, Distribution::Table(t) if t.description.contains("Isym 4")));
     assert_eq!(point(&scene, 0).aim, DVec3::NEG_Y, "straight down by default");
-    let LuminaireKind::Parallel { direction, illuminance } = scene.luminaires[4].kind else { panic!() };
+    let LuminaireKind::Parallel { direction, illuminance, .. } = scene.luminaires[4].kind else { panic!() };
     assert!((direction - DVec3::new(0.0, -1.0, 1.0).normalize()).length() < 1e-15 && illuminance == 50_000.0);
 }
 

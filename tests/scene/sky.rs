@@ -27,7 +27,7 @@ fn a_sky_with_a_window_and_the_sun_is_read() {
     let names: Vec<&str> = scene.luminaires.iter().map(|l| l.name.as_str()).collect();
     assert_eq!(names, ["roof", "sun"]);
     match &scene.luminaires[1].kind {
-        LuminaireKind::Parallel { direction, illuminance } => {
+        LuminaireKind::Parallel { direction, illuminance, .. } => {
             assert!((*direction + sky.sun).length() < 1e-12 && *illuminance == 80_000.0)
         }
         other => panic!("{other:?}"),

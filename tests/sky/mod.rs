@@ -7,6 +7,7 @@ mod labels;
 mod maintenance;
 mod office;
 mod position;
+mod sun_glass;
 mod window;
 
 use glam::DVec3;

@@ -247,7 +247,7 @@ fn a_saved_kernel_follows_its_mirrors() {
     assert!(refused(changed(&|s| s.materials[1].model = MaterialModel::Mirror { reflectance: 0.5 })));
     let parallel = Luminaire {
         name: "sun".into(),
-        kind: LuminaireKind::Parallel { direction: DVec3::NEG_Y, illuminance: 1000.0 },
+        kind: LuminaireKind::Parallel { direction: DVec3::NEG_Y, illuminance: 1000.0, glass: Default::default() },
     };
     assert!(refused(changed(&|s| s.luminaires.push(parallel.clone()))));
     let grey = MaterialModel::Lambert { reflectance: 0.5, transmittance: 0.0 };

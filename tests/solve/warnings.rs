@@ -179,29 +179,6 @@ fn a_negative_escape_names_the_luminaires_part_apart_from_the_kernels() {
     assert!(w.contains(&lamps) && w.contains(&kernel), "{w}");
 }
 
-/// The sun through a glazed window: its beam is not attenuated by the glass (not
-/// modelled), which the warnings say, naming the beam and the window, with `τ` at its
-/// incidence; without the sun, or with the window open, no such warning.
-#[test]
-fn the_sun_through_a_glazed_window_is_warned_of() {
-    let path = std::path::Path::new("cases/daylit-office.toml");
-    let text = std::fs::read_to_string(path).unwrap().replace("patch_size = 0.25", "patch_size = 1.0");
-    let sunny = text.replace("ground_reflectance = 0.2\n", "ground_reflectance = 0.2\nsun_illuminance = 50000.0\n");
-    let glazed = |t: &str| t.replace("edge_v = [0.0, 1.5, 0.0]\n", "edge_v = [0.0, 1.5, 0.0]\ntransmittance = 0.8\n");
-    for (text, expected) in [(glazed(&sunny), true), (sunny.clone(), false), (glazed(&text), false)] {
-        let scene = ugo::scene::Scene::parse(path, text).unwrap();
-        let model = ugo::model::Model::build(&scene, &ugo::progress::Silent).unwrap();
-        let x = crate::cie171::solve_model(&model, scene.solver.method);
-        let energy = ugo::readout::energy::EnergyBalance::of(&model, &x, scene.surfaces.len());
-        let w = texts(&physics_warnings(&scene, &model, &x, &energy));
-        let glass = w.iter().find(|w| w.contains("unattenuated"));
-        assert_eq!(glass.is_some(), expected, "{w:?}");
-        if let Some(w) = glass {
-            assert!(w.contains("\"sun\"") && w.contains("\"window\"") && w.contains("τ = 0."), "{w}");
-        }
-    }
-}
-
 #[test]
 fn a_probe_in_the_near_field_of_a_patch_is_reported_with_the_patch() {
     // The west wall's patches are 25 cm squares (35 cm across): 2 cm is within 0.4 of that,

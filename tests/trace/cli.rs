@@ -95,8 +95,16 @@ fn trace_refuses_bad_requests() {
     let case = std::fs::read_to_string("cases/furnace-box.toml").unwrap().replace("emission = { luminance = 1.0 }", "");
     std::fs::write(&dark, case).unwrap();
     assert!(fails(&["trace", dark.to_str().unwrap(), "-o", d]).contains("emits"));
-    let daylit = fails(&["trace", "cases/daylit-office.toml", "--forward", "--photons", "10", "-o", d]);
-    assert!(daylit.contains("[[window]]") && daylit.contains("--forward"), "{daylit}");
+}
+
+/// Light tracing starts photons from the sky through the openings (once refused).
+#[test]
+fn a_forward_trace_of_a_daylit_case_starts_photons_at_its_window() {
+    let dir = scratch("trace-daylit");
+    let out = dir.join("daylit.h5");
+    let args = ["trace", "cases/daylit-office.toml", "--forward", "--photons", "20000", "--patch-size", "1"];
+    let printed = ok(&[&args[..], &["-o", out.to_str().unwrap()]].concat());
+    assert!(printed.contains("scattered flux") && out.exists(), "{printed}");
 }
 
 #[test]

@@ -146,7 +146,27 @@ fn behind_masks_outside_the_traced_probes_read_what_the_solve_takes_through_the_
 
 #[test]
 fn in_the_daylit_office_the_traced_probes_agree_with_the_solve() {
-    let mut scene = office(&[]);
+    agree_with_the_solve(&[], "daylit office");
+}
+
+/// The sun through two panes and dirt: the front probe and a patch of the floor in the sun,
+/// the rest lit by the sun patch's reflections (`sky::BeamGlass` in the solve's source term
+/// and probes and in the tracer's next-event estimation alike).
+#[test]
+fn in_the_sunlit_glazed_office_the_traced_probes_agree_with_the_solve() {
+    let sunny = [
+        ("ground_reflectance = 0.2\n", "ground_reflectance = 0.2\nsun_illuminance = 50000.0\n"),
+        (
+            "edge_v = [0.0, 1.5, 0.0]\n",
+            "edge_v = [0.0, 1.5, 0.0]\ntransmittance = 0.8\npanes = 2\nmaintenance_factor = 0.9\n",
+        ),
+    ];
+    agree_with_the_solve(&sunny, "sunlit glazed office");
+}
+
+/// The office edited by `edits`, solved at 0.5 m patches, against 40,000 paths per probe.
+fn agree_with_the_solve(edits: &[(&str, &str)], label: &str) {
+    let mut scene = office(edits);
     scene.discretization.patch_size = 0.5;
     let model = Model::build(&scene, &ugo::progress::Silent).expect("fits");
     let x = solve_model(&model, scene.solver.method);
@@ -155,7 +175,7 @@ fn in_the_daylit_office_the_traced_probes_agree_with_the_solve() {
         let d = probe.illuminance - value;
         let allowed = 3.0 * error + DISCRETIZATION * value;
         eprintln!(
-            "daylit office, {}: solve {:.2} lx, trace {value:.2} ± {error:.2}, difference {:+.3} % (allowed {:.3} %)",
+            "{label}, {}: solve {:.2} lx, trace {value:.2} ± {error:.2}, difference {:+.3} % (allowed {:.3} %)",
             probe.name,
             probe.illuminance,
             100.0 * d / value,

@@ -6,6 +6,7 @@ mod backward;
 mod cli;
 mod daylight;
 mod forward;
+mod forward_daylight;
 mod furnace;
 mod probe;
 mod sampling;
