@@ -23,6 +23,9 @@ const LONGEST: f64 = 1e3;
 const SHORTEST: f64 = 1e-4;
 /// An OBJ model this long, m, was probably drawn in millimetres or centimetres.
 const MODEL_LONGEST: f64 = 500.0;
+/// An OBJ model this many times longer than the rest of the scene was probably drawn in
+/// millimetres (a 450 mm chair read as 450 m in a 9 m room is 50 times the room).
+const MODEL_TO_ROOM: f64 = 10.0;
 /// Diffuse reflectance above this is laboratory material (white standards), not a room.
 const REFLECTANCE: f64 = 0.98;
 
@@ -74,20 +77,14 @@ pub fn warnings(scene: &Scene) -> Vec<SceneError> {
         if let Shape::Mesh { .. } = s.shape
             && length > MODEL_LONGEST
         {
-            out.push(at.error(
-                key,
-                format!(
-                    "the model is {length:.4e} m across: lengths are in metres; a model drawn in millimetres \
-                     needs scale = 0.001 ({:.4} m across), in centimetres scale = 0.01",
-                    length * 1e-3
-                ),
-            ));
+            out.push(at.error(key, format!("the model is {length:.4e} m across: {}", unit_hint(length))));
         } else if length > LONGEST {
             out.push(at.error(key, format!("{length:.4e} m across: lengths are in metres (1 km is {LONGEST:e} m)")));
         } else if length < SHORTEST {
             out.push(at.error(key, format!("{length:.4e} m across: lengths are in metres (0.1 mm is {SHORTEST:e} m)")));
         }
     }
+    out.extend(out_of_scale_models(scene));
     let (low, high) = surfaces_bounds(&scene.surfaces);
     let span = (high - low).length();
     if span > LONGEST && !out.iter().any(|w| w.message().contains("lengths are in metres")) {
@@ -117,6 +114,38 @@ pub fn warnings(scene: &Scene) -> Vec<SceneError> {
                 format!("{illuminance:e} lx is more than direct sunlight gives (about 1.2e5 lx)"),
             )),
             LuminaireKind::Parallel { .. } | LuminaireKind::Window { .. } => {}
+        }
+    }
+    out
+}
+
+/// What to do about a model `length` m across that was probably drawn in other units.
+fn unit_hint(length: f64) -> String {
+    format!(
+        "lengths are in metres; a model drawn in millimetres needs scale = 0.001 ({:.4} m across), in \
+         centimetres scale = 0.01 ({:.4} m)",
+        length * 1e-3,
+        length * 1e-2
+    )
+}
+
+/// The OBJ models [`MODEL_TO_ROOM`] times longer than the other surfaces together (below
+/// [`MODEL_LONGEST`], where the model alone is warned of: a millimetre chair is no longer
+/// than a hall).
+fn out_of_scale_models(scene: &Scene) -> Vec<SceneError> {
+    let is_model = |s: &&crate::geometry::Surface| matches!(s.shape, Shape::Mesh { .. });
+    let rest: Vec<_> = scene.surfaces.iter().filter(|s| !is_model(s)).cloned().collect();
+    let (low, high) = surfaces_bounds(&rest);
+    let room = (high - low).length();
+    let mut out = Vec::new();
+    for (index, s) in scene.surfaces.iter().enumerate().filter(|(_, s)| is_model(s)) {
+        let at = Context::item(&scene.path, "surface", &s.name, index);
+        let length = extent(&s.shape);
+        if room > 0.0 && length > MODEL_TO_ROOM * room && length <= MODEL_LONGEST {
+            let times = length / room;
+            let what =
+                format!("the model is {length:.4} m across, {times:.0} times the rest of the scene ({room:.4} m)");
+            out.push(at.error("scale", format!("{what}: {}", unit_hint(length))));
         }
     }
     out

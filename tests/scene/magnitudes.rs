@@ -92,3 +92,27 @@ fn a_model_in_millimetres_is_told_the_scale_that_fixes_it() {
     assert_eq!((w[0].table(), w[0].key()), ("[[surface]] \"chair\" (#2)", "scale"));
     assert!(w[0].message().contains("scale = 0.001"), "{}", w[0]);
 }
+
+/// Below 500 units a model in millimetres is no longer than a hall; beside a room it is
+/// still tens of times the room (issue 37, point 7).
+#[test]
+fn a_millimetre_model_far_larger_than_its_room_is_told_the_scale() {
+    let dir = scratch("obj-mm-small");
+    dir.write("stool.obj", "v 0 0 0\nv 300 0 0\nv 0 300 200\nf 1 2 3\n");
+    let room = "\n[[surface]]\nname = \"room\"\nshape = \"box\"\nmaterial = \"white\"\nmin = [-2, 0, -2]\nmax = [2, 3, 2]\ninside = true\n";
+    let stool = "\n[[surface]]\nname = \"stool\"\nshape = \"mesh\"\nmaterial = \"white\"\nfile = \"stool.obj\"\n";
+    let text = lit(&format!("{room}{stool}"));
+    let case = dir.write("case.toml", &text);
+    let w = ugo::scene::Scene::parse(&case, text).unwrap().warnings();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert_eq!((w[0].table(), w[0].key()), ("[[surface]] \"stool\" (#3)", "scale"));
+    assert!(
+        w[0].message().contains("times the rest of the scene") && w[0].message().contains("scale = 0.001"),
+        "{}",
+        w[0]
+    );
+    // the same stool in metres is no mistake
+    let metres = dir.write("metres.toml", &lit(&format!("{room}{stool}scale = 0.001\n")));
+    let w = ugo::scene::Scene::load(&metres).unwrap().warnings();
+    assert!(w.is_empty(), "{w:?}");
+}
