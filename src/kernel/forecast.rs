@@ -53,6 +53,9 @@ pub struct Forecast {
     pub patches: f64,
     /// The most leaves of the hierarchy (its uniform mesh at `patch_size / 2`); `None` when uniform.
     pub leaves: Option<f64>,
+    /// The patches of the surfaces at any size (one per OBJ triangle, rectangle, …): no
+    /// coarser mesh has fewer. `None` when counted on a mesh.
+    pub fewest_patches: Option<f64>,
     /// Direction cells per patch.
     pub cells: usize,
     /// Unknowns of the system, patches (or leaves) × cells.
@@ -82,7 +85,12 @@ impl Forecast {
     /// `patch_size` with `directions`, before meshing.
     pub fn uniform(surfaces: &[Surface], materials: usize, patch_size: f64, directions: &DirectionSet) -> Forecast {
         let (coarse, weights) = coarse(surfaces, patch_size);
-        Forecast { counted: false, ..Forecast::of_pairs(&coarse, &weights, materials, directions.len()) }
+        let fewest_patches = Some(coarse.len() as f64);
+        Forecast {
+            counted: false,
+            fewest_patches,
+            ..Forecast::of_pairs(&coarse, &weights, materials, directions.len())
+        }
     }
 
     /// The uniform kernel of `mesh`, its facing pairs counted on its patches.
@@ -103,6 +111,7 @@ impl Forecast {
         Forecast {
             patches,
             leaves: None,
+            fewest_patches: None,
             cells,
             unknowns,
             facing_pairs,
@@ -133,6 +142,7 @@ impl Forecast {
         Forecast {
             patches,
             leaves: Some(Mesh::count(surfaces, patch_size / 2.0)),
+            fewest_patches: Some(Mesh::count(surfaces, f64::INFINITY)),
             cells,
             unknowns,
             facing_pairs: 0.0,

@@ -7,6 +7,9 @@ use super::forecast::Forecast;
 use super::memory::Footprint;
 
 const GIB: f64 = (1u64 << 30) as f64;
+/// The share of a model's patches that, once the surfaces' own elements (OBJ triangles),
+/// makes a coarser size no way out.
+const FIXED_SHARE: f64 = 0.5;
 
 /// What was over the limit.
 #[derive(Debug, Clone, PartialEq)]
@@ -83,19 +86,36 @@ fn model(f: &mut std::fmt::Formatter<'_>, e: &Forecast, limit: u64) -> std::fmt:
         )?,
         Some(leaves) => write!(f, " (roots of the hierarchy; at most {} leaves)", figure(leaves))?,
     }
+    write!(f, ", the mesh {}, the material blocks (K × K each) {}; ", gib(e.mesh_bytes), gib(e.block_bytes))?;
+    let fixed = e.fewest_patches.filter(|&n| n >= FIXED_SHARE * e.patches);
+    if let Some(n) = fixed {
+        return write!(
+            f,
+            "{}. {} of the {} patches are the surfaces' own elements (an OBJ triangle is one patch at any \
+             size), so a larger size cannot lower them. Ways out: simplify the models (decimate the OBJ \
+             files, leave out small parts), {}or a higher --memory-limit if the machine has the RAM",
+            provenance(e),
+            figure(n),
+            figure(e.patches),
+            if e.leaves.is_none() { "--kernel hierarchical (no pairs of patches stored), " } else { "" }
+        );
+    }
     write!(
         f,
-        ", the mesh {}, the material blocks (K × K each) {}; {}. Ways out: a larger \
+        "{}. Ways out: a larger \
          {}, fewer --directions, {}or a higher --memory-limit if the machine has the RAM",
-        gib(e.mesh_bytes),
-        gib(e.block_bytes),
-        if e.counted { "counted on the mesh" } else { "estimated before meshing" },
+        provenance(e),
         match e.leaves {
             None => "--patch-size (patches grow as patch_size⁻², the uniform kernel as patch_size⁻⁴)",
             Some(_) => "--root-size (the hierarchy's roots grow as root_size⁻²)",
         },
         if e.leaves.is_none() { "--kernel hierarchical, " } else { "" }
     )
+}
+
+/// Where the figures come from.
+fn provenance(e: &Forecast) -> &'static str {
+    if e.counted { "counted on the mesh" } else { "estimated before meshing" }
 }
 
 /// Bytes as GiB, in scientific notation past 10⁴ GiB; past the largest number, in words.

@@ -192,3 +192,44 @@ fn physics_warnings_reach_stderr_the_summary_and_the_file_and_strict_makes_them_
     assert!(err.contains("--strict") && err.contains("floor centre"), "{err}");
     assert!(!out.exists(), "--strict wrote the file");
 }
+
+/// An OBJ model's triangles are each a patch at any size: its refusal says that a larger
+/// size cannot help and names what can (issue 37, point 7: a 2·10⁶-triangle OBJ).
+#[test]
+fn a_model_of_too_many_triangles_is_told_to_simplify_not_to_coarsen() {
+    let dir = crate::support::scratch("triangles");
+    let n = 100;
+    let mut obj = String::new();
+    for i in 0..=n {
+        for j in 0..=n {
+            obj += &format!("v {} 0.5 {}\n", i as f64 * 0.04, j as f64 * 0.04);
+        }
+    }
+    for i in 0..n {
+        for j in 0..n {
+            let (a, c) = (i * (n + 1) + j + 1, (i + 1) * (n + 1) + j + 1);
+            obj += &format!("f {a} {c} {}\nf {} {c} {}\n", a + 1, a + 1, c + 1);
+        }
+    }
+    dir.write("sheet.obj", &obj);
+    let case = dir.write(
+        "case.toml",
+        "[discretization]\npatch_size = 0.5\n\n[[material]]\nname = \"grey\"\ntype = \"lambert\"\nreflectance = 0.5\n\n\
+         [[surface]]\nname = \"room\"\nshape = \"box\"\nmin = [0, 0, 0]\nmax = [4, 3, 4]\ninside = true\n\
+         material = \"grey\"\nemission = { luminance = 1.0 }\n\n\
+         [[surface]]\nname = \"sheet\"\nshape = \"mesh\"\nfile = \"sheet.obj\"\nmaterial = \"grey\"\n",
+    );
+    let case = case.to_str().unwrap();
+    for kernel in ["uniform", "hierarchical"] {
+        let err = assert_clean_failure(&ugo(&["solve", case, "--kernel", kernel, "--memory-limit", "0.001"]));
+        for fragment in ["2.001e4 of the ", "patches are the surfaces' own elements", "simplify the models"] {
+            assert!(err.contains(fragment), "{kernel}: {err}");
+        }
+        assert!(!err.contains("a larger --patch-size") && !err.contains("a larger --root-size"), "{kernel}: {err}");
+        assert_eq!(err.contains("--kernel hierarchical"), kernel == "uniform", "{kernel}: {err}");
+    }
+    // a room alone at a small patch size still hears of the patch size
+    let err =
+        assert_clean_failure(&ugo(&["solve", "cases/furnace-box.toml", "--patch-size", "1e-4", "--kernel", "uniform"]));
+    assert!(err.contains("a larger --patch-size") && !err.contains("simplify the models"), "{err}");
+}
