@@ -15,7 +15,7 @@ const FIXED_SHARE: f64 = 0.5;
 #[derive(Debug, Clone, PartialEq)]
 pub enum Need {
     /// A whole model, from its forecast.
-    Model(Forecast),
+    Model(Box<Forecast>),
     /// One matrix about to be formed.
     Matrix(Footprint),
 }
@@ -36,7 +36,7 @@ impl Forecast {
     pub fn check(&self, limit: u64) -> Result<(), TooLarge> {
         match self.peak_bytes() <= limit as f64 {
             true => Ok(()),
-            false => Err(TooLarge { need: Need::Model(*self), limit }),
+            false => Err(TooLarge { need: Need::Model(Box::new(*self)), limit }),
         }
     }
 }

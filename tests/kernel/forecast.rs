@@ -63,7 +63,7 @@ fn tiny_patch_sizes_are_refused_before_meshing_with_the_estimate() {
         let started = Instant::now();
         let result = Model::build(&scene, &ugo::progress::Silent);
         let Err(ModelError::TooLarge(e)) = result else { panic!("patch_size {h}: not refused before meshing") };
-        let Need::Model(forecast) = e.need else { panic!("patch_size {h}: refused as a matrix") };
+        let Need::Model(forecast) = &e.need else { panic!("patch_size {h}: refused as a matrix") };
         assert!(started.elapsed().as_secs_f64() < 1.0, "patch_size {h}: {:?}", started.elapsed());
         let message = e.to_string();
         for fragment in
