@@ -63,7 +63,7 @@ pub(super) fn placements(
         let naming = |j: usize| match j.checked_sub(own) {
             None => format!("the wall's hole #{}", j + 1),
             Some(k) if k < windows_in.len() => format!("[[window]] \"{}\"", windows_in[k]),
-            Some(_) => format!("the window in the wall \"{name}\""),
+            Some(_) => format!("[[window]] \"{}\"", w.name),
         };
         let shape = Shape::Holed { outline, holes };
         fault(&shape, &naming).map_err(|(_, message)| fail("at", message))?;

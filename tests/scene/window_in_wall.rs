@@ -145,10 +145,10 @@ fn windows_overlapping_in_a_wall_or_its_hole_are_named() {
     let two = "[[window]]\nname = \"a\"\nwall = \"south wall\"\nat = [0.5, 0.9]\nsize = [1.5, 1.2]\n\n\
                [[window]]\nname = \"b\"\nwall = \"south wall\"\nat = [1.5, 1.5]\nsize = [1, 1]\n";
     let e = rejected(&room(SOUTH, two));
-    assert_error(&e, "[[window]] \"b\" (#2)", "at", &["overlaps [[window]] \"a\"", "3.0000e-1 m²"]);
+    assert_error(&e, "[[window]] \"b\" (#2)", "at", &["[[window]] \"b\" overlaps [[window]] \"a\"", "3.0000e-1 m²"]);
     let holed = SOUTH.replace("\n\n", "\nholes = [{ at = [2.5, 0], size = [1, 2.1] }]\n\n");
     let e = rejected(&room(&holed, "[[window]]\nname = \"w\"\nwall = \"south wall\"\nat = [2, 1]\nsize = [1, 1]\n"));
-    assert_error(&e, "[[window]] \"w\" (#1)", "at", &["overlaps the wall's hole #1"]);
+    assert_error(&e, "[[window]] \"w\" (#1)", "at", &["[[window]] \"w\" overlaps the wall's hole #1"]);
 }
 
 #[test]
