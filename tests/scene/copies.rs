@@ -95,18 +95,25 @@ fn same_desks(arrayed: &Scene, by_hand: &Scene) {
     assert_eq!(arrayed.surfaces.len(), by_hand.surfaces.len());
 }
 
-#[test]
-fn twenty_four_obj_desks_by_an_array_are_the_desks_written_out_and_solve_alike() {
-    let arrayed = load(&classroom(&mesh_desk("desk", corner(0, 0), ARRAY)));
+/// The classroom with 24 desks made by `desk` placed by one array, and written out one table
+/// each; checked to be the same desks.
+fn arrayed_and_written_out(desk: fn(&str, [f64; 3], &str) -> String) -> (Scene, Scene) {
+    let arrayed = load(&classroom(&desk("desk", corner(0, 0), ARRAY)));
     let mut desks = String::new();
     for i in 0..6 {
         for j in 0..4 {
-            desks += &mesh_desk(&format!("desk {}-{}", i + 1, j + 1), corner(i, j), "");
+            desks += &desk(&format!("desk {}-{}", i + 1, j + 1), corner(i, j), "");
         }
     }
     let by_hand = load(&classroom(&desks));
     same_desks(&arrayed, &by_hand);
-    assert_eq!(arrayed.files.len(), 1, "the OBJ file is read once");
+    (arrayed, by_hand)
+}
+
+#[test]
+fn twenty_four_obj_desks_by_an_array_are_the_desks_written_out_and_solve_alike() {
+    let (arrayed, by_hand) = arrayed_and_written_out(mesh_desk);
+    assert_eq!(arrayed.files.len(), 1, "one OBJ file");
     let (a, b) = (
         solve_case(&arrayed, &Job::default(), &Silent).unwrap(),
         solve_case(&by_hand, &Job::default(), &Silent).unwrap(),
@@ -125,14 +132,7 @@ fn twenty_four_obj_desks_by_an_array_are_the_desks_written_out_and_solve_alike()
 
 #[test]
 fn twenty_four_box_desks_by_an_array_are_the_desks_written_out() {
-    let arrayed = load(&classroom(&box_desk("desk", corner(0, 0), ARRAY)));
-    let mut desks = String::new();
-    for i in 0..6 {
-        for j in 0..4 {
-            desks += &box_desk(&format!("desk {}-{}", i + 1, j + 1), corner(i, j), "");
-        }
-    }
-    same_desks(&arrayed, &load(&classroom(&desks)));
+    let (arrayed, _) = arrayed_and_written_out(box_desk);
     let names: Vec<&str> = arrayed.surfaces.iter().map(|s| s.name.as_str()).collect();
     assert_eq!(&names[1..4], ["desk-1-1", "desk-1-2", "desk-1-3"]);
     assert_eq!(names[24], "desk-6-4");
