@@ -53,25 +53,38 @@ pub(super) fn placements(
         let rectangle =
             frame.rectangle(corner, size).map_err(|(key, m)| fail(key, format!("in the wall \"{name}\": {m}")))?;
         let surface = tables.iter().position(|&t| t == table).unwrap_or_default();
-        let (outline, mut holes) = match &surfaces[surface].shape {
-            Shape::Holed { outline, holes } => (outline.clone(), holes.clone()),
-            _ => (frame.outline(), Vec::new()),
-        };
-        holes.push(corners(rectangle));
-        let windows_in: Vec<&String> = cut.iter().filter(|(s, _)| *s == surface).map(|(_, n)| n).collect();
-        let own = holes.len() - 1 - windows_in.len();
-        let naming = |j: usize| match j.checked_sub(own) {
-            None => format!("the wall's hole #{}", j + 1),
-            Some(k) if k < windows_in.len() => format!("[[window]] \"{}\"", windows_in[k]),
-            Some(_) => format!("[[window]] \"{}\"", w.name),
-        };
-        let shape = Shape::Holed { outline, holes };
-        fault(&shape, &naming).map_err(|(_, message)| fail("at", message))?;
+        let windows_in: Vec<&str> = cut.iter().filter(|(s, _)| *s == surface).map(|(_, n)| n.as_str()).collect();
+        let shape = cut_into(&surfaces[surface].shape, frame, rectangle, &windows_in, &w.name)
+            .map_err(|message| fail("at", message))?;
         surfaces[surface].shape = shape;
         cut.push((surface, w.name.clone()));
         placed.push(rectangle);
     }
     Ok(placed)
+}
+
+/// The wall of `shape` (of `frame`) with the window `rectangle` named `name` cut out besides
+/// its holes and the windows `windows_in` already cut into it, or why it cannot be.
+fn cut_into(
+    shape: &Shape,
+    frame: Frame,
+    rectangle: [DVec3; 3],
+    windows_in: &[&str],
+    name: &str,
+) -> Result<Shape, String> {
+    let (outline, mut holes) = match shape {
+        Shape::Holed { outline, holes } => (outline.clone(), holes.clone()),
+        _ => (frame.outline(), Vec::new()),
+    };
+    holes.push(corners(rectangle));
+    let own = holes.len() - 1 - windows_in.len();
+    let naming = |j: usize| match j.checked_sub(own) {
+        None => format!("the wall's hole #{}", j + 1),
+        Some(k) => format!("[[window]] \"{}\"", windows_in.get(k).copied().unwrap_or(name)),
+    };
+    let shape = Shape::Holed { outline, holes };
+    fault(&shape, &naming).map_err(|(_, message)| message)?;
+    Ok(shape)
 }
 
 /// The table of the rectangle `[[surface]]` named `name`, which takes no copies.
