@@ -1,9 +1,11 @@
-//! Geometry: surfaces as described, convex polygons, tessellation of shapes, the patch
-//! mesh (`docs/design.md` §2) and its section by a plane.
+//! Geometry: surfaces as described, convex polygons, polygons with holes, rigid motions and
+//! tessellation of shapes, the patch mesh (`docs/design.md` §2) and its section by a plane.
 
 mod facing;
 mod frame;
+mod holes;
 mod mesh;
+mod motion;
 mod polygon;
 mod section;
 mod surface;
@@ -12,7 +14,9 @@ mod warp;
 
 pub use facing::facing;
 pub use frame::Frame;
+pub use holes::{HoleFaults, hole_faults, holed_pieces};
 pub use mesh::{Mesh, NO_TWIN, Patch};
+pub use motion::Motion;
 pub use polygon::{ConvexPolygon, MAX_CLIPPED};
 pub use section::section;
 pub use surface::{Emission, Shape, Surface};

@@ -48,6 +48,15 @@ pub enum Shape {
         /// The vertices, m.
         vertices: Vec<DVec3>,
     },
+    /// Planar simple polygon less holes (a wall less its windows): `outline` counter-clockwise
+    /// seen from the front, each hole a simple polygon in its plane, inside it, overlapping
+    /// no other (the scene checks); meshed by `holes::holed_pieces`.
+    Holed {
+        /// The outer boundary, m.
+        outline: Vec<DVec3>,
+        /// The holes, each a polygon (either vertex order), m.
+        holes: Vec<Vec<DVec3>>,
+    },
     /// Axis-aligned box rotated about the vertical (y) axis through its centre; normals outward.
     Box {
         /// The lower corner before rotation, m.

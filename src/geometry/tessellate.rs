@@ -3,8 +3,10 @@
 //! Owns the meshing rule of `docs/design.md` §2: parametric shapes (rectangle, convex quad,
 //! disc, sphere) are cut into a grid of planar quads (triangles where a grid edge
 //! collapses, at poles and centres); polygons are triangulated by ear clipping and, like
-//! OBJ triangles, split into `m²` similar triangles. Elements face the shape's front.
+//! OBJ triangles, split into `m²` similar triangles; a polygon with holes is cut into
+//! trapezoids (`holes.rs`), each meshed as a polygon. Elements face the shape's front.
 
+use super::holes::holed_pieces;
 use super::polygon::ConvexPolygon;
 use super::surface::Shape;
 use glam::{DMat3, DVec3};
@@ -15,6 +17,9 @@ pub fn tessellate(shape: &Shape, h: f64) -> Vec<ConvexPolygon> {
     match shape {
         Shape::Rectangle { origin, edge_u, edge_v } => parallelogram(*origin, *edge_u, *edge_v, h),
         Shape::Polygon { vertices } => polygon(vertices, h),
+        Shape::Holed { outline, holes } => {
+            holed_pieces(outline, holes).iter().flat_map(|piece| polygon(piece.vertices(), h)).collect()
+        }
         Shape::Box { min, max, rotate_y_deg } => cuboid(*min, *max, *rotate_y_deg, h),
         Shape::Disc { center, normal, radius } => disc(*center, *normal, *radius, h),
         Shape::Sphere { center, radius } => sphere(*center, *radius, h),
@@ -30,13 +35,9 @@ pub fn element_count(shape: &Shape, h: f64) -> f64 {
     let triangle = |a: DVec3, b: DVec3, c: DVec3| cuts(a.distance(b).max(b.distance(c)).max(c.distance(a))).powi(2);
     match shape {
         Shape::Rectangle { edge_u, edge_v, .. } => cuts(edge_u.length()) * cuts(edge_v.length()),
-        Shape::Polygon { vertices } => {
-            let normal = newell_normal(vertices);
-            if vertices.len() == 4 && is_convex(vertices, normal) {
-                let [a, b, c, d] = [vertices[0], vertices[1], vertices[2], vertices[3]];
-                return cuts((b - a).length().max((c - d).length())) * cuts((d - a).length().max((c - b).length()));
-            }
-            ear_clip(vertices, normal).iter().map(|&[a, b, c]| triangle(a, b, c)).sum()
+        Shape::Polygon { vertices } => polygon_count(vertices, h),
+        Shape::Holed { outline, holes } => {
+            holed_pieces(outline, holes).iter().map(|piece| polygon_count(piece.vertices(), h)).sum()
         }
         Shape::Box { min, max, .. } => {
             let [x, y, z] = (*max - *min).to_array().map(cuts);
@@ -46,6 +47,18 @@ pub fn element_count(shape: &Shape, h: f64) -> f64 {
         Shape::Sphere { radius, .. } => cuts(PI * radius).max(4.0) * cuts(2.0 * PI * radius).max(8.0),
         Shape::Mesh { triangles, .. } => triangles.iter().map(|t| triangle(t[0], t[1], t[2])).sum(),
     }
+}
+
+/// [`element_count`] of a polygon: its quad grid or its triangles' `m²`.
+fn polygon_count(vertices: &[DVec3], h: f64) -> f64 {
+    let cuts = |length: f64| (length / h).ceil().max(1.0);
+    let normal = newell_normal(vertices);
+    if vertices.len() == 4 && is_convex(vertices, normal) {
+        let [a, b, c, d] = [vertices[0], vertices[1], vertices[2], vertices[3]];
+        return cuts((b - a).length().max((c - d).length())) * cuts((d - a).length().max((c - b).length()));
+    }
+    let triangle = |[a, b, c]: [DVec3; 3]| cuts(a.distance(b).max(b.distance(c)).max(c.distance(a))).powi(2);
+    ear_clip(vertices, normal).into_iter().map(triangle).sum()
 }
 
 fn divisions(length: f64, h: f64) -> usize {

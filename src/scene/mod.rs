@@ -14,6 +14,8 @@ mod discretization_keys;
 mod error;
 mod files;
 mod grid;
+mod holes;
+mod instances;
 mod light_scene;
 mod luminaire;
 mod luminaire_array;
@@ -28,6 +30,7 @@ mod shape_keys;
 mod sky;
 mod surface;
 mod validate;
+mod window_place;
 mod work_plane;
 
 pub use automatic::{UNIFORM_PAIRS, by_size};

@@ -132,6 +132,12 @@ pub struct RawSurface {
     pub rotate_deg: Option<f64>,
     /// A mesh's `usemtl` name → the `name` of a `[[material]]` (`obj.rs`).
     pub materials: Option<serde_spanned::Spanned<std::collections::BTreeMap<String, String>>>,
+    /// A rectangle's or polygon's holes (`holes.rs`).
+    pub holes: Option<serde_spanned::Spanned<Vec<super::holes::RawHole>>>,
+    /// Copies of the surface on a lattice (`instances.rs`).
+    pub array: Option<serde_spanned::Spanned<super::instances::RawArray>>,
+    /// Copies of the surface, each moved and turned (`instances.rs`).
+    pub transforms: Option<serde_spanned::Spanned<Vec<super::instances::RawTransform>>>,
 }
 
 /// `emission = { luminance = … }` or `emission = { flux = … }`.

@@ -15,6 +15,7 @@ use crate::luminaire::{Luminaire, LuminaireKind};
 use crate::sky::{
     BeamGlass, Brightness, Distribution, Fresnel, Glazing, Opening, Pane, SiteTime, Sky, SunPosition, day_of_year,
 };
+use glam::DVec3;
 use serde::Deserialize;
 use std::path::Path;
 
@@ -47,18 +48,27 @@ pub enum RawSkyType {
     Name(String),
 }
 
-/// `[[window]]` as written: a rectangle (parallelogram) opening, glazed when `glass` or
+/// `[[window]]` as written: a rectangle (parallelogram) opening, by its corner and edges or
+/// by its place in a wall (`window_place.rs`), glazed when `glass` or
 /// `transmittance` is given, with a maintenance factor for the dirt on it.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawWindow {
     pub name: String,
-    #[serde(deserialize_with = "super::arrays::exact")]
-    pub origin: [f64; 3],
-    #[serde(deserialize_with = "super::arrays::exact")]
-    pub edge_u: [f64; 3],
-    #[serde(deserialize_with = "super::arrays::exact")]
-    pub edge_v: [f64; 3],
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub origin: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub edge_u: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub edge_v: Option<[f64; 3]>,
+    /// The rectangle `[[surface]]` the window is cut into (`window_place.rs`).
+    pub wall: Option<serde_spanned::Spanned<String>>,
+    /// In its `wall`: the window's corner, m along the wall's `edge_u` and `edge_v`.
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub at: Option<[f64; 2]>,
+    /// In its `wall`: the window's width and height, m along `edge_u` and `edge_v`.
+    #[serde(default, deserialize_with = "super::arrays::exact_opt")]
+    pub size: Option<[f64; 2]>,
     /// The glass model (none: Fresnel panes if `transmittance` is given, else unglazed).
     pub glass: Option<RawGlass>,
     /// Fresnel panes: the normal transmittance of one pane.
@@ -84,13 +94,14 @@ pub const DEFAULT_REFRACTIVE_INDEX: f64 = 1.52;
 /// The ground's reflectance when `ground_reflectance` is not given.
 pub const DEFAULT_GROUND_REFLECTANCE: f64 = 0.2;
 
-/// The sky of `[sky]` (if any), the luminaires it brings (one per `[[window]]`, and the
-/// sun when `sun_illuminance` is given) and the windows' glass, which the sun's beam and any
-/// other parallel light crossing them pass ([`glaze`]).
+/// The sky of `[sky]` (if any), the luminaires it brings (one per `[[window]]`, each at its
+/// `placed` corner and edges, and the sun when `sun_illuminance` is given) and the windows'
+/// glass, which the sun's beam and any other parallel light crossing them pass ([`glaze`]).
 pub(super) fn daylight(
     path: &Path,
     raw: Option<&RawSky>,
     windows: &[RawWindow],
+    placed: &[[DVec3; 3]],
 ) -> Result<(Option<Sky>, Vec<Luminaire>, BeamGlass), SceneError> {
     let Some(raw) = raw else {
         return match windows.first() {
@@ -142,7 +153,7 @@ pub(super) fn daylight(
     let (mut luminaires, panes): (Vec<Luminaire>, Vec<Pane>) = windows
         .iter()
         .enumerate()
-        .map(|(index, w)| window(&Context::item(path, "window", &w.name, index), w, &sky))
+        .map(|(index, w)| window(&Context::item(path, "window", &w.name, index), w, placed[index], &sky))
         .collect::<Result<Vec<_>, _>>()?
         .into_iter()
         .unzip();
@@ -217,13 +228,7 @@ fn parse_time(text: &str) -> Option<f64> {
 
 /// The window's source (the sky and ground through it, times its maintenance factor) and
 /// its pane for a beam.
-fn window(at: &Context, w: &RawWindow, sky: &Sky) -> Result<(Luminaire, Pane), SceneError> {
-    let origin = at.place("origin", w.origin)?;
-    let u = at.place("edge_u", w.edge_u)?;
-    let v = at.place("edge_v", w.edge_v)?;
-    if u.cross(v).length() <= REL_TOL * u.length() * v.length() || u.length() == 0.0 || v.length() == 0.0 {
-        return Err(at.error("edge_v", format!("edge_u {} and edge_v {} span no area", show(u), show(v))));
-    }
+fn window(at: &Context, w: &RawWindow, [origin, u, v]: [DVec3; 3], sky: &Sky) -> Result<(Luminaire, Pane), SceneError> {
     let polygon = ConvexPolygon::quad(origin, origin + u, origin + u + v, origin + v);
     let window = Opening { polygon, glazing: glazing(at, w)? };
     let maintenance = at.positive("maintenance_factor", w.maintenance_factor.unwrap_or(1.0))?;

@@ -2,16 +2,20 @@
 //! geometry, validated into `crate::geometry::Surface` (a `mesh` is read by `obj.rs`; one
 //! whose OBJ groups take several materials becomes one surface per material).
 
+use super::bounds::surfaces_bounds;
 use super::check::{Context, MAGNITUDE, REL_TOL, show, unique_names};
 use super::description::Material;
 use super::error::SceneError;
 use super::files::CaseFiles;
+use super::holes::{Frame, holed};
+use super::instances::copies;
 use super::polygon::polygon_defect;
 use super::schema::{RawEmission, RawSurface};
 use super::shape_keys::{Part, ShapeKeys, material_index, whole};
 use crate::geometry::{Emission, Shape, Surface, tessellate};
 use crate::material::MaterialModel;
 use glam::DVec3;
+use std::collections::HashMap;
 use std::path::Path;
 
 /// Validates the `[[surface]]` tables of `path` (whose text is `source`): the surfaces (a
@@ -25,16 +29,43 @@ pub(super) fn surfaces(
     files: &CaseFiles,
 ) -> Result<(Vec<Surface>, Vec<usize>), SceneError> {
     unique_names(path, "surface", raw.iter().map(|s| s.name.as_str()))?;
+    let mut names: HashMap<String, usize> = raw.iter().enumerate().map(|(i, s)| (s.name.clone(), i)).collect();
     let (mut surfaces, mut tables) = (Vec::new(), Vec::new());
     for (index, s) in raw.iter().enumerate() {
-        let keys =
-            ShapeKeys { at: &Context::item(path, "surface", &s.name, index), shape: "", files, materials, source };
-        for part in surface(&keys, s)? {
-            surfaces.push(part);
-            tables.push(index);
+        let at = Context::item(path, "surface", &s.name, index);
+        let keys = ShapeKeys { at: &at, shape: "", files, materials, source };
+        let parts = surface(&keys, s)?;
+        let copies = copies(&at, source, s.array.as_ref(), s.transforms.as_ref(), centre(&parts))?;
+        if copies.is_empty() {
+            tables.extend(std::iter::repeat_n(index, parts.len()));
+            surfaces.extend(parts);
+            continue;
+        }
+        for copy in copies {
+            for part in &parts {
+                let shape = copy.motion.shape(&part.shape).ok_or_else(|| {
+                    let message = "a box turns only about the vertical axis [0, 1, 0] (its faces stay vertical and \
+                                   horizontal): give that axis, or model the box as a mesh";
+                    at.error(&copy.key, message)
+                })?;
+                let name = format!("{}{}{}", s.name, copy.suffix, &part.name[s.name.len()..]);
+                if let Some(other) = names.insert(name.clone(), index) {
+                    let message =
+                        format!("the copy \"{name}\" has the name of another surface ([[surface]] #{})", other + 1);
+                    return Err(at.error("name", message));
+                }
+                surfaces.push(Surface { name, shape, ..part.clone() });
+                tables.push(index);
+            }
         }
     }
     Ok((surfaces, tables))
+}
+
+/// The centre of the surfaces' bounding box, m: the pivot of their copies' turns.
+fn centre(parts: &[Surface]) -> DVec3 {
+    let (low, high) = surfaces_bounds(parts);
+    0.5 * (low + high)
 }
 
 pub(super) fn emits(emission: Emission) -> bool {
@@ -100,7 +131,7 @@ fn meshable(at: &Context, shape: &Shape) -> Result<f64, SceneError> {
         Shape::Disc { radius, .. } | Shape::Sphere { radius, .. } => ("radius", *radius),
         Shape::Rectangle { edge_u, edge_v, .. } => ("shape", edge_u.length().max(edge_v.length())),
         Shape::Box { min, max, .. } => ("shape", (*max - *min).length()),
-        Shape::Polygon { vertices } => ("shape", spread(vertices)),
+        Shape::Polygon { vertices } | Shape::Holed { outline: vertices, .. } => ("shape", spread(vertices)),
         Shape::Mesh { triangles, .. } => ("shape", spread(triangles.as_flattened())),
     };
     let why = if size > 1.0 { "too large" } else { "too small" };
@@ -134,8 +165,8 @@ type Build = fn(&ShapeKeys, &RawSurface) -> Result<Vec<Part>, SceneError>;
 
 /// Every shape: its name, its keys, and its builder.
 const SHAPES: [(&str, &[&str], Build); 6] = [
-    ("rectangle", &["origin", "edge_u", "edge_v"], rectangle),
-    ("polygon", &["vertices"], polygon),
+    ("rectangle", &["origin", "edge_u", "edge_v", "holes"], rectangle),
+    ("polygon", &["vertices", "holes"], polygon),
     ("box", &["min", "max", "rotate_y_deg"], cuboid),
     ("disc", &["center", "normal", "radius"], disc),
     ("sphere", &["center", "radius"], sphere),
@@ -161,6 +192,7 @@ fn shape_keys_set(s: &RawSurface) -> impl Iterator<Item = &'static str> {
         ("rotate_axis", s.rotate_axis.is_some()),
         ("rotate_deg", s.rotate_deg.is_some()),
         ("materials", s.materials.is_some()),
+        ("holes", s.holes.is_some()),
     ]
     .into_iter()
     .filter_map(|(key, set)| set.then_some(key))
@@ -194,14 +226,19 @@ fn rectangle(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Part>, SceneError> {
     if unit(edge_u).cross(unit(edge_v)).length() <= REL_TOL {
         return Err(k.at.error("edge_v", "must not be parallel to `edge_u`"));
     }
-    Ok(whole(Shape::Rectangle { origin, edge_u, edge_v }))
+    let Some(holes) = &s.holes else { return Ok(whole(Shape::Rectangle { origin, edge_u, edge_v })) };
+    let frame = Frame { origin, edge_u, edge_v };
+    Ok(whole(holed(k.at, k.source, frame.outline(), Some(frame), holes)?))
 }
 
 fn polygon(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Part>, SceneError> {
     let raw = k.required("vertices", s.vertices.as_ref())?;
     let vertices = raw.iter().map(|&v| k.at.place("vertices", v)).collect::<Result<Vec<_>, _>>()?;
     polygon_defect(&vertices).map_err(|message| k.at.error("vertices", message))?;
-    Ok(whole(Shape::Polygon { vertices }))
+    match &s.holes {
+        None => Ok(whole(Shape::Polygon { vertices })),
+        Some(holes) => Ok(whole(holed(k.at, k.source, vertices, None, holes)?)),
+    }
 }
 
 /// The `box` shape (`box` is a Rust keyword).

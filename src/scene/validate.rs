@@ -21,6 +21,7 @@ use super::probe::probes;
 use super::schema::{RawCamera, RawScene, RawSceneInfo, RawSolver};
 use super::sky::{daylight, glaze};
 use super::surface::{emits, surfaces};
+use super::window_place::placements;
 use crate::solve::Method;
 use std::path::Path;
 
@@ -34,12 +35,13 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     }
     let materials = materials(path, &raw.material)?;
     let (mut surfaces, surface_tables) = surfaces(path, &source, &raw.surface, &materials, &files)?;
+    let placed = placements(path, &source, &raw.window, &raw.surface, &mut surfaces, &surface_tables)?;
     let probes = probes(path, &raw.probe)?;
     let observers = observers(path, &raw.observer)?;
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid, &surfaces)?;
     let (mut luminaires, tables) = luminaires(path, &source, &raw.luminaire, &files)?;
-    let (sky, openings, glass) = daylight(path, raw.sky.as_ref(), &raw.window)?;
+    let (sky, openings, glass) = daylight(path, raw.sky.as_ref(), &raw.window, &placed)?;
     glaze(&mut luminaires, &glass);
     if let Some(clash) = openings.iter().find(|o| luminaires.iter().any(|l| l.name == o.name)) {
         let message = format!("\"{}\" names a [[luminaire]] and a [[window]] or the [sky]'s sun", clash.name);

@@ -1,7 +1,9 @@
 //! Tests of the case-file reader (`ugo::scene`): valid scenes, parse errors, validation errors.
 
 mod assembly;
+mod copies;
 mod degenerate;
+mod holes;
 mod lengths;
 mod light_scenes;
 mod luminaire_arrays;
@@ -15,6 +17,7 @@ mod rooms;
 mod sky;
 mod valid;
 mod validation_errors;
+mod window_in_wall;
 mod work_plane;
 
 use std::path::Path;
