@@ -12,7 +12,7 @@ use glam::DVec3;
 use std::path::{Path, PathBuf};
 use ugo::directions::DirectionSet;
 use ugo::geometry::Mesh;
-use ugo::io::{EstimateFile, auto_exposure, read_solution, write_estimate, write_exr_as, write_png};
+use ugo::io::{EstimateFile, OutputLock, auto_exposure, read_solution, write_estimate, write_exr_as, write_png};
 use ugo::render::Projection;
 use ugo::render::trace_camera;
 use ugo::scene::{ProbeKind, Scene};
@@ -118,6 +118,7 @@ fn forward(
     }
     let output = job.output.clone().unwrap_or_else(|| PathBuf::from(format!("{stem}-forward.h5")));
     check_writable(&output)?;
+    let _lock = OutputLock::take(&output)?;
     let progress = bar(photons, "photons");
     let estimate = trace_photons(world, directions, photons, &job.options, &|n| progress.inc(n));
     progress.finish_and_clear();

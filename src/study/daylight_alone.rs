@@ -8,8 +8,7 @@
 //! its own field, with no second solve.
 
 use super::error::StudyError;
-use super::light_scenes::GroupSolves;
-use crate::kernel::{Explicit, Factored};
+use super::light_scenes::{GroupSolves, Operators};
 use crate::luminaire::Light;
 use crate::model::Model;
 use crate::progress::Progress;
@@ -18,7 +17,7 @@ use crate::readout::field::Field;
 use crate::readout::grid::{GridReading, read_grids};
 use crate::readout::probe::{ProbeReading, read_probes};
 use crate::scene::Scene;
-use crate::solve::{System, solve};
+use crate::solve::solve;
 
 /// The daylight readings of `scene` on `model`, whose solved readings are `probes` and
 /// `grids`; `None` without a sky. With other sources lit, the daylight is solved alone
@@ -37,20 +36,17 @@ pub fn daylight_readings(
         return Ok(Some(read_daylight(model, sky, probes, grids)));
     }
     let term = model.source_term_of(&daylight, &[]);
-    let explicit = match how.method.needs_explicit() {
-        true => Some(Explicit(model.kernel.explicit(how.params.memory_limit)?)),
-        false => None,
-    };
-    let factored = Factored::new(&model.kernel);
-    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
-    let system = System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &term.l0);
+    let operators = Operators::new(model, how)?;
     progress.begin("daylight alone", how.params.max_iterations as u64);
-    let solved = solve(how.method, &system, &how.params, &mut |n, r| {
+    let solved = solve(how.method, &operators.system(&term.l0), &how.params, &mut |n, r| {
         progress.at(n as u64, &format!("daylight alone: {} {r:.1e}", how.method.name()))
     });
     progress.end();
     let (x, _) = solved?;
-    let sources = model.sources.iter().enumerate().map(|(i, s)| s.scaled(f64::from(daylight.contains(&i)))).collect();
+    drop(operators);
+    let mut lit = vec![0.0; model.sources.len()];
+    daylight.iter().for_each(|&i| lit[i] = 1.0);
+    let sources = model.sources.iter().zip(lit).map(|(s, f)| s.scaled(f)).collect();
     let own = model.relight(sources, term);
     let field = Field::from_unknowns(&x, model.kernel.cells());
     let probes = read_probes(&scene.probes, model, &field, progress);

@@ -65,6 +65,32 @@ pub fn solve_light_scenes(
     Ok(LightScenes { groups: fields, scenes })
 }
 
+/// The case's kernel as every group's solve takes it: factored, formed explicitly when the
+/// method needs it, with the patches' exposed areas; made once for all the groups.
+pub(super) struct Operators<'a> {
+    model: &'a Model,
+    factored: Factored<'a>,
+    explicit: Option<Explicit>,
+    areas: Vec<f64>,
+}
+
+impl<'a> Operators<'a> {
+    /// The operators of `model` for the method of `how`.
+    pub(super) fn new(model: &'a Model, how: &GroupSolves) -> Result<Self, StudyError> {
+        let explicit = match how.method.needs_explicit() {
+            true => Some(Explicit(model.kernel.explicit(how.params.memory_limit)?)),
+            false => None,
+        };
+        let areas = model.mesh.patches.iter().map(|p| p.exposed).collect();
+        Ok(Operators { model, factored: Factored::new(&model.kernel), explicit, areas })
+    }
+
+    /// The system `x = l0 + K x`.
+    pub(super) fn system<'b>(&'b self, l0: &'b [f64]) -> System<'b> {
+        System::of(&self.model.kernel, &self.factored, self.explicit.as_ref(), &self.areas, l0)
+    }
+}
+
 /// Each group's field, solved in the order of the groups.
 fn solve_groups(
     scene: &Scene,
@@ -74,19 +100,14 @@ fn solve_groups(
     how: &GroupSolves,
     progress: &dyn Progress,
 ) -> Result<Vec<GroupField>, StudyError> {
-    let explicit = match how.method.needs_explicit() {
-        true => Some(Explicit(model.kernel.explicit(how.params.memory_limit)?)),
-        false => None,
-    };
-    let factored = Factored::new(&model.kernel);
-    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
+    let operators = Operators::new(model, how)?;
     let mut projection = Projection::new(how.warm);
     if how.warm {
-        projection.learn(&factored, x.to_vec());
+        projection.learn(&operators.factored, x.to_vec());
     }
     let mut fields = Vec::with_capacity(terms.len());
     for (group, term) in scene.lighting.groups.iter().zip(terms) {
-        let system = System::of(&model.kernel, &factored, explicit.as_ref(), &areas, &term.l0);
+        let system = operators.system(&term.l0);
         let label = format!("group {}", group.name);
         progress.begin(&label, how.params.max_iterations as u64);
         let solved = projection.solve(how.method, &system, &how.params, &mut |n, r| {

@@ -120,6 +120,14 @@ fn a_solve_to_an_output_another_run_writes_is_refused_naming_it() {
     let o = solve_to(&out);
     assert!(o.status.success(), "{}", messages(&o));
     assert!(!dir.join("res.h5.lock").exists());
+    // the forward trace's estimate too
+    let forward = dir.join("forward.h5");
+    let held = ugo::io::OutputLock::take(&forward).unwrap();
+    let o = ugo(&["trace", CASE, "--forward", "--photons", "1000", "-o", forward.to_str().unwrap()]);
+    let err = messages(&o);
+    assert!(!o.status.success() && err.contains("another ugo is writing") && err.contains("forward.h5"), "{err}");
+    drop(held);
+    assert!(!forward.exists() && !dir.join("forward.h5.lock").exists());
 }
 
 /// Whether process `pid` has a handler for `signal` (`SigCgt` of `/proc/PID/status`).
