@@ -101,6 +101,9 @@ pub enum ArnoldiError {
     /// The operator produced a NaN or infinite value.
     #[error("the operator gave a non-finite value: K has NaN or infinite entries")]
     NotFinite,
+    /// A signal asked the process to stop.
+    #[error(transparent)]
+    Interrupted(#[from] crate::interrupt::Interrupted),
 }
 
 /// A Ritz value `θ` and the eigenvector `y` of `H_m` it comes from.
@@ -125,6 +128,7 @@ pub fn arnoldi(k: &dyn LinOp, params: &ArnoldiParams) -> Result<Spectrum, Arnold
     let mut restarts = 0;
     loop {
         for j in kept..m {
+            crate::interrupt::check(|| format!("the Arnoldi iteration of the spectrum (restart {restarts})"))?;
             basis.extend(k, j)?;
         }
         let beta = basis.h[m][m - 1];

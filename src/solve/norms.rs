@@ -97,12 +97,13 @@ fn two_norm(k: &Explicit) -> PowerEstimate {
 }
 
 /// Dominant eigenvalue of a non-negative operator by power iteration from the ones
-/// vector, minus `shift`'s opposite: returns `λ + shift`.
+/// vector, minus `shift`'s opposite: returns `λ + shift`. A signal ends the iteration
+/// unconverged (`crate::interrupt`: the caller checks).
 fn power(n: usize, mut apply: impl FnMut(&[f64], &mut [f64]), shift: f64) -> PowerEstimate {
     let mut v = vec![1.0 / (n as f64).sqrt(); n];
     let mut w = vec![0.0; n];
     let mut previous = f64::NAN;
-    for iteration in 1..=POWER_MAX {
+    for iteration in (1..=POWER_MAX).take_while(|_| !crate::interrupt::asked()) {
         apply(&v, &mut w);
         let lambda = w.iter().map(|x| x * x).sum::<f64>().sqrt();
         if lambda == 0.0 {

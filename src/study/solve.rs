@@ -119,6 +119,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     let basis = factors.map(|f| (f, relative_residual(&factored, &model.l0, &x)));
     let orders = order_record(job, &methods, &model);
     let norms = explicit.as_ref().filter(|_| job.norms).map(Norms::of);
+    crate::interrupt::check(|| "the norms' power iterations".to_string())?;
     let spectrum = job.spectrum.map(|count| arnoldi(&factored, &ArnoldiParams::largest(count))).transpose()?;
     let runs = runs.into_iter().map(|(r, _)| r).collect();
     let k = model.kernel.cells();
