@@ -10,12 +10,13 @@
 use super::check::{Context, MAGNITUDE, unique_names};
 use super::error::SceneError;
 use super::files::CaseFiles;
-use super::luminaire_array::{Member, RawArray, members};
+use super::luminaire_array::{Member, RawArray, group_by, members};
 use crate::luminaire::{Luminaire, LuminaireKind, PointLuminaire};
 use crate::photometry::{Distribution, PhotometryError, parse_ies, parse_ldt};
 use crate::sky::BeamGlass;
 use glam::DVec3;
 use serde::Deserialize;
+use serde_spanned::Spanned;
 use std::collections::HashMap;
 use std::path::Path;
 
@@ -39,9 +40,9 @@ pub struct RawLuminaire {
     pub direction: Option<[f64; 3]>,
     pub illuminance: Option<f64>,
     /// The group of sources it is dimmed with (`light_scene.rs`).
-    pub group: Option<serde_spanned::Spanned<String>>,
+    pub group: Option<Spanned<String>>,
     /// Places a rectangular array of this luminaire (`luminaire_array.rs`).
-    pub array: Option<serde_spanned::Spanned<RawArray>>,
+    pub array: Option<Spanned<RawArray>>,
 }
 
 /// Every luminaire type and the keys it takes besides `name` and `type`.
@@ -54,19 +55,20 @@ const TYPES: [(&str, &[&str]); 5] = [
 ];
 
 /// Validates the `[[luminaire]]` tables of the case file `path` (whose text is `source`),
-/// an array expanded into its members: the luminaires, and for each the index of its table.
+/// an array expanded into its members: the luminaires, and for each the `group` it is
+/// dimmed with (its table's, or its row's, column's or own by the array's `group_by`).
 pub fn luminaires(
     path: &Path,
     source: &str,
     raw: &[RawLuminaire],
     files: &CaseFiles,
-) -> Result<(Vec<Luminaire>, Vec<usize>), SceneError> {
+) -> Result<(Vec<Luminaire>, Vec<Group>), SceneError> {
     unique_names(path, "luminaire", raw.iter().map(|l| l.name.as_str()))?;
     let mut names: HashMap<String, usize> = raw.iter().enumerate().map(|(i, l)| (l.name.clone(), i)).collect();
-    let (mut placed, mut tables) = (Vec::new(), Vec::new());
+    let (mut placed, mut groups) = (Vec::new(), Vec::new());
     for (index, l) in raw.iter().enumerate() {
         let at = Context::item(path, "luminaire", &l.name, index);
-        for luminaire in expand(&at, source, l, kind(&at, l, files)?)? {
+        for (luminaire, group) in expand(&at, source, l, kind(&at, l, files)?)? {
             let earlier = if l.array.is_some() { names.insert(luminaire.name.clone(), index) } else { None };
             if let Some(other) = earlier {
                 let message = format!(
@@ -77,21 +79,37 @@ pub fn luminaires(
                 return Err(at.error("name", message));
             }
             placed.push(luminaire);
-            tables.push(index);
+            groups.push(group);
         }
     }
-    Ok((placed, tables))
+    Ok((placed, groups))
 }
 
-/// The luminaire of table `l` with its `kind`, or the members of its array.
-fn expand(at: &Context, source: &str, l: &RawLuminaire, kind: LuminaireKind) -> Result<Vec<Luminaire>, SceneError> {
+/// The `group` a luminaire is dimmed with, as written (or made by an array's `group_by`).
+pub type Group = Option<Spanned<String>>;
+
+/// The luminaire of table `l` with its `kind`, or the members of its array, each with its
+/// group.
+fn expand(
+    at: &Context,
+    source: &str,
+    l: &RawLuminaire,
+    kind: LuminaireKind,
+) -> Result<Vec<(Luminaire, Group)>, SceneError> {
     let (Some(array), LuminaireKind::Point(point)) = (&l.array, &kind) else {
-        return Ok(vec![Luminaire { name: l.name.clone(), kind }]);
+        return Ok(vec![(Luminaire { name: l.name.clone(), kind }, l.group.clone())]);
     };
     let members = members(at, source, array, l.position.map(|_| point.position))?;
-    let member = |m: Member| Luminaire {
-        name: format!("{}{}", l.name, m.suffix),
-        kind: LuminaireKind::Point(PointLuminaire { position: m.position, ..point.clone() }),
+    let by = group_by(at, source, array)?;
+    let stem = l.group.as_ref().map_or(l.name.as_str(), |g| g.get_ref().as_str());
+    let span = l.group.as_ref().map_or(array.span(), |g| g.span());
+    let member = |m: Member| {
+        let group = by.group_of(stem, m.row, m.column).map(|name| Spanned::new(span.clone(), name));
+        let luminaire = Luminaire {
+            name: format!("{}{}", l.name, m.suffix),
+            kind: LuminaireKind::Point(PointLuminaire { position: m.position, ..point.clone() }),
+        };
+        (luminaire, group.or_else(|| l.group.clone()))
     };
     Ok(members.into_iter().map(member).collect())
 }

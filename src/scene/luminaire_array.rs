@@ -11,8 +11,12 @@
 //!   outer luminaires from the edges; without `offset` each luminaire sits at the centre of
 //!   its cell (`a = edge/(2n)`, spacing `edge/n`), with it the spacing is `(edge − 2a)/(n − 1)`.
 //!
-//! The luminaire of row `r`, column `c` (from 1) is named `NAME-r-c`. This module only
-//! computes the positions; `luminaire.rs` copies the rest of the table to each.
+//! The luminaire of row `r`, column `c` (from 1) is named `NAME-r-c`. The members dim
+//! together, in the table's `group`, unless `group_by` splits them: `"row"` puts row `r` in
+//! the group `GROUP-row-r`, `"column"` column `c` in `GROUP-column-c`, `"member"` each in
+//! `GROUP-r-c` (`GROUP` the table's `group`, or its `name` without one). This module
+//! computes the positions and the groups; `luminaire.rs` copies the rest of the table to
+//! each.
 
 use super::check::{Context, REL_TOL, line, show};
 use super::error::SceneError;
@@ -43,12 +47,54 @@ pub struct RawArray {
     pub edge_v: Option<[f64; 3]>,
     #[serde(default, deserialize_with = "super::arrays::exact_opt")]
     pub offset: Option<[f64; 2]>,
+    /// Splits the array's group by `"row"`, `"column"` or `"member"`.
+    pub group_by: Option<String>,
 }
 
-/// One placed member of an array: its name suffix (`-r-c`) and its position.
+/// How an array's members are grouped for dimming.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum GroupBy {
+    /// All in the table's group.
+    Whole,
+    Row,
+    Column,
+    Member,
+}
+
+impl GroupBy {
+    /// The group of the member at `row`, `column` (from 1) of an array whose group is `stem`,
+    /// or `None` when it keeps the table's.
+    pub(super) fn group_of(self, stem: &str, row: usize, column: usize) -> Option<String> {
+        match self {
+            GroupBy::Whole => None,
+            GroupBy::Row => Some(format!("{stem}-row-{row}")),
+            GroupBy::Column => Some(format!("{stem}-column-{column}")),
+            GroupBy::Member => Some(format!("{stem}-{row}-{column}")),
+        }
+    }
+}
+
+/// One placed member of an array: its row and column (from 1), name suffix (`-r-c`) and
+/// position.
 pub(super) struct Member {
+    pub row: usize,
+    pub column: usize,
     pub suffix: String,
     pub position: DVec3,
+}
+
+/// The `group_by` of `array` (read from the case text `source`, for its line).
+pub(super) fn group_by(at: &Context, source: &str, array: &Spanned<RawArray>) -> Result<GroupBy, SceneError> {
+    match array.get_ref().group_by.as_deref() {
+        None => Ok(GroupBy::Whole),
+        Some("row") => Ok(GroupBy::Row),
+        Some("column") => Ok(GroupBy::Column),
+        Some("member") => Ok(GroupBy::Member),
+        Some(other) => Err(at.error(
+            "array.group_by",
+            format!("{}must be \"row\", \"column\" or \"member\", got \"{other}\"", line(source, array)),
+        )),
+    }
 }
 
 /// The members of `array` (read from the case text `source`, for its line), the first at
@@ -108,6 +154,8 @@ pub(super) fn members(
     };
     let [start, step_u, step_v] = steps;
     let member = |r: usize, c: usize| Member {
+        row: r + 1,
+        column: c + 1,
         suffix: format!("-{}-{}", r + 1, c + 1),
         position: start + step_u * c as f64 + step_v * r as f64,
     };

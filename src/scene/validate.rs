@@ -40,7 +40,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let observers = observers(path, &raw.observer)?;
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &raw.grid, &surfaces)?;
-    let (mut luminaires, tables) = luminaires(path, &source, &raw.luminaire, &files)?;
+    let (mut luminaires, groups) = luminaires(path, &source, &raw.luminaire, &files)?;
     let (sky, openings, glass) = daylight(path, raw.sky.as_ref(), &raw.window, &placed)?;
     glaze(&mut luminaires, &glass);
     if let Some(clash) = openings.iter().find(|o| luminaires.iter().any(|l| l.name == o.name)) {
@@ -55,15 +55,15 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let sources = Sources {
         surface_groups: surface_tables.iter().map(|&t| raw.surface[t].group.clone()).collect(),
         // windows and the sun (after the tables' luminaires) belong to the default group
-        luminaire_groups: tables
+        luminaire_groups: groups
             .iter()
-            .map(|&t| raw.luminaire[t].group.clone())
+            .cloned()
             .chain(std::iter::repeat_with(|| None))
             .take(luminaires.len())
             .collect(),
         surfaces: &mut surfaces,
         luminaires: &mut luminaires,
-        electric: tables.len(),
+        electric: groups.len(),
     };
     let lighting = lighting(path, &source, raw.lighting, &raw.light_scene, sources)?;
     let discretization = asked.resolve(path, |h, directions| by_size(h, directions, &surfaces))?;

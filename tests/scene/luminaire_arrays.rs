@@ -126,3 +126,38 @@ fn a_misspelled_array_key_or_a_name_taken_by_a_member_is_refused() {
 fn lit_with(extra: &str) -> String {
     format!("{BASE}{LAMP}{extra}")
 }
+
+/// `group_by` (issue 38, point 2): the members of an array dim by row, by column or one by
+/// one, in groups named after the table's `group` (or its name without one).
+#[test]
+fn group_by_puts_each_row_column_or_member_in_a_group_of_its_own() {
+    let keys = "array = { rows = 2, columns = 3, row_spacing = 1.5, column_spacing = 0.5, group_by = \"BY\" }";
+    let of = |by: &str, group: bool| {
+        let mut text = lamp("lamp", Some([0.5, 2.4, 0.75]), &keys.replace("BY", by));
+        if !group {
+            text = text.replace("group = \"hall\"\n", "");
+        }
+        let scene = parse(&room(&text)).unwrap();
+        let groups = scene.lighting.groups.iter().map(|g| (g.name.clone(), g.luminaires.clone()));
+        groups.collect::<Vec<(String, Vec<usize>)>>()
+    };
+    let named = |list: &[(&str, &[usize])]| -> Vec<(String, Vec<usize>)> {
+        list.iter().map(|(n, l)| (n.to_string(), l.to_vec())).collect()
+    };
+    assert_eq!(of("row", true), named(&[("hall-row-1", &[0, 1, 2]), ("hall-row-2", &[3, 4, 5])]));
+    let columns = [("lamp-column-1", &[0, 3][..]), ("lamp-column-2", &[1, 4]), ("lamp-column-3", &[2, 5])];
+    assert_eq!(of("column", false), named(&columns));
+    let members = of("member", true);
+    assert_eq!(members.len(), 6);
+    assert_eq!(members[4], ("hall-2-2".to_string(), vec![4]));
+    // a light scene names the new groups
+    let scene = lamp("lamp", Some([0.5, 2.4, 0.75]), &keys.replace("BY", "row"));
+    let text = room(&format!(
+        "{scene}\n[[light_scene]]\nname = \"front\"\ngroups = {{ hall-row-1 = 1, hall-row-2 = 0.25 }}\n"
+    ));
+    let lighting = parse(&text).unwrap().lighting;
+    assert_eq!(lighting.scenes[0].factors, vec![1.0, 0.25]);
+    let (error, line) =
+        refused("rows = 1, columns = 2, column_spacing = 1, group_by = \"diagonal\"", Some([0.5, 2.4, 0.5]));
+    assert_error(&error, TABLE, "array.group_by", &[&line, "\"row\", \"column\" or \"member\"", "\"diagonal\""]);
+}
