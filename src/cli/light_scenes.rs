@@ -44,6 +44,9 @@ pub fn report(light: &LightScenes, light_scenes: &[LightScene], output: &Path, w
             write_probes_csv(&csv, &scene.probes, None)?;
             println!("      {}", csv.display());
         }
+        if !scene.observers.is_empty() {
+            super::glare::report(&scene.observers, "    ");
+        }
         write_grids(&scene.grids, &base, described)?;
     }
     Ok(())

@@ -225,7 +225,7 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
         }
     }
     if !s.observers.is_empty() {
-        super::glare::report(&s.observers);
+        super::glare::report(&s.observers, "  ");
     }
     if let Some(d) = s.daylight.as_ref() {
         super::daylight::report(d, &s.probes, &s.grids);

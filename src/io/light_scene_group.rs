@@ -14,6 +14,7 @@
 
 use super::IoError;
 use super::dataset::{dataset, strings};
+use super::observer_group::write_observers;
 use super::read::StoredSolution;
 use super::readout_group::{write_grid, write_probes};
 use crate::model::Model;
@@ -21,6 +22,7 @@ use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
 use crate::readout::grid::GridReading;
 use crate::readout::probe::ProbeReading;
+use crate::readout::ugr::UgrReading;
 use crate::scene::Scene;
 use crate::solve::Successive;
 use hdf5::types::VarLenUnicode;
@@ -67,6 +69,8 @@ pub struct LightSceneField {
     pub probes: Vec<ProbeReading>,
     /// Its grid readings.
     pub grids: Vec<GridReading>,
+    /// The UGR at every `[[observer]]` under its dimmed luminaires and its background.
+    pub observers: Vec<UgrReading>,
 }
 
 /// `/light_groups` and `/light_scenes` of `file`, on the patches and cells of `model`.
@@ -113,6 +117,7 @@ fn write_scene(g: &hdf5::Group, s: &LightSceneField, n: usize, k: usize) -> hdf5
     dataset(&field, "illuminance", &Array1::from(s.illuminance.clone()))?;
     dataset(&field, "direct_illuminance", &Array1::from(s.direct_illuminance.clone()))?;
     write_probes(&g.create_group("probes")?, &s.probes)?;
+    write_observers(&g.create_group("observers")?, &s.observers)?;
     let grids = g.create_group("grids")?;
     for grid in &s.grids {
         write_grid(&grids.create_group(&grid.grid.name)?, grid)?;

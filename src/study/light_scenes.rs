@@ -19,6 +19,7 @@ use crate::readout::field::Field;
 use crate::readout::grid::read_grids;
 use crate::readout::illuminance::{arriving, patch_illuminance};
 use crate::readout::probe::read_probes;
+use crate::readout::ugr::read_observers;
 use crate::render::LitScene;
 use crate::scene::{LightScene, Scene};
 use crate::solve::{Method, Projection, SolveParams, System};
@@ -129,7 +130,8 @@ pub fn dimmed(scene: &Scene, base: &[Source], light_scene: &LightScene) -> Vec<S
     base.iter().zip(factor).map(|(s, f)| s.scaled(f)).collect()
 }
 
-/// The light scene's field `Σ_g f_g x_g` and its readouts on `model`, relit by it.
+/// The light scene's field `Σ_g f_g x_g` and its readouts on `model`, relit by it (the
+/// observers' UGR from its dimmed luminaires and its own background).
 fn read_out(
     scene: &Scene,
     model: &Model,
@@ -155,6 +157,7 @@ fn read_out(
         energy: EnergyBalance::of(model, &x, scene.surfaces.len()),
         probes,
         grids: read_grids(&scene.grids, model, &field, progress),
+        observers: read_observers(&scene.observers, model, &field),
         field,
     }
 }

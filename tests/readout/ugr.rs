@@ -138,3 +138,39 @@ fn a_panel_close_to_the_eye_is_outside_the_formulas_solid_angles() {
     assert_eq!((r.sources.len(), r.outside_validity()), (2, 1));
     assert!(r.sources[1].solid_angle > 0.1, "ω = {} sr", r.sources[1].solid_angle);
 }
+
+/// Every light scene reads its observers under its dimmed luminaires and its own field
+/// (issue 38, point 1): all at half gives `UGR − 8 log10 2` exactly, the panel off no
+/// source, in the summary and in `/light_scenes/NAME/observers`.
+#[test]
+fn each_light_scene_reads_its_own_ugr() {
+    let dir = scratch("ugr-scenes");
+    std::fs::write(dir.as_ref().join("panel.ies"), PANEL).expect("writable");
+    let mut text = room(4.0, 0.0, WALLS) + "group = \"walls\"\n";
+    let [x, y, z] = AHEAD;
+    text += &format!(
+        "[[luminaire]]\nname = \"panel\"\ntype = \"ies\"\nfile = \"panel.ies\"\nposition = [{x}, {y}, {z}]\ngroup = \"panel\"\n\
+         [[observer]]\nname = \"desk\"\nposition = {EYE:?}\nlook = [1, 0, 0]\nugr_limit = 19\n\
+         [[light_scene]]\nname = \"full\"\ngroups = {{ walls = 1, panel = 1 }}\n\
+         [[light_scene]]\nname = \"half\"\ngroups = {{ walls = 0.5, panel = 0.5 }}\n\
+         [[light_scene]]\nname = \"dark\"\ngroups = {{ walls = 1, panel = false }}\n"
+    );
+    let case = dir.as_ref().join("case.toml");
+    std::fs::write(&case, text).expect("writable");
+    let out = dir.as_ref().join("res.h5");
+    let o = crate::support::ugo(&["solve", case.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(o.status.success(), "{stdout}{}", String::from_utf8_lossy(&o.stderr));
+    let file = hdf5::File::open(&out).unwrap();
+    let ugr = |scene: &str| {
+        file.dataset(&format!("light_scenes/{scene}/observers/ugr")).unwrap().read_raw::<f64>().unwrap()[0]
+    };
+    let own = file.dataset("observers/ugr").unwrap().read_raw::<f64>().unwrap()[0];
+    assert!((ugr("full") - own).abs() < 1e-9, "full {} against the case's {own}", ugr("full"));
+    let drop = ugr("full") - ugr("half");
+    assert!((drop - 8.0 * 2f64.log10()).abs() < 1e-9, "dropped by {drop}");
+    assert_eq!(ugr("dark"), f64::NEG_INFINITY);
+    let dark = stdout.split("light scene \"dark\"").nth(1).expect("the dark scene is reported");
+    let line = dark.lines().find(|l| l.trim_start().starts_with("desk")).expect("its observer line");
+    assert!(line.contains("no source") && line.contains("met"), "{line}");
+}
