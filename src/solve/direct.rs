@@ -3,7 +3,8 @@
 //! of the explicit matrix otherwise. faer's dense LU was
 //! measured against nalgebra's with `ugo bench --lu` (`docs/experiments.md`). The memory
 //! of the factors is checked before factoring: `8 n²` bytes dense; for the sparse LU its
-//! fill-in is bounded by the same `8 n²`, which is what is checked.
+//! fill-in is bounded by the same `8 n²`, which is what is checked. The factorization runs on
+//! a thread of its own while the caller looks for a signal (`crate::interrupt`).
 
 use super::algorithm::Algorithm;
 use super::history::History;
@@ -14,6 +15,11 @@ use crate::kernel::Explicit;
 use faer::linalg::solvers::Solve;
 use faer::sparse::{SparseColMat, Triplet};
 use faer::{Col, Mat};
+
+/// The name of the thread that factors (as `/proc/PID/task/*/comm` shows it).
+pub const FACTORIZATION_THREAD: &str = "ugo-lu";
+/// How often a factorization's wait looks for a signal.
+const POLL: std::time::Duration = std::time::Duration::from_millis(50);
 
 /// Above this many unknowns the LU is sparse.
 pub const DENSE_MAX: usize = 8000;
@@ -79,7 +85,7 @@ fn lu(
                 a[(i, j)] -= v;
             }
         }
-        a.partial_piv_lu().solve(&rhs)
+        on_its_own_thread("the dense LU", move || a.partial_piv_lu().solve(&rhs))?
     } else {
         let mut triplets: Vec<Triplet<usize, usize, f64>> = (0..n).map(|i| Triplet::new(i, i, 1.0)).collect();
         for (i, row) in k.0.outer_iterator().enumerate() {
@@ -87,12 +93,12 @@ fn lu(
         }
         let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &triplets)
             .map_err(|_| SolveError::TooLarge("cannot build the sparse matrix I − K".into()))?;
-        let lu = a.sp_lu().map_err(|_| SolveError::Breakdown {
+        let factored = on_its_own_thread("the sparse LU", move || a.sp_lu().map(|lu| lu.solve(&rhs)))?;
+        factored.map_err(|_| SolveError::Breakdown {
             method: "sparse LU",
             iterations: 0,
             why: "the factorization failed (singular I − K?)",
-        })?;
-        lu.solve(&rhs)
+        })?
     };
     let x: Vec<f64> = (0..n).map(|i| x[i]).collect();
     if x.iter().any(|v| !v.is_finite()) {
@@ -104,4 +110,21 @@ fn lu(
     history.record(residual, 1, &x)?;
     progress(1, residual);
     Ok((x, history.finish(0)))
+}
+
+/// Runs `work` (`what`, for a signal's message) on a thread of its own, named
+/// [`FACTORIZATION_THREAD`], and waits for it, looking for a signal every [`POLL`]: faer's
+/// factorizations cannot stop midway, so a signal leaves the thread to end with the process
+/// instead of waiting the factorization out.
+fn on_its_own_thread<T: Send + 'static>(
+    what: &'static str,
+    work: impl FnOnce() -> T + Send + 'static,
+) -> Result<T, SolveError> {
+    let spawned = std::thread::Builder::new().name(FACTORIZATION_THREAD.into()).spawn(work);
+    let worker = spawned.map_err(|e| SolveError::TooLarge(format!("no thread for {what}: {e}")))?;
+    while !worker.is_finished() {
+        crate::interrupt::check(|| what.to_string())?;
+        std::thread::sleep(POLL);
+    }
+    worker.join().map_err(|panic| std::panic::resume_unwind(panic))
 }

@@ -1,6 +1,6 @@
 //! Every long stage stops within a second of a signal (issue 37, point 6): a final-gather
-//! render, a hierarchical refinement and the exposed areas of a large mesh, each run long
-//! enough (over 5 s) to be stopped midway by SIGTERM, exit 143 within 2 s with the interrupt's message and leave no output
+//! render, a hierarchical refinement, the exposed areas of a large mesh and a dense LU, each
+//! run long enough to be stopped midway by SIGTERM, exit 143 within 2 s with the interrupt's message and leave no output
 //! and no temporary file.
 
 use super::faults::{catches, messages, temporaries};
@@ -116,4 +116,45 @@ fn sigterm_stops_a_hierarchical_refinement_promptly() {
 fn sigterm_stops_the_exposed_areas_of_a_large_mesh_promptly() {
     let args = ["cases/furnace-box.toml", "--patch-size", "5e-4"];
     solve_stops_promptly_during("stop-exposure", &args, "exposed areas", "the roots' exposed areas");
+}
+
+/// A dense LU of 7,776 unknowns (the furnace box at 2.8 cm, uniform) takes about 3 s in faer,
+/// which cannot stop midway: the factorization runs on its own thread (`ugo-lu`) and the
+/// solve leaves it on a signal (issue 37, point 7). The assembly before it takes 1.5 minutes.
+#[test]
+fn sigterm_stops_a_dense_lu_promptly() {
+    let dir = scratch("stop-lu");
+    let out = dir.join("res.h5");
+    let args =
+        ["solve", "cases/furnace-box.toml", "--kernel", "uniform", "--patch-size", "0.028", "--method", "direct"];
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ugo"))
+        .args(args)
+        .args(["-o", out.to_str().unwrap()])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let factoring = |pid: u32| {
+        let tasks = std::fs::read_dir(format!("/proc/{pid}/task")).into_iter().flatten().flatten();
+        tasks.filter_map(|t| std::fs::read_to_string(t.path().join("comm")).ok()).any(|c| c.trim() == "ugo-lu")
+    };
+    let started = Instant::now();
+    while !factoring(child.id()) {
+        assert!(child.try_wait().unwrap().is_none(), "the solve ended before its LU was seen");
+        assert!(started.elapsed() < Duration::from_secs(900), "no LU after 15 minutes");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(300));
+    let mut stderr = child.stderr.take().unwrap();
+    let reader = std::thread::spawn(move || {
+        let mut text = String::new();
+        std::io::Read::read_to_string(&mut stderr, &mut text).unwrap();
+        text
+    });
+    let (code, took) = terminate(child);
+    let err = reader.join().unwrap();
+    assert_eq!(code, Some(143), "{err}");
+    assert!(took < PROMPT, "stopped {took:?} after the signal");
+    assert!(err.contains("ugo: stopped: interrupted by SIGTERM during the dense LU"), "{err}");
+    assert!(only(&dir, &[]).is_empty() && temporaries(&dir).is_empty(), "{:?}", only(&dir, &[]));
 }
