@@ -36,7 +36,8 @@ use rayon::prelude::*;
 const BYTES_PER_PATCH: f64 =
     (std::mem::size_of::<Patch>() + std::mem::size_of::<ConvexPolygon>() + 8 + BVH_BUILD_BYTES_PER_PATCH) as f64;
 /// What obvhs's build of the ray caster adds at its peak per patch of quads, bytes:
-/// measured 766 MB over the mesh (519 MB) for the furnace box's 1.5·10⁶ roots (2 mm), about 510 B
+/// measured 766,288 kB of peak resident memory over the mesh's 531,252 kB for the furnace
+/// box's 1.5·10⁶ roots (2 mm), about 520 B a patch
 /// (`tests/kernel/peak.rs` holds the whole forecast to the measured peak).
 const BVH_BUILD_BYTES_PER_PATCH: usize = 520;
 /// Vectors of the unknowns' length a solve keeps (field, source, residual, work).

@@ -18,7 +18,12 @@ impl Bounds {
 
 /// The bounding box `(low, high)` of every surface, m.
 pub(super) fn surfaces_bounds(surfaces: &[Surface]) -> (DVec3, DVec3) {
-    let whole = surfaces.iter().fold(Bounds::EMPTY, |b, s| b.union(bounds(&s.shape)));
+    shapes_bounds(surfaces.iter().map(|s| &s.shape))
+}
+
+/// The bounding box `(low, high)` of `shapes`, m (`low > high` when there are none).
+pub(super) fn shapes_bounds<'a>(shapes: impl Iterator<Item = &'a Shape>) -> (DVec3, DVec3) {
+    let whole = shapes.fold(Bounds::EMPTY, |b, shape| b.union(bounds(shape)));
     (whole.0, whole.1)
 }
 

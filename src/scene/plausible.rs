@@ -4,7 +4,7 @@
 //! long (a model in millimetres read as metres) or thinner than a hair, a reflectance no
 //! paint reaches. Hard limits (overflow, NaN) are errors in `validate`.
 
-use super::bounds::{bounds, surfaces_bounds};
+use super::bounds::{bounds, shapes_bounds, surfaces_bounds};
 use super::check::Context;
 use super::description::Scene;
 use super::error::SceneError;
@@ -33,6 +33,7 @@ const REFLECTANCE: f64 = 0.98;
 pub fn warnings(scene: &Scene) -> Vec<SceneError> {
     let mut out = Vec::new();
     let path = &scene.path;
+    let room = extent_of_all_but_models(scene);
     for (index, m) in scene.materials.iter().enumerate() {
         let at = Context::item(path, "material", &m.name, index);
         let (key, value) = match m.model {
@@ -78,13 +79,20 @@ pub fn warnings(scene: &Scene) -> Vec<SceneError> {
             && length > MODEL_LONGEST
         {
             out.push(at.error(key, format!("the model is {length:.4e} m across: {}", unit_hint(length))));
+        } else if let Shape::Mesh { .. } = s.shape
+            && room > 0.0
+            && length > MODEL_TO_ROOM * room
+        {
+            let times = length / room;
+            let what =
+                format!("the model is {length:.4} m across, {times:.0} times the rest of the scene ({room:.4} m)");
+            out.push(at.error(key, format!("{what}: {}", unit_hint(length))));
         } else if length > LONGEST {
             out.push(at.error(key, format!("{length:.4e} m across: lengths are in metres (1 km is {LONGEST:e} m)")));
         } else if length < SHORTEST {
             out.push(at.error(key, format!("{length:.4e} m across: lengths are in metres (0.1 mm is {SHORTEST:e} m)")));
         }
     }
-    out.extend(out_of_scale_models(scene));
     let (low, high) = surfaces_bounds(&scene.surfaces);
     let span = (high - low).length();
     if span > LONGEST && !out.iter().any(|w| w.message().contains("lengths are in metres")) {
@@ -129,26 +137,12 @@ fn unit_hint(length: f64) -> String {
     )
 }
 
-/// The OBJ models [`MODEL_TO_ROOM`] times longer than the other surfaces together (below
-/// [`MODEL_LONGEST`], where the model alone is warned of: a millimetre chair is no longer
-/// than a hall).
-fn out_of_scale_models(scene: &Scene) -> Vec<SceneError> {
-    let is_model = |s: &&crate::geometry::Surface| matches!(s.shape, Shape::Mesh { .. });
-    let rest: Vec<_> = scene.surfaces.iter().filter(|s| !is_model(s)).cloned().collect();
-    let (low, high) = surfaces_bounds(&rest);
-    let room = (high - low).length();
-    let mut out = Vec::new();
-    for (index, s) in scene.surfaces.iter().enumerate().filter(|(_, s)| is_model(s)) {
-        let at = Context::item(&scene.path, "surface", &s.name, index);
-        let length = extent(&s.shape);
-        if room > 0.0 && length > MODEL_TO_ROOM * room && length <= MODEL_LONGEST {
-            let times = length / room;
-            let what =
-                format!("the model is {length:.4} m across, {times:.0} times the rest of the scene ({room:.4} m)");
-            out.push(at.error("scale", format!("{what}: {}", unit_hint(length))));
-        }
-    }
-    out
+/// The diagonal of the bounding box of every surface but the OBJ models, m (0 without any):
+/// a model [`MODEL_TO_ROOM`] times longer was probably drawn in millimetres.
+fn extent_of_all_but_models(scene: &Scene) -> f64 {
+    let shapes = scene.surfaces.iter().map(|s| &s.shape).filter(|shape| !matches!(shape, Shape::Mesh { .. }));
+    let (low, high) = shapes_bounds(shapes);
+    if low.x <= high.x { (high - low).length() } else { 0.0 }
 }
 
 /// The diagonal of the bounding box of a shape's coarsest mesh, m.
