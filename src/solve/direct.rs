@@ -121,7 +121,7 @@ fn on_its_own_thread<T: Send + 'static>(
     work: impl FnOnce() -> T + Send + 'static,
 ) -> Result<T, SolveError> {
     let spawned = std::thread::Builder::new().name(FACTORIZATION_THREAD.into()).spawn(work);
-    let worker = spawned.map_err(|e| SolveError::TooLarge(format!("no thread for {what}: {e}")))?;
+    let worker = spawned.map_err(|e| SolveError::NoThread { what, why: e.to_string() })?;
     while !worker.is_finished() {
         crate::interrupt::check(|| what.to_string())?;
         std::thread::sleep(POLL);

@@ -149,6 +149,14 @@ pub enum SolveError {
     /// A signal asked the process to stop.
     #[error(transparent)]
     Interrupted(#[from] Interrupted),
+    /// The system gave no thread for a direct factorization.
+    #[error("the system gave no thread for {what}: {why}")]
+    NoThread {
+        /// The factorization's name.
+        what: &'static str,
+        /// The system's reason.
+        why: String,
+    },
 }
 
 pub(crate) fn norm(x: &[f64]) -> f64 {

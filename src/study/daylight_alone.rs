@@ -36,14 +36,7 @@ pub fn daylight_readings(
         return Ok(Some(read_daylight(model, sky, probes, grids)));
     }
     let term = model.source_term_of(&daylight, &[]);
-    let operators = Operators::new(model, how)?;
-    progress.begin("daylight alone", how.params.max_iterations as u64);
-    let solved = solve(how.method, &operators.system(&term.l0), &how.params, &mut |n, r| {
-        progress.at(n as u64, &format!("daylight alone: {} {r:.1e}", how.method.name()))
-    });
-    progress.end();
-    let (x, _) = solved?;
-    drop(operators);
+    let x = solve_alone(model, &term.l0, how, progress)?;
     let mut lit = vec![0.0; model.sources.len()];
     daylight.iter().for_each(|&i| lit[i] = 1.0);
     let sources = model.sources.iter().zip(lit).map(|(s, f)| s.scaled(f)).collect();
@@ -68,4 +61,15 @@ fn is_daylight(scene: &Scene, model: &Model, i: usize) -> bool {
         }
         Light::Point { .. } => false,
     }
+}
+
+/// The unknowns of `x = l0 + K x` on `model`'s kernel, solved as `how` says.
+fn solve_alone(model: &Model, l0: &[f64], how: &GroupSolves, progress: &dyn Progress) -> Result<Vec<f64>, StudyError> {
+    let operators = Operators::new(model, how)?;
+    progress.begin("daylight alone", how.params.max_iterations as u64);
+    let solved = solve(how.method, &operators.system(l0), &how.params, &mut |n, r| {
+        progress.at(n as u64, &format!("daylight alone: {} {r:.1e}", how.method.name()))
+    });
+    progress.end();
+    Ok(solved?.0)
 }

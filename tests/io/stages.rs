@@ -8,6 +8,7 @@ use crate::support::{scratch, ugo};
 use std::io::{BufRead, BufReader};
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
+use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 /// Most time from the signal to the exit. Measured 0.11–0.42 s for the office's refinement
@@ -33,6 +34,43 @@ fn only(dir: &Path, keep: &[&str]) -> Vec<String> {
     names.filter(|n| !keep.contains(&n.as_str())).collect()
 }
 
+/// What says a run has reached the stage to be stopped: its process (by id) and its
+/// standard error so far.
+type Ready<'a> = &'a dyn Fn(u32, &str) -> bool;
+
+/// Runs `command`, its standard error read aside, until `ready`, lets it run `grace` longer
+/// and sends SIGTERM; checks the exit 143 within `PROMPT` with the message naming `during`,
+/// and gives back the standard error.
+fn stop_when(mut command: Command, ready: Ready, grace: Duration, during: &str) -> String {
+    let mut child = command.stdout(Stdio::null()).stderr(Stdio::piped()).spawn().unwrap();
+    let err = Arc::new(Mutex::new(String::new()));
+    let lines = BufReader::new(child.stderr.take().unwrap()).lines();
+    let sink = Arc::clone(&err);
+    let reader = std::thread::spawn(move || lines.for_each(|l| *sink.lock().unwrap() += &(l.unwrap() + "\n")));
+    let started = Instant::now();
+    while !ready(child.id(), &err.lock().unwrap()) {
+        let so_far = || err.lock().unwrap().clone();
+        assert!(child.try_wait().unwrap().is_none(), "the run ended before the stage: {}", so_far());
+        assert!(started.elapsed() < Duration::from_secs(900), "no stage after 15 minutes: {}", so_far());
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(grace);
+    let (code, took) = terminate(child);
+    reader.join().unwrap();
+    let err = err.lock().unwrap().clone();
+    assert_eq!(code, Some(143), "{err}");
+    assert!(took < PROMPT, "stopped {took:?} after the signal");
+    assert!(err.contains(&format!("ugo: stopped: interrupted by SIGTERM during {during}")), "{err}");
+    err
+}
+
+/// The `ugo` command with `args`.
+fn ugo_command(args: &[&str]) -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_ugo"));
+    command.args(args);
+    command
+}
+
 #[test]
 fn sigterm_stops_a_final_gather_render_promptly() {
     let dir = scratch("stop-render");
@@ -42,67 +80,33 @@ fn sigterm_stops_a_final_gather_render_promptly() {
     let images = dir.join("images");
     // 256 × 256 pixels of 4,096 gathered rays: about a minute on two cores.
     let args = ["render", solution.to_str().unwrap(), "--shading", "gather", "--gather-rays", "4096"];
-    let mut child = Command::new(env!("CARGO_BIN_EXE_ugo"))
-        .args(args)
-        .args(["--resolution", "256,256", "-o", images.to_str().unwrap()])
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    while !catches(child.id(), 15) {
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    std::thread::sleep(Duration::from_secs(1));
-    let mut stderr = child.stderr.take().unwrap();
-    let reader = std::thread::spawn(move || {
-        let mut err = String::new();
-        std::io::Read::read_to_string(&mut stderr, &mut err).unwrap();
-        err
-    });
-    let (code, took) = terminate(child);
-    let err = reader.join().unwrap();
-    assert_eq!(code, Some(143), "{err}");
-    assert!(took < PROMPT, "stopped {took:?} after the signal");
-    assert!(err.contains("ugo: stopped: interrupted by SIGTERM during the render of camera \"inside\""), "{err}");
+    let mut command = ugo_command(&args);
+    command.args(["--resolution", "256,256", "-o", images.to_str().unwrap()]);
+    let handles_signals: Ready = &|pid, _| catches(pid, 15);
+    let err = stop_when(command, handles_signals, Duration::from_secs(1), "the render of camera \"inside\"");
     assert!(err.contains("not written: ") && err.contains("inside-gather-4096.exr"), "{err}");
     assert!(only(&images, &[]).is_empty(), "{:?}", only(&images, &[]));
     let keep = ["res.h5", "res-probes.csv", "images"];
     assert!(only(&dir, &keep).is_empty(), "{:?}", only(&dir, &keep));
 }
 
-/// Runs `ugo solve CASE ARGS` into a scratch directory, sends SIGTERM a second into the
-/// stage whose progress lines name `stage`, and checks the prompt exit with `during` in the
-/// message, no output and no temporary file.
-fn solve_stops_promptly_during(name: &str, case_and_args: &[&str], stage: &str, during: &str) {
+/// Runs `ugo solve ARGS` into a scratch directory `name`, sends SIGTERM `grace` after
+/// `ready`, and checks the prompt exit with `during` in the message, no output and no
+/// temporary file.
+fn solve_stops_promptly(name: &str, args: &[&str], ready: Ready, grace: Duration, during: &str) {
     let dir = scratch(name);
     let out = dir.join("res.h5");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_ugo"))
-        .arg("solve")
-        .args(case_and_args)
-        .args(["-o", out.to_str().unwrap()])
-        .env("UGO_PROGRESS_SECONDS", "0")
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let mut lines = BufReader::new(child.stderr.take().unwrap()).lines();
-    let mut err = String::new();
-    for line in lines.by_ref() {
-        let line = line.unwrap();
-        err += &format!("{line}\n");
-        if line.contains(stage) {
-            break;
-        }
-    }
-    std::thread::sleep(Duration::from_secs(1));
-    let reader = std::thread::spawn(move || lines.map(|l| l.unwrap() + "\n").collect::<String>());
-    let (code, took) = terminate(child);
-    err += &reader.join().unwrap();
-    assert_eq!(code, Some(143), "{err}");
-    assert!(took < PROMPT, "stopped {took:?} after the signal");
-    assert!(err.contains(&format!("ugo: stopped: interrupted by SIGTERM during {during}")), "{err}");
+    let mut command = ugo_command(&["solve"]);
+    command.args(args).args(["-o", out.to_str().unwrap()]).env("UGO_PROGRESS_SECONDS", "0");
+    let err = stop_when(command, ready, grace, during);
     assert!(err.contains("not written: ") && err.contains("res.h5"), "{err}");
     assert!(only(&dir, &[]).is_empty() && temporaries(&dir).is_empty(), "{:?}", only(&dir, &[]));
+}
+
+/// A second into the stage whose progress lines name `stage`.
+fn solve_stops_promptly_during(name: &str, args: &[&str], stage: &str, during: &str) {
+    let in_stage: Ready = &|_, err| err.contains(stage);
+    solve_stops_promptly(name, args, in_stage, Duration::from_secs(1), during);
 }
 
 #[test]
@@ -118,43 +122,15 @@ fn sigterm_stops_the_exposed_areas_of_a_large_mesh_promptly() {
     solve_stops_promptly_during("stop-exposure", &args, "exposed areas", "the roots' exposed areas");
 }
 
-/// A dense LU of 7,776 unknowns (the furnace box at 2.8 cm, uniform) takes about 3 s in faer,
-/// which cannot stop midway: the factorization runs on its own thread (`ugo-lu`) and the
-/// solve leaves it on a signal (issue 37, point 7). The assembly before it takes 1.5 minutes.
+/// A dense LU of the furnace box's 5,022 leaves at 2.8 cm takes about 3 s in faer (its
+/// hierarchical kernel about 6 s), and cannot stop midway: the factorization runs on its
+/// own thread (`ugo-lu`) and the solve leaves it on a signal (issue 37, point 7).
 #[test]
 fn sigterm_stops_a_dense_lu_promptly() {
-    let dir = scratch("stop-lu");
-    let out = dir.join("res.h5");
-    let args =
-        ["solve", "cases/furnace-box.toml", "--kernel", "uniform", "--patch-size", "0.028", "--method", "direct"];
-    let mut child = Command::new(env!("CARGO_BIN_EXE_ugo"))
-        .args(args)
-        .args(["-o", out.to_str().unwrap()])
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let factoring = |pid: u32| {
+    let args = ["cases/furnace-box.toml", "--kernel", "hierarchical", "--patch-size", "0.028", "--method", "direct"];
+    let factoring: Ready = &|pid, _| {
         let tasks = std::fs::read_dir(format!("/proc/{pid}/task")).into_iter().flatten().flatten();
         tasks.filter_map(|t| std::fs::read_to_string(t.path().join("comm")).ok()).any(|c| c.trim() == "ugo-lu")
     };
-    let started = Instant::now();
-    while !factoring(child.id()) {
-        assert!(child.try_wait().unwrap().is_none(), "the solve ended before its LU was seen");
-        assert!(started.elapsed() < Duration::from_secs(900), "no LU after 15 minutes");
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    std::thread::sleep(Duration::from_millis(300));
-    let mut stderr = child.stderr.take().unwrap();
-    let reader = std::thread::spawn(move || {
-        let mut text = String::new();
-        std::io::Read::read_to_string(&mut stderr, &mut text).unwrap();
-        text
-    });
-    let (code, took) = terminate(child);
-    let err = reader.join().unwrap();
-    assert_eq!(code, Some(143), "{err}");
-    assert!(took < PROMPT, "stopped {took:?} after the signal");
-    assert!(err.contains("ugo: stopped: interrupted by SIGTERM during the dense LU"), "{err}");
-    assert!(only(&dir, &[]).is_empty() && temporaries(&dir).is_empty(), "{:?}", only(&dir, &[]));
+    solve_stops_promptly("stop-lu", &args, factoring, Duration::from_millis(300), "the dense LU");
 }
