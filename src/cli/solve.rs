@@ -152,7 +152,7 @@ fn print_hierarchy(assembly: f64, rays: usize, h: &HierarchyRecord) {
             )
         });
         println!(
-            "    pass {}            {:>12.3} s   ({} links refined, {} leaves split along the luminaires' light; {} links, {} leaves, ε {:.2e} cd/m²; solve {:.3} s{balanced})",
+            "    pass {}            {:>12.3} s   ({} links refined, {} leaves split along the direct light; {} links, {} leaves, ε {:.2e} cd/m²; solve {:.3} s{balanced})",
             p.pass, p.seconds, p.refined, p.source_splits, p.links, p.leaves, p.epsilon, p.solve_seconds
         );
     }

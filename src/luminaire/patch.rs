@@ -232,7 +232,7 @@ impl Onto<'_> {
     /// part times the share `glass` lets through there.
     fn parallel(&mut self, direction: DVec3, glass: &BeamGlass, normal_share: f64, piece: &ConvexPolygon) {
         let (visibility, face) = (self.visibility, self.patch.face);
-        let escapes = |x: DVec3| visibility.closest_hit(x, -direction, face).is_none();
+        let escapes = |x: DVec3| visibility.escapes(x, -direction, face);
         let mut flux = 0.0;
         let least = self.least;
         let worth = |part: &ConvexPolygon| normal_share * part.area() > least;
@@ -254,7 +254,7 @@ impl Onto<'_> {
             return;
         }
         let (visibility, face, area) = (self.visibility, self.patch.face, piece.area());
-        let sees = |x: DVec3| visibility.closest_hit(c, x - c, face).is_none();
+        let sees = |x: DVec3| visibility.escapes(c, x - c, face);
         let least = self.least / area;
         let mut arrivals = Vec::new();
         let mut arrive = |towards, e, _| arrivals.push((towards, e * area));

@@ -28,7 +28,7 @@ pub fn incoming(source: &Source, visibility: &Visibility, p: DVec3, ignore: u32)
         }
         Light::Parallel { direction, illuminance, glass } => {
             let towards = -*direction;
-            let escapes = visibility.closest_hit(p, towards, ignore).is_none();
+            let escapes = visibility.escapes(p, towards, ignore);
             escapes.then(|| (towards, illuminance * glass.share(p, towards)))
         }
         Light::Window { .. } => None,
@@ -70,7 +70,7 @@ pub fn arriving_along(
             Light::Point { position, .. } => (*position - p).dot(normal) > 0.0,
             Light::Parallel { direction, .. } => direction.dot(normal) < 0.0,
             Light::Window { window, sky } => {
-                let sees = |x: DVec3| visibility.closest_hit(p, x - p, ignore).is_none();
+                let sees = |x: DVec3| visibility.escapes(p, x - p, ignore);
                 let mut piece = |towards: DVec3, e: f64, _| arrive(towards, e / PI);
                 through_window(opening_eta, sky, window, p, normal, &sees, 0.0, &mut piece);
                 false

@@ -148,7 +148,7 @@ impl Fingerprint {
                     Part::Geometry => geometry(&scene.surfaces, &mut h),
                     Part::Materials if hierarchical => {
                         // The hierarchy's oracle weighs links by albedo and splits leaves
-                        // along the luminaires' light.
+                        // along the direct light (the luminaires', the sun's and the openings').
                         let _ = write!(h, "{:?}", scene.materials);
                         let _ = write!(h, "{:?}", sources.iter().map(|s| &s.light).collect::<Vec<_>>());
                         format!("{} materials and {} luminaires (hierarchical)", scene.materials.len(), sources.len())

@@ -1,8 +1,8 @@
 //! The hierarchical model (`docs/design.md` §3b): roots meshed at `root_size`, the luminaires'
 //! direct light on them (at a few points of each) as the first source term, then passes of refinement iterated with
 //! a solve (`kernel::refine_with_solves`). Before every solve the leaves are split where
-//! the luminaires' light varies over them by more than the error allowed (their shadow
-//! boundaries and the fall-off under them), and `L0 = L_e + B·D` is integrated on the
+//! the direct light of the luminaires, the sun and the openings varies over them by more
+//! than the error allowed (their shadow boundaries and the fall-off under them), and `L0 = L_e + B·D` is integrated on the
 //! leaves as on a uniform mesh (`luminaire::patch_lights`), except that a shadow edge is
 //! cut into finer pieces only while a piece's light could change the leaf's reflected
 //! luminance by more than the oracle's `ε`. The refinement solves
@@ -16,13 +16,15 @@ use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, Patch};
 use crate::kernel::hierarchy::{Hierarchy, Options, sample_points};
 use crate::kernel::{Factored, Footprint, Kernel, Refined, refine_with_solves};
-use crate::luminaire::{DirectLight, OPENING_ETA, PatchLight, Source, arriving_at, incoming, patch_lights};
+use crate::luminaire::{DirectLight, Light, OPENING_ETA, PatchLight, Source, arriving_at, incoming, patch_lights};
 use crate::material::Block;
 use crate::progress::Progress;
 use crate::scene::{Hierarchical, Scene};
+use crate::sky::{Opening, Sky, glimpse};
 use crate::solve::{Method, SolveParams, System, solve};
 use crate::transfer::exposure::measure_exposure;
 use crate::visibility::{Faces, Visibility};
+use glam::DVec3;
 use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::time::Instant;
@@ -183,20 +185,52 @@ fn seed_light(sources: &[Source], roots: &Mesh, visibility: &Visibility, directi
     DirectLight { arriving, rays: points * sources.len(), ..DirectLight::none(sources) }
 }
 
-/// True when the luminaires' light reflected by `patch` (albedo `albedo`) varies over it by
-/// more than `epsilon` (cd/m²): `ρ (E_max − E_min)/π` over the oracle's sample points of the
-/// element (`hierarchy::sample_points`), one shadow ray per point and source.
+/// True when the direct light reflected by `patch` (albedo `albedo`) varies over it by more
+/// than `epsilon` (cd/m²): `ρ (E_max − E_min)/π` over the oracle's sample points of the
+/// element (`hierarchy::sample_points`). The luminaires' and the sun's light is looked at
+/// with one shadow ray per point and source; the openings' with a glimpse
+/// (`sky::glimpse`, 16 rays per point and opening), only where their unshadowed light
+/// could make up the difference.
 fn varies(sources: &[Source], visibility: &Visibility, patch: &Patch, albedo: f64, epsilon: f64) -> bool {
     if sources.is_empty() || albedo <= 0.0 {
         return false;
     }
-    let (lo, hi) = sample_points(patch).fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
-        let e: f64 = sources
-            .iter()
-            .filter_map(|s| incoming(s, visibility, x, patch.face))
-            .map(|(towards, normal)| normal * towards.dot(patch.normal).max(0.0))
-            .sum();
-        (lo.min(e), hi.max(e))
+    let allowed = epsilon * PI / albedo;
+    let points: Vec<DVec3> = sample_points(patch).collect();
+    let spread = |e: &mut dyn Iterator<Item = f64>| {
+        let (lo, hi) = e.fold((f64::INFINITY, 0.0f64), |(lo, hi), e| (lo.min(e), hi.max(e)));
+        hi - lo
+    };
+    let lit: Vec<f64> = points.iter().map(|&x| point_light(sources, visibility, patch, x)).collect();
+    let lamps = spread(&mut lit.iter().copied());
+    let windows: Vec<(&Opening, &Sky)> = sources.iter().filter_map(window_of).collect();
+    if lamps > allowed || windows.is_empty() {
+        return lamps > allowed;
+    }
+    let n = patch.normal;
+    let open = |x: DVec3| windows.iter().map(|(w, sky)| glimpse::unshadowed(sky, w, x, n)).collect::<Vec<_>>();
+    let unshadowed: Vec<Vec<f64>> = points.iter().map(|&x| open(x)).collect();
+    let most = unshadowed.iter().map(|u| u.iter().sum::<f64>()).fold(0.0, f64::max);
+    if lamps + most <= allowed {
+        return false;
+    }
+    let mut shadowed = points.iter().zip(&unshadowed).zip(&lit).map(|((&x, u), e)| {
+        let sees = |y: DVec3| visibility.escapes(x, y - x, patch.face);
+        e + windows.iter().zip(u).map(|((w, _), u)| u * glimpse::seen_share(w, x, n, &sees)).sum::<f64>()
     });
-    albedo * (hi - lo) / PI > epsilon
+    spread(&mut shadowed) > allowed
+}
+
+/// The illuminance (lx) of the luminaires and the sun at the point `x` of `patch`.
+fn point_light(sources: &[Source], visibility: &Visibility, patch: &Patch, x: DVec3) -> f64 {
+    let incoming = sources.iter().filter_map(|s| incoming(s, visibility, x, patch.face));
+    incoming.map(|(towards, normal)| normal * towards.dot(patch.normal).max(0.0)).sum()
+}
+
+/// The opening and sky of a window's source.
+fn window_of(source: &Source) -> Option<(&Opening, &Sky)> {
+    match &source.light {
+        Light::Window { window, sky } => Some((window, sky)),
+        _ => None,
+    }
 }

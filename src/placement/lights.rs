@@ -53,7 +53,7 @@ pub fn lit(world: &World, sources: &[Source], p: DVec3, n: DVec3, face: u32, rng
             }
             Light::Parallel { direction, illuminance, glass } => {
                 let e = illuminance * (-*direction).dot(n) * glass.share(p, -*direction);
-                lit.add(e, e > 0.0 && visibility.closest_hit(p, -*direction, face).is_none());
+                lit.add(e, e > 0.0 && visibility.escapes(p, -*direction, face));
             }
             Light::Window { .. } => {}
         }

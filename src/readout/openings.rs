@@ -15,7 +15,7 @@ use glam::DVec3;
 pub fn sky_and_ground(model: &Model, p: DVec3, n: DVec3) -> (f64, f64) {
     let Receiver { frame, ignore, .. } = Receiver::at(model, p, n);
     let normal = frame.normal;
-    let sees = |x: DVec3| model.visibility.closest_hit(p, x - p, ignore).is_none();
+    let sees = |x: DVec3| model.visibility.escapes(p, x - p, ignore);
     let (mut sky, mut ground) = (0.0, 0.0);
     for source in &model.sources {
         if let Light::Window { window, sky: outside } = &source.light {

@@ -8,7 +8,8 @@
 //! illuminance (`integrate.rs`), and the light a receiving point gets through an opening
 //! (`window.rs`, glazed or not: `glazing.rs`, the models in `glazing_*.rs`): sky and ground
 //! seen through the opening's polygon, piece by piece, each piece's exact projected solid
-//! angle times the luminance towards it, shadows included; and the share of a parallel beam
+//! angle times the luminance towards it, shadows included, and a rough look at the whole
+//! opening at once for choosing where leaves split (`glimpse.rs`); and the share of a parallel beam
 //! (the sun) the openings' glass lets through (`beam_glass.rs`).
 //! The sky enters the system exactly like a luminaire's direct light (`crate::luminaire`,
 //! `Light::Window`); nothing here knows about patches' cells or materials.
@@ -21,6 +22,7 @@ mod beam_glass;
 mod glazing;
 mod glazing_cie171;
 mod glazing_fresnel;
+pub mod glimpse;
 mod integrate;
 mod standard;
 mod sun;

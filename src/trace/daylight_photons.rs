@@ -111,7 +111,7 @@ impl DaylightPhotons {
             Entry::Sky { opening, sky, frame } => {
                 let x = point_on(&opening.polygon, v, u[1], u[2]);
                 let l = frame.world(cosine_direction(u[3], u[4]));
-                let open = visibility.closest_hit(x, l, NO_FACE).is_none();
+                let open = visibility.escapes(x, l, NO_FACE);
                 let cos = l.dot(opening.polygon.normal()).abs();
                 let tau = opening.glazing.map_or(1.0, |g| g.transmittance(cos));
                 let weight =
@@ -120,7 +120,7 @@ impl DaylightPhotons {
             }
             Entry::Beam { opening, direction, illuminance, glass } => {
                 let x = point_on(&opening.polygon, v, u[1], u[2]);
-                let open = visibility.closest_hit(x, -*direction, NO_FACE).is_none();
+                let open = visibility.escapes(x, -*direction, NO_FACE);
                 // just inside the opening, so that the opening's own glass counts
                 let inside = x + *direction * (1e-9 * opening.polygon.diameter());
                 let cos = direction.dot(opening.polygon.normal()).abs();
@@ -155,7 +155,7 @@ fn open_share(opening: &Opening, frame: &Frame, visibility: &Visibility) -> f64 
         let (s, t) = (((k % side) as f64 + 0.5) / side as f64, ((k / side) as f64 + 0.5) / side as f64);
         let x = point_on(&opening.polygon, s, t, 0.5);
         let l = frame.world(cosine_direction(t, s));
-        open += usize::from(visibility.closest_hit(x, l, NO_FACE).is_none());
+        open += usize::from(visibility.escapes(x, l, NO_FACE));
     }
     open as f64 / TEST_RAYS as f64
 }

@@ -89,7 +89,7 @@ impl Openings {
     /// True when the ray from `x` (on face `ignore`) along the unit `direction` leaves the
     /// scene: nothing inside or outside stops it.
     pub fn clear(visibility: &Visibility, x: DVec3, direction: DVec3, ignore: u32) -> bool {
-        visibility.closest_hit(x, direction, ignore).is_none()
+        visibility.escapes(x, direction, ignore)
     }
 }
 

@@ -167,14 +167,26 @@ impl Visibility {
         if length <= 2.0 * self.epsilon {
             return true;
         }
-        let ray = self.ray(a, d / length, self.epsilon, length - self.epsilon);
+        self.misses(&self.ray(a, d / length, self.epsilon, length - self.epsilon), ignore, blocker)
+    }
+
+    /// True when the ray from `origin` along `direction` crosses no face other than
+    /// `ignore`: it leaves the scene. The query stops at the first face it meets, where
+    /// [`Visibility::closest_hit`] looks on for the nearest.
+    pub fn escapes(&self, origin: DVec3, direction: DVec3, ignore: u32) -> bool {
+        let ray = self.ray(origin, direction.normalize(), self.epsilon, f32::INFINITY as f64);
+        self.misses(&ray, [ignore, ignore], &mut Blocker::default())
+    }
+
+    /// True when `ray` meets no face other than `ignore`, trying `blocker` first.
+    fn misses(&self, ray: &Ray, ignore: [u32; 2], blocker: &mut Blocker) -> bool {
         let skip = |id: usize| {
             let face = self.face_of[id];
             face == ignore[0] || face == ignore[1]
         };
         if let Some(id) = blocker.0
             && !skip(id)
-            && intersect(&self.triangles[id], &ray) < f32::INFINITY
+            && intersect(&self.triangles[id], ray) < f32::INFINITY
         {
             return false;
         }
@@ -187,8 +199,8 @@ impl Visibility {
             t
         };
         let miss = match &self.bvh {
-            Bvh::Binary(binary) => binary.ray_traverse_miss(ray, test),
-            Bvh::Wide(wide) => wide.ray_traverse_miss(ray, test),
+            Bvh::Binary(binary) => binary.ray_traverse_miss(*ray, test),
+            Bvh::Wide(wide) => wide.ray_traverse_miss(*ray, test),
         };
         if hit.is_some() {
             blocker.0 = hit;

@@ -16,6 +16,7 @@ mod push;
 mod rebalance;
 mod spectrum;
 mod transpose;
+mod window_splits;
 
 use glam::DVec3;
 use ugo::directions::DirectionSet;

@@ -98,3 +98,27 @@ fn every_probe_of_the_cornell_box_finds_the_surface_it_lies_on() {
         }
     }
 }
+
+#[test]
+fn a_ray_escapes_exactly_when_it_hits_nothing() {
+    // The any-hit query that daylight uses (`escapes`) against the nearest-hit query, on the
+    // open Cornell box (its front is open, so many rays leave): from every third patch's
+    // centroid, 64 directions over its hemisphere, the patch's own face ignored.
+    let mesh = cornell();
+    let v = Visibility::build(&mesh);
+    let (mut rays, mut escaped, mut different) = (0, 0, 0);
+    for p in mesh.patches.iter().step_by(3) {
+        let frame = p.frame();
+        for k in 0..64 {
+            let (cos, phi) = ((k as f64 + 0.5) / 64.0, k as f64 * 2.399_963_229_728_653);
+            let sin = (1.0 - cos * cos).sqrt();
+            let d = frame.world(DVec3::new(sin * phi.cos(), sin * phi.sin(), cos));
+            let escapes = v.escapes(p.centroid, d, p.face);
+            rays += 1;
+            escaped += escapes as usize;
+            different += (escapes != v.closest_hit(p.centroid, d, p.face).is_none()) as usize;
+        }
+    }
+    assert!(escaped > rays / 10 && escaped < rays * 9 / 10, "{escaped} of {rays} escaped");
+    assert_eq!(different, 0, "{different} of {rays} rays answered differently");
+}

@@ -16,7 +16,7 @@ pub struct Pass {
     pub leaves: usize,
     /// Nodes of the hierarchy (clusters and elements) after the pass.
     pub nodes: usize,
-    /// Leaf elements split after the pass where the luminaires' light varies over them
+    /// Leaf elements split after the pass where the direct light (luminaires, sun, openings) varies over them
     /// ([`super::Hierarchy::split_leaves`]).
     pub source_splits: usize,
     /// Occlusion rays traced in the pass (the new leaves' closures included).

@@ -2,7 +2,7 @@
 //! above them, the links the oracle accepted, what it refines with, its caches, and the
 //! work spent. `new` links from one self-link of the top cluster, with an ambient first
 //! guess of the field for brightness. Its verbs, one file each: `refine` one more pass
-//! with a solved field (`pass.rs`), `split_leaves` along the luminaires' light
+//! with a solved field (`pass.rs`), `split_leaves` along the direct light (luminaires, sun, openings)
 //! (`split.rs`), `operator` its `G` on the current leaves, balanced (`balanced.rs`),
 //! `leaf_mesh`, `emission` and `prolong` on the leaves (`leaves.rs`). The kernel `K = B·G`
 //! over that `G`, and the passes iterated with solves, are `crate::kernel`'s.
