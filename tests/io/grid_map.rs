@@ -7,7 +7,7 @@ use glam::DVec3;
 use std::path::Path;
 use ugo::io::{GridPlan, Overlay, colour, write_grid_map};
 use ugo::readout::grid::GridReading;
-use ugo::scene::{Grid, MapScale, MapStyle, Scene};
+use ugo::scene::{Grid, MapScale, MapStyle, Scene, Target};
 
 /// A grid of 8 × 4 cells over `origin + s·edge_u + t·edge_v`, dark but for the cell
 /// `(i, j)` of 100 lx.
@@ -20,6 +20,7 @@ pub(super) fn reading(edge_u: DVec3, edge_v: DVec3, normal: DVec3, (i, j): (usiz
         normal,
         resolution: [8, 4],
         map: MapStyle::default(),
+        target: Target::default(),
     };
     let points = grid.points();
     let mut illuminance = vec![10.0; 32];
