@@ -124,3 +124,18 @@ fn the_map_options_are_read_from_the_grid_table_and_a_misspelled_one_is_refused(
     let error = parse(r#"map = { scale = "logarithmic" }"#).unwrap_err().to_string();
     assert!(error.contains("logarithmic") && error.contains("linear"), "{error}");
 }
+
+#[test]
+fn the_targets_are_read_from_the_grid_table_and_a_bad_one_is_refused_naming_it() {
+    let parse = |target: &str| Scene::parse(Path::new("plan.toml"), format!("{CASE}{target}\n"));
+    assert_eq!(parse("").unwrap().grids[0].target, Target::default());
+    let target = parse("target = { em = 500, u0 = 0.6 }").unwrap().grids[0].target;
+    assert_eq!(target, Target { em: Some(500.0), u0: Some(0.6) });
+    assert_eq!(parse("target = { u0 = 0.4 }").unwrap().grids[0].target, Target { em: None, u0: Some(0.4) });
+    for bad in ["target = { em = -5 }", "target = { em = 0 }", "target = { u0 = 1.5 }", "target = { u0 = 0 }"] {
+        let error = parse(bad).unwrap_err().to_string();
+        assert!(error.contains("plan.toml") && error.contains("plane") && error.contains("target"), "{bad}: {error}");
+    }
+    let error = parse("target = { ugr = 19 }").unwrap_err().to_string();
+    assert!(error.contains("ugr"), "{error}");
+}
