@@ -17,7 +17,8 @@
 //! `/grids/<name>/{points,illuminance}` (with the statistics as attributes),
 //! `/luminaires/{name,kind,position,direction,flux,distribution_flux,file_flux,on_surfaces,
 //! group,file}` (one row per `[[luminaire]]` or array member; NaN where a value does not
-//! apply, `file` the photometric file's name or empty; attribute `maintenance_factor`), the probes' `direct`
+//! apply, `group` empty for a source in no light group (an opening), `file` the
+//! photometric file's name or empty; attribute `maintenance_factor`), the probes' `direct`
 //! part in `/probes/direct`, `/light_groups` and `/light_scenes/<name>/…` (the case's
 //! light scenes, `light_scene_group.rs`), and attributes on the root for
 //! method, tolerance, iterations, timings, energy totals, the scene text and the version;
@@ -36,7 +37,7 @@ use crate::luminaire::Light;
 use crate::luminaire::LuminaireKind;
 use crate::photometry::Distribution;
 use crate::readout::illuminance::patch_illuminance;
-use crate::scene::{DEFAULT_GROUP, Scene};
+use crate::scene::Scene;
 use crate::solve::SolveInfo;
 use crate::solve::norms::Norms;
 use crate::solve::orders::OrderRecord;
@@ -281,8 +282,7 @@ fn write_luminaires(g: &hdf5::Group, scene: &Scene, s: &Solution) -> hdf5::Resul
     dataset(g, "file_flux", &Array1::from_iter(stated))?;
     dataset(g, "on_surfaces", &Array1::from(s.model.direct.intercepted.clone()))?;
     let lighting = &scene.lighting;
-    let group =
-        |i: usize| lighting.groups.iter().find(|g| g.luminaires.contains(&i)).map_or(DEFAULT_GROUP, |g| &g.name);
+    let group = |i: usize| lighting.groups.iter().find(|g| g.luminaires.contains(&i)).map_or("", |g| &g.name);
     strings(g, "group", (0..n).map(group))?;
     let files: Vec<String> = scene.luminaires.iter().map(|l| photometric_file(l).unwrap_or_default()).collect();
     strings(g, "file", files.iter().map(String::as_str))?;

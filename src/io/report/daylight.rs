@@ -6,7 +6,7 @@
 
 use super::super::grid_map::Shown;
 use super::super::read::Result;
-use super::grids::{plan, reading};
+use super::grids::{plan, reading, sources};
 use super::h5::H5;
 use super::html::{escape, image, number, paragraph, section, table};
 use crate::io::StoredSolution;
@@ -28,13 +28,14 @@ pub(super) fn daylight(h: &H5, stored: &StoredSolution) -> Result<Option<String>
     let head: Vec<String> = ["grid".to_string()].into_iter().chain(stats).chain(["uniformity".to_string()]).collect();
     let mut rows = Vec::new();
     let mut plans = String::new();
+    let sources = sources(stored);
     for grid in &stored.scene.grids {
         let at = format!("daylight/grids/{}", grid.name);
         let [avg, min, max, u] = h.attrs(&at, ["DF_avg", "DF_min", "DF_max", "uniformity"]);
         rows.push(vec![escape(&grid.name), number(avg, 2), number(min, 2), number(max, 2), number(u, 2)]);
         let r = reading(h, &format!("grids/{}", grid.name), grid)?;
         let values = h.numbers_of(&format!("{at}/daylight_factor"), r.points.len())?;
-        let png = plan(stored, &r, &Shown::daylight(&values, symbol))?;
+        let png = plan(stored, &r, &Shown::daylight(&values, symbol), &sources)?;
         plans += &image(&png, &format!("plan of the grid {}: {}, %", grid.name, ratio.as_str()));
     }
     if !rows.is_empty() {

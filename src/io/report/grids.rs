@@ -51,13 +51,14 @@ pub(super) fn grids(h: &H5, stored: &StoredSolution) -> Result<Option<String>> {
     head.extend(target_head());
     let mut rows = Vec::new();
     let mut plans = String::new();
+    let sources = sources(stored);
     for grid in grids {
         let reading = reading(h, &format!("grids/{}", grid.name), grid)?;
         let counted = reading.points.len() - reading.left_out();
         let mut row = vec![escape(&grid.name), format!("{counted} of {}", reading.points.len())];
         row.extend(figures(h, &format!("grids/{}", grid.name), grid));
         rows.push(row);
-        let png = plan(stored, &reading, &Shown::illuminance(&reading))?;
+        let png = plan(stored, &reading, &Shown::illuminance(&reading), &sources)?;
         plans += &image(&png, &format!("plan of the grid {}: illuminance, lx", grid.name));
     }
     let body = table("grids", &head, &rows) + &plans;
@@ -94,11 +95,20 @@ fn stored_surfaces(h: &H5) -> Result<usize> {
     Ok(h.strings("mesh/surface_names")?.len())
 }
 
-/// The plan of `shown` on `reading` as PNG bytes, with the stored scene's luminaires and
-/// the section of its patches by the grid's plane.
-pub(super) fn plan(stored: &StoredSolution, reading: &GridReading, shown: &Shown) -> Result<Vec<u8>> {
-    let sources: Vec<Source> = stored.scene.luminaires.iter().map(Source::of).collect();
+/// The stored scene's luminaires placed, each at full output.
+pub(super) fn sources(stored: &StoredSolution) -> Vec<Source> {
+    stored.scene.luminaires.iter().map(Source::of).collect()
+}
+
+/// The plan of `shown` on `reading` as PNG bytes, with `sources` (dimmed as a light scene
+/// has them) and the section of the stored patches by the grid's plane.
+pub(super) fn plan(
+    stored: &StoredSolution,
+    reading: &GridReading,
+    shown: &Shown,
+    sources: &[Source],
+) -> Result<Vec<u8>> {
     let section = cut(&stored.mesh, reading.grid.origin, reading.grid.normal);
-    let overlay = Overlay { sources: &sources, section: &section };
+    let overlay = Overlay { sources, section: &section };
     plan_png(reading, shown, &overlay).map_err(|e| Why(format!("the plan of grid \"{}\": {e}", reading.grid.name)))
 }

@@ -51,7 +51,11 @@ pub(super) fn paragraph(text: &str) -> String {
     format!("<p>{}</p>\n", escape(text))
 }
 
-/// The PNG `bytes` as an image in the page, described by `alt`.
+/// The PNG `bytes` as an image in the page, described (and captioned) by `alt`.
 pub(super) fn image(bytes: &[u8], alt: &str) -> String {
-    format!("<figure><img alt=\"{}\" src=\"data:image/png;base64,{}\"></figure>\n", escape(alt), base64(bytes))
+    let alt = escape(alt);
+    format!(
+        "<figure><img alt=\"{alt}\" src=\"data:image/png;base64,{}\"><figcaption>{alt}</figcaption></figure>\n",
+        base64(bytes)
+    )
 }

@@ -1,12 +1,14 @@
 //! The report's light scenes (`docs/report.md`): for every `[[light_scene]]` of
 //! `/light_groups` its groups' levels, the flux it emits and, from
-//! `/light_scenes/<name>`, every grid against its targets and every observer's UGR.
+//! `/light_scenes/<name>`, every grid against its targets and every observer's UGR; then
+//! each grid's plan in each light scene, its luminaires drawn full, dimmed or off.
 
+use super::super::grid_map::Shown;
 use super::super::read::{Result, Why};
 use super::glare::ugr;
-use super::grids::{figures, target_head};
+use super::grids::{figures, plan, reading, sources, target_head};
 use super::h5::H5;
-use super::html::{escape, number, section, table};
+use super::html::{escape, image, number, section, table};
 use crate::io::StoredSolution;
 
 /// The light scenes' table, or nothing for a case without light scenes.
@@ -23,16 +25,16 @@ pub(super) fn light_scenes(h: &H5, stored: &StoredSolution) -> Result<Option<Str
     head.extend(target_head());
     head.extend(observers.iter().map(|o| format!("UGR {o}")));
     let mut rows = Vec::new();
+    let mut plans = String::new();
     for (s, scene) in scenes.iter().enumerate() {
         let at = format!("light_scenes/{scene}");
         if !h.has(&at) {
             return Err(Why(format!("/light_groups/scene_names names \"{scene}\", but there is no /{at}")));
         }
-        let levels: Vec<String> = groups
-            .iter()
-            .zip(&factors[s * groups.len()..(s + 1) * groups.len()])
-            .map(|(g, f)| format!("{} {:.0} %", escape(g), f * 100.0))
-            .collect();
+        let levels = &factors[s * groups.len()..(s + 1) * groups.len()];
+        plans += &scene_plans(h, stored, scene, &groups, levels)?;
+        let levels: Vec<String> =
+            groups.iter().zip(levels).map(|(g, f)| format!("{} {:.0} %", escape(g), f * 100.0)).collect();
         let ugrs = h.numbers_of(&format!("{at}/observers/ugr"), observers.len())?;
         let flux = h.attr(&at, "flux_emitted").unwrap_or(f64::NAN);
         // one row per grid (a row with dashes for a case without grids)
@@ -51,6 +53,26 @@ pub(super) fn light_scenes(h: &H5, stored: &StoredSolution) -> Result<Option<Str
             rows.push(row);
         }
     }
-    let body = table("light-scenes", &head, &rows);
+    let body = table("light-scenes", &head, &rows) + &plans;
     Ok(Some(section("light-scenes", "Light scenes", &body)))
+}
+
+/// The plans of every grid in the light scene `scene`, its luminaires dimmed by `levels`
+/// (one per group of `groups`; a source in no group at full output).
+fn scene_plans(h: &H5, stored: &StoredSolution, scene: &str, groups: &[String], levels: &[f64]) -> Result<String> {
+    let member_of = h.strings("luminaires/group")?;
+    let mut lit = sources(stored);
+    if lit.len() != member_of.len() {
+        return Err(Why(format!("/luminaires/group has {} rows for {} luminaires", member_of.len(), lit.len())));
+    }
+    for (source, group) in lit.iter_mut().zip(&member_of) {
+        source.dimmed = groups.iter().position(|g| g == group).map_or(1.0, |k| levels[k]);
+    }
+    let mut plans = String::new();
+    for grid in &stored.scene.grids {
+        let r = reading(h, &format!("light_scenes/{scene}/grids/{}", grid.name), grid)?;
+        let png = plan(stored, &r, &Shown::illuminance(&r), &lit)?;
+        plans += &image(&png, &format!("plan of the grid {} in the light scene {scene}: illuminance, lx", grid.name));
+    }
+    Ok(plans)
 }

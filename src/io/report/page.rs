@@ -44,7 +44,7 @@ pub(super) fn page(h: &H5, stored: &StoredSolution, file: &str) -> Result<String
 }
 
 /// The case and how it was solved: the file, the room's extent, patches, kernel, method,
-/// residual, flux and the times of assembly and solve.
+/// residual, flux and the times of assembly, the sources' direct light and solve.
 fn solve(h: &H5, stored: &StoredSolution, file: &str) -> String {
     let (low, high) = stored
         .mesh
@@ -55,7 +55,7 @@ fn solve(h: &H5, stored: &StoredSolution, file: &str) -> String {
     let size = high - low;
     let text = |name: &str| h.text(name).unwrap_or_else(|| "—".to_string());
     let [residual, emitted, absorbed] = h.attrs("", ["residual", "flux_emitted", "flux_absorbed"]);
-    let [assembly, solving] = h.attrs("", ["assembly_seconds", "solve_seconds"]);
+    let [assembly, direct, solving] = h.attrs("", ["assembly_seconds", "luminaire_seconds", "solve_seconds"]);
     let rows = [
         ("solution file", escape(file)),
         ("case file", escape(&text("scene_file"))),
@@ -65,7 +65,7 @@ fn solve(h: &H5, stored: &StoredSolution, file: &str) -> String {
         ("kernel, method", escape(&format!("{}, {}", text("kernel"), text("method")))),
         ("relative residual", format!("{residual:.1e}")),
         ("flux emitted, absorbed (lm)", format!("{}, {}", number(emitted, 1), number(absorbed, 1))),
-        ("assembly, solve (s)", format!("{}, {}", number(assembly, 1), number(solving, 1))),
+        ("assembly, sources' direct light, solve (s)", [assembly, direct, solving].map(|t| number(t, 1)).join(", ")),
         ("ugo version", escape(&text("version"))),
     ];
     let rows: Vec<Vec<String>> = rows.into_iter().map(|(k, v)| vec![k.to_string(), v]).collect();
