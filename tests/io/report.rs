@@ -3,7 +3,8 @@
 //! checked by `report_check.py` (a strict HTML parse, every table row as long as its
 //! header, every plan a PNG data: URI, no outside reference, the grid, luminaire,
 //! daylight, glare, light-scene and surface figures equal to the HDF5 file's as shown);
-//! `-o` and the default name; a file that is not a solution refused naming it.
+//! `-o` and the default name; a file that is not a solution refused naming it; the furnace
+//! box, which has none of the optional parts, reads 5π lx on every side of its room.
 
 use crate::support::{scratch, ugo};
 use std::path::Path;
@@ -77,4 +78,27 @@ fn a_file_that_is_not_a_solution_is_refused_naming_it() {
     let said = String::from_utf8_lossy(&o.stderr);
     assert!(!o.status.success() && said.contains("notes.h5"), "{said}");
     assert!(!dir.join("notes.html").exists(), "no page is written");
+}
+
+#[test]
+fn the_furnace_box_has_no_optional_part_and_every_side_reads_five_pi_lux() {
+    let dir = scratch("report-furnace");
+    let out = dir.join("furnace.h5");
+    let solve = ugo(&["solve", "cases/furnace-box.toml", "--patch-size", "0.25", "-o", s(&out)]);
+    assert!(solve.status.success(), "{}", String::from_utf8_lossy(&solve.stderr));
+    let page = dir.join("page.html");
+    let report = ugo(&["report", s(&out), "-o", s(&page)]);
+    assert!(report.status.success(), "{}", String::from_utf8_lossy(&report.stderr));
+    let html = std::fs::read_to_string(&page).unwrap();
+    for absent in ["luminaires", "grids", "glare", "light-scenes", "daylight", "warnings"] {
+        assert!(!html.contains(&format!("id=\"{absent}\"")), "a section {absent} in {html}");
+    }
+    assert!(!html.contains("<img"), "a plan without a grid");
+    // 5 cd/m² arriving from every direction: E = 5π = 15.708 lx on each side of the room
+    for side in ["up (floor)", "down (ceiling)", "vertical (wall)"] {
+        let row = format!("<tr><td>room</td><td>grey</td><td>{side}</td>");
+        let at = html.find(&row).unwrap_or_else(|| panic!("no row {row}"));
+        let cells: Vec<&str> = html[at..].split("</tr>").next().unwrap().split("<td>").skip(5).collect();
+        assert!(cells.iter().take(3).all(|c| c.starts_with("15.7<")), "{side}: {cells:?}");
+    }
 }
