@@ -192,6 +192,16 @@ enum Command {
         #[command(flatten)]
         view: cli::render::CameraOptions,
     },
+    /// One self-contained HTML page of a solved case (docs/report.md): materials, luminaires,
+    /// grids against their EN 12464-1 targets with their plans, glare, light scenes,
+    /// daylight, the surfaces' illuminance and the warnings, read from the solution file alone.
+    Report {
+        /// The HDF5 file of a solve.
+        solution: PathBuf,
+        /// The HTML file (default: the solution's name with `.html`, beside it).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
     /// Patches, unknowns, and the kernel's estimated size, before any assembly.
     Info {
         case: PathBuf,
@@ -347,6 +357,7 @@ fn run(command: Command) -> anyhow::Result<()> {
             let rendering = cli::agree::Rendering { camera: camera.as_deref(), samples, shading, gather_rays };
             cli::agree::run(&solution, &reference, &rendering, precise)
         }
+        Command::Report { solution, output } => cli::report::run(&solution, output),
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench(options) => cli::bench::run(&options),
         Command::Export(options) => cli::export::run(&options),

@@ -12,6 +12,7 @@ pub mod light_scenes;
 pub mod options;
 pub mod probes;
 pub mod render;
+pub mod report;
 pub mod size_key;
 pub mod solve;
 pub mod spectrum;

@@ -80,16 +80,28 @@ fn extent(points: &[DVec2]) -> (DVec2, DVec2) {
 }
 
 /// What a plan shows: one value per point of the grid, its symbol and its unit.
-struct Shown<'a> {
+pub(super) struct Shown<'a> {
     values: &'a [f64],
     symbol: &'a str,
     unit: &'a str,
 }
 
+impl<'a> Shown<'a> {
+    /// The grid's illuminance, lx.
+    pub(super) fn illuminance(grid: &'a GridReading) -> Shown<'a> {
+        Shown { values: &grid.illuminance, symbol: "E", unit: "lx" }
+    }
+
+    /// The daylight factor (`symbol` `"DF"`) or ratio (`"DR"`), %, one value per point.
+    pub(super) fn daylight(values: &'a [f64], symbol: &'a str) -> Shown<'a> {
+        Shown { values, symbol, unit: "%" }
+    }
+}
+
 /// Writes the plan of `grid`'s illuminance, with the luminaires and the section of
 /// `overlay`, to `path` (PNG).
 pub fn write_grid_map(path: &Path, grid: &GridReading, overlay: &Overlay) -> Result<(), IoError> {
-    write_map(path, grid, &Shown { values: &grid.illuminance, symbol: "E", unit: "lx" }, overlay)
+    write_map(path, grid, &Shown::illuminance(grid), overlay)
 }
 
 /// Writes the plan of the daylight factor (`symbol` `"DF"`) or ratio (`"DR"`) on `grid`, %,
@@ -101,17 +113,29 @@ pub fn write_daylight_map(
     symbol: &str,
     overlay: &Overlay,
 ) -> Result<(), IoError> {
-    write_map(path, grid, &Shown { values, symbol, unit: "%" }, overlay)
+    write_map(path, grid, &Shown::daylight(values, symbol), overlay)
 }
 
 fn write_map(path: &Path, grid: &GridReading, shown: &Shown, overlay: &Overlay) -> Result<(), IoError> {
-    let plan = GridPlan::of(grid, &overlay.positions());
-    super::atomic_png(path, |png| draw(png, grid, shown, &plan, overlay).map_err(|e| e.to_string()))
+    let png = plan_png(grid, shown, overlay).map_err(|why| IoError::write(path, why))?;
+    super::write_bytes(path, &png)
 }
 
-fn draw(path: &Path, grid: &GridReading, shown: &Shown, plan: &GridPlan, overlay: &Overlay) -> Drawn {
+/// The plan of `shown` on `grid` as the bytes of a PNG file (the report embeds them).
+pub(super) fn plan_png(grid: &GridReading, shown: &Shown, overlay: &Overlay) -> Result<Vec<u8>, String> {
+    let plan = GridPlan::of(grid, &overlay.positions());
+    let (width, height) = plan.size;
+    let mut rgb = vec![0u8; width as usize * height as usize * 3];
+    draw(&mut rgb, grid, shown, &plan, overlay).map_err(|e| e.to_string())?;
+    let picture = ::image::RgbImage::from_raw(width, height, rgb).ok_or("the plan's pixels do not fill it")?;
+    let mut png = std::io::Cursor::new(Vec::new());
+    picture.write_to(&mut png, ::image::ImageFormat::Png).map_err(|e| e.to_string())?;
+    Ok(png.into_inner())
+}
+
+fn draw(rgb: &mut [u8], grid: &GridReading, shown: &Shown, plan: &GridPlan, overlay: &Overlay) -> Drawn {
     super::plot::register_font();
-    let root = BitMapBackend::new(path, plan.size).into_drawing_area();
+    let root = BitMapBackend::with_buffer(rgb, plan.size).into_drawing_area();
     root.fill(&WHITE)?;
     let style = grid.grid.map;
     let scale = match style.scale {

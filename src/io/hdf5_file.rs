@@ -15,8 +15,10 @@
 //! `observer_group.rs`), `/basis/{coefficients,psi,front,back}`
 //! (a solve in a factored angular basis),
 //! `/grids/<name>/{points,illuminance}` (with the statistics as attributes),
-//! `/luminaires/{name,kind,position,direction,flux,distribution_flux,file_flux,on_surfaces}`
-//! (one row per `[[luminaire]]`; NaN where a value does not apply), the probes' `direct`
+//! `/luminaires/{name,kind,position,direction,flux,distribution_flux,file_flux,on_surfaces,
+//! group,file}` (one row per `[[luminaire]]` or array member; NaN where a value does not
+//! apply, `group` empty for a source in no light group (an opening), `file` the
+//! photometric file's name or empty; attribute `maintenance_factor`), the probes' `direct`
 //! part in `/probes/direct`, `/light_groups` and `/light_scenes/<name>/…` (the case's
 //! light scenes, `light_scene_group.rs`), and attributes on the root for
 //! method, tolerance, iterations, timings, energy totals, the scene text and the version;
@@ -278,7 +280,21 @@ fn write_luminaires(g: &hdf5::Group, scene: &Scene, s: &Solution) -> hdf5::Resul
         _ => f64::NAN,
     });
     dataset(g, "file_flux", &Array1::from_iter(stated))?;
-    dataset(g, "on_surfaces", &Array1::from(s.model.direct.intercepted.clone()))
+    dataset(g, "on_surfaces", &Array1::from(s.model.direct.intercepted.clone()))?;
+    let lighting = &scene.lighting;
+    let group = |i: usize| lighting.groups.iter().find(|g| g.luminaires.contains(&i)).map_or("", |g| &g.name);
+    strings(g, "group", (0..n).map(group))?;
+    let files: Vec<String> = scene.luminaires.iter().map(|l| photometric_file(l).unwrap_or_default()).collect();
+    strings(g, "file", files.iter().map(String::as_str))?;
+    g.new_attr::<f64>().create("maintenance_factor")?.write_scalar(&lighting.maintenance_factor)
+}
+
+/// The name of the photometric file a luminaire's distribution was read from, if any.
+fn photometric_file(l: &crate::luminaire::Luminaire) -> Option<String> {
+    match &l.kind {
+        LuminaireKind::Point(p) => p.file.as_ref()?.file_name().map(|f| f.to_string_lossy().into_owned()),
+        LuminaireKind::Parallel { .. } | LuminaireKind::Window { .. } => None,
+    }
 }
 
 fn write_attributes(file: &hdf5::File, scene: &Scene, s: &Solution) -> hdf5::Result<()> {

@@ -1,7 +1,7 @@
 //! Files: the HDF5 dump of a solve (`docs/design.md` §8) written and read back,
 //! the HDF5 file of a forward Monte Carlo estimate, convergence plots, and rendered images
 //! (linear EXR, read back for comparisons; tone-mapped PNG; false colour), the grids'
-//! plans, and the spectrum of `K` with its plot.
+//! plans, the spectrum of `K` with its plot, and the HTML report of a solved case.
 
 mod atomic;
 mod basis_plot;
@@ -29,6 +29,7 @@ mod png_file;
 mod read;
 mod readings;
 mod readout_group;
+mod report;
 mod solution;
 mod spectrum_file;
 mod spectrum_plot;
@@ -57,6 +58,7 @@ pub use plot::{convergence_plot, register_font};
 pub use png_file::{auto_exposure, srgb, write_png};
 pub use read::{StoredSolution, read_solution};
 pub use readings::{write_grid_csv, write_probes_csv};
+pub use report::write_report;
 pub use solution::{KernelRecord, Loaded, MonteCarlo, Run, Solution};
 pub use spectrum_file::{Mode, read_mode};
 pub use spectrum_plot::{RateLine, spectrum_plot};

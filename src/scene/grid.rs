@@ -30,6 +30,26 @@ pub struct RawGrid {
     pub normal: Option<[f64; 3]>,
     #[serde(default)]
     pub map: MapStyle,
+    #[serde(default)]
+    pub target: RawTarget,
+}
+
+/// `target = { em = 500, u0 = 0.6 }` of a `[[grid]]` as written.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawTarget {
+    pub em: Option<f64>,
+    pub u0: Option<f64>,
+}
+
+/// The requirements of EN 12464-1 a grid is checked against in the report: the maintained
+/// illuminance `Ēm` (the least `E_avg`) and the least uniformity `U0`. Either may be absent.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Target {
+    /// `Ēm`, lx.
+    pub em: Option<f64>,
+    /// `U0 = E_min / E_avg`.
+    pub u0: Option<f64>,
 }
 
 /// `map = { scale = "log", values = true, isolines = true }` of a `[[grid]]`: how its plan
@@ -75,6 +95,8 @@ pub struct Grid {
     pub resolution: [usize; 2],
     /// How its plan is drawn.
     pub map: MapStyle,
+    /// What EN 12464-1 asks of it.
+    pub target: Target,
 }
 
 impl Grid {
@@ -96,6 +118,7 @@ pub(super) fn grids(path: &Path, raw: &[RawGrid], surfaces: &[Surface]) -> Resul
 }
 
 fn grid(at: &Context, g: &RawGrid, bounds: (DVec3, DVec3)) -> Result<Grid, SceneError> {
+    let target = target(at, &g.target)?;
     if let Some(w) = &g.work_plane {
         let given = [("origin", g.origin.is_some()), ("edge_u", g.edge_u.is_some()), ("edge_v", g.edge_v.is_some())];
         let given = given.into_iter().chain([("resolution", g.resolution.is_some()), ("normal", g.normal.is_some())]);
@@ -103,7 +126,16 @@ fn grid(at: &Context, g: &RawGrid, bounds: (DVec3, DVec3)) -> Result<Grid, Scene
             return Err(at.error(key, "give `work_plane` or the grid's `origin`, edges and `resolution`, not both"));
         }
         let (origin, edge_u, edge_v, resolution) = work_plane(at, w, bounds)?;
-        return Ok(Grid { name: g.name.clone(), origin, edge_u, edge_v, normal: DVec3::Y, resolution, map: g.map });
+        return Ok(Grid {
+            name: g.name.clone(),
+            origin,
+            edge_u,
+            edge_v,
+            normal: DVec3::Y,
+            resolution,
+            map: g.map,
+            target,
+        });
     }
     let needed = |key: &str, value: Option<[f64; 3]>| {
         value.ok_or_else(|| {
@@ -136,5 +168,16 @@ fn grid(at: &Context, g: &RawGrid, bounds: (DVec3, DVec3)) -> Result<Grid, Scene
     let (Some(nu), Some(nv)) = (points(nu), points(nv)) else {
         return Err(at.error("resolution", format!("must be two point counts from 1 to 1000, got [{nu}, {nv}]")));
     };
-    Ok(Grid { name: g.name.clone(), origin, edge_u, edge_v, normal, resolution: [nu, nv], map: g.map })
+    Ok(Grid { name: g.name.clone(), origin, edge_u, edge_v, normal, resolution: [nu, nv], map: g.map, target })
+}
+
+/// `target`: `em` finite and > 0 lx, `u0` within (0, 1].
+fn target(at: &Context, t: &RawTarget) -> Result<Target, SceneError> {
+    if let Some(em) = t.em.filter(|e| !(e.is_finite() && *e > 0.0)) {
+        return Err(at.error("target", format!("`em` must be a finite illuminance > 0 lx, got {em}")));
+    }
+    if let Some(u0) = t.u0.filter(|u| !(*u > 0.0 && *u <= 1.0)) {
+        return Err(at.error("target", format!("`u0` must lie in (0, 1], got {u0}")));
+    }
+    Ok(Target { em: t.em, u0: t.u0 })
 }

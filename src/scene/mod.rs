@@ -42,7 +42,7 @@ pub use discretization::{
 pub use discretization_keys::OldSpelling;
 pub use error::SceneError;
 pub use files::{CaseFile, CaseFiles, regular_file};
-pub use grid::{Grid, MapScale, MapStyle};
+pub use grid::{Grid, MapScale, MapStyle, Target};
 pub use light_scene::{DEFAULT_GROUP, LightGroup, LightScene, Lighting};
 pub use observer::Observer;
 pub use probe::{Probe, ProbeKind};

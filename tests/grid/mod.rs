@@ -40,6 +40,7 @@ fn grid(y: f64) -> Grid {
         normal: DVec3::Y,
         resolution: [5, 4],
         map: Default::default(),
+        target: Default::default(),
     }
 }
 

@@ -7,7 +7,7 @@ use glam::DVec3;
 use std::path::Path;
 use ugo::io::{GridPlan, Overlay, colour, write_grid_map};
 use ugo::readout::grid::GridReading;
-use ugo::scene::{Grid, MapScale, MapStyle, Scene};
+use ugo::scene::{Grid, MapScale, MapStyle, Scene, Target};
 
 /// A grid of 8 × 4 cells over `origin + s·edge_u + t·edge_v`, dark but for the cell
 /// `(i, j)` of 100 lx.
@@ -20,6 +20,7 @@ pub(super) fn reading(edge_u: DVec3, edge_v: DVec3, normal: DVec3, (i, j): (usiz
         normal,
         resolution: [8, 4],
         map: MapStyle::default(),
+        target: Target::default(),
     };
     let points = grid.points();
     let mut illuminance = vec![10.0; 32];
@@ -122,4 +123,19 @@ fn the_map_options_are_read_from_the_grid_table_and_a_misspelled_one_is_refused(
     assert!(error.contains("plan.toml") && error.contains("valuse"), "{error}");
     let error = parse(r#"map = { scale = "logarithmic" }"#).unwrap_err().to_string();
     assert!(error.contains("logarithmic") && error.contains("linear"), "{error}");
+}
+
+#[test]
+fn the_targets_are_read_from_the_grid_table_and_a_bad_one_is_refused_naming_it() {
+    let parse = |target: &str| Scene::parse(Path::new("plan.toml"), format!("{CASE}{target}\n"));
+    assert_eq!(parse("").unwrap().grids[0].target, Target::default());
+    let target = parse("target = { em = 500, u0 = 0.6 }").unwrap().grids[0].target;
+    assert_eq!(target, Target { em: Some(500.0), u0: Some(0.6) });
+    assert_eq!(parse("target = { u0 = 0.4 }").unwrap().grids[0].target, Target { em: None, u0: Some(0.4) });
+    for bad in ["target = { em = -5 }", "target = { em = 0 }", "target = { u0 = 1.5 }", "target = { u0 = 0 }"] {
+        let error = parse(bad).unwrap_err().to_string();
+        assert!(error.contains("plan.toml") && error.contains("plane") && error.contains("target"), "{bad}: {error}");
+    }
+    let error = parse("target = { ugr = 19 }").unwrap_err().to_string();
+    assert!(error.contains("ugr"), "{error}");
 }

@@ -5,7 +5,8 @@
 //! (`stages.rs`). The kernel file (`kernel_file.rs`, `kernel_check.py`) and its
 //! exports (`export.rs`). The grids' plans, their round ticks and isolux lines
 //! (`grid_map.rs`, `ticks.rs`, `isolines.rs`), the luminaires and the section they draw
-//! (`plan_marks.rs`).
+//! (`plan_marks.rs`). The HTML report checked by a parser against its file (`report.rs`,
+//! `report_check.py`).
 
 mod export;
 mod faults;
@@ -13,5 +14,6 @@ mod grid_map;
 mod isolines;
 mod kernel_file;
 mod plan_marks;
+mod report;
 mod stages;
 mod ticks;

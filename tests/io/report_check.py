@@ -1,0 +1,235 @@
+#!/usr/bin/python3
+"""Checks the HTML report of `ugo report` against its solution file (tests/io/report.rs).
+
+    report_check.py PAGE.html SOLUTION.h5
+
+The page is parsed strictly with the standard library's html.parser: every tag closed in
+order, every table row as long as its header, every image a data: URI whose base64 decodes
+to a whole PNG, no reference outside the file. The numbers of the tables are read back and
+compared with the HDF5 file (h5py) as the page rounds them; the surfaces' mean illuminance
+is derived here again from /field/illuminance and /mesh. Prints "report_check: ok".
+"""
+
+import base64
+import struct
+import sys
+from html.parser import HTMLParser
+
+import h5py
+import numpy as np
+
+VOID = {"meta", "img", "br", "hr", "link", "input", "col", "area", "base", "source", "wbr"}
+
+
+def fail(message):
+    sys.exit(f"report_check: {message}")
+
+
+class Page(HTMLParser):
+    """The page's tags checked as they come, its tables and images kept."""
+
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.stack, self.tables, self.images, self.doctype = [], {}, [], False
+        self.table, self.row, self.cell = None, None, None
+
+    def handle_decl(self, decl):
+        self.doctype = decl.lower() == "doctype html"
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        for name, value in attrs.items():
+            v = (value or "").strip().lower()
+            if name in ("href", "src", "action", "poster", "srcset") and not v.startswith("data:"):
+                fail(f"<{tag} {name}=\"{value}\"> refers outside the file")
+        if tag in ("script", "link", "iframe", "object", "embed"):
+            fail(f"<{tag}> in a self-contained report")
+        if tag == "img":
+            self.images.append(attrs.get("src", ""))
+        if tag == "table":
+            self.table = {"head": [], "rows": []}
+            self.tables[attrs.get("id", f"table{len(self.tables)}")] = self.table
+        elif tag == "tr":
+            self.row = []
+        elif tag in ("td", "th"):
+            self.cell = ""
+        if tag not in VOID:
+            self.stack.append(tag)
+
+    def handle_startendtag(self, tag, attrs):
+        if tag not in VOID:
+            fail(f"<{tag}/> is not a void element")
+        self.handle_starttag(tag, attrs)
+        self.stack.pop() if tag not in VOID else None
+
+    def handle_endtag(self, tag):
+        if tag in VOID:
+            fail(f"</{tag}> closes a void element")
+        if not self.stack or self.stack[-1] != tag:
+            fail(f"</{tag}> closes <{self.stack[-1] if self.stack else 'nothing'}> (line {self.getpos()[0]})")
+        self.stack.pop()
+        if tag in ("td", "th"):
+            self.row.append((tag, self.cell.strip()))
+            self.cell = None
+        elif tag == "tr":
+            kinds = {k for k, _ in self.row}
+            cells = [c for _, c in self.row]
+            if kinds == {"th"} and not self.table["head"]:
+                self.table["head"] = cells
+            else:
+                self.table["rows"].append(cells)
+
+    def handle_data(self, data):
+        if self.cell is not None:
+            self.cell += data
+        if "url(" in data:
+            fail("a url( in the page refers outside it")
+
+
+def check_png(src):
+    prefix = "data:image/png;base64,"
+    if not src.startswith(prefix):
+        fail(f"an image is not a PNG data: URI: {src[:40]}")
+    data = base64.b64decode(src[len(prefix):], validate=True)
+    if data[:8] != b"\x89PNG\r\n\x1a\n" or data[12:16] != b"IHDR" or data[-8:-4] != b"IEND":
+        fail("an image does not decode to a whole PNG")
+    width, height = struct.unpack(">II", data[16:24])
+    if width < 100 or height < 100:
+        fail(f"an image of {width} x {height} pixels")
+
+
+def shown(value, decimals):
+    return f"{value:.{decimals}f}" if np.isfinite(value) else "—"
+
+
+def same(cell, value, decimals, what):
+    if cell != shown(value, decimals):
+        fail(f"{what}: the page shows {cell}, the file holds {value}")
+
+
+def check_grids(table, h5, prefix="grids"):
+    for row in table["rows"]:
+        name = row[0]
+        g = h5[f"{prefix}/{name}"]
+        counted = np.asarray(g["counted"])
+        if row[1] != f"{int(counted.sum())} of {counted.size}":
+            fail(f"grid {name}: points counted {row[1]}")
+        check_stats(row[2:], g.attrs, f"grid {name}")
+
+
+def check_stats(cells, attrs, what):
+    """E_avg, Ēm target, E_min, E_max, U0, U0 target, meets targets."""
+    em = attrs.get("Em_target")
+    u0t = attrs.get("U0_target")
+    same(cells[0], attrs["E_avg"], 1, f"{what} E_avg")
+    same(cells[1], em if em is not None else np.nan, 0, f"{what} Ēm target")
+    same(cells[2], attrs["E_min"], 1, f"{what} E_min")
+    same(cells[3], attrs["E_max"], 1, f"{what} E_max")
+    same(cells[4], attrs["U0"], 2, f"{what} U0")
+    same(cells[5], u0t if u0t is not None else np.nan, 2, f"{what} U0 target")
+    checks = ([attrs["E_avg"] >= em] if em is not None else []) + ([attrs["U0"] >= u0t] if u0t is not None else [])
+    expected = "—" if not checks else ("yes" if all(checks) else "no")
+    if cells[6] != expected:
+        fail(f"{what}: meets targets shows {cells[6]}, expected {expected}")
+
+
+def check_luminaires(table, h5):
+    lum = h5["luminaires"]
+    kinds = [k.decode() if isinstance(k, bytes) else k for k in lum["kind"][()]]
+    electric = [i for i, k in enumerate(kinds) if k != "window"]
+    flux = np.asarray(lum["flux"])[electric]
+    count = sum(int(r[3]) for r in table["rows"])
+    if count != len(electric):
+        fail(f"the luminaire table counts {count} luminaires, the file has {len(electric)}")
+    total = sum(float(r[7]) for r in table["rows"])
+    if abs(total - flux.sum()) > 0.05 * len(table["rows"]) + 1e-9:
+        fail(f"the luminaires' maintained flux sums to {total} lm, the file's to {flux.sum()} lm")
+    mf = lum.attrs["maintenance_factor"]
+    for r in table["rows"]:
+        same(r[5], mf, 2, "maintenance factor")
+
+
+def check_surfaces(table, h5):
+    """Each surface's mean illuminance derived again: front patches (not a back twin), by side."""
+    e = np.asarray(h5["field/illuminance"])
+    area = np.asarray(h5["mesh/areas"])
+    surface = np.asarray(h5["mesh/surface_id"])
+    twin = np.asarray(h5["mesh/twin"]).astype(np.int64)
+    ny = np.asarray(h5["mesh/normals"])[:, 1]
+    names = [n.decode() if isinstance(n, bytes) else n for n in h5["mesh/surface_names"][()]]
+    front = (twin == 2**32 - 1) | (twin > np.arange(len(twin)))
+    side = np.where(ny > 0.7, 0, np.where(ny < -0.7, 1, np.where(np.abs(ny) < 0.3, 2, 3)))
+    sides = ["up (floor)", "down (ceiling)", "vertical (wall)", "sloped"]
+    expected = []
+    for s, name in enumerate(names):
+        for k, label in enumerate(sides):
+            m = front & (surface == s) & (side == k)
+            if m.any():
+                mean = (area[m] * e[m]).sum() / area[m].sum()
+                expected.append([name, label, shown(area[m].sum(), 2), shown(mean, 1), shown(e[m].min(), 1), shown(e[m].max(), 1)])
+    got = [[r[0], r[2], r[3], r[4], r[5], r[6]] for r in table["rows"]]
+    if got != expected:
+        fail(f"the surfaces' table differs from the field: {got[:3]} against {expected[:3]}")
+
+
+def check_daylight(table, h5):
+    for row in table["rows"]:
+        attrs = h5[f"daylight/grids/{row[0]}"].attrs
+        for cell, key in zip(row[1:], ["DF_avg", "DF_min", "DF_max", "uniformity"]):
+            same(cell, attrs[key], 2, f"daylight of grid {row[0]}: {key}")
+
+
+def check_observers(table, h5):
+    ugr = np.asarray(h5["observers/ugr"])
+    for row, value in zip(table["rows"], ugr):
+        if row[1] != (f"{value:.1f}" if np.isfinite(value) else "no source"):
+            fail(f"observer {row[0]}: UGR {row[1]}, the file holds {value}")
+    if len(table["rows"]) != len(ugr):
+        fail("the observers' table has not one row per observer")
+
+
+def check_light_scenes(table, h5):
+    grid = table["head"].index("grid")
+    for row in table["rows"]:
+        if row[grid] != "—":
+            check_stats(row[grid + 1:grid + 8], h5[f"light_scenes/{row[0]}/grids/{row[grid]}"].attrs, f"light scene {row[0]}")
+
+
+def main():
+    page_path, h5_path = sys.argv[1], sys.argv[2]
+    page = Page()
+    with open(page_path, encoding="utf-8") as f:
+        page.feed(f.read())
+    page.close()
+    if not page.doctype:
+        fail("no <!DOCTYPE html>")
+    if page.stack:
+        fail(f"unclosed tags at the end: {page.stack}")
+    for name, table in page.tables.items():
+        width = len(table["head"])
+        for row in table["rows"]:
+            if len(row) != width:
+                fail(f"table {name}: a row of {len(row)} cells under a header of {width}: {row}")
+    if not page.images:
+        fail("no plan in the page")
+    for src in page.images:
+        check_png(src)
+    with h5py.File(h5_path, "r") as h5:
+        checks = {
+            "grids": check_grids,
+            "luminaires": check_luminaires,
+            "surfaces": check_surfaces,
+            "daylight-grids": check_daylight,
+            "observers": check_observers,
+            "light-scenes": check_light_scenes,
+        }
+        for name, check in checks.items():
+            if name in page.tables:
+                check(page.tables[name], h5)
+        missing = [n for n in ("grids", "luminaires", "surfaces") if n not in page.tables]
+        if missing:
+            fail(f"no table {missing}")
+    print(f"report_check: ok ({len(page.tables)} tables, {len(page.images)} plans: {', '.join(page.tables)})")
+
+
+main()
