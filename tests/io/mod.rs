@@ -10,6 +10,7 @@
 mod export;
 mod faults;
 mod grid_map;
+mod hierarchy_file;
 mod isolines;
 mod kernel_file;
 mod plan_marks;
