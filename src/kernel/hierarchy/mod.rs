@@ -17,6 +17,7 @@ mod bundle;
 mod census;
 mod cluster;
 mod expand;
+mod factors;
 mod history;
 mod kernel;
 mod leaves;
@@ -37,6 +38,7 @@ mod transpose;
 mod tree;
 
 pub use census::Census;
+pub use factors::Factors;
 pub use history::{Pass, Work};
 pub use kernel::Hierarchy;
 pub use link::{ALL_CELLS, Link, Piece};
