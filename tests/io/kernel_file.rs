@@ -116,13 +116,20 @@ fn python_rebuilds_the_kernel_and_reproduces_the_solution_and_the_exports() {
     std::fs::create_dir_all(&exports).unwrap();
     run(&["export", s(&out), "--format", "mtx", "-o", s(&exports)]);
     run(&["export", s(&out), "--format", "petsc", "-o", s(&exports)]);
+    let said = kernel_check(&out, &exports);
+    assert!(said.contains("kernel_check: ok") && said.contains("K.petsc"), "{said}");
+}
+
+/// What `tests/io/kernel_check.py` says of the solution file `out` and its exports in
+/// `exports` (it must succeed).
+pub fn kernel_check(out: &Path, exports: &Path) -> String {
     let python = std::process::Command::new("/usr/bin/python3")
-        .args(["tests/io/kernel_check.py", s(&out), s(&exports)])
+        .args(["tests/io/kernel_check.py", s(out), s(exports)])
         .output()
         .expect("/usr/bin/python3 runs (make deps installs python3-h5py and python3-scipy)");
     let said = format!("{}{}", stdout(&python), String::from_utf8_lossy(&python.stderr));
     assert!(python.status.success(), "tests/io/kernel_check.py (make deps installs h5py and scipy): {said}");
-    assert!(said.contains("kernel_check: ok") && said.contains("K.petsc"), "{said}");
+    said
 }
 
 #[test]
