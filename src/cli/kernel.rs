@@ -8,8 +8,9 @@ use ugo::study;
 /// Saving and reusing the assembled kernel.
 #[derive(clap::Args, Clone, Debug)]
 pub struct KernelOptions {
-    /// Store the uniform kernel (G in CSR, the blocks B, the direct light D, L0 and the
-    /// case's fingerprint) in the output's /kernel group.
+    /// Store the kernel (the uniform G in CSR, or the hierarchy's tree, links and operator;
+    /// the blocks B, the direct light D, L0 and the case's fingerprint) in the output's
+    /// /kernel group.
     #[arg(long)]
     pub save_kernel: bool,
     /// Reuse the kernel saved in this file instead of assembling it, when it was assembled
@@ -41,6 +42,11 @@ pub fn print_record(record: &KernelRecord) {
         for change in &loaded.rebuilt {
             let rebuilt = change.part.rebuilt().unwrap_or_default();
             println!("    {change} changed: G reused, {rebuilt}");
+        }
+        if loaded.hierarchical && !loaded.rebuilt.is_empty() {
+            println!(
+                "    note: the hierarchy's leaves and links were refined under the file's reflectances and luminaires, not the case's: they are reused as they are (a fresh solve would refine them for the case)"
+            );
         }
     }
     if record.save.is_some() {

@@ -15,13 +15,14 @@
 
 use super::IoError;
 use super::dataset::{dataset, text_attr};
+use super::hierarchy_kernel::{read_hierarchy, read_operator, write_hierarchy_kernel};
 use super::read::{File, Why, open, text};
 use crate::directions::Scheme;
 use crate::geometry::NO_TWIN;
 use crate::kernel::{Kernel, Transport, TransportMatrix};
 use crate::luminaire::DirectLight;
 use crate::material::Block;
-use crate::model::{Fingerprint, KERNEL_FORMAT, Model, Part, Stamp};
+use crate::model::{Fingerprint, HierarchyRecord, KERNEL_FORMAT, Model, Part, Stamp, StoredHierarchy};
 use ndarray::{Array1, Array3, ArrayView1};
 use sprs::{CsMatI, SpIndex};
 use std::path::Path;
@@ -36,18 +37,34 @@ pub struct StoredKernel {
     pub direct: DirectLight,
     /// `L0 = L_e + B·D` as the saving solve had it.
     pub l0: Vec<f64>,
+    /// What a hierarchical kernel holds besides its operator (`hierarchy_kernel.rs`);
+    /// `None` for the uniform kernel.
+    pub hierarchy: Option<StoredHierarchy>,
 }
 
-/// Writes the uniform kernel of `model` and its `fingerprint` into the group `g`.
+/// The value of the attribute `kernel` of a hierarchical kernel's `/kernel` (a uniform
+/// kernel's has `uniform`, or none in files before issue 36).
+const HIERARCHICAL: &str = "hierarchical";
+
+/// Writes the kernel of `model` (the uniform `G`, or the hierarchy with the structure its
+/// record kept) and its `fingerprint` into the group `g`.
 pub(super) fn write_kernel(g: &hdf5::Group, model: &Model, fingerprint: &Fingerprint) -> hdf5::Result<()> {
     let kernel = &model.kernel;
-    let Some(matrix) = kernel.g.matrix() else {
-        return Err("the hierarchical kernel is not saved (docs/kernel-file.md)".into());
-    };
-    let csr = g.create_group("G")?;
-    match matrix {
-        TransportMatrix::Double(m) => write_csr(&csr, m)?,
-        TransportMatrix::Single(m) => write_csr(&csr, m)?,
+    match (&kernel.g, &model.hierarchy) {
+        (Transport::Uniform(matrix), _) => {
+            let csr = g.create_group("G")?;
+            match matrix {
+                TransportMatrix::Double(m) => write_csr(&csr, m)?,
+                TransportMatrix::Single(m) => write_csr(&csr, m)?,
+            }
+            text_attr(g, "kernel", "uniform")?;
+        }
+        (Transport::Hierarchical(operator), Some(HierarchyRecord { structure: Some(structure), roots, .. })) => {
+            let h = g.create_group("hierarchy")?;
+            write_hierarchy_kernel(&h, operator, structure, &model.mesh, *roots)?;
+            text_attr(g, "kernel", HIERARCHICAL)?;
+        }
+        (Transport::Hierarchical(_), _) => return Err("the hierarchy was built without its links kept".into()),
     }
     let blocks = &kernel.blocks;
     let k = kernel.cells();
@@ -61,6 +78,7 @@ pub(super) fn write_kernel(g: &hdf5::Group, model: &Model, fingerprint: &Fingerp
     let direct = g.create_group("direct")?;
     dataset(&direct, "arriving", &Array1::from(model.direct.arriving.clone()))?;
     dataset(&direct, "intercepted", &Array1::from(model.direct.intercepted.clone()))?;
+    dataset(&direct, "least", &Array1::from(model.direct.least.clone()))?;
     direct.new_attr::<u64>().create("rays")?.write_scalar(&(model.direct.rays as u64))?;
     dataset(g, "emission", &Array1::from(model.mesh.emission.clone()))?;
     dataset(g, "L0", &Array1::from(model.l0.clone()))?;
@@ -71,7 +89,7 @@ pub(super) fn write_kernel(g: &hdf5::Group, model: &Model, fingerprint: &Fingerp
     }
     g.new_attr::<u32>().create("format")?.write_scalar(&KERNEL_FORMAT)?;
     text_attr(g, "directions", kernel.directions.name())?;
-    text_attr(g, "precision", matrix.precision().name())
+    text_attr(g, "precision", kernel.g.precision().name())
 }
 
 /// `data`, `indices` and `indptr` of `m` (indices as int32 when they fit) and its `shape`.
@@ -121,7 +139,11 @@ fn read_from(file: &File) -> Result<StoredKernel, Why> {
     if let Some(i) = patch_material.iter().position(|&m| m as usize >= blocks.len()) {
         return Err(Why(format!("/kernel/patch_material[{i}] names no block of /kernel/B")));
     }
-    let g_matrix = csr(file, n * k)?;
+    let hierarchical = text(&g, "kernel").is_ok_and(|kind| kind == HIERARCHICAL);
+    let transport = match hierarchical {
+        true => Transport::Hierarchical(Box::new(read_operator(file, &directions)?)),
+        false => Transport::Uniform(csr(file, n * k)?),
+    };
     let vector = |name: &str, len: usize| -> Result<Vec<f64>, Why> {
         let v = file.raw::<f64>(&format!("kernel/{name}"))?;
         if v.len() != len || v.iter().any(|x| !x.is_finite()) {
@@ -135,8 +157,18 @@ fn read_from(file: &File) -> Result<StoredKernel, Why> {
     let l0 = vector("L0", n * k)?;
     let fingerprint = fingerprint(&g.group("fingerprint")?)?;
     let direct = DirectLight { arriving, intercepted, rays: rays as usize, least: Vec::new() };
-    let kernel = Kernel::new(Transport::Uniform(g_matrix), directions, blocks, patch_material, twin);
-    Ok(StoredKernel { fingerprint, kernel, direct, l0 })
+    let hierarchy = match hierarchical {
+        true => Some(read_hierarchy(file, n, vector("direct/least", n)?)?),
+        false => None,
+    };
+    if transport.rows() != n * k {
+        return Err(Why(format!(
+            "/kernel holds an operator of {} unknowns for {n} patches × {k} cells",
+            transport.rows()
+        )));
+    }
+    let kernel = Kernel::new(transport, directions, blocks, patch_material, twin);
+    Ok(StoredKernel { fingerprint, kernel, direct, l0, hierarchy })
 }
 
 /// `/kernel/B` as blocks of `k` cells.

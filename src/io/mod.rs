@@ -16,6 +16,7 @@ mod false_colour;
 mod grid_map;
 mod hdf5_file;
 mod hierarchy_group;
+mod hierarchy_kernel;
 mod isolines;
 mod kernel_file;
 mod light_scene_group;

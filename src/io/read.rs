@@ -202,7 +202,7 @@ fn orders(file: &File, size: usize) -> Result<Vec<(usize, Vec<f64>)>> {
 
 /// The patches from `/mesh/{vertices,vertex_count,surface_id,material_id}` and, when
 /// stored, `/mesh/{face,twin}`; older files get faces by pairing back-to-back twins.
-fn patches(file: &File) -> Result<Vec<Patch>> {
+pub(super) fn patches(file: &File) -> Result<Vec<Patch>> {
     let vertices = file.f64s("mesh/vertices")?;
     let count = file.raw::<u8>("mesh/vertex_count")?;
     let surface = file.raw::<u32>("mesh/surface_id")?;

@@ -110,4 +110,7 @@ pub struct Loaded {
     pub rebuilt: Vec<Change>,
     /// Seconds spent reading the file.
     pub seconds: f64,
+    /// True for a hierarchy: its tree and links were refined under the file's
+    /// reflectances and luminaires, and are reused as they are.
+    pub hierarchical: bool,
 }

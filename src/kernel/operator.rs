@@ -136,6 +136,29 @@ impl Kernel {
     }
 }
 
+impl Kernel {
+    /// The material blocks as one sparse matrix: `B[(i,k),(i,d)] = ρ̄_{m(i)}(k,d)` and
+    /// `B[(i,k),(twin(i),d)] = τ̄_{m(i)}(k,d)`, so that `K = B·G`.
+    pub fn materials_matrix(&self) -> CsMat<f64> {
+        let (k, n) = (self.cells(), self.patches());
+        let mut tri = TriMat::new((n * k, n * k));
+        for i in 0..n {
+            let block = &self.blocks[self.patch_material[i] as usize];
+            for (out, d) in (0..k).flat_map(|out| (0..k).map(move |d| (out, d))) {
+                let reflected = block.at(out, d);
+                if reflected != 0.0 {
+                    tri.add_triplet(i * k + out, i * k + d, reflected);
+                }
+                match (self.twin[i], block.transmit_at(out, d)) {
+                    (NO_TWIN, _) | (_, None) | (_, Some(0.0)) => {}
+                    (twin, Some(t)) => tri.add_triplet(i * k + out, twin as usize * k + d, t),
+                }
+            }
+        }
+        tri.to_csr()
+    }
+}
+
 /// The factored operator: `K x = B (G x)`, never forming the product.
 pub struct Factored<'a> {
     kernel: &'a Kernel,

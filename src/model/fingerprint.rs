@@ -13,6 +13,7 @@
 //! from the case every time) are not part of the kernel.
 
 use crate::geometry::{Shape, Surface};
+use crate::kernel::hierarchy::Options;
 use crate::luminaire::{Light, Source};
 use crate::material::MaterialModel;
 use crate::scene::{Discretization, KernelKind, Scene};
@@ -147,11 +148,10 @@ impl Fingerprint {
                 let summary = match part {
                     Part::Geometry => geometry(&scene.surfaces, &mut h),
                     Part::Materials if hierarchical => {
-                        // The hierarchy's oracle weighs links by albedo and splits leaves
-                        // along the direct light (the luminaires', the sun's and the openings').
-                        let _ = write!(h, "{:?}", scene.materials);
-                        let _ = write!(h, "{:?}", sources.iter().map(|s| &s.light).collect::<Vec<_>>());
-                        format!("{} materials and {} luminaires (hierarchical)", scene.materials.len(), sources.len())
+                        // The hierarchy's mirrors reflect cell to cell: its stored operator
+                        // depends on no material (its refinement did, see `rebuilt`).
+                        let _ = write!(h, "none");
+                        "none (the hierarchical G is stored as refined)".to_string()
                     }
                     Part::Materials => mirrors(scene, &sources, &mut h),
                     Part::Discretization => discretization(&scene.discretization, &mut h),
@@ -220,12 +220,18 @@ fn geometry(surfaces: &[Surface], h: &mut Fnv) -> String {
 }
 
 fn discretization(d: &Discretization, h: &mut Fnv) -> String {
-    let kernel = match d.kernel {
+    let (kernel, quadrature) = match d.kernel {
         // the name that kernel files have stored for the uniform kernel from the start
-        KernelKind::Uniform => "Explicit".to_string(),
-        KernelKind::Hierarchical(hierarchical) => format!("{hierarchical:?}"),
+        KernelKind::Uniform => ("Explicit".to_string(), Quadrature::default()),
+        KernelKind::Hierarchical(h) => {
+            let o = Options::default();
+            let text = format!(
+                "hierarchical, root_size {:?} m, link_tolerance {:?}, passes {}, balanced {}",
+                h.root_size, h.link_tolerance, o.passes, o.balance
+            );
+            (text, o.quadrature)
+        }
     };
-    let quadrature = Quadrature::default();
     let text = format!(
         "patch_size {:?} m, directions {}, method {kernel}, G in {}, quadrature eta {:?} depth {}",
         d.patch_size,

@@ -68,8 +68,14 @@ fn worth_cutting(h: &Hierarchy, id: u32) -> f64 {
     }
 }
 
-/// Links the roots, refines with the solve, and returns the model on the final leaves.
-pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -> Result<Model, ModelError> {
+/// Links the roots, refines with the solve, and returns the model on the final leaves,
+/// with the tree's skeleton and links when `keep` (for a kernel file).
+pub fn build(
+    scene: &Scene,
+    parameters: Hierarchical,
+    progress: &dyn Progress,
+    keep: bool,
+) -> Result<Model, ModelError> {
     let t = Instant::now();
     let d = &scene.discretization;
     let mut roots = Mesh::build(&scene.surfaces, parameters.root_size);
@@ -141,8 +147,10 @@ pub fn build(scene: &Scene, parameters: Hierarchical, progress: &dyn Progress) -
         rays: history.iter().map(|p| p.rays).sum::<usize>() + root_light.rays + direct.rays,
         balance: None,
     };
+    let census = h.census();
+    let structure = keep.then(|| h.into_structure());
     let record =
-        HierarchyRecord { parameters, patch_size: d.patch_size, roots: roots.len(), history, census: h.census() };
+        HierarchyRecord { parameters, patch_size: d.patch_size, roots: roots.len(), history, census, structure };
     check_transport(scene, &mesh, &kernel.g, k)?;
     let faces = Faces::of(&mesh);
     let materials = scene.materials.iter().map(|m| m.model.clone()).collect();

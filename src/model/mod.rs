@@ -21,7 +21,7 @@ mod uniform;
 
 pub use fingerprint::{Change, Fingerprint, KERNEL_FORMAT, Part, Stamp};
 pub use range::{OutOfRange, check_transport, locate, place};
-pub use reuse::{NotThisMesh, StoredParts};
+pub use reuse::{NotThisMesh, StoredHierarchy, StoredParts};
 pub use source::SourceTerm;
 pub use system::{AssemblyStats, HierarchyRecord, Model, ModelError};
 
@@ -58,10 +58,20 @@ impl Model {
     /// its forecast is checked against the memory limit; `progress` hears of the pair
     /// evaluations, or of the hierarchy's refinement passes.
     pub fn build(scene: &Scene, progress: &dyn Progress) -> Result<Model, ModelError> {
+        Model::build_keeping(scene, progress, false)
+    }
+
+    /// [`Model::build`], keeping what a kernel file stores of a hierarchy besides its
+    /// operator: the tree's skeleton and the links (`HierarchyRecord::structure`).
+    pub fn build_to_save(scene: &Scene, progress: &dyn Progress) -> Result<Model, ModelError> {
+        Model::build_keeping(scene, progress, true)
+    }
+
+    fn build_keeping(scene: &Scene, progress: &dyn Progress, keep: bool) -> Result<Model, ModelError> {
         Model::forecast(scene).check(scene.discretization.memory_limit)?;
         match scene.discretization.kernel {
             KernelKind::Uniform => uniform::build(scene, progress),
-            KernelKind::Hierarchical(h) => hierarchical::build(scene, h, progress),
+            KernelKind::Hierarchical(h) => hierarchical::build(scene, h, progress, keep),
         }
     }
 

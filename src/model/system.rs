@@ -5,7 +5,7 @@
 use super::range::OutOfRange;
 use crate::geometry::Mesh;
 use crate::interrupt::Interrupted;
-use crate::kernel::hierarchy::{Census, Pass, Stopped};
+use crate::kernel::hierarchy::{Census, Pass, Stopped, Structure};
 use crate::kernel::{BalanceReport, Kernel, TooLarge};
 use crate::luminaire::{DirectLight, Source};
 use crate::material::MaterialModel;
@@ -102,4 +102,7 @@ pub struct HierarchyRecord {
     pub history: Vec<Pass>,
     /// What the final hierarchy is made of.
     pub census: Census,
+    /// The tree's skeleton and links, kept for a kernel file (`Model::build_to_save`, or
+    /// read from one); `None` otherwise.
+    pub structure: Option<Structure>,
 }

@@ -1,17 +1,16 @@
-//! The kernel of a solve, assembled or reused (issue 15, `docs/kernel-file.md`): with
-//! `--kernel-file FILE.h5` the uniform `G` of an earlier `--save-kernel` is read instead of
-//! assembled when the case's fingerprint matches the stored one; a change of a part that
-//! `G` depends on (geometry, discretization, visibility, version, the materials of a
-//! hierarchical kernel) is refused naming it; a change of the reflectances or the
-//! luminaires only rebuilds `B`, `D` and `L0` around the stored `G` (`docs/design.md` §3).
-//! The hierarchical kernel is neither saved nor reused (its links live on a tree of
-//! elements refined along the solved field; the reason is in the docs).
+//! The kernel of a solve, assembled or reused (issues 15 and 36, `docs/kernel-file.md`): with
+//! `--kernel-file FILE.h5` the `G` of an earlier `--save-kernel` (the uniform matrix, or the
+//! hierarchy's tree, links and operator) is read instead of assembled or refined when the
+//! case's fingerprint matches the stored one; a change of a part that `G` depends on
+//! (geometry, discretization, visibility, version, the mirrors of a uniform kernel) is
+//! refused naming it; a change of the reflectances or the luminaires only rebuilds `B`, `D`
+//! and `L0` around the stored `G` (`docs/design.md` §3), and for a hierarchy the summary says
+//! that its tree was refined under the file's light, not the case's.
 
 use crate::io::{IoError, KernelRecord, Loaded, StoredKernel, read_kernel};
-use crate::kernel::Transport;
 use crate::model::{Change, Fingerprint, Model, ModelError, NotThisMesh, Part, StoredParts};
 use crate::progress::Progress;
-use crate::scene::{KernelKind, Scene};
+use crate::scene::Scene;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use thiserror::Error;
@@ -35,13 +34,6 @@ pub enum KernelError {
         /// The parts that changed.
         changes: Vec<Change>,
     },
-    /// The hierarchical kernel is neither saved nor reused.
-    #[error(
-        "the hierarchical kernel (the case's kernel, chosen by size, or --kernel) is neither saved nor \
-         reused: its links join elements of a tree refined along the solved field and the luminaires' light, \
-         which a kernel file does not hold; use the uniform kernel (--kernel uniform) to save or reuse G"
-    )]
-    Hierarchical,
     /// The stored `G` does not fit the case's mesh.
     #[error(transparent)]
     Mesh(#[from] NotThisMesh),
@@ -51,19 +43,16 @@ pub enum KernelError {
 }
 
 /// The model of `scene`: assembled, or around the `G` of `kernel` when given; with the
-/// fingerprint to store when `save`. Refuses the hierarchical kernel in either case.
+/// fingerprint to store when `save` (and the hierarchy's links kept for it).
 pub fn model_with_kernel(
     scene: &Scene,
     kernel: Option<&Path>,
     save: bool,
     progress: &dyn Progress,
 ) -> Result<(Model, KernelRecord), KernelError> {
-    if (save || kernel.is_some()) && matches!(scene.discretization.kernel, KernelKind::Hierarchical(_)) {
-        return Err(KernelError::Hierarchical);
-    }
     let fingerprint = (save || kernel.is_some()).then(|| Fingerprint::of(scene));
     let Some(path) = kernel else {
-        let model = Model::build(scene, progress)?;
+        let model = if save { Model::build_to_save(scene, progress)? } else { Model::build(scene, progress)? };
         return Ok((model, KernelRecord { save: fingerprint, loaded: None }));
     };
     let ours = fingerprint.clone().unwrap_or_else(|| Fingerprint::of(scene));
@@ -76,15 +65,16 @@ pub fn model_with_kernel(
         return Err(KernelError::Mismatch { path: path.to_path_buf(), changes: refused });
     }
     let changed = |part: Part| rebuilt.iter().any(|c| c.part == part);
-    let StoredKernel { kernel, direct, .. } = stored;
-    let Transport::Uniform(g) = kernel.g else { return Err(KernelError::Hierarchical) };
+    let StoredKernel { kernel, direct, hierarchy, .. } = stored;
+    let hierarchical = hierarchy.is_some();
     let parts = StoredParts {
-        g,
+        g: kernel.g,
         blocks: (!changed(Part::Reflectances)).then_some(kernel.blocks),
         direct: (!changed(Part::Luminaires)).then_some(direct),
+        hierarchy,
         read_seconds: seconds,
     };
     let model = Model::with_kernel(scene, parts)?;
-    let loaded = Loaded { path: path.to_path_buf(), rebuilt, seconds };
+    let loaded = Loaded { path: path.to_path_buf(), rebuilt, seconds, hierarchical };
     Ok((model, KernelRecord { save: save.then_some(ours), loaded: Some(loaded) }))
 }

@@ -7,6 +7,11 @@ alone, and checks it against ugo (docs/kernel-file.md):
   and L0 read with scipy.io.mmread and from the PETSc binary files equal the rebuilt ones,
   and ugo's K y equals the rebuilt K y for a random y.
 
+For a hierarchical kernel (`/kernel` attribute `kernel = "hierarchical"`) K is rebuilt as
+B · diag(receive) · P · Λ · R · diag(send) from /kernel/hierarchy/operator alone, so every
+check above compares those factors with ugo's solution and with ugo's K written out on the
+leaves (K.mtx); the exported P, Λ, R, B and diagonals must equal the rebuilt ones.
+
 Every comparison is relative to the largest entry, to 1e-12. Run by tests/io/kernel_file.rs
 with Debian's /usr/bin/python3 (python3-h5py, python3-scipy: `make deps`).
 
@@ -27,9 +32,72 @@ NO_TWIN = 0xFFFFFFFF
 
 
 def kernel_of(f):
-    """K = B·G, L0 and the rebuilt L0 from /kernel."""
+    """K = B·G, L0, the rebuilt L0 and, for a hierarchy, its factors from /kernel."""
     k = f["kernel"]
-    g = sp.csr_matrix((k["G/data"][:], k["G/indices"][:], k["G/indptr"][:]), shape=tuple(k["G"].attrs["shape"]))
+    b = blocks_of(k)
+    factors = None
+    if k.attrs.get("kernel") == "hierarchical":
+        factors = hierarchy_factors(k, f["directions/projected"][:] / np.pi)
+        g = factors["G"]
+    else:
+        g = sp.csr_matrix((k["G/data"][:], k["G/indices"][:], k["G/indptr"][:]), shape=tuple(k["G"].attrs["shape"]))
+    l0 = np.repeat(k["emission"][:], b.shape[0] // len(k["emission"])) + b @ k["direct/arriving"][:]
+    if factors is not None:
+        factors["B"] = b
+    return (b @ g).tocsr(), k["L0"][:], l0, factors
+
+
+def hierarchy_factors(k, share):
+    """G = diag(receive) P Λ R diag(send) from /kernel/hierarchy/operator (docs/kernel-file.md)."""
+    h = k["hierarchy/operator"]
+    cells = len(share)
+    parent, weight, cluster = h["parent"][:], h["weight"][:], h["cluster"][:]
+    leaf_position = h["leaf_position"][:]
+    nodes, leaves = len(parent), len(leaf_position)
+    # push: leaf ← the bundles its ancestors gather, by its share, cell by cell
+    indptr, bundle, w = h["push/indptr"][:].astype(np.int64), h["push/bundle"][:], h["push/share"][:]
+    gather = h["gather/indptr"][:].astype(np.int64)
+    bundles = len(gather) - 1
+    leaf_of = np.repeat(np.arange(leaves), np.diff(indptr))
+    rows = (leaf_of[:, None] * cells + np.arange(cells)).ravel()
+    cols = (bundle.astype(np.int64)[:, None] * cells + np.arange(cells)).ravel()
+    P = sp.csr_matrix((np.repeat(w, cells), (rows, cols)), shape=(leaves * cells, bundles * cells))
+    # links: bundle ← node, by cells; d = 65535 arrives from all cells alike (μ_d/π each)
+    source, d, m, f = h["gather/source"][:].astype(np.int64), h["gather/d"][:].astype(np.int64), h["gather/m"][:], h["gather/f"][:]
+    row_of = np.repeat(np.arange(bundles), np.diff(gather))
+    spread = d == 65535
+    rows = [(row_of[~spread] * cells + d[~spread])]
+    cols = [source[~spread] * cells + m[~spread]]
+    vals = [f[~spread]]
+    for dd in range(cells):
+        rows.append(row_of[spread] * cells + dd)
+        cols.append(source[spread] * cells + m[spread])
+        vals.append(f[spread] * share[dd])
+    Lam = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(bundles * cells, nodes * cells))
+    # pull: node ← area-weighted mean of its leaves; a cluster's value (cell 0) the cell-weighted mean
+    rows, cols, vals = [], [], []
+    for leaf, pos in enumerate(leaf_position):
+        at, omega = int(pos), 1.0
+        while True:
+            if cluster[at]:
+                rows += [at * cells] * cells
+                vals += list(omega * share)
+            else:
+                rows += [at * cells + c for c in range(cells)]
+                vals += [omega] * cells
+            cols += [leaf * cells + c for c in range(cells)]
+            if parent[at] == NO_TWIN:
+                break
+            omega *= weight[at]
+            at = int(parent[at])
+    R = sp.csr_matrix((vals, (rows, cols)), shape=(nodes * cells, leaves * cells))
+    receive, send = np.repeat(h["receive"][:], cells), np.repeat(h["send"][:], cells)
+    G = (sp.diags(receive) @ P @ Lam @ R @ sp.diags(send)).tocsr()
+    return {"P": P, "Lambda": Lam, "R": R, "receive": receive, "send": send, "G": G}
+
+
+def blocks_of(k):
+    """B over the unknowns from /kernel/B, patch_material and twin."""
     reflect, transmit = k["B/reflection"][:], k["B/transmission"][:]
     material, twin = k["patch_material"][:], k["twin"][:]
     n, cells = len(material), reflect.shape[1]
@@ -43,9 +111,7 @@ def kernel_of(f):
             rows.append((i * cells + out).ravel())
             cols.append((int(source) * cells + inc).ravel())
             vals.append(block.ravel())
-    b = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=g.shape)
-    l0 = np.repeat(k["emission"][:], cells) + b @ k["direct/arriving"][:]
-    return (b @ g).tocsr(), k["L0"][:], l0
+    return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(n * cells, n * cells))
 
 
 def petsc_mat(path):
@@ -80,7 +146,7 @@ def main():
     path = sys.argv[1]
     checks = []
     with h5py.File(path, "r") as f:
-        K, L0, rebuilt_l0 = kernel_of(f)
+        K, L0, rebuilt_l0, factors = kernel_of(f)
         x = f["field/luminance"][:].ravel()
     n = K.shape[0]
     A = (sp.identity(n, format="csr") - K).tocsc()
@@ -90,6 +156,13 @@ def main():
     if len(sys.argv) > 2:
         folder = sys.argv[2]
         y = np.random.default_rng(1).random(n)
+        if factors is not None:
+            for name in ("P", "Lambda", "R", "B"):
+                exported = sp.csr_matrix(scipy.io.mmread(os.path.join(folder, f"{name}.mtx")))
+                checks.append((f"{name}.mtx against /kernel/hierarchy", relative(exported, factors[name])))
+            for name in ("receive", "send"):
+                exported = scipy.io.mmread(os.path.join(folder, f"{name}.mtx")).ravel()
+                checks.append((f"{name}.mtx against /kernel/hierarchy", relative(exported, factors[name])))
         K_mtx = sp.csr_matrix(scipy.io.mmread(os.path.join(folder, "K.mtx")))
         checks.append(("K.mtx against B·G", relative(K_mtx, K)))
         checks.append(("ugo's K y (K.mtx) against B·G y", relative(K_mtx @ y, K @ y)))

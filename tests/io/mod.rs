@@ -11,6 +11,7 @@
 mod export;
 mod faults;
 mod grid_map;
+mod hierarchy_file;
 mod isolines;
 mod kernel_file;
 mod plan_marks;

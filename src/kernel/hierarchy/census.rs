@@ -2,8 +2,10 @@
 //! level and root, and the links counted by the level they sit at and by their visibility.
 
 use super::kernel::Hierarchy;
-use super::node::{Kind, NONE};
+use super::link::Link;
+use super::node::NONE;
 use super::sight::Sight;
+use super::structure::Skeleton;
 
 /// Counts of the final hierarchy.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -25,24 +27,28 @@ pub struct Census {
 impl Hierarchy {
     /// The census of the current leaves and links.
     pub fn census(&self) -> Census {
-        let tree = self.tree();
-        let level = |id: u32| match tree.node(id).kind {
-            Kind::Element { level, .. } => Some(level),
-            Kind::Cluster => None,
-        };
+        Census::of(&self.tree().skeleton(), self.links(), &self.tree().leaves())
+    }
+}
+
+impl Census {
+    /// The census of the tree `skeleton` with its `links` and leaves `leaves` (node ids, in
+    /// unknown order); a node id beyond the skeleton counts as a cluster.
+    pub fn of(skeleton: &Skeleton, links: &[Link], leaves: &[u32]) -> Census {
+        let Skeleton { parent, level } = skeleton;
+        let level = |id: u32| level.get(id as usize).copied().flatten();
         let root = |mut id: u32| {
-            while level(id).is_some_and(|l| l > 0) && tree.node(id).parent != NONE {
-                id = tree.node(id).parent;
+            while level(id).is_some_and(|l| l > 0) && parent.get(id as usize).is_some_and(|&p| p != NONE) {
+                id = parent[id as usize];
             }
             id
         };
-        let leaves = tree.leaves();
         let mut census = Census {
             leaf_level: leaves.iter().map(|&id| level(id).unwrap_or(0)).collect(),
             leaf_root: leaves.iter().map(|&id| root(id)).collect(),
             ..Census::default()
         };
-        for link in self.links() {
+        for link in links {
             match (level(link.receiver), level(link.source)) {
                 (Some(a), Some(b)) => {
                     let deeper = a.max(b) as usize;

@@ -23,7 +23,7 @@ pub const ALL_CELLS: u16 = u16::MAX;
 pub type Piece = (u16, u16, f64);
 
 /// A link from source `source` to receiver `receiver` (node ids).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Link {
     /// The node that gathers, `p`.
     pub receiver: u32,

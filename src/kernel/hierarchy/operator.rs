@@ -9,7 +9,8 @@
 
 use super::bundle::Bundles;
 use super::link::{ALL_CELLS, Link};
-use super::node::{Kind, NONE};
+use super::node::NONE;
+use super::parts::{Entry, Parts};
 use super::push::{SeenCache, push_rows};
 use super::tree::Tree;
 use crate::directions::DirectionSet;
@@ -18,15 +19,6 @@ use crate::visibility::Visibility;
 use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::sync::Mutex;
-
-/// One gathered piece: `z[receiver, d] += f · x̄[source, m]` (`d` = [`ALL_CELLS`]: `μ_d/π` each).
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Entry {
-    pub(super) source: u32,
-    pub(super) d: u16,
-    pub(super) m: u16,
-    pub(super) f: f64,
-}
 
 /// Work arrays: `nodes × K` (means), `bundles × K` (gathered light) and `leaves × K` (sent light), shared
 /// by `G x` and `Gᵀ y` (`transpose.rs`).
@@ -80,21 +72,45 @@ impl Operator {
         directions: &DirectionSet,
         seen: &mut SeenCache,
     ) -> Operator {
-        let k = directions.len();
         let order = tree.preorder();
         let mut position = vec![NONE; tree.len()];
         for (pos, &id) in order.iter().enumerate() {
             position[id as usize] = pos as u32;
         }
-        let (parent, weight, into_cluster) = parents(tree, &order, &position);
+        let (parent, weight) = parents(tree, &order, &position);
         let cluster = order.iter().map(|&id| tree.node(id).patch().is_none()).collect();
-        let subtree_end = subtree_ends(&parent);
         let leaves: Vec<u32> = order.iter().copied().filter(|&id| tree.node(id).is_leaf()).collect();
         let leaf_position = leaves.iter().map(|&id| position[id as usize]).collect();
         let bundles = Bundles::new(tree, links, &position);
         let (push_row, push) = push_rows(tree, visibility, links, &bundles, &leaves, seen);
         let (row, entries) = gather_rows(links, &bundles, &position);
-        let (nodes, dim) = (order.len(), leaves.len() * k);
+        let n = leaves.len();
+        let parts = Parts {
+            leaves,
+            leaf_position,
+            parent,
+            weight,
+            cluster,
+            push_row,
+            push,
+            row,
+            entries,
+            links: links.len(),
+            receive: vec![1.0; n],
+            send: vec![1.0; n],
+            balanced: None,
+        };
+        Operator::of(parts, directions)
+    }
+
+    /// The operator of `parts` with the cells of `directions` (checked by the caller,
+    /// `Parts::check`).
+    pub(super) fn of(parts: Parts, directions: &DirectionSet) -> Operator {
+        let k = directions.len();
+        let Parts { leaves, leaf_position, parent, weight, cluster, push_row, push, row, entries, links, .. } = parts;
+        let into_cluster = parent.iter().map(|&p| p != NONE && cluster[p as usize]).collect();
+        let subtree_end = subtree_ends(&parent);
+        let (nodes, dim, bundles) = (parent.len(), leaves.len() * k, row.len() - 1);
         Operator {
             k,
             leaves,
@@ -108,15 +124,15 @@ impl Operator {
             cluster,
             row,
             entries,
-            links: links.len(),
+            links,
             share: directions.cells().iter().map(|c| c.projected / PI).collect(),
-            receive: vec![1.0; dim / k],
-            send: vec![1.0; dim / k],
-            balanced: None,
+            receive: parts.receive,
+            send: parts.send,
+            balanced: parts.balanced,
             scratch: Mutex::new(Scratch {
                 sent: vec![0.0; dim],
                 mean: vec![0.0; nodes * k],
-                gathered: vec![0.0; bundles.len() * k],
+                gathered: vec![0.0; bundles * k],
             }),
         }
     }
@@ -233,11 +249,37 @@ impl Operator {
     }
 }
 
-/// Parent position, area share and "parent is a cluster" of every depth-first position.
-fn parents(tree: &Tree, order: &[u32], position: &[u32]) -> (Vec<u32>, Vec<f64>, Vec<bool>) {
+impl Operator {
+    /// A copy of the operator's arrays.
+    pub fn parts(&self) -> Parts {
+        Parts {
+            leaves: self.leaves().to_vec(),
+            leaf_position: self.leaf_position.clone(),
+            parent: self.parent.clone(),
+            weight: self.weight.clone(),
+            cluster: self.cluster.clone(),
+            push_row: self.push_row.clone(),
+            push: self.push.clone(),
+            row: self.row.clone(),
+            entries: self.entries.clone(),
+            links: self.links(),
+            receive: self.receive.clone(),
+            send: self.send.clone(),
+            balanced: self.balanced,
+        }
+    }
+
+    /// The operator of `parts` over the cells of `directions`, or what is wrong with them.
+    pub fn from_parts(parts: Parts, directions: &DirectionSet) -> Result<Operator, String> {
+        parts.check(directions.len())?;
+        Ok(Operator::of(parts, directions))
+    }
+}
+
+/// Parent position and area share in the parent of every depth-first position.
+fn parents(tree: &Tree, order: &[u32], position: &[u32]) -> (Vec<u32>, Vec<f64>) {
     let mut parent = vec![NONE; order.len()];
     let mut weight = vec![0.0; order.len()];
-    let mut into_cluster = vec![false; order.len()];
     for (pos, &id) in order.iter().enumerate() {
         let children = tree.children(id);
         let total: f64 = children.iter().map(|&c| tree.node(c).exposed).sum();
@@ -245,10 +287,9 @@ fn parents(tree: &Tree, order: &[u32], position: &[u32]) -> (Vec<u32>, Vec<f64>,
             let cp = position[c as usize] as usize;
             parent[cp] = pos as u32;
             weight[cp] = if total > 0.0 { tree.node(c).exposed / total } else { 0.0 };
-            into_cluster[cp] = matches!(tree.node(id).kind, Kind::Cluster);
         }
     }
-    (parent, weight, into_cluster)
+    (parent, weight)
 }
 
 /// One past the last depth-first position of every position's subtree.
