@@ -35,8 +35,12 @@ pub struct Scene {
     pub old_spelling: Vec<OldSpelling>,
     /// `[solver]`: method and stopping rule.
     pub solver: SolverSettings,
-    /// The `[[material]]` tables, in file order.
+    /// The `[[material]]` tables, in file order, then those made from the base colours of
+    /// glTF meshes (`FILE:name`).
     pub materials: Vec<Material>,
+    /// What the mesh files hold that ugo does not read (a texture, an emissive factor,
+    /// lines or points), told among [`Scene::warnings`](crate::scene::Scene::warnings).
+    pub file_warnings: Vec<super::error::SceneError>,
     /// The `[[surface]]` tables, in file order (an OBJ mesh one surface per material).
     pub surfaces: Vec<Surface>,
     /// The `[[probe]]` tables, in file order.

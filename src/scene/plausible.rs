@@ -31,7 +31,7 @@ const REFLECTANCE: f64 = 0.98;
 
 /// Every warning of `scene`, in the order of its tables.
 pub fn warnings(scene: &Scene) -> Vec<SceneError> {
-    let mut out = Vec::new();
+    let mut out = scene.file_warnings.clone();
     let path = &scene.path;
     let room = extent_of_all_but_models(scene);
     for (index, m) in scene.materials.iter().enumerate() {
