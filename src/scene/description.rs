@@ -41,7 +41,7 @@ pub struct Scene {
     /// What the mesh files hold that ugo does not read (a texture, an emissive factor,
     /// lines or points), told among [`Scene::warnings`](crate::scene::Scene::warnings).
     pub file_warnings: Vec<super::error::SceneError>,
-    /// The `[[surface]]` tables, in file order (an OBJ mesh one surface per material).
+    /// The `[[surface]]` tables, in file order (a mesh one surface per material).
     pub surfaces: Vec<Surface>,
     /// The `[[probe]]` tables, in file order.
     pub probes: Vec<Probe>,
@@ -57,7 +57,7 @@ pub struct Scene {
     pub sky: Option<Sky>,
     /// The sources' groups, the light scenes and the maintenance factor (already applied).
     pub lighting: Lighting,
-    /// Every file the case names (OBJ, photometric), as read.
+    /// Every file the case names (OBJ, glTF and its buffers, photometric), as read.
     pub files: Vec<CaseFile>,
 }
 

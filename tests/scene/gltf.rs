@@ -186,6 +186,11 @@ fn a_broken_gltf_is_an_error_naming_it() {
     let mut cycle = one_node(json!({ "children": [0] }));
     cycle.document["nodes"][0]["children"] = json!([0]);
     dir.write("cycle.gltf", &cycle.embedded());
+    let bright = json!({ "pbrMetallicRoughness": { "baseColorFactor": [1.5, 0.5, 0.5, 1] } });
+    dir.write("bright.gltf", &painted(bright).embedded());
+    let mut empty = one_node(json!({}));
+    empty.document["scenes"] = json!([{ "nodes": [] }]);
+    dir.write("empty.gltf", &empty.embedded());
     let positions = "\"componentType\":5126";
     assert!(cycle.embedded().contains(positions));
     dir.write("short-ints.gltf", &one_node(json!({})).embedded().replace(positions, "\"componentType\":5123"));
@@ -198,6 +203,8 @@ fn a_broken_gltf_is_an_error_naming_it() {
         ("cycle.gltf", &["has a cycle of nodes through node #0"]),
         ("short-ints.gltf", &["mesh \"cube\" (#0), primitive #0", "POSITION is U16 Vec3, not [F32] Vec3"]),
         ("absent.glb", &["cannot open the glTF file"]),
+        ("bright.gltf", &["material \"paint\" (#0)", "baseColorFactor [1.5, 0.5, 0.5] is not within [0, 1]"]),
+        ("empty.gltf", &["has no triangles in its scene"]),
     ] {
         let error = load(&dir, file, "").unwrap_err();
         eprintln!("{error}");
