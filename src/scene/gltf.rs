@@ -11,6 +11,7 @@ use super::loaded::{Group, Loaded};
 use base64::Engine;
 use glam::{DMat4, DQuat, DVec3};
 use gltf::accessor::{Accessor, DataType, Dimensions};
+use gltf::json::validation::Checked;
 use gltf::mesh::Mode;
 use gltf::scene::Transform;
 use gltf::{Document, Gltf, Mesh, Node, Primitive};
@@ -20,8 +21,7 @@ use std::path::Path;
 pub(super) fn load_gltf(file: &Path, files: &CaseFiles) -> Result<Loaded, String> {
     let shown = file.display();
     let bytes = files.read(file).map_err(|e| format!("cannot open the glTF file {shown}: {e}"))?;
-    let gltf = Gltf::from_slice(&bytes)
-        .map_err(|e| format!("cannot read the glTF file {shown} (glTF 2.0 JSON or .glb): {e}"))?;
+    let gltf = parse(&bytes).map_err(|e| format!("cannot read the glTF file {shown} (glTF 2.0 JSON or .glb): {e}"))?;
     let buffers = buffers(file, &gltf, files)?;
     let scene = gltf.default_scene().or_else(|| gltf.scenes().next());
     let scene = scene.ok_or_else(|| format!("the glTF file {shown} has no scene"))?;
@@ -34,6 +34,24 @@ pub(super) fn load_gltf(file: &Path, files: &CaseFiles) -> Result<Loaded, String
         return Err(format!("the glTF file {shown} has no triangles in its scene"));
     }
     Ok(Loaded { triangles: reading.triangles, groups, warnings: reading.warnings })
+}
+
+/// The file parsed and validated by the `gltf` crate, a primitive's `POSITION` checked
+/// first: the crate's validation looks its accessor up without a bound (gltf-json 1.4.1,
+/// `mesh.rs`) and would panic on a dangling one.
+fn parse(bytes: &[u8]) -> Result<Gltf, String> {
+    let Gltf { document, blob } = Gltf::from_slice_without_validation(bytes).map_err(|e| e.to_string())?;
+    let root = document.into_json();
+    let positions = Checked::Valid(gltf::Semantic::Positions);
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            if primitive.attributes.get(&positions).is_some_and(|a| a.value() >= root.accessors.len()) {
+                return Err(format!("meshes[{m}].primitives[{p}].attributes.POSITION: Index out of bounds"));
+            }
+        }
+    }
+    let document = Document::from_json(root).map_err(|e| e.to_string())?;
+    Ok(Gltf { document, blob })
 }
 
 /// The bytes of every buffer of the file: the GLB's binary chunk, a base64 `data:` URI or a

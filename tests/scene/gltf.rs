@@ -183,6 +183,9 @@ fn a_broken_gltf_is_an_error_naming_it() {
     let mut dangling = one_node(json!({}));
     dangling.document["meshes"][0]["primitives"][0]["indices"] = json!(7);
     dir.write("dangling.gltf", &dangling.embedded());
+    // The `gltf` crate's own validation panicked on this one (found by mutating a .glb).
+    dangling.document["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = json!(5);
+    dir.write("no-positions.gltf", &dangling.embedded());
     let mut cycle = one_node(json!({ "children": [0] }));
     cycle.document["nodes"][0]["children"] = json!([0]);
     dir.write("cycle.gltf", &cycle.embedded());
@@ -199,7 +202,8 @@ fn a_broken_gltf_is_an_error_naming_it() {
         ("missing.gltf", &["cannot open buffer #0", "cube.bin"]),
         ("short.gltf", &["holds 40 bytes, less than its byteLength 240"]),
         ("far.gltf", &["mesh \"cube\" (#0), primitive #0", "vertex index 99 is out of range (8 vertices)"]),
-        ("dangling.gltf", &["cannot read the glTF file"]),
+        ("dangling.gltf", &["cannot read the glTF file", "meshes[0].primitives[0].indices: Index out of bounds"]),
+        ("no-positions.gltf", &["meshes[0].primitives[0].attributes.POSITION: Index out of bounds"]),
         ("cycle.gltf", &["has a cycle of nodes through node #0"]),
         ("short-ints.gltf", &["mesh \"cube\" (#0), primitive #0", "POSITION is U16 Vec3, not [F32] Vec3"]),
         ("absent.glb", &["cannot open the glTF file"]),
