@@ -82,9 +82,9 @@ pub enum Shape {
         /// The radius, m.
         radius: f64,
     },
-    /// Triangles loaded from an OBJ file (already scaled and translated), normals by winding.
+    /// Triangles loaded from an OBJ or glTF file (already placed), normals by winding.
     Mesh {
-        /// The OBJ file, as named (joined to the case file's folder).
+        /// The OBJ or glTF file, as named (joined to the case file's folder).
         file: PathBuf,
         /// Its triangles in the scene, m.
         triangles: Vec<[DVec3; 3]>,

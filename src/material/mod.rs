@@ -21,6 +21,7 @@
 
 mod block;
 mod cells;
+mod colour;
 pub mod ggx;
 pub mod lambert;
 pub mod mirror;
@@ -28,6 +29,7 @@ pub mod phong;
 mod sample;
 
 pub use block::Block;
+pub use colour::{LUMINANCE_WEIGHTS, reflectance_of_colour};
 pub use sample::Sample;
 
 use crate::directions::DirectionSet;

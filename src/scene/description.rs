@@ -35,9 +35,13 @@ pub struct Scene {
     pub old_spelling: Vec<OldSpelling>,
     /// `[solver]`: method and stopping rule.
     pub solver: SolverSettings,
-    /// The `[[material]]` tables, in file order.
+    /// The `[[material]]` tables, in file order, then those made from the base colours of
+    /// glTF meshes (`FILE:name`).
     pub materials: Vec<Material>,
-    /// The `[[surface]]` tables, in file order (an OBJ mesh one surface per material).
+    /// What the mesh files hold that ugo does not read (a texture, an emissive factor,
+    /// lines or points), told among [`Scene::warnings`](crate::scene::Scene::warnings).
+    pub file_warnings: Vec<super::error::SceneError>,
+    /// The `[[surface]]` tables, in file order (a mesh one surface per material).
     pub surfaces: Vec<Surface>,
     /// The `[[probe]]` tables, in file order.
     pub probes: Vec<Probe>,
@@ -53,7 +57,7 @@ pub struct Scene {
     pub sky: Option<Sky>,
     /// The sources' groups, the light scenes and the maintenance factor (already applied).
     pub lighting: Lighting,
-    /// Every file the case names (OBJ, photometric), as read.
+    /// Every file the case names (OBJ, glTF and its buffers, photometric), as read.
     pub files: Vec<CaseFile>,
 }
 

@@ -1,6 +1,7 @@
-//! The files a case names besides itself (OBJ meshes, photometric files): read once while
-//! validating, kept with the scene, and written into every solution file, so that a stored
-//! solution is read back (and rendered) even after those files are moved or deleted.
+//! The files a case names besides itself (OBJ and glTF meshes, glTF buffers, photometric
+//! files): read once while validating, kept with the scene, and written into every solution
+//! file, so that a stored solution is read back (and rendered) even after those files are
+//! moved or deleted.
 
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};

@@ -21,9 +21,9 @@ const ILLUMINANCE: f64 = 1.5e5;
 /// Lengths of one surface, m: beyond 1 km, or below 0.1 mm.
 const LONGEST: f64 = 1e3;
 const SHORTEST: f64 = 1e-4;
-/// An OBJ model this long, m, was probably drawn in millimetres or centimetres.
+/// A mesh model (OBJ, glTF) this long, m, was probably drawn in millimetres or centimetres.
 const MODEL_LONGEST: f64 = 500.0;
-/// An OBJ model this many times longer than the rest of the scene was probably drawn in
+/// A mesh model (OBJ, glTF) this many times longer than the rest of the scene was probably drawn in
 /// millimetres (a 450 mm chair read as 450 m in a 9 m room is 50 times the room).
 const MODEL_TO_ROOM: f64 = 10.0;
 /// Diffuse reflectance above this is laboratory material (white standards), not a room.
@@ -31,7 +31,7 @@ const REFLECTANCE: f64 = 0.98;
 
 /// Every warning of `scene`, in the order of its tables.
 pub fn warnings(scene: &Scene) -> Vec<SceneError> {
-    let mut out = Vec::new();
+    let mut out = scene.file_warnings.clone();
     let path = &scene.path;
     let room = extent_of_all_but_models(scene);
     for (index, m) in scene.materials.iter().enumerate() {
@@ -137,7 +137,7 @@ fn unit_hint(length: f64) -> String {
     )
 }
 
-/// The diagonal of the bounding box of every surface but the OBJ models, m (0 without any):
+/// The diagonal of the bounding box of every surface but the mesh models, m (0 without any):
 /// a model [`MODEL_TO_ROOM`] times longer was probably drawn in millimetres.
 fn extent_of_all_but_models(scene: &Scene) -> f64 {
     let shapes = scene.surfaces.iter().map(|s| &s.shape).filter(|shape| !matches!(shape, Shape::Mesh { .. }));

@@ -1,7 +1,7 @@
 //! What every shape builder of a `[[surface]]` reads: the table's context, the case's
 //! files and materials ([`ShapeKeys`]), and what it returns: the surface's parts, each a
-//! shape with its material when not the surface's own ([`Part`]; only a `mesh` whose OBJ
-//! groups take materials has more than one, `obj.rs`).
+//! shape with its material when not the surface's own ([`Part`]; only a `mesh` whose
+//! file's groups take materials has more than one, `mesh.rs`).
 
 use super::check::Context;
 use super::description::Material;
@@ -9,16 +9,20 @@ use super::error::SceneError;
 use super::files::CaseFiles;
 use crate::geometry::Shape;
 use glam::DVec3;
+use std::cell::RefCell;
 
 /// Reads the keys of one shape, reporting missing required ones.
 #[derive(Clone, Copy)]
 pub(super) struct ShapeKeys<'a> {
     pub at: &'a Context<'a>,
     pub shape: &'a str,
-    /// Where a `mesh` reads its OBJ file.
+    /// Where a `mesh` reads its file.
     pub files: &'a CaseFiles,
-    /// The case's materials, which a mesh's OBJ groups are mapped to.
-    pub materials: &'a [Material],
+    /// The case's materials, which a mesh file's groups are mapped to, and those made from
+    /// its colours (`mesh.rs`).
+    pub materials: &'a RefCell<Vec<Material>>,
+    /// What the mesh files hold that ugo does not read.
+    pub warnings: &'a RefCell<Vec<SceneError>>,
     /// The case text, for the line of a value.
     pub source: &'a str,
 }

@@ -1,6 +1,6 @@
 //! `[[surface]]` tables: shapes and their keys, emission, material references and degenerate
-//! geometry, validated into `crate::geometry::Surface` (a `mesh` is read by `obj.rs`; one
-//! whose OBJ groups take several materials becomes one surface per material).
+//! geometry, validated into `crate::geometry::Surface` (a `mesh` is read by `mesh.rs`; one
+//! whose file's groups take several materials becomes one surface per material).
 
 use super::bounds::surfaces_bounds;
 use super::check::{Context, MAGNITUDE, REL_TOL, show, unique_names};
@@ -15,17 +15,19 @@ use super::shape_keys::{Part, ShapeKeys, material_index, whole};
 use crate::geometry::{Emission, Shape, Surface, tessellate};
 use crate::material::MaterialModel;
 use glam::DVec3;
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::path::Path;
 
 /// Validates the `[[surface]]` tables of `path` (whose text is `source`): the surfaces (a
-/// mesh whose OBJ groups take several materials is one per material) and, for each, the
-/// index of its table.
+/// mesh whose file's groups take several materials is one per material) and, for each, the
+/// index of its table. `materials` gains those made from mesh files' colours, `warnings`
+/// what those files hold that is not read.
 pub(super) fn surfaces(
     path: &Path,
     source: &str,
     raw: &[RawSurface],
-    materials: &[Material],
+    (materials, warnings): (&RefCell<Vec<Material>>, &RefCell<Vec<SceneError>>),
     files: &CaseFiles,
 ) -> Result<(Vec<Surface>, Vec<usize>), SceneError> {
     unique_names(path, "surface", raw.iter().map(|s| s.name.as_str()))?;
@@ -33,7 +35,7 @@ pub(super) fn surfaces(
     let (mut surfaces, mut tables) = (Vec::new(), Vec::new());
     for (index, s) in raw.iter().enumerate() {
         let at = Context::item(path, "surface", &s.name, index);
-        let keys = ShapeKeys { at: &at, shape: "", files, materials, source };
+        let keys = ShapeKeys { at: &at, shape: "", files, materials, warnings, source };
         let parts = surface(&keys, s)?;
         let copies = copies(&at, source, s.array.as_ref(), s.transforms.as_ref(), centre(&parts))?;
         if copies.is_empty() {
@@ -77,18 +79,19 @@ pub(super) fn emits(emission: Emission) -> bool {
 /// The surface of table `s`, or one per material of its parts, named `NAME/material`.
 fn surface(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Surface>, SceneError> {
     let at = k.at;
-    let material = material_index(at, "material", &s.material, k.materials)?;
+    let material = material_index(at, "material", &s.material, &k.materials.borrow())?;
     let two_sided = s.two_sided.unwrap_or(false);
     let parts = shape(k, s)?;
+    let materials = k.materials.borrow();
     let areas = parts.iter().map(|p| meshable(at, &p.shape)).collect::<Result<Vec<f64>, _>>()?;
     let area: f64 = areas.iter().sum();
     for part in &parts {
         let index = part.material.unwrap_or(material);
-        if let MaterialModel::Lambert { transmittance, .. } = k.materials[index].model
+        if let MaterialModel::Lambert { transmittance, .. } = materials[index].model
             && transmittance > 0.0
             && !two_sided
         {
-            let name = &k.materials[index].name;
+            let name = &materials[index].name;
             let message = format!("material \"{name}\" transmits light, so the surface must be two_sided = true");
             return Err(at.error("two_sided", message));
         }
@@ -107,7 +110,7 @@ fn surface(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Surface>, SceneError> {
     let single = parts.len() == 1;
     let surface = |(part, part_area): (Part, f64)| {
         let material = part.material.unwrap_or(material);
-        let name = if single { s.name.clone() } else { format!("{}/{}", s.name, k.materials[material].name) };
+        let name = if single { s.name.clone() } else { format!("{}/{}", s.name, materials[material].name) };
         // A flux is shared by the parts in proportion to their areas.
         let emission = match emission {
             Some(Emission::Flux(flux)) if !single => Some(Emission::Flux(flux * part_area / area)),
@@ -170,7 +173,7 @@ const SHAPES: [(&str, &[&str], Build); 6] = [
     ("box", &["min", "max", "rotate_y_deg"], cuboid),
     ("disc", &["center", "normal", "radius"], disc),
     ("sphere", &["center", "radius"], sphere),
-    ("mesh", &["file", "scale", "translate", "rotate_axis", "rotate_deg", "materials"], super::obj::mesh),
+    ("mesh", &["file", "scale", "translate", "rotate_axis", "rotate_deg", "materials"], super::mesh::mesh),
 ];
 
 /// The shape keys a `[[surface]]` sets.

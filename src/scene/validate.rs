@@ -23,6 +23,7 @@ use super::sky::{daylight, glaze};
 use super::surface::{emits, surfaces};
 use super::window_place::placements;
 use crate::solve::Method;
+use std::cell::RefCell;
 use std::path::Path;
 
 /// Validates the raw tables of the case file `path` (whose text is `source`).
@@ -33,8 +34,8 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     if raw.surface.is_empty() {
         return Err(SceneError::new(path, "[[surface]]", "", "the scene has no [[surface]]"));
     }
-    let materials = materials(path, &raw.material)?;
-    let (mut surfaces, surface_tables) = surfaces(path, &source, &raw.surface, &materials, &files)?;
+    let (materials, file_warnings) = (RefCell::new(materials(path, &raw.material)?), RefCell::default());
+    let (mut surfaces, surface_tables) = surfaces(path, &source, &raw.surface, (&materials, &file_warnings), &files)?;
     let placed = placements(path, &source, &raw.window, &raw.surface, &mut surfaces, &surface_tables)?;
     let probes = probes(path, &raw.probe)?;
     let observers = observers(path, &raw.observer)?;
@@ -76,7 +77,8 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         discretization,
         old_spelling,
         solver,
-        materials,
+        materials: materials.into_inner(),
+        file_warnings: file_warnings.into_inner(),
         surfaces,
         probes,
         observers,

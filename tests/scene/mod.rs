@@ -3,6 +3,7 @@
 mod assembly;
 mod copies;
 mod degenerate;
+mod gltf;
 mod holes;
 mod lengths;
 mod light_scenes;

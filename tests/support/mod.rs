@@ -1,5 +1,7 @@
 //! Scenes built in code for the tests (no case file involved).
 
+pub mod gltf;
+
 use glam::DVec3;
 use std::ops::Deref;
 use std::path::{Path, PathBuf};
@@ -31,6 +33,7 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         old_spelling: Vec::new(),
         solver: SolverSettings::default(),
         materials,
+        file_warnings: Vec::new(),
         surfaces,
         probes: Vec::new(),
         observers: Vec::new(),
