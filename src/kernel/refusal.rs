@@ -7,7 +7,7 @@ use super::forecast::Forecast;
 use super::memory::Footprint;
 
 const GIB: f64 = (1u64 << 30) as f64;
-/// The share of a model's patches that, once the surfaces' own elements (OBJ triangles),
+/// The share of a model's patches that, once the surfaces' own elements (OBJ and glTF triangles),
 /// makes a coarser size no way out.
 const FIXED_SHARE: f64 = 0.5;
 
@@ -91,8 +91,8 @@ fn model(f: &mut std::fmt::Formatter<'_>, e: &Forecast, limit: u64) -> std::fmt:
     if let Some(n) = fixed {
         return write!(
             f,
-            "{}. {} of the {} patches are the surfaces' own elements (an OBJ triangle is one patch at any \
-             size), so a larger size cannot lower them. Ways out: simplify the models (decimate the OBJ \
+            "{}. {} of the {} patches are the surfaces' own elements (a mesh's triangle, OBJ or glTF, is one patch at any \
+             size), so a larger size cannot lower them. Ways out: simplify the models (decimate the mesh \
              files, leave out small parts), {}or a higher --memory-limit if the machine has the RAM",
             provenance(e),
             figure(n),

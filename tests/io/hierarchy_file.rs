@@ -1,7 +1,8 @@
 //! The hierarchical kernel saved and reused (issue 36, points 1 and 2;
 //! `docs/kernel-file.md`, "The hierarchical kernel"): `--save-kernel` stores its tree, links
 //! and operator; `--kernel-file` applies them again without refining and gives the saved
-//! solution; a new reflectance reuses them with the case's blocks and equals the saved
+//! solution; a new reflectance reuses them with the case's blocks and equals (to 1e-3, the
+//! refinement's own spread between runs) the saved
 //! operator solved with those blocks in memory; new emission scales the field exactly; a new
 //! luminaire reuses them with a note; a changed geometry or hierarchy option is refused
 //! naming the part; scipy rebuilds `K = B·diag(r)·P·Λ·R·diag(s)` from the file's factors and
@@ -82,8 +83,15 @@ fn a_new_reflectance_reuses_the_hierarchy_and_equals_its_operator_with_the_new_b
     let x = solve(Method::Direct, &system, &SolveParams::default(), &mut |_, _| {}).unwrap().0;
     let worst = relative(&luminance(&reused), &x);
     eprintln!("a paler wall on the saved hierarchy: {worst:.2e} from its operator with the new blocks");
-    assert!(worst <= 1e-12, "{worst:e}");
-    assert!(relative(&luminance(&saved), &x) > 1e-3, "the new reflectance changed nothing");
+    // Not to 1e-12: the refinement in memory here is not always the saved one. The linking
+    // rounds try each worker's last blocker before a traversal, and a worker's share of the
+    // pairs follows rayon's splitting, so a few rays can be answered differently (this
+    // room's field moved by 2e-4 at five threads against one, and by 4e-5 beside the other
+    // tests in CI). The old blocks would be off by the change itself.
+    let changed = relative(&luminance(&saved), &x);
+    eprintln!("the paler wall moved the field by {changed:.2e}");
+    assert!(worst <= 1e-3, "{worst:e}");
+    assert!(changed > 30.0 * 1e-3, "the new reflectance changed the field by only {changed:e}");
 }
 
 #[test]
