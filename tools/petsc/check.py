@@ -130,7 +130,7 @@ def cornell(ugo, work):
 
 def spectrum(mine, theirs, figures):
     with h5py.File(mine, "r") as f:
-        K, _, _ = kernel_of(f)
+        K = kernel_of(f)[0]
     with h5py.File(theirs, "r") as f:
         v = f["petsc/spectrum/vectors"][..., 0].ravel()
     rho = figures["spectral_radius"]
