@@ -10,8 +10,8 @@
 //! the ray from `p` leaves the scene. It follows the fall-off with distance exactly and the
 //! shadows of reveals and furniture at the spacing of the points, for [`POINTS`] rays.
 
+use super::window::for_each_part;
 use super::{Opening, Sky};
-use crate::geometry::{ConvexPolygon, MAX_CLIPPED};
 use crate::transfer::contour::projected_solid_angle;
 use crate::transfer::occlusion::polygon_points;
 use glam::DVec3;
@@ -22,20 +22,10 @@ pub const POINTS: usize = 16;
 /// The illuminance (lx) the opening gives the plane of `p` (unit normal `n`) with nothing in
 /// the way but the opening's own edges.
 pub fn unshadowed(sky: &Sky, opening: &Opening, p: DVec3, n: DVec3) -> f64 {
-    let mut front = [DVec3::ZERO; MAX_CLIPPED];
-    let count = opening.polygon.clip_above(p, n, &mut front);
     let mut e = 0.0;
-    for i in 1..count.saturating_sub(1) {
-        let triangle = ConvexPolygon::triangle(front[0], front[i], front[i + 1]);
-        for up in [DVec3::Y, -DVec3::Y] {
-            let mut part = [DVec3::ZERO; MAX_CLIPPED];
-            let m = triangle.clip_above(p, up, &mut part);
-            if m >= 3 {
-                let centre = part[..m].iter().sum::<DVec3>() / m as f64;
-                e += luminance(sky, opening, centre - p) * projected_solid_angle(p, n, &part[..m]).abs();
-            }
-        }
-    }
+    for_each_part(&opening.polygon, p, n, &mut |part, _| {
+        e += luminance(sky, opening, part.centroid() - p) * projected_solid_angle(p, n, part.vertices()).abs();
+    });
     e
 }
 

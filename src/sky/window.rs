@@ -67,25 +67,36 @@ pub fn through_window(
     if window.vertices().iter().all(|v| (*v - p).dot(n) <= 1e-12 * size) {
         return 0;
     }
+    let smallest = 1e-12 * size * size;
+    let mut rays = 0;
+    for_each_part(window, p, n, &mut |piece, component| {
+        let mut view = View { sky, glazing, p, n, sees, least, component, visit: &mut *visit, rays: 0, smallest, eta };
+        view.piece(piece, 0);
+        rays += view.rays;
+    });
+    rays
+}
+
+/// Hands `visit` the parts of `window` in front of `p` (unit normal `n`), cut into triangles
+/// and at the horizontal plane through `p`: each part with the component it shows.
+pub(super) fn for_each_part(
+    window: &ConvexPolygon,
+    p: DVec3,
+    n: DVec3,
+    visit: &mut dyn FnMut(&ConvexPolygon, Component),
+) {
     let mut front = [DVec3::ZERO; MAX_CLIPPED];
     let count = window.clip_above(p, n, &mut front);
-    let mut rays = 0;
     for i in 1..count.saturating_sub(1) {
         let triangle = ConvexPolygon::triangle(front[0], front[i], front[i + 1]);
         for (normal, component) in [(DVec3::Y, Component::Sky), (-DVec3::Y, Component::Ground)] {
             let mut part = [DVec3::ZERO; MAX_CLIPPED];
             let m = triangle.clip_above(p, normal, &mut part);
             if m >= 3 {
-                let piece = ConvexPolygon::from_slice(&part[..m]);
-                let smallest = 1e-12 * size * size;
-                let mut view =
-                    View { sky, glazing, p, n, sees, least, component, visit: &mut *visit, rays: 0, smallest, eta };
-                view.piece(&piece, 0);
-                rays += view.rays;
+                visit(&ConvexPolygon::from_slice(&part[..m]), component);
             }
         }
     }
-    rays
 }
 
 /// One component of one triangle of the opening, seen from one point.
