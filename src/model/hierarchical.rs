@@ -84,6 +84,7 @@ pub fn build(
     let blocks: Vec<Block> = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
     check_blocks(scene, &blocks, k)?;
     let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
+    let windows: Vec<(&Opening, &Sky)> = sources.iter().filter_map(window_of).collect();
     let mesh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let root_visibility = Visibility::build(&roots);
@@ -111,7 +112,9 @@ pub fn build(
         pass += 1;
         crate::interrupt::check(|| format!("the hierarchical kernel's refinement pass {pass}"))?;
         let start = Instant::now();
-        h.split_leaves(&|visibility, patch, albedo, epsilon| varies(&sources, visibility, patch, albedo, epsilon));
+        h.split_leaves(&|visibility, patch, albedo, epsilon| {
+            varies(&sources, &windows, visibility, patch, albedo, epsilon)
+        });
         let direct = cache.on_leaves(h, &sources, &directions);
         let leaves = h.leaf_mesh();
         let l0 = source_term(&blocks, &leaves, &direct, k);
@@ -193,40 +196,49 @@ fn seed_light(sources: &[Source], roots: &Mesh, visibility: &Visibility, directi
     DirectLight { arriving, rays: points * sources.len(), ..DirectLight::none(sources) }
 }
 
-/// True when the direct light reflected by `patch` (albedo `albedo`) varies over it by more
-/// than `epsilon` (cd/m²): `ρ (E_max − E_min)/π` over the oracle's sample points of the
-/// element (`hierarchy::sample_points`). The luminaires' and the sun's light is looked at
+/// True when the direct light of `sources` (whose openings are `windows`) reflected by
+/// `patch` (albedo `albedo`) varies over it by more than `epsilon` (cd/m²):
+/// `ρ (E_max − E_min)/π` over the oracle's sample points of the element
+/// (`hierarchy::sample_points`). The luminaires' and the sun's light is looked at
 /// with one shadow ray per point and source; the openings' with a glimpse
 /// (`sky::glimpse`, 16 rays per point and opening), only where their unshadowed light
 /// could make up the difference.
-fn varies(sources: &[Source], visibility: &Visibility, patch: &Patch, albedo: f64, epsilon: f64) -> bool {
+fn varies(
+    sources: &[Source],
+    windows: &[(&Opening, &Sky)],
+    visibility: &Visibility,
+    patch: &Patch,
+    albedo: f64,
+    epsilon: f64,
+) -> bool {
     if sources.is_empty() || albedo <= 0.0 {
         return false;
     }
     let allowed = epsilon * PI / albedo;
     let points: Vec<DVec3> = sample_points(patch).collect();
-    let spread = |e: &mut dyn Iterator<Item = f64>| {
-        let (lo, hi) = e.fold((f64::INFINITY, 0.0f64), |(lo, hi), e| (lo.min(e), hi.max(e)));
-        hi - lo
-    };
     let lit: Vec<f64> = points.iter().map(|&x| point_light(sources, visibility, patch, x)).collect();
-    let lamps = spread(&mut lit.iter().copied());
-    let windows: Vec<(&Opening, &Sky)> = sources.iter().filter_map(window_of).collect();
+    let lamps = spread(lit.iter().copied());
     if lamps > allowed || windows.is_empty() {
         return lamps > allowed;
     }
     let n = patch.normal;
-    let open = |x: DVec3| windows.iter().map(|(w, sky)| glimpse::unshadowed(sky, w, x, n)).collect::<Vec<_>>();
-    let unshadowed: Vec<Vec<f64>> = points.iter().map(|&x| open(x)).collect();
-    let most = unshadowed.iter().map(|u| u.iter().sum::<f64>()).fold(0.0, f64::max);
+    let unshadowed: Vec<f64> =
+        points.iter().flat_map(|&x| windows.iter().map(move |(w, sky)| glimpse::unshadowed(sky, w, x, n))).collect();
+    let most = unshadowed.chunks(windows.len()).map(|u| u.iter().sum::<f64>()).fold(0.0, f64::max);
     if lamps + most <= allowed {
         return false;
     }
-    let mut shadowed = points.iter().zip(&unshadowed).zip(&lit).map(|((&x, u), e)| {
+    let shadowed = points.iter().zip(unshadowed.chunks(windows.len())).zip(&lit).map(|((&x, u), e)| {
         let sees = |y: DVec3| visibility.escapes(x, y - x, patch.face);
         e + windows.iter().zip(u).map(|((w, _), u)| u * glimpse::seen_share(w, x, n, &sees)).sum::<f64>()
     });
-    spread(&mut shadowed) > allowed
+    spread(shadowed) > allowed
+}
+
+/// `max − min` of `values` (0 for none).
+fn spread(values: impl Iterator<Item = f64>) -> f64 {
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), e| (lo.min(e), hi.max(e)));
+    (hi - lo).max(0.0)
 }
 
 /// The illuminance (lx) of the luminaires and the sun at the point `x` of `patch`.
