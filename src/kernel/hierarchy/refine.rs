@@ -20,7 +20,7 @@ use crate::kernel::memory::Footprint;
 use crate::transfer::exposure::Backs;
 use crate::transfer::form_factor::{Binning, Quadrature};
 use crate::transfer::occlusion::polygon_points;
-use crate::visibility::{Blocker, NO_BLOCKER, Visibility};
+use crate::visibility::{Blocker, Visibility};
 use rayon::prelude::*;
 
 /// What stays fixed during refinement.
@@ -80,13 +80,10 @@ pub fn refine(
         // A round can take seconds: a signal skips the rest of its pairs, and ends it.
         let outcomes: Vec<(Outcome, usize)> = candidates
             .par_iter()
-            .map_init(
-                || NO_BLOCKER,
-                |blocker, &(p, q)| match crate::interrupt::asked() {
-                    true => (Outcome::Drop, 0),
-                    false => evaluate(tree, brightness, settings, binning.as_ref(), p, q, blocker),
-                },
-            )
+            .map(|&(p, q)| match crate::interrupt::asked() {
+                true => (Outcome::Drop, 0),
+                false => evaluate(tree, brightness, settings, binning.as_ref(), p, q),
+            })
             .collect();
         stop()?;
         let mut split = Vec::new();
@@ -150,8 +147,12 @@ fn evaluate(
     binning: Option<&Binning>,
     p: u32,
     q: u32,
-    blocker: &mut Blocker,
 ) -> (Outcome, usize) {
+    // The last occluder is remembered within a pair, never across pairs: which pairs a
+    // worker settles follows rayon's split, and the cached triangle's own test answers a
+    // grazing ray otherwise than the traversal, so a shared cache made the links depend
+    // on the number of threads.
+    let blocker = &mut Blocker::default();
     let (a, b) = (tree.node(p), tree.node(q));
     if p == q {
         // a planar element does not see itself; a cluster's self-link is always split
