@@ -78,6 +78,8 @@ def from_solution(path, comm=PETSc.COMM_WORLD):
     """`K = B·G` and `G` as chains of distributed factors, `L0` and `D`, from `path`."""
     with h5py.File(path, "r") as f:
         k = f["kernel"]
+        if "hierarchy/operator" not in k:
+            raise SystemExit(f"ugo_petsc: {path}: /kernel says kernel = \"hierarchical\" but has no /kernel/hierarchy/operator; save it again with `ugo solve CASE --save-kernel`")
         share = f["directions/projected"][:] / np.pi
         h = k["hierarchy/operator"]
         material, twin = k["patch_material"][:], k["twin"][:]
