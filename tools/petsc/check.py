@@ -189,47 +189,54 @@ def opal(ugo, work):
 
 
 def hierarchical(ugo, work):
-    """The hierarchical kernel, read as its factors, on 1 and 2 ranks: GMRES and BiCGSTAB
-    at 1e-13 against ugo's direct solution, MUMPS on K multiplied out, the illuminance
-    from the factors, ρ(K) against `ugo norms` and `K v = ρ v` for scipy's K
-    (tests/io/kernel_check.py), direct refused beyond `--memory-limit`, and the written
+    """The hierarchical kernel, read as its factors, on 1 and 2 ranks (`hierarchy_ranks`),
+    `direct` refused beyond `--memory-limit`, the opal diffuser's twins, and the written
     file drawn by `ugo render` and compared by `ugo agree` as ugo's."""
     mine = os.path.join(work, "hierarchy.h5")
     run(ugo, "solve", *HIERARCHY, "--method", "direct", "--save-kernel", "-o", mine)
     run(ugo, "norms", *HIERARCHY, "--kernel-file", mine, "-o", os.path.join(work, "hierarchy-norms.h5"))
-    with h5py.File(os.path.join(work, "hierarchy-norms.h5"), "r") as f:
-        rho = f["norms"].attrs["spectral_radius"]
-    with h5py.File(mine, "r") as f:
-        K = kernel_of(f)[0]
-    x = field(mine)
     for ranks in ("1", "2"):
-        for first, extra in (("gmres:30", ["direct", "--eigenvalues", "2"]), ("bicgstab", [])):
-            out, report = (os.path.join(work, f"hierarchy-{first.replace(':', '-')}-{ranks}.{e}") for e in ("h5", "json"))
-            said = run(os.path.join(HERE, "run"), "-n", ranks, mine, "-o", out, "--methods", ",".join([first] + extra[:1]),
-                       "--tolerance", "1e-13", *extra[1:], "--report", report)
-            print(said, end="")
-            figures = json.load(open(report))
-            check(f"hierarchy, {ranks} rank(s): {first} on the factors against ugo's direct solution", relative(field(out), x), HIERARCHY_SOLUTION)
-            check(f"hierarchy, {ranks} rank(s): illuminance from the factors against ugo's", relative(field(out, "field/illuminance"), field(mine, "field/illuminance")), HIERARCHY_SOLUTION)
-            if extra:
-                check(f"hierarchy, {ranks} rank(s): the LU's residual on K multiplied out", figures["runs"]["direct"]["residual"], 1e-13)
-                check(f"hierarchy, {ranks} rank(s): SLEPc rho(K) against ugo norms", abs(figures["spectral_radius"] - rho) / rho, RHO)
-                with h5py.File(out, "r") as f:
-                    v = f["petsc/spectrum/vectors"][..., 0].ravel()
-                s = figures["spectral_radius"]
-                check(f"hierarchy, {ranks} rank(s): K v = rho v, K from scipy", np.abs(K @ v - s * v).max() / (s * np.abs(v).max()), 1e-9)
+        hierarchy_ranks(work, mine, ranks)
     refused = subprocess.run([os.path.join(HERE, "run"), "-n", "2", mine, "-o", os.path.join(work, "refused.h5"), "--methods", "direct", "--memory-limit", "0.001"],
                              cwd=ROOT, capture_output=True, text=True)
     if refused.returncode == 0 or "beyond the memory limit of 0.00 GiB" not in refused.stderr:
         failures.append(f"hierarchy: direct beyond --memory-limit 0.001 was not refused: {refused.stderr[-300:]}")
     else:
         print(f"check_petsc: hierarchy: {refused.stderr.splitlines()[0]}")
-    opal_h = os.path.join(work, "opal-hierarchy.h5")
+    opal_h, opal_petsc = os.path.join(work, "opal-hierarchy.h5"), os.path.join(work, "opal-hierarchy-petsc.h5")
     run(ugo, "solve", *OPAL, "--kernel", "hierarchical", "--root-size", "0.4", "--method", "direct", "--save-kernel", "-o", opal_h)
-    petsc(opal_h, "-o", os.path.join(work, "opal-hierarchy-petsc.h5"), "--methods", "gmres:30", "--tolerance", "1e-13")
-    check("hierarchy, opal diffuser (twins), 2 ranks: gmres:30 against ugo's direct solution", relative(field(os.path.join(work, "opal-hierarchy-petsc.h5")), field(opal_h)), HIERARCHY_SOLUTION)
+    petsc(opal_h, "-o", opal_petsc, "--methods", "gmres:30", "--tolerance", "1e-13")
+    check("hierarchy, opal diffuser (twins), 2 ranks: gmres:30 against ugo's direct solution", relative(field(opal_petsc), field(opal_h)), HIERARCHY_SOLUTION)
     trace = [*HIERARCHY[:1], "--directions", "4", "--forward", "--photons", "100000", "--bins-of", mine]
     agreement(ugo, work, mine, [os.path.join(work, "hierarchy-gmres-30-2.h5")], trace)
+
+
+def hierarchy_ranks(work, mine, ranks):
+    """On `ranks` ranks: GMRES(30) (with MUMPS on K multiplied out and the spectrum) and
+    BiCGSTAB at 1e-13 against ugo's direct solution, the illuminance from the factors,
+    ρ(K) against `ugo norms` and `K v = ρ v` for scipy's K (tests/io/kernel_check.py)."""
+    x = field(mine)
+    for first, extra in (("gmres:30", ["direct", "--eigenvalues", "2"]), ("bicgstab", [])):
+        out, report = (os.path.join(work, f"hierarchy-{first.replace(':', '-')}-{ranks}.{e}") for e in ("h5", "json"))
+        said = run(os.path.join(HERE, "run"), "-n", ranks, mine, "-o", out, "--methods", ",".join([first] + extra[:1]),
+                   "--tolerance", "1e-13", *extra[1:], "--report", report)
+        print(said, end="")
+        what = f"hierarchy, {ranks} rank(s)"
+        check(f"{what}: {first} on the factors against ugo's direct solution", relative(field(out), x), HIERARCHY_SOLUTION)
+        check(f"{what}: illuminance from the factors against ugo's", relative(field(out, "field/illuminance"), field(mine, "field/illuminance")), HIERARCHY_SOLUTION)
+        if not extra:
+            continue
+        figures = json.load(open(report))
+        check(f"{what}: the LU's residual on K multiplied out", figures["runs"]["direct"]["residual"], 1e-13)
+        with h5py.File(os.path.join(work, "hierarchy-norms.h5"), "r") as f:
+            rho = f["norms"].attrs["spectral_radius"]
+        s = figures["spectral_radius"]
+        check(f"{what}: SLEPc rho(K) against ugo norms", abs(s - rho) / rho, RHO)
+        with h5py.File(mine, "r") as f:
+            K = kernel_of(f)[0]
+        with h5py.File(out, "r") as f:
+            v = f["petsc/spectrum/vectors"][..., 0].ravel()
+        check(f"{what}: K v = rho v, K from scipy", np.abs(K @ v - s * v).max() / (s * np.abs(v).max()), 1e-9)
 
 
 def main():
