@@ -176,10 +176,19 @@ def expansion_bound(factors):
 
 
 def memory_limit():
-    """Half the machine's memory (`MemTotal` of /proc/meminfo), bytes, as ugo's default."""
+    """Half the least of the machine's memory (`MemTotal` of /proc/meminfo) and its control
+    group's limit (cgroup v2 `memory.max`, v1 `memory.limit_in_bytes`), bytes, as ugo's
+    default (src/kernel/memory.rs; ugo also weighs `ulimit -v`)."""
     with open("/proc/meminfo") as fh:
-        kib = next(int(line.split()[1]) for line in fh if line.startswith("MemTotal:"))
-    return kib * 1024 // 2
+        least = next(int(line.split()[1]) for line in fh if line.startswith("MemTotal:")) * 1024
+    for path in ("/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"):
+        try:
+            with open(path) as fh:
+                least = min(least, int(fh.read().strip()))
+            break
+        except (OSError, ValueError):
+            continue
+    return least // 2
 
 
 def check_expansion(kernel, path, limit):

@@ -45,7 +45,7 @@ def arguments(argv):
     p.add_argument("--max-iterations", type=int, help="most iterations (default: the file's `max_iterations`)")
     p.add_argument("--direct", choices=("mumps", "superlu_dist"), help="the LU package (default: MUMPS if PETSc has it)")
     p.add_argument("--matrix-free", action="store_true", help="apply I - K as a shell operator over K (Krylov and SVD; always so for a hierarchical kernel)")
-    p.add_argument("--memory-limit", type=float, metavar="GiB", help="largest memory for a hierarchical K multiplied out for `direct`, all ranks together (default: half the machine's)")
+    p.add_argument("--memory-limit", type=float, metavar="GiB", help="largest memory for a hierarchical K multiplied out for `direct`, all ranks together (default: half the machine's or its control group's)")
     p.add_argument("--eigenvalues", type=int, default=0, metavar="N", help="the N eigenvalues of K of largest magnitude (SLEPc)")
     p.add_argument("--mode", type=int, metavar="J", help="also write eigenvector J (1 = the dominant) as the field of a solution file, for ugo render")
     p.add_argument("--mode-output", metavar="FILE", help="that file (default: OUTPUT without .h5, then -mode-J.h5)")
