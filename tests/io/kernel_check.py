@@ -49,6 +49,15 @@ def kernel_of(f):
 
 def hierarchy_factors(k, share):
     """G = diag(receive) P Λ R diag(send) from /kernel/hierarchy/operator (docs/kernel-file.md)."""
+    factors = hierarchy_parts(k, share)
+    P, Lam, R, receive, send = (factors[name] for name in ("P", "Lambda", "R", "receive", "send"))
+    factors["G"] = (sp.diags(receive) @ P @ Lam @ R @ sp.diags(send)).tocsr()
+    return factors
+
+
+def hierarchy_parts(k, share):
+    """P, Λ, R and the diagonals of G from /kernel/hierarchy/operator, without their
+    product (which a large hierarchy cannot hold)."""
     h = k["hierarchy/operator"]
     cells = len(share)
     parent, weight, cluster = h["parent"][:], h["weight"][:], h["cluster"][:]
@@ -92,8 +101,7 @@ def hierarchy_factors(k, share):
             at = int(parent[at])
     R = sp.csr_matrix((vals, (rows, cols)), shape=(nodes * cells, leaves * cells))
     receive, send = np.repeat(h["receive"][:], cells), np.repeat(h["send"][:], cells)
-    G = (sp.diags(receive) @ P @ Lam @ R @ sp.diags(send)).tocsr()
-    return {"P": P, "Lambda": Lam, "R": R, "receive": receive, "send": send, "G": G}
+    return {"P": P, "Lambda": Lam, "R": R, "receive": receive, "send": send}
 
 
 def blocks_of(k):

@@ -20,6 +20,16 @@ On the opal diffuser (a two-sided transmitting panel: the twins' rows of `G`), r
 `/kernel` and from `ugo export --format petsc`: the direct and GMRES solutions agree with
 ugo's direct one to 1e-8.
 
+The hierarchical kernel (the glossy Cornell box with `--kernel hierarchical --root-size
+0.4` at 0.1 m and 4 cells: 508 leaves, clusters and spread links; the opal diffuser's
+hierarchy for the twins), read as its factors `K = B·P·Λ·R` on 1 and 2 ranks: GMRES(30)
+and BiCGSTAB at 1e-13 agree with ugo's direct solution to 1e-10, and so does the
+illuminance from the factors; MUMPS on `K` multiplied out leaves a residual under 1e-13;
+SLEPc's ρ(K) agrees with `ugo norms` to 1e-6 and `K v = ρ v` holds for scipy's `K` to
+1e-9; `direct` beyond `--memory-limit` is refused naming the limit; `ugo render` draws
+the written file and `ugo agree` (a forward trace on the leaves, `--bins-of`) prints the
+same table for it as for ugo's.
+
     /usr/bin/python3 tools/petsc/check.py [UGO] [WORK_FOLDER]
 """
 
@@ -42,6 +52,8 @@ HISTORY = 1e-14
 RHO = 1e-6
 CORNELL = ["cases/glossy-cornell.toml", "--patch-size", "0.1", "--directions", "8"]
 OPAL = ["cases/opal-diffuser.toml", "--patch-size", "0.1"]
+HIERARCHY = ["cases/glossy-cornell.toml", "--kernel", "hierarchical", "--root-size", "0.4", "--patch-size", "0.1", "--directions", "4"]
+HIERARCHY_SOLUTION = 1e-10
 failures = []
 
 
@@ -125,7 +137,8 @@ def cornell(ugo, work):
     check("GMRES(5) history, shell I - K against assembled", np.abs(shell - history).max() if len(shell) == len(history) else np.inf, HISTORY)
     check("SLEPc rho(K) against ugo norms", abs(figures["spectral_radius"] - rho) / rho, RHO)
     spectrum(mine, theirs, figures)
-    agreement(ugo, work, mine, theirs)
+    forward = [*CORNELL, "--forward", "--photons", "100000"]
+    agreement(ugo, work, mine, [theirs, theirs.removesuffix(".h5") + "-mode-1.h5"], forward)
 
 
 def spectrum(mine, theirs, figures):
@@ -144,18 +157,22 @@ def spectrum(mine, theirs, figures):
     check("sigma_min(I - K) against numpy's SVD", abs(s["smallest"] - sigma[-1]) / sigma[-1], 1e-8)
 
 
-def agreement(ugo, work, mine, theirs):
-    for path, folder in ((theirs, "render"), (theirs.removesuffix(".h5") + "-mode-1.h5", "render-mode")):
-        run(ugo, "render", path, "-o", os.path.join(work, folder))
-        if not os.path.exists(os.path.join(work, folder, "glossy-cornell-camera-flat.png")):
+def agreement(ugo, work, mine, renders, trace):
+    """`ugo render` draws each file of `renders` (the glossy Cornell box); `ugo agree`
+    against a forward trace (`ugo trace TRACE`) prints the same table for PETSc's file,
+    the first of `renders`, as for ugo's `mine`."""
+    for path in renders:
+        folder = os.path.join(work, "render-" + os.path.basename(path).removesuffix(".h5"))
+        run(ugo, "render", path, "-o", folder)
+        if not os.path.exists(os.path.join(folder, "glossy-cornell-camera-flat.png")):
             failures.append(f"ugo render wrote no picture of {path}")
-    forward = os.path.join(work, "forward.h5")
-    run(ugo, "trace", *CORNELL, "--forward", "--photons", "100000", "-o", forward)
-    tables = [run(ugo, "agree", path, forward).splitlines()[1:] for path in (mine, theirs)]
+    forward = mine.removesuffix(".h5") + "-forward.h5"
+    run(ugo, "trace", *trace, "-o", forward)
+    tables = [run(ugo, "agree", path, forward).splitlines()[1:] for path in (mine, renders[0])]
     if tables[0] != tables[1] or not tables[0]:
-        failures.append("ugo agree's table differs between ugo's and PETSc's files")
+        failures.append(f"ugo agree's table differs between {mine} and {renders[0]}")
     else:
-        print(f"check_petsc: ugo agree: the same {len(tables[0])}-line table for ugo's and PETSc's files")
+        print(f"check_petsc: ugo agree: the same {len(tables[0])}-line table for ugo's and PETSc's files ({os.path.basename(mine)})")
 
 
 def opal(ugo, work):
@@ -171,12 +188,64 @@ def opal(ugo, work):
             check(f"opal diffuser, {method} from {source}, against ugo's direct solution", relative(field(out), x), SOLUTION)
 
 
+def hierarchical(ugo, work):
+    """The hierarchical kernel, read as its factors, on 1 and 2 ranks (`hierarchy_ranks`),
+    `direct` refused beyond `--memory-limit`, the opal diffuser's twins, and the written
+    file drawn by `ugo render` and compared by `ugo agree` as ugo's."""
+    mine = os.path.join(work, "hierarchy.h5")
+    run(ugo, "solve", *HIERARCHY, "--method", "direct", "--save-kernel", "-o", mine)
+    run(ugo, "norms", *HIERARCHY, "--kernel-file", mine, "-o", os.path.join(work, "hierarchy-norms.h5"))
+    for ranks in ("1", "2"):
+        hierarchy_ranks(work, mine, ranks)
+    refused = subprocess.run([os.path.join(HERE, "run"), "-n", "2", mine, "-o", os.path.join(work, "refused.h5"), "--methods", "direct", "--memory-limit", "0.001"],
+                             cwd=ROOT, capture_output=True, text=True)
+    if refused.returncode == 0 or "beyond the memory limit of 0.00 GiB" not in refused.stderr:
+        failures.append(f"hierarchy: direct beyond --memory-limit 0.001 was not refused: {refused.stderr[-300:]}")
+    else:
+        print(f"check_petsc: hierarchy: {refused.stderr.splitlines()[0]}")
+    opal_h, opal_petsc = os.path.join(work, "opal-hierarchy.h5"), os.path.join(work, "opal-hierarchy-petsc.h5")
+    run(ugo, "solve", *OPAL, "--kernel", "hierarchical", "--root-size", "0.4", "--method", "direct", "--save-kernel", "-o", opal_h)
+    petsc(opal_h, "-o", opal_petsc, "--methods", "gmres:30", "--tolerance", "1e-13")
+    check("hierarchy, opal diffuser (twins), 2 ranks: gmres:30 against ugo's direct solution", relative(field(opal_petsc), field(opal_h)), HIERARCHY_SOLUTION)
+    trace = [*HIERARCHY[:1], "--directions", "4", "--forward", "--photons", "100000", "--bins-of", mine]
+    agreement(ugo, work, mine, [os.path.join(work, "hierarchy-gmres-30-2.h5")], trace)
+
+
+def hierarchy_ranks(work, mine, ranks):
+    """On `ranks` ranks: GMRES(30) (with MUMPS on K multiplied out and the spectrum) and
+    BiCGSTAB at 1e-13 against ugo's direct solution, the illuminance from the factors,
+    ρ(K) against `ugo norms` and `K v = ρ v` for scipy's K (tests/io/kernel_check.py)."""
+    x = field(mine)
+    for first, extra in (("gmres:30", ["direct", "--eigenvalues", "2"]), ("bicgstab", [])):
+        out, report = (os.path.join(work, f"hierarchy-{first.replace(':', '-')}-{ranks}.{e}") for e in ("h5", "json"))
+        said = run(os.path.join(HERE, "run"), "-n", ranks, mine, "-o", out, "--methods", ",".join([first] + extra[:1]),
+                   "--tolerance", "1e-13", *extra[1:], "--report", report)
+        print(said, end="")
+        what = f"hierarchy, {ranks} rank(s)"
+        check(f"{what}: {first} on the factors against ugo's direct solution", relative(field(out), x), HIERARCHY_SOLUTION)
+        check(f"{what}: illuminance from the factors against ugo's", relative(field(out, "field/illuminance"), field(mine, "field/illuminance")), HIERARCHY_SOLUTION)
+        if not extra:
+            continue
+        figures = json.load(open(report))
+        check(f"{what}: the LU's residual on K multiplied out", figures["runs"]["direct"]["residual"], 1e-13)
+        with h5py.File(os.path.join(work, "hierarchy-norms.h5"), "r") as f:
+            rho = f["norms"].attrs["spectral_radius"]
+        s = figures["spectral_radius"]
+        check(f"{what}: SLEPc rho(K) against ugo norms", abs(s - rho) / rho, RHO)
+        with h5py.File(mine, "r") as f:
+            K = kernel_of(f)[0]
+        with h5py.File(out, "r") as f:
+            v = f["petsc/spectrum/vectors"][..., 0].ravel()
+        check(f"{what}: K v = rho v, K from scipy", np.abs(K @ v - s * v).max() / (s * np.abs(v).max()), 1e-9)
+
+
 def main():
     ugo = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.join(ROOT, "target", "release", "ugo")
     work = sys.argv[2] if len(sys.argv) > 2 else tempfile.mkdtemp(prefix="ugo-petsc-")
     os.makedirs(work, exist_ok=True)
     cornell(ugo, work)
     opal(ugo, work)
+    hierarchical(ugo, work)
     if failures:
         sys.exit(f"check_petsc: FAILED: {failures}")
     print("check_petsc: ok")

@@ -2,7 +2,9 @@
 
 Two sources, one result (`Kernel`): the `/kernel` group of a solution file written by
 `ugo solve CASE --save-kernel` (docs/kernel-file.md), or the PETSc binary files of
-`ugo export FILE.h5 --format petsc` (`K.petsc`, `L0.petsc`).
+`ugo export FILE.h5 --format petsc` (`K.petsc`, `L0.petsc`). The hierarchical kernel
+(`/kernel/hierarchy`) is read by hierarchy.py into the same `Kernel`, `K` a product of
+factors; it shares `patch_range`, `blocks`, `_mat` and `_vec` from here.
 
 From `/kernel`, every rank reads with h5py only the rows of `G` it needs: the rows of the
 patches it owns and of their twins behind two-sided transmitting surfaces, and forms its
@@ -46,6 +48,9 @@ class Kernel:
     first_row: int = 0
     # `I − K` as exported (`I-K.petsc`), when read from the PETSc export.
     one_minus: PETSc.Mat = None
+    # `K` as the product `factors[-1] ⋯ factors[0]` of distributed AIJ matrices, when `K`
+    # is a shell over them (the hierarchy, hierarchy.py).
+    factors: list = None
 
 
 def patch_range(patches, comm):
@@ -78,10 +83,13 @@ def _rows(g, indptr, runs, cells, n):
     return sp.vstack(parts, format="csr") if parts else sp.csr_matrix((0, n))
 
 
-def _mat(local, n, comm):
-    """A distributed AIJ matrix from this rank's rows (scipy CSR, global columns)."""
+def _mat(local, n, comm, columns=None):
+    """A distributed AIJ matrix from this rank's rows (scipy CSR, n global columns);
+    `columns` is this rank's share of the columns, the local length of the vectors it
+    multiplies (default: its row count, as for a square matrix split alike)."""
     local.sort_indices()
-    m = PETSc.Mat().createAIJ(size=((local.shape[0], n), (local.shape[0], n)), comm=comm)
+    rows = local.shape[0]
+    m = PETSc.Mat().createAIJ(size=((rows, PETSc.DETERMINE), (rows if columns is None else columns, n)), comm=comm)
     m.setPreallocationCSR((local.indptr.astype(PETSc.IntType), local.indices.astype(PETSc.IntType), local.data))
     m.assemble()
     return m
@@ -127,21 +135,31 @@ def from_solution(path, comm=PETSc.COMM_WORLD):
 def _local_kernel(own, twins, where, reflect, transmit, transmits, material, twin):
     """This rank's rows of K = B·G: each patch's block times its rows (and its twin's)."""
     cells = reflect.shape[1]
+    extra = own.shape[0]
+    stacked = sp.vstack([own, twins], format="csr")
+    b = blocks(reflect, transmit, transmits, material, twin, lambda j: j * cells, lambda t: extra + where[t], stacked.shape[0])
+    return (b @ stacked).tocsr()
+
+
+def blocks(reflect, transmit, transmits, material, twin, own_column, twin_column, columns):
+    """This rank's rows of B (its patches `material`, `twin`), as scipy CSR with `columns`
+    columns: patch j's row block `ρ̄_m(j)` at column `own_column(j)` and, behind a two-sided
+    transmitting surface, `τ̄_m(j)` at `twin_column(twin[j])`."""
+    cells = reflect.shape[1]
     rows, cols, vals = [], [], []
     out, inc = np.meshgrid(np.arange(cells), np.arange(cells), indexing="ij")
-    extra = own.shape[0]
     for j, (m, t) in enumerate(zip(material, twin)):
         rows.append((j * cells + out).ravel())
-        cols.append((j * cells + inc).ravel())
+        cols.append((own_column(j) + inc).ravel())
         vals.append(reflect[m].ravel())
         if t != NO_TWIN and transmits[m]:
             rows.append((j * cells + out).ravel())
-            cols.append((extra + where[int(t)] + inc).ravel())
+            cols.append((twin_column(int(t)) + inc).ravel())
             vals.append(transmit[m].ravel())
-    stacked = sp.vstack([own, twins], format="csr")
-    shape = (own.shape[0], stacked.shape[0])
-    b = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=shape)
-    return (b @ stacked).tocsr()
+    shape = (len(material) * cells, columns)
+    if not vals:
+        return sp.csr_matrix(shape)
+    return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=shape)
 
 
 def from_export(folder, cells, comm=PETSc.COMM_WORLD):

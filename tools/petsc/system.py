@@ -1,7 +1,8 @@
 """The operator `A = I − K` of `(I − K) L = L0` (docs/design.md §2), in two forms:
 
-* assembled (`assembled`): an AIJ matrix, from this rank's rows of `K` in scipy CSR; what
-  the direct solver (an LU factorization) needs;
+* assembled (`assembled`): an AIJ matrix, from this rank's rows of `K` in scipy CSR, or,
+  for a `K` given as factors (the hierarchy), their product by PETSc's sparse products;
+  what the direct solver (an LU factorization) needs;
 * matrix-free (`shell`): a PETSc shell matrix whose product is `y = x − K x`, calling only
   `K.mult`. Krylov solvers (KSP) and SLEPc need nothing else, so any `K` that can be applied
   across the ranks plugs in here: the assembled `K` of the kernel file today (the test
@@ -42,6 +43,8 @@ def assembled(kernel):
     """`I − K` as an AIJ matrix with `K`'s row layout (needs the kernel's CSR rows)."""
     if kernel.one_minus is not None:
         return kernel.one_minus
+    if kernel.factors is not None:
+        return _multiplied_out(kernel.factors)
     local = kernel.local
     rows, n = local.shape[0], local.shape[1]
     eye = sp.eye(rows, n, k=kernel.first_row, format="csr")
@@ -51,3 +54,14 @@ def assembled(kernel):
     A.setPreallocationCSR((a.indptr.astype(PETSc.IntType), a.indices.astype(PETSc.IntType), a.data))
     A.assemble()
     return A
+
+
+def _multiplied_out(factors):
+    """`I − factors[-1] ⋯ factors[0]` as an AIJ matrix (PETSc's distributed MatMatMult)."""
+    product = factors[0]
+    for f in factors[1:]:
+        product = f.matMult(product)
+    product.scale(-1.0)
+    product.setOption(PETSc.Mat.Option.NEW_NONZERO_ALLOCATION_ERR, False)
+    product.shift(1.0)
+    return product

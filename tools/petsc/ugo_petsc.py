@@ -3,7 +3,9 @@
 
 Reads the kernel `K = B·G` and `L0` saved by `ugo solve CASE --save-kernel` (the `/kernel`
 group of the solution file, or with `--export DIR` the PETSc binary files of `ugo export
---format petsc`), then
+--format petsc`), or the hierarchical kernel as its factors `K = B·P·Λ·R` (`/kernel/
+hierarchy`, hierarchy.py; the Krylov solvers and SLEPc apply them without forming `K`),
+then
 
 * solves `(I − K) L = L0` with each method of `--methods`: KSP GMRES(m) and BiCGSTAB
   (no preconditioner, `x_0 = L0`, stopping at `‖r‖₂ ≤ tol·‖L0‖₂`, as ugo's) and `direct`,
@@ -42,7 +44,8 @@ def arguments(argv):
     p.add_argument("--tolerance", type=float, help="relative residual ‖r‖₂/‖L0‖₂ to stop at (default: the file's `tolerance`)")
     p.add_argument("--max-iterations", type=int, help="most iterations (default: the file's `max_iterations`)")
     p.add_argument("--direct", choices=("mumps", "superlu_dist"), help="the LU package (default: MUMPS if PETSc has it)")
-    p.add_argument("--matrix-free", action="store_true", help="apply I - K as a shell operator over K (Krylov and SVD)")
+    p.add_argument("--matrix-free", action="store_true", help="apply I - K as a shell operator over K (Krylov and SVD; always so for a hierarchical kernel)")
+    p.add_argument("--memory-limit", type=float, metavar="GiB", help="largest memory for a hierarchical K multiplied out for `direct`, all ranks together (default: half the machine's or its control group's)")
     p.add_argument("--eigenvalues", type=int, default=0, metavar="N", help="the N eigenvalues of K of largest magnitude (SLEPc)")
     p.add_argument("--mode", type=int, metavar="J", help="also write eigenvector J (1 = the dominant) as the field of a solution file, for ugo render")
     p.add_argument("--mode-output", metavar="FILE", help="that file (default: OUTPUT without .h5, then -mode-J.h5)")
@@ -57,6 +60,7 @@ def main():
     slepc4py.init([sys.argv[0]] + petsc_options)
     from petsc4py import PETSc
 
+    import hierarchy
     import kernel_read
     import solution_file
     import solvers
@@ -72,13 +76,22 @@ def main():
         raise SystemExit(f"ugo_petsc: --mode {args.mode} needs --eigenvalues N with N ≥ {args.mode}")
     tolerance, max_iterations = file_settings(args)
     start = time.perf_counter()
-    kernel = kernel_read.from_export(args.export, cells(args.solution), comm) if args.export else kernel_read.from_solution(args.solution, comm)
+    if args.export:
+        kernel = kernel_read.from_export(args.export, cells(args.solution), comm)
+    elif hierarchy.is_hierarchical(args.solution):
+        kernel = hierarchy.from_solution(args.solution, comm)
+    else:
+        kernel = kernel_read.from_solution(args.solution, comm)
     read_seconds = time.perf_counter() - start
     n = kernel.K.getSize()[0]
     package = args.direct or ("mumps" if PETSc.Sys.hasExternalPackage("mumps") else "superlu_dist")
-    say(f"ugo_petsc: {args.solution}: {n} unknowns, {kernel.K.getInfo()['nz_used']:.0f} non-zeros of K, {comm.getSize()} ranks; read in {read_seconds:.3f} s")
+    say(f"ugo_petsc: {args.solution}: {n} unknowns, {stored(kernel)}, {comm.getSize()} ranks; read in {read_seconds:.3f} s")
+    if kernel.factors is not None and any(solvers.parse(m)[0] == "direct" for m in methods):
+        limit = args.memory_limit * 2**30 if args.memory_limit else hierarchy.memory_limit()
+        bound = hierarchy.check_expansion(kernel, args.solution, limit)
+        say(f"  direct: K multiplied out on the leaves, at most {bound:.0f} non-zeros (limit {limit / 2**30:.2f} GiB)")
     assembled = None
-    iterative = system.shell(kernel.K) if args.matrix_free else None
+    iterative = system.shell(kernel.K) if args.matrix_free or kernel.factors is not None else None
 
     def operator(kind):
         nonlocal assembled
@@ -121,6 +134,14 @@ def main():
         if args.report:
             report(args, n, comm.getSize(), read_seconds, runs, eig, sing, package)
     comm.barrier()
+
+
+def stored(kernel):
+    """What holds `K`: its non-zeros, or those of its factors (the hierarchy)."""
+    if kernel.factors is None:
+        return f"{kernel.K.getInfo()['nz_used']:.0f} non-zeros of K"
+    counts = " + ".join(f"{f.getInfo()['nz_used']:.0f}" for f in kernel.factors[::-1])
+    return f"K = B·P·Λ·R with {counts} non-zeros"
 
 
 def file_settings(args):

@@ -1,0 +1,208 @@
+"""The hierarchical kernel of a solution file (`/kernel/hierarchy`, docs/kernel-file.md)
+as distributed PETSc factors, never multiplied out for the Krylov solvers (docs/petsc.md):
+
+    K = B · diag(receive) · P · Λ · R · diag(send)
+
+with, every index times the C cells plus the cell (N leaves, T tree nodes by depth-first
+position, U bundles):
+
+* `R` (TC × NC), the pull: node ← the area-weighted mean of the leaves under it (the
+  product of the area shares on the way up); a cluster's value, the cell-weighted mean
+  `Σ_m (μ_m/π) x_m`, in its cell 0;
+* `Λ` (UC × TC), the links: bundle `(b, d)` ← node `(q, m)` by `F^{d,m}`, `d = 65535`
+  spread over the cells as `μ_d/π`;
+* `P` (NC × UC), the push: leaf `(l, d)` ← bundle `(b, d)` by the leaf's share;
+* `B` (NC × NC), the material blocks (kernel_read.blocks), as for the explicit kernel.
+
+The diagonals are folded in: `receive` scales `P`'s rows, `send` `R`'s columns. Each
+factor is an AIJ matrix whose rows are split over the ranks and whose column split is the
+row split of the factor applied before it, so the chain multiplies without redistribution:
+leaves by whole leaves (`kernel_read.patch_range`, as patches), nodes and bundles evenly.
+Every rank reads the tree whole (parents, weights, clusters, the leaves' positions: O(T))
+and only its own rows of the links' pieces and of the push.
+
+`K` and `G = diag(receive)·P·Λ·R·diag(send)` (for the illuminance) are shell matrices
+applying the chain (`Chain`), with the transpose for SLEPc's SVD. `direct` needs `K` on the
+leaves: `check_expansion` refuses it, naming the figures, when an upper bound on its
+non-zeros does not fit the memory limit; `system.assembled` then multiplies the factors.
+"""
+
+import h5py
+import numpy as np
+import scipy.sparse as sp
+from petsc4py import PETSc
+
+from kernel_read import NO_TWIN, Kernel, _mat, _vec, blocks, patch_range
+
+# `gather/d` of a link whose light arrives in all cells alike (`link.rs`'s ALL_CELLS).
+ALL_CELLS = 65535
+# AIJ bytes per stored non-zero: an f64 value and an int32 column index.
+BYTES_PER_NONZERO = 12
+
+
+def is_hierarchical(path):
+    """Whether the solution file's `/kernel` holds the hierarchy (attribute `kernel`)."""
+    with h5py.File(path, "r") as f:
+        return "kernel" in f and f["kernel"].attrs.get("kernel") == "hierarchical"
+
+
+class Chain:
+    """The shell context of a product of matrices, `factors[-1] ⋯ factors[0]`: `mult`
+    applies them first to last, `multTranspose` their transposes last to first."""
+
+    def __init__(self, factors):
+        self.factors = factors
+        self.between = [f.createVecLeft() for f in factors[:-1]]
+
+    def mult(self, mat, x, y):
+        for f, out in zip(self.factors, self.between + [y]):
+            f.mult(x, out)
+            x = out
+
+    def multTranspose(self, mat, x, y):
+        ins = [x] + self.between[::-1]
+        outs = self.between[::-1] + [y]
+        for f, a, b in zip(self.factors[::-1], ins, outs):
+            f.multTranspose(a, b)
+
+
+def chain(factors):
+    """`factors[-1] ⋯ factors[0]` as a shell matrix."""
+    sizes = (factors[-1].getSizes()[0], factors[0].getSizes()[1])
+    m = PETSc.Mat().createPython(sizes, Chain(factors), comm=factors[0].getComm())
+    m.setUp()
+    return m
+
+
+def from_solution(path, comm=PETSc.COMM_WORLD):
+    """`K = B·G` and `G` as chains of distributed factors, `L0` and `D`, from `path`."""
+    with h5py.File(path, "r") as f:
+        k = f["kernel"]
+        if "hierarchy/operator" not in k:
+            raise SystemExit(f"ugo_petsc: {path}: /kernel says kernel = \"hierarchical\" but has no /kernel/hierarchy/operator; save it again with `ugo solve CASE --save-kernel`")
+        share = f["directions/projected"][:] / np.pi
+        h = k["hierarchy/operator"]
+        material, twin = k["patch_material"][:], k["twin"][:]
+        cells, leaves = len(share), len(material)
+        nodes, bundles = len(h["parent"]), len(h["gather/indptr"]) - 1
+        if k["B/reflection"].shape[1] != cells or len(h["leaf_position"]) != leaves:
+            raise SystemExit(f"ugo_petsc: {path}: /kernel/hierarchy has {len(h['leaf_position'])} leaves and /directions {cells} cells, /kernel {leaves} patches of {k['B/reflection'].shape[1]} cells")
+        first, last = patch_range(leaves, comm)
+        node_rows, bundle_rows = patch_range(nodes, comm), patch_range(bundles, comm)
+        n, own = leaves * cells, (last - first) * cells
+        sizes = [(b - a) * cells for a, b in (node_rows, bundle_rows)]
+        send, receive = np.repeat(h["send"][:], cells), np.repeat(h["receive"][first:last], cells)
+        R = _mat(_pull(h, share, node_rows) @ sp.diags(send), n, comm, columns=own)
+        Lam = _mat(_links(h, share, bundle_rows, nodes), nodes * cells, comm, columns=sizes[0])
+        P = _mat(sp.diags(receive) @ _push(h, cells, (first, last), bundles), bundles * cells, comm, columns=sizes[1])
+        reflect, transmit, transmits = k["B/reflection"][:], k["B/transmission"][:], k["B/transmits"][:]
+        B = _mat(blocks(reflect, transmit, transmits, material[first:last], twin[first:last], lambda j: (first + j) * cells, lambda t: t * cells, n), n, comm)
+        rows = slice(first * cells, last * cells)
+        l0, arriving = k["L0"][rows], k["direct/arriving"][rows]
+    factors = [R, Lam, P, B]
+    return Kernel(K=chain(factors), L0=_vec(l0, n, comm), cells=cells, G=chain(factors[:3]), D=_vec(arriving, n, comm), factors=factors)
+
+
+def _pull(h, share, node_rows):
+    """Rows `node_rows` of R: node ← each leaf under it by the product of the area shares
+    from the leaf up (`operator/weight`); a cluster's row is its cell 0, `μ_m/π` per cell."""
+    parent, weight, cluster = h["parent"][:], h["weight"][:], h["cluster"][:].astype(bool)
+    at = h["leaf_position"][:].astype(np.int64)
+    cells, leaves = len(share), len(at)
+    leaf, omega = np.arange(leaves), np.ones(leaves)
+    found = []
+    while len(at):
+        found.append((leaf, at, omega))
+        up = parent[at] != NO_TWIN
+        leaf, omega, at = leaf[up], omega[up] * weight[at[up]], parent[at[up]].astype(np.int64)
+    leaf, at, omega = (np.concatenate(a) for a in zip(*found))
+    a, b = node_rows
+    mine = (at >= a) & (at < b)
+    leaf, at, omega, spread = leaf[mine], at[mine] - a, omega[mine], cluster[at[mine]]
+    cell = np.arange(cells)
+    rows = np.concatenate([(at[~spread, None] * cells + cell).ravel(), np.repeat(at[spread] * cells, cells)])
+    cols = np.concatenate([(leaf[~spread, None] * cells + cell).ravel(), (leaf[spread, None] * cells + cell).ravel()])
+    vals = np.concatenate([np.repeat(omega[~spread], cells), (omega[spread, None] * share).ravel()])
+    return sp.csr_matrix((vals, (rows, cols)), shape=((b - a) * cells, leaves * cells))
+
+
+def _links(h, share, bundle_rows, nodes):
+    """Rows `bundle_rows` of Λ: bundle `(b, d)` ← node `(q, m)` by `f`; `d = ALL_CELLS`
+    spreads `f` over the bundle's cells as `μ_d/π`."""
+    a, b = bundle_rows
+    cells = len(share)
+    indptr = h["gather/indptr"][a : b + 1].astype(np.int64)
+    s, e = int(indptr[0]), int(indptr[-1])
+    source, d = h["gather/source"][s:e].astype(np.int64), h["gather/d"][s:e].astype(np.int64)
+    m, f = h["gather/m"][s:e].astype(np.int64), h["gather/f"][s:e]
+    row = np.repeat(np.arange(b - a), np.diff(indptr))
+    spread = d == ALL_CELLS
+    rows = [row[~spread] * cells + d[~spread]] + [row[spread] * cells + c for c in range(cells)]
+    cols = [source[~spread] * cells + m[~spread]] + [source[spread] * cells + m[spread]] * cells
+    vals = [f[~spread]] + [f[spread] * share[c] for c in range(cells)]
+    return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=((b - a) * cells, nodes * cells))
+
+
+def _push(h, cells, leaf_rows, bundles):
+    """Rows `leaf_rows` of P: leaf `(l, d)` ← bundle `(b, d)` by the leaf's share."""
+    a, b = leaf_rows
+    indptr = h["push/indptr"][a : b + 1].astype(np.int64)
+    s, e = int(indptr[0]), int(indptr[-1])
+    bundle, w = h["push/bundle"][s:e].astype(np.int64), h["push/share"][s:e]
+    leaf = np.repeat(np.arange(b - a), np.diff(indptr))
+    cell = np.arange(cells)
+    rows = (leaf[:, None] * cells + cell).ravel()
+    cols = (bundle[:, None] * cells + cell).ravel()
+    return sp.csr_matrix((np.repeat(w, cells), (rows, cols)), shape=((b - a) * cells, bundles * cells))
+
+
+def expansion_bound(factors):
+    """An upper bound on the non-zeros of `factors[-1] ⋯ factors[0]`: row by row, a row of
+    `X·Y` has at most the sum of the row counts of `Y` its entries pick, and at most the
+    product's columns."""
+    columns = factors[0].getSize()[1]
+    count = factors[0].createVecRight()
+    count.set(1.0)
+    for f in factors:
+        indptr, indices, values = f.getValuesCSR()
+        pattern = PETSc.Mat().createAIJ(size=f.getSizes(), comm=f.getComm())
+        pattern.setPreallocationCSR((indptr, indices, np.ones_like(values)))
+        pattern.assemble()
+        out = pattern.createVecLeft()
+        pattern.mult(count, out)
+        out.getArray()[:] = np.minimum(out.getArray(), columns)
+        count, _ = out, pattern.destroy()
+    return count.sum()
+
+
+def memory_limit():
+    """Half the least of the machine's memory (`MemTotal` of /proc/meminfo) and its control
+    group's limit (cgroup v2 `memory.max`, v1 `memory.limit_in_bytes`), bytes, as ugo's
+    default (src/kernel/memory.rs; ugo also weighs `ulimit -v`)."""
+    with open("/proc/meminfo") as fh:
+        least = next(int(line.split()[1]) for line in fh if line.startswith("MemTotal:")) * 1024
+    for path in ("/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"):
+        try:
+            with open(path) as fh:
+                least = min(least, int(fh.read().strip()))
+            break
+        except (OSError, ValueError):
+            continue
+    return least // 2
+
+
+def check_expansion(kernel, path, limit):
+    """Refuses `direct` when `G`, `K` and `I − K` on the leaves, at the bounds on their
+    non-zeros, would not fit `limit` bytes (all ranks together; rank 0 says why); else the
+    bound of `K`'s."""
+    n = kernel.K.getSize()[0]
+    bound = expansion_bound(kernel.factors)
+    need = BYTES_PER_NONZERO * (expansion_bound(kernel.factors[:3]) + 2 * bound + n)
+    if need > limit:
+        raise SystemExit(1 if kernel.K.getComm().getRank() else
+            f"ugo_petsc: {path}: direct needs the hierarchical K multiplied out on its {n // kernel.cells:,} leaves × "
+            f"{kernel.cells} cells: up to {bound:,.0f} non-zeros of K, {need / 2**30:.2f} GiB for G, K and I − K "
+            f"({BYTES_PER_NONZERO} bytes a non-zero), beyond the memory limit of {limit / 2**30:.2f} GiB "
+            f"(--memory-limit); gmres and bicgstab apply the factors without it"
+        )
+    return bound
