@@ -8,7 +8,6 @@
 //! light (every group on at factor 1); each group is solved on it as it stands.
 
 use super::error::StudyError;
-use super::readings::{Readings, read_field};
 use crate::io::{GroupField, IoError, LightSceneField, LightScenes, StoredSolution};
 use crate::kernel::{Explicit, Factored};
 use crate::luminaire::Source;
@@ -17,6 +16,7 @@ use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
 use crate::readout::illuminance::{arriving, patch_illuminance};
+use crate::readout::readings::{Readings, read_field};
 use crate::render::LitScene;
 use crate::scene::{LightScene, Scene};
 use crate::solve::{Method, Projection, SolveParams, System};

@@ -2,13 +2,13 @@
 //! bars, its grids and the UGR at its observers, read alike for the case's own field, for
 //! each light scene and by `ugo readout` after the solve.
 
+use super::error_bar::estimate_errors;
+use super::field::Field;
+use super::grid::{GridReading, read_grids};
+use super::probe::{ProbeReading, read_probes};
+use super::ugr::{UgrReading, read_observers};
 use crate::model::Model;
 use crate::progress::Progress;
-use crate::readout::error_bar::estimate_errors;
-use crate::readout::field::Field;
-use crate::readout::grid::{GridReading, read_grids};
-use crate::readout::probe::{ProbeReading, read_probes};
-use crate::readout::ugr::{UgrReading, read_observers};
 use crate::scene::Scene;
 
 /// What the `[[probe]]`, `[[grid]]` and `[[observer]]` tables of a case read of one field.
