@@ -132,7 +132,8 @@ pub fn read_out_solved(file: &Path, scene: &Scene, progress: &dyn Progress) -> R
         false => {
             same_groups(scene, &stored.scene, &groups, file)?;
             let xs: Vec<&[f64]> = groups.iter().map(|g| g.x.as_slice()).collect();
-            let terms = group_terms(scene, &model);
+            let lit = |g: usize| scene.lighting.scenes.iter().any(|s| s.factors[g] != 0.0);
+            let terms = group_terms(scene, &model, lit);
             read_light_scenes(scene, &mut model, &terms, &xs, progress)?
         }
     };

@@ -43,7 +43,7 @@ pub fn solve_light_scenes(
     how: &GroupSolves,
     progress: &dyn Progress,
 ) -> Result<LightScenes, StudyError> {
-    let terms = group_terms(scene, model);
+    let terms = group_terms(scene, model, |_| true);
     let fields = solve_groups(scene, model, x, &terms, how, progress)?;
     let xs: Vec<&[f64]> = fields.iter().map(|g| g.solve.x.as_slice()).collect();
     let scenes = read_light_scenes(scene, model, &terms, &xs, progress)?;
@@ -51,9 +51,16 @@ pub fn solve_light_scenes(
 }
 
 /// Each group's source term alone on `model` (`Model::source_term_of`), in the order of
-/// the scene's groups.
-pub(super) fn group_terms(scene: &Scene, model: &Model) -> Vec<SourceTerm> {
-    scene.lighting.groups.iter().map(|g| model.source_term_of(&g.luminaires, &g.surfaces)).collect()
+/// the scene's groups; a group `g` for which `wanted(g)` is false gets an empty term (no
+/// light traced: a group off in every light scene read).
+pub(super) fn group_terms(scene: &Scene, model: &Model, wanted: impl Fn(usize) -> bool) -> Vec<SourceTerm> {
+    let groups = scene.lighting.groups.iter().enumerate();
+    groups
+        .map(|(i, g)| match wanted(i) {
+            true => model.source_term_of(&g.luminaires, &g.surfaces),
+            false => model.source_term_of(&[], &[]),
+        })
+        .collect()
 }
 
 /// Every light scene of `scene` from the groups' source terms `terms` and fields `xs` (one
