@@ -38,7 +38,7 @@ pub enum StudyError {
     Interrupted(#[from] Interrupted),
     /// `ugo readout`: the stored field is not the case's.
     #[error(transparent)]
-    Readout(#[from] super::after_solve::ReadoutError),
+    Readout(#[from] super::readout_error::ReadoutError),
     /// A solution file could not be read.
     #[error(transparent)]
     Io(#[from] crate::io::IoError),
