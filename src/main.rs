@@ -202,6 +202,21 @@ enum Command {
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
+    /// Probes, grids, observers, cameras and light scenes of an edited case read on the
+    /// field of a solve saved with --save-kernel: no assembly, no solve (each light scene a
+    /// weighted sum of the stored groups' fields).
+    Readout {
+        /// The HDF5 file of a solve made with --save-kernel.
+        solution: PathBuf,
+        /// The case, edited (default: the case stored in the file); its geometry,
+        /// discretization, materials, luminaires, emission and groups must be the solved ones.
+        case: Option<PathBuf>,
+        /// The output HDF5 file (default: the solution file itself, replaced when complete).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        #[command(flatten)]
+        discretize: Discretize,
+    },
     /// Patches, unknowns, and the kernel's estimated size, before any assembly.
     Info {
         case: PathBuf,
@@ -358,6 +373,9 @@ fn run(command: Command) -> anyhow::Result<()> {
             cli::agree::run(&solution, &reference, &rendering, precise)
         }
         Command::Report { solution, output } => cli::report::run(&solution, output),
+        Command::Readout { solution, case, output, discretize } => {
+            cli::readout::run(&solution, case.as_deref(), &discretize, output)
+        }
         Command::Info { case, discretize } => cli::info::run(&case, &discretize),
         Command::Bench(options) => cli::bench::run(&options),
         Command::Export(options) => cli::export::run(&options),

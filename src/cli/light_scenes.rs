@@ -5,7 +5,7 @@
 
 use anyhow::Result;
 use std::path::{Path, PathBuf};
-use ugo::io::{LightScenes, write_probes_csv};
+use ugo::io::{LightSceneField, LightScenes, write_probes_csv};
 use ugo::readout::grid::GridReading;
 use ugo::scene::LightScene;
 
@@ -24,10 +24,22 @@ pub fn report(light: &LightScenes, light_scenes: &[LightScene], output: &Path, w
             g.name, s.applications, s.start, s.residual, s.info.seconds
         );
     }
+    let groups: Vec<&str> = light.groups.iter().map(|g| g.name.as_str()).collect();
+    report_scenes(&groups, &light.scenes, light_scenes, output, write_grids)
+}
+
+/// Prints every light scene (`scenes`, with factors for `groups`), and writes its files as
+/// [`report`] does; shared with `ugo readout`.
+pub fn report_scenes(
+    groups: &[&str],
+    scenes: &[LightSceneField],
+    light_scenes: &[LightScene],
+    output: &Path,
+    write_grids: &WriteGrids,
+) -> Result<()> {
     let stem = output.with_extension("").display().to_string();
-    for (scene, described) in light.scenes.iter().zip(light_scenes) {
-        let factors: Vec<String> =
-            light.groups.iter().zip(&scene.factors).map(|(g, f)| format!("{} {f}", g.name)).collect();
+    for (scene, described) in scenes.iter().zip(light_scenes) {
+        let factors: Vec<String> = groups.iter().zip(&scene.factors).map(|(g, f)| format!("{g} {f}")).collect();
         let e = &scene.energy;
         println!("  light scene \"{}\"   ({})", scene.name, factors.join(", "));
         println!(

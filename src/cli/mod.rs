@@ -11,6 +11,7 @@ pub mod kernel;
 pub mod light_scenes;
 pub mod options;
 pub mod probes;
+pub mod readout;
 pub mod render;
 pub mod report;
 pub mod size_key;

@@ -15,6 +15,7 @@ use ugo::luminaire::Source;
 use ugo::model::HierarchyRecord;
 use ugo::readout::daylight::DaylightReadings;
 use ugo::readout::grid::GridReading;
+use ugo::readout::probe::ProbeReading;
 use ugo::scene::{LightScene, Scene};
 use ugo::solve::norms::Norms;
 use ugo::solve::orders::OrderRecord;
@@ -217,13 +218,7 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
     if warnings > 0 {
         println!("  warnings           {warnings:>12}   (on stderr and in /warnings)");
     }
-    if !s.probes.is_empty() {
-        println!("  probes                   luminance cd/m²   illuminance lx   error bar lx   of it direct lx");
-        for p in &s.probes {
-            let bar = p.error.map_or("-".to_string(), |e| format!("± {e:.3}"));
-            println!("    {:<22} {:>15.4} {:>16.4} {:>14} {:>17.4}", p.name, p.luminance, p.illuminance, bar, p.direct);
-        }
-    }
+    print_probes(&s.probes);
     if !s.observers.is_empty() {
         super::glare::report(&s.observers, "  ");
     }
@@ -233,19 +228,30 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
     println!("  written            {}", output.display());
 }
 
+/// The probes' readings, a line each; shared with `ugo readout`.
+pub(super) fn print_probes(probes: &[ProbeReading]) {
+    if !probes.is_empty() {
+        println!("  probes                   luminance cd/m²   illuminance lx   error bar lx   of it direct lx");
+        for p in probes {
+            let bar = p.error.map_or("-".to_string(), |e| format!("± {e:.3}"));
+            println!("    {:<22} {:>15.4} {:>16.4} {:>14} {:>17.4}", p.name, p.luminance, p.illuminance, bar, p.direct);
+        }
+    }
+}
+
 /// What every grid's files are drawn with: the sources (dimmed as the light scene has
 /// them), the mesh whose section by each grid's plane the plan draws, and the surfaces'
 /// names.
-struct GridFiles<'a> {
-    sources: &'a [Source],
-    mesh: &'a Mesh,
-    surfaces: &'a [String],
+pub(super) struct GridFiles<'a> {
+    pub(super) sources: &'a [Source],
+    pub(super) mesh: &'a Mesh,
+    pub(super) surfaces: &'a [String],
 }
 
 /// Each grid's CSV and plan (`ugo::io::write_grid_map`), `<stem>-<grid>.{csv,png}`, and
 /// under a `[sky]` its daylight factor's (or ratio's) plan `<stem>-<grid>-DF.png` (`-DR`);
 /// the points left out of the statistics counted after them.
-fn write_grids(
+pub(super) fn write_grids(
     grids: &[GridReading],
     stem: &str,
     files: &GridFiles,

@@ -236,14 +236,24 @@ pub(super) fn write_identity(
     directions: &DirectionSet,
 ) -> hdf5::Result<()> {
     text_attr(file, "method", method)?;
-    text_attr(file, "scene_name", &scene.name)?;
-    text_attr(file, "scene_file", &scene.path.display().to_string())?;
-    text_attr(file, "scene_text", &scene.source)?;
-    write_case_files(&file.create_group("case_files")?, scene)?;
+    write_case(file, scene)?;
     text_attr(file, "version", env!("CARGO_PKG_VERSION"))?;
     text_attr(file, "directions", directions.name())?;
     text_attr(file, "units", "luminance cd/m2, illuminance lx, flux lm, lengths m")
 }
+
+/// The case of a file: its name, path and text (root attributes, [`CASE_ATTRIBUTES`]) and
+/// its own files (`/case_files`); what `ugo readout` replaces with the edited case.
+pub(super) fn write_case(file: &hdf5::File, scene: &Scene) -> hdf5::Result<()> {
+    let [name, path, text] = CASE_ATTRIBUTES;
+    text_attr(file, name, &scene.name)?;
+    text_attr(file, path, &scene.path.display().to_string())?;
+    text_attr(file, text, &scene.source)?;
+    write_case_files(&file.create_group("case_files")?, scene)
+}
+
+/// The root attributes [`write_case`] writes.
+pub(super) const CASE_ATTRIBUTES: [&str; 3] = ["scene_name", "scene_file", "scene_text"];
 
 fn write_luminaires(g: &hdf5::Group, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     let sources = &s.model.sources;

@@ -156,11 +156,11 @@ fn read_from(file: &File) -> Result<StoredKernel, Why> {
     let rays: u64 = g.group("direct")?.attr("rays")?.read_scalar()?;
     let l0 = vector("L0", n * k)?;
     let fingerprint = fingerprint(&g.group("fingerprint")?)?;
-    let direct = DirectLight { arriving, intercepted, rays: rays as usize, least: Vec::new() };
-    let hierarchy = match hierarchical {
-        true => Some(read_hierarchy(file, n, vector("direct/least", n)?)?),
-        false => None,
-    };
+    // A hierarchy's leaves keep their cuts: a group's light (`Model::source_term_of`) is cut
+    // as the solve cut it, so that it adds up to the stored `D` (`docs/light-scenes.md`).
+    let least = if hierarchical { vector("direct/least", n)? } else { Vec::new() };
+    let direct = DirectLight { arriving, intercepted, rays: rays as usize, least: least.clone() };
+    let hierarchy = hierarchical.then(|| read_hierarchy(file, n, least)).transpose()?;
     if transport.rows() != n * k {
         return Err(Why(format!(
             "/kernel holds an operator of {} unknowns for {n} patches × {k} cells",

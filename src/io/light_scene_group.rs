@@ -82,14 +82,22 @@ pub(super) fn write_light_scenes(
 ) -> hdf5::Result<()> {
     let g = file.create_group("light_groups")?;
     write_groups(&g, model, light)?;
+    write_factors(&g, &light.scenes)?;
     g.new_attr::<f64>().create("maintenance_factor")?.write_scalar(&scene.lighting.maintenance_factor)?;
-    let scenes = file.create_group("light_scenes")?;
-    let k = model.kernel.cells();
-    for s in &light.scenes {
-        let group = scenes.create_group(&s.name)?;
-        write_scene(&group, s, model.mesh.len(), k)?;
-    }
-    Ok(())
+    write_scenes(file, &light.scenes, model.mesh.len(), model.kernel.cells())
+}
+
+/// `/light_scenes/<name>/…` of every light scene, on `n` patches of `k` cells.
+pub(super) fn write_scenes(file: &hdf5::File, scenes: &[LightSceneField], n: usize, k: usize) -> hdf5::Result<()> {
+    let group = file.create_group("light_scenes")?;
+    scenes.iter().try_for_each(|s| write_scene(&group.create_group(&s.name)?, s, n, k))
+}
+
+/// `/light_groups/{scene_names,factors}`: the light scenes and their factors per group.
+pub(super) fn write_factors(g: &hdf5::Group, scenes: &[LightSceneField]) -> hdf5::Result<()> {
+    let count = scenes.first().map_or(0, |s| s.factors.len());
+    strings(g, "scene_names", scenes.iter().map(|s| s.name.as_str()))?;
+    dataset(g, "factors", &Array2::from_shape_fn((scenes.len(), count), |(s, a)| scenes[s].factors[a]))
 }
 
 fn write_groups(g: &hdf5::Group, model: &Model, light: &LightScenes) -> hdf5::Result<()> {
@@ -98,14 +106,46 @@ fn write_groups(g: &hdf5::Group, model: &Model, light: &LightScenes) -> hdf5::Re
     let fields = Array4::from_shape_fn((count, n, k, 1), |(a, i, c, _)| light.groups[a].solve.x[i * k + c]);
     dataset(g, "luminance", &fields)?;
     dataset(g, "emission", &Array2::from_shape_fn((count, n), |(a, i)| light.groups[a].emission[i]))?;
-    strings(g, "scene_names", light.scenes.iter().map(|s| s.name.as_str()))?;
-    dataset(g, "factors", &Array2::from_shape_fn((light.scenes.len(), count), |(s, a)| light.scenes[s].factors[a]))?;
     let column = |f: fn(&Successive) -> f64| Array1::from_iter(light.groups.iter().map(|x| f(&x.solve)));
     dataset(g, "applications", &column(|s| s.applications as f64))?;
     dataset(g, "iterations", &column(|s| s.info.iterations as f64))?;
     dataset(g, "start_residual", &column(|s| s.start))?;
     dataset(g, "residual", &column(|s| s.residual))?;
     dataset(g, "seconds", &column(|s| s.info.seconds))
+}
+
+/// One group's field as a solve stored it (`/light_groups/{name,luminance}`).
+pub struct StoredGroup {
+    /// The group's name.
+    pub name: String,
+    /// Its field alone, flat `x[i·K + k]`, cd/m².
+    pub x: Vec<f64>,
+}
+
+/// The groups' fields of the solution file `path`, each `size` unknowns long; none when the
+/// case was solved without light scenes.
+pub fn read_light_groups(path: &Path, size: usize) -> Result<Vec<StoredGroup>, IoError> {
+    let (h5, bytes) = super::read::open(path)?;
+    if !h5.link_exists("light_groups") {
+        return Ok(Vec::new());
+    }
+    let file = super::read::File { h5: &h5, bytes };
+    let why = |super::read::Why(why)| IoError::NotASolution { path: path.to_path_buf(), why };
+    let names = file.raw::<VarLenUnicode>("light_groups/name").map_err(why)?;
+    let fields = file.raw::<f64>("light_groups/luminance").map_err(why)?;
+    if fields.len() != names.len() * size {
+        let what =
+            format!("/light_groups/luminance holds {} values, expected {} groups × {size}", fields.len(), names.len());
+        return Err(why(super::read::Why(what)));
+    }
+    if let Some(i) = fields.iter().position(|v| !v.is_finite()) {
+        return Err(why(super::read::Why(format!(
+            "/light_groups/luminance[{i}] = {}, not a finite luminance",
+            fields[i]
+        ))));
+    }
+    let chunks = fields.chunks(size.max(1));
+    Ok(names.iter().zip(chunks).map(|(n, x)| StoredGroup { name: n.as_str().to_string(), x: x.to_vec() }).collect())
 }
 
 fn write_scene(g: &hdf5::Group, s: &LightSceneField, n: usize, k: usize) -> hdf5::Result<()> {

@@ -29,6 +29,7 @@ mod plot;
 mod png_file;
 mod read;
 mod readings;
+mod readout_file;
 mod readout_group;
 mod report;
 mod solution;
@@ -50,7 +51,9 @@ pub use grid_map::{GridPlan, write_daylight_map, write_grid_map};
 pub use hdf5_file::write_solution;
 pub use isolines::isolines;
 pub use kernel_file::{StoredKernel, read_kernel};
-pub use light_scene_group::{GroupField, LightSceneField, LightScenes, read_light_scene};
+pub use light_scene_group::{
+    GroupField, LightSceneField, LightScenes, StoredGroup, read_light_groups, read_light_scene,
+};
 pub use lock::OutputLock;
 pub use no_room::survive_size_limit;
 pub use plan::{Axis, Frame, Layout};
@@ -59,6 +62,7 @@ pub use plot::{convergence_plot, register_font};
 pub use png_file::{auto_exposure, srgb, write_png};
 pub use read::{StoredSolution, read_solution};
 pub use readings::{write_grid_csv, write_probes_csv};
+pub use readout_file::{Readout, write_readout};
 pub use report::write_report;
 pub use solution::{KernelRecord, Loaded, MonteCarlo, Run, Solution};
 pub use spectrum_file::{Mode, read_mode};

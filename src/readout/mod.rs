@@ -20,4 +20,5 @@ pub mod mirrored;
 pub mod obstructed;
 pub mod openings;
 pub mod probe;
+pub mod readings;
 pub mod ugr;

@@ -36,6 +36,12 @@ pub enum StudyError {
     /// reference): `crate::interrupt`.
     #[error(transparent)]
     Interrupted(#[from] Interrupted),
+    /// `ugo readout`: the stored field is not the case's.
+    #[error(transparent)]
+    Readout(#[from] super::readout_error::ReadoutError),
+    /// A solution file could not be read.
+    #[error(transparent)]
+    Io(#[from] crate::io::IoError),
     /// `--strict`: warnings found before the solve (the model alone shows them).
     #[error("--strict: {} warning(s) found before the solve, nothing solved or written: {}", .0.len(), .0.iter().map(|w| crate::io::one_line(&w.to_string())).collect::<Vec<_>>().join("; "))]
     Strict(Vec<crate::io::Warning>),

@@ -14,12 +14,9 @@ use crate::luminaire::Source;
 use crate::model::{Model, SourceTerm};
 use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
-use crate::readout::error_bar::estimate_errors;
 use crate::readout::field::Field;
-use crate::readout::grid::read_grids;
 use crate::readout::illuminance::{arriving, patch_illuminance};
-use crate::readout::probe::read_probes;
-use crate::readout::ugr::read_observers;
+use crate::readout::readings::{Readings, read_field};
 use crate::render::LitScene;
 use crate::scene::{LightScene, Scene};
 use crate::solve::{Method, Projection, SolveParams, System};
@@ -46,24 +43,50 @@ pub fn solve_light_scenes(
     how: &GroupSolves,
     progress: &dyn Progress,
 ) -> Result<LightScenes, StudyError> {
-    let lighting = &scene.lighting;
-    let terms: Vec<SourceTerm> =
-        lighting.groups.iter().map(|g| model.source_term_of(&g.luminaires, &g.surfaces)).collect();
+    let terms = group_terms(scene, model, |_| true);
     let fields = solve_groups(scene, model, x, &terms, how, progress)?;
+    let xs: Vec<&[f64]> = fields.iter().map(|g| g.solve.x.as_slice()).collect();
+    let scenes = read_light_scenes(scene, model, &terms, &xs, progress)?;
+    Ok(LightScenes { groups: fields, scenes })
+}
+
+/// Each group's source term alone on `model` (`Model::source_term_of`), in the order of
+/// the scene's groups; a group `g` for which `wanted(g)` is false gets an empty term (no
+/// light traced: a group off in every light scene read).
+pub(super) fn group_terms(scene: &Scene, model: &Model, wanted: impl Fn(usize) -> bool) -> Vec<SourceTerm> {
+    let groups = scene.lighting.groups.iter().enumerate();
+    groups
+        .map(|(i, g)| match wanted(i) {
+            true => model.source_term_of(&g.luminaires, &g.surfaces),
+            false => model.source_term_of(&[], &[]),
+        })
+        .collect()
+}
+
+/// Every light scene of `scene` from the groups' source terms `terms` and fields `xs` (one
+/// per group of the scene): `x_s = Σ_g f_{s,g} x_g` and its readouts, `model` relit by each
+/// light scene in turn and given back as it came. Shared by the solve and `ugo readout`.
+pub(super) fn read_light_scenes(
+    scene: &Scene,
+    model: &mut Model,
+    terms: &[SourceTerm],
+    xs: &[&[f64]],
+    progress: &dyn Progress,
+) -> Result<Vec<LightSceneField>, StudyError> {
     let base = model.sources.clone();
     let mut own = None;
-    let mut scenes = Vec::with_capacity(lighting.scenes.len());
-    for light_scene in &lighting.scenes {
-        let parts: Vec<(f64, &SourceTerm)> = light_scene.factors.iter().copied().zip(&terms).collect();
+    let mut scenes = Vec::with_capacity(scene.lighting.scenes.len());
+    for light_scene in &scene.lighting.scenes {
+        let parts: Vec<(f64, &SourceTerm)> = light_scene.factors.iter().copied().zip(terms).collect();
         let relit = model.relight(dimmed(scene, &base, light_scene), SourceTerm::superpose(&parts));
         own.get_or_insert(relit);
-        scenes.push(read_out(scene, model, light_scene, &fields, progress));
+        scenes.push(read_out(scene, model, light_scene, xs, progress));
     }
     if let Some((sources, term)) = own {
         model.relight(sources, term);
     }
     crate::interrupt::check(|| "the light scenes' readouts".to_string())?;
-    Ok(LightScenes { groups: fields, scenes })
+    Ok(scenes)
 }
 
 /// The case's kernel as every group's solve takes it: factored, formed explicitly when the
@@ -130,23 +153,22 @@ pub fn dimmed(scene: &Scene, base: &[Source], light_scene: &LightScene) -> Vec<S
     base.iter().zip(factor).map(|(s, f)| s.scaled(f)).collect()
 }
 
-/// The light scene's field `Σ_g f_g x_g` and its readouts on `model`, relit by it (the
-/// observers' UGR from its dimmed luminaires and its own background).
+/// The light scene's field `Σ_g f_g x_g` (`xs` the groups' fields) and its readouts on
+/// `model`, relit by it (the observers' UGR from its dimmed luminaires and its own background).
 fn read_out(
     scene: &Scene,
     model: &Model,
     light_scene: &LightScene,
-    groups: &[GroupField],
+    xs: &[&[f64]],
     progress: &dyn Progress,
 ) -> LightSceneField {
     let mut x = vec![0.0; model.l0.len()];
-    for (&f, group) in light_scene.factors.iter().zip(groups) {
-        x.iter_mut().zip(&group.solve.x).for_each(|(x, g)| *x += f * g);
+    for (&f, group) in light_scene.factors.iter().zip(xs) {
+        x.iter_mut().zip(group.iter()).for_each(|(x, g)| *x += f * g);
     }
     let k = model.kernel.cells();
     let field = Field::from_unknowns(&x, k);
-    let mut probes = read_probes(&scene.probes, model, &field, progress);
-    estimate_errors(&mut probes, model, &field, progress);
+    let Readings { probes, grids, observers } = read_field(scene, model, &field, progress);
     LightSceneField {
         name: light_scene.name.clone(),
         factors: light_scene.factors.clone(),
@@ -156,8 +178,8 @@ fn read_out(
         direct_illuminance: patch_illuminance(&model.direct.arriving, k),
         energy: EnergyBalance::of(model, &x, scene.surfaces.len()),
         probes,
-        grids: read_grids(&scene.grids, model, &field, progress),
-        observers: read_observers(&scene.observers, model, &field),
+        grids,
+        observers,
         field,
     }
 }

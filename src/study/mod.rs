@@ -5,6 +5,7 @@
 //! ([`bench`]). The command line only parses its arguments, calls these and prints what
 //! they return.
 
+mod after_solve;
 mod bases;
 pub mod bench;
 mod daylight_alone;
@@ -14,15 +15,18 @@ mod kernel;
 mod light_scenes;
 mod near;
 mod openings;
+mod readout_error;
 mod solve;
 mod spectrum;
 mod view;
 mod warnings;
 
+pub use after_solve::read_out_solved;
 pub use bases::{BasisRow, BasisStudy, compare_bases};
 pub use error::StudyError;
 pub use kernel::{KernelError, model_with_kernel};
 pub use light_scenes::{GroupSolves, dimmed, lit_light_scene, solve_light_scenes};
+pub use readout_error::ReadoutError;
 pub use solve::{Job, solve_case};
 pub use spectrum::{Rate, chebyshev_rate, measured_rate, rates};
 pub use view::{lit_scene, lit_scene_with};

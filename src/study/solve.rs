@@ -14,12 +14,9 @@ use crate::kernel::{Explicit, Factored};
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
-use crate::readout::error_bar::estimate_errors;
 use crate::readout::field::Field;
-use crate::readout::grid::read_grids;
 use crate::readout::illuminance::{arriving, patch_illuminance};
-use crate::readout::probe::read_probes;
-use crate::readout::ugr::read_observers;
+use crate::readout::readings::{Readings, read_field};
 use crate::scene::Scene;
 use crate::solve::norms::Norms;
 use crate::solve::orders::{OrderRecord, reflection_orders};
@@ -126,10 +123,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     let field = Field::from_unknowns(&x, k);
     let illuminance = patch_illuminance(&arriving(&model, &x), k);
     let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
-    let mut probes = read_probes(&scene.probes, &model, &field, progress);
-    estimate_errors(&mut probes, &model, &field, progress);
-    let observers = read_observers(&scene.observers, &model, &field);
-    let grids = read_grids(&scene.grids, &model, &field, progress);
+    let Readings { probes, grids, observers } = read_field(scene, &model, &field, progress);
     crate::interrupt::check(|| "the readouts (probes, error bars, observers, grid points)".to_string())?;
     let mut solved = Solution {
         model,

@@ -8,7 +8,7 @@ use crate::support::{scratch, ugo};
 
 /// A grey box lit by a ceiling disc (group "ceiling") and a bulb (no group), a probe, a
 /// grid, a small camera and two light scenes.
-const CASE: &str = r#"
+pub(super) const CASE: &str = r#"
 [discretization]
 patch_size = 0.5
 

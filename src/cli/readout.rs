@@ -1,0 +1,59 @@
+//! `ugo readout OUT.h5 [CASE] [-o NEW.h5]`: probes, grids, observers, cameras and light
+//! scenes of an edited case read on the field a solve stored (`ugo::study::read_out_solved`,
+//! `docs/light-scenes.md`, "After the solve: ugo readout"): no assembly, no refinement, no
+//! solve. Without `-o` the solution file itself is replaced, whole, when the new one is
+//! complete; the CSV and plan files are written beside the output as `ugo solve` writes them.
+
+use super::options::Discretize;
+use super::solve::{GridFiles, print_probes, write_grids};
+use super::{Bars, check_writable, load};
+use anyhow::{Context, Result};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+use ugo::io::{OutputLock, read_solution, write_probes_csv, write_readout};
+use ugo::readout::grid::GridReading;
+use ugo::scene::{LightScene, Scene};
+use ugo::study;
+
+pub fn run(file: &Path, case: Option<&Path>, d: &Discretize, output: Option<PathBuf>) -> Result<()> {
+    let output = output.unwrap_or_else(|| file.to_path_buf());
+    check_writable(&output)?;
+    let _lock = OutputLock::take(&output)?;
+    let scene = match case {
+        Some(case) => load(case, d)?,
+        None => stored_case(file, d)?,
+    };
+    let start = Instant::now();
+    let r =
+        study::read_out_solved(file, &scene, &Bars::default()).map_err(|e| super::stop::not_written(e, &[&output]))?;
+    let seconds = start.elapsed().as_secs_f64();
+    write_readout(file, &output, &scene, &r).with_context(|| format!("writing {}", output.display()))?;
+    println!("ugo readout: {} read on the field of {} in {seconds:.3} s", scene.path.display(), file.display());
+    print_probes(&r.readings.probes);
+    if !r.readings.observers.is_empty() {
+        super::glare::report(&r.readings.observers, "  ");
+    }
+    let names: Vec<String> = scene.surfaces.iter().map(|s| s.name.clone()).collect();
+    let files = GridFiles { sources: &r.model.sources, mesh: &r.model.mesh, surfaces: &names };
+    write_grids(&r.readings.grids, &output.with_extension("").display().to_string(), &files, None)?;
+    if !r.readings.probes.is_empty() {
+        let csv = super::beside(&output, "-probes.csv");
+        write_probes_csv(&csv, &r.readings.probes, None)?;
+        println!("  probes             {}", csv.display());
+    }
+    let lit = |grids: &[GridReading], stem: &str, light_scene: &LightScene| {
+        let dimmed = study::dimmed(&scene, &r.model.sources, light_scene);
+        write_grids(grids, stem, &GridFiles { sources: &dimmed, ..files }, None)
+    };
+    let groups: Vec<&str> = scene.lighting.groups.iter().map(|g| g.name.as_str()).collect();
+    super::light_scenes::report_scenes(&groups, &r.light_scenes, &scene.lighting.scenes, &output, &lit)?;
+    println!("  written            {}", output.display());
+    Ok(())
+}
+
+/// The case stored in the solution file, with the command line's discretization flags.
+fn stored_case(file: &Path, d: &Discretize) -> Result<Scene> {
+    let mut scene = read_solution(file)?.scene;
+    scene.discretize(&d.asked())?;
+    Ok(scene)
+}

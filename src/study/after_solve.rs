@@ -1,0 +1,95 @@
+//! Readouts and light scenes after the solve (issue 38, point 2; `docs/light-scenes.md`,
+//! "After the solve: ugo readout"). The model is rebuilt around the kernel a solve saved
+//! (`super::kernel`: no assembly, no refinement) for the edited case, which must be the
+//! solved one in everything the field depends on: its geometry and discretization (the
+//! kernel file's fingerprint), its reflectances and luminaires, its surfaces' emission and
+//! its groups of sources. Then, with no solve, the stored field `x` is read at the case's
+//! probes, grids and observers, and every light scene is `x_s = Σ_g f_{s,g} x_g`
+//! (`docs/design.md` §1: the field is linear in its sources) of the stored groups' fields,
+//! read out as the solve reads it (`super::light_scenes::read_light_scenes`).
+
+use super::error::StudyError;
+use super::kernel::model_with_kernel;
+use super::light_scenes::{group_terms, read_light_scenes};
+use super::readout_error::ReadoutError;
+use crate::io::{Readout, StoredGroup, read_light_groups, read_solution};
+use crate::model::Model;
+use crate::progress::Progress;
+use crate::readout::field::Field;
+use crate::readout::readings::read_field;
+use crate::scene::Scene;
+use std::path::Path;
+
+/// The readouts of `scene` on the field stored in the solution file `file`.
+pub fn read_out_solved(file: &Path, scene: &Scene, progress: &dyn Progress) -> Result<Readout, StudyError> {
+    let (mut model, record) = model_with_kernel(scene, Some(file), false, progress)?;
+    let paths = || (scene.path.clone(), file.to_path_buf());
+    if let Some(loaded) = record.loaded.filter(|l| !l.rebuilt.is_empty()) {
+        let (case, file) = paths();
+        return Err(ReadoutError::Changed { case, file, changes: loaded.rebuilt }.into());
+    }
+    let stored = read_solution(file)?;
+    same_emission(scene, &model, &stored.mesh.emission, file)?;
+    if scene.sky.is_some() && (scene.probes != stored.scene.probes || scene.grids != stored.scene.grids) {
+        let (case, file) = paths();
+        return Err(ReadoutError::Daylight { case, file }.into());
+    }
+    let x = stored.luminance;
+    let k = model.kernel.cells();
+    let readings = read_field(scene, &model, &Field::from_unknowns(&x, k), progress);
+    let groups = read_light_groups(file, x.len())?;
+    let light_scenes = match scene.lighting.scenes.is_empty() {
+        true => Vec::new(),
+        false => {
+            same_groups(scene, &stored.scene, &groups, file)?;
+            let xs: Vec<&[f64]> = groups.iter().map(|g| g.x.as_slice()).collect();
+            let lit = |g: usize| scene.lighting.scenes.iter().any(|s| s.factors[g] != 0.0);
+            let terms = group_terms(scene, &model, lit);
+            read_light_scenes(scene, &mut model, &terms, &xs, progress)?
+        }
+    };
+    Ok(Readout { model, readings, light_scenes })
+}
+
+/// Refuses a case whose surfaces emit otherwise than the solved ones (`stored`, per patch).
+fn same_emission(scene: &Scene, model: &Model, stored: &[f64], file: &Path) -> Result<(), ReadoutError> {
+    let case = &model.mesh.emission;
+    let Some(patch) = (0..case.len()).find(|&i| stored.get(i) != Some(&case[i])) else { return Ok(()) };
+    let surface = model.mesh.patches[patch].surface as usize;
+    Err(ReadoutError::Emission {
+        case: scene.path.clone(),
+        file: file.to_path_buf(),
+        surface: scene.surfaces.get(surface).map_or_else(|| format!("#{surface}"), |s| s.name.clone()),
+        patch,
+        case_value: case[patch],
+        stored: stored.get(patch).copied().unwrap_or(f64::NAN),
+    })
+}
+
+/// Refuses a light scene that lights a group the file does not hold, and groups of sources
+/// other than the solved case's (`solved`, whose fields are `groups`).
+fn same_groups(scene: &Scene, solved: &Scene, groups: &[StoredGroup], file: &Path) -> Result<(), ReadoutError> {
+    let held = |name: &str| groups.iter().any(|g| g.name == name);
+    for light_scene in &scene.lighting.scenes {
+        let lit = scene.lighting.groups.iter().zip(&light_scene.factors).filter(|(_, f)| **f != 0.0);
+        if let Some(group) = lit.map(|(g, _)| g).find(|g| !held(&g.name)) {
+            return Err(ReadoutError::AbsentGroup {
+                case: scene.path.clone(),
+                file: file.to_path_buf(),
+                scene: light_scene.name.clone(),
+                group: group.name.clone(),
+                present: groups.iter().map(|g| format!("\"{}\"", g.name)).collect(),
+            });
+        }
+    }
+    let (ours, theirs) = (&scene.lighting.groups, &solved.lighting.groups);
+    let differs = (0..ours.len().max(theirs.len())).find(|&i| ours.get(i) != theirs.get(i));
+    match differs {
+        None => Ok(()),
+        Some(i) => Err(ReadoutError::OtherGroup {
+            case: scene.path.clone(),
+            file: file.to_path_buf(),
+            group: ours.get(i).or(theirs.get(i)).map_or_else(String::new, |g| g.name.clone()),
+        }),
+    }
+}

@@ -1,0 +1,114 @@
+//! `ugo readout` (issue 38, point 2; `docs/light-scenes.md`, "After the solve"): a light
+//! scene and a probe added to a solved case and read on its stored field equal the same
+//! scene and probe solved with the case, on the uniform and the hierarchical kernel; the
+//! file is replaced whole or written beside; a changed geometry, a light scene lighting a
+//! group the file does not hold and a file without its kernel are refused, the file left
+//! as it was. (`group_by`'s groups: `tests/scene/luminaire_arrays.rs`.)
+
+use super::light_scenes::CASE;
+use super::{assert_clean_failure, stderr};
+use crate::support::{scratch, ugo};
+use std::path::Path;
+
+/// The light scene and the probe added after the solve.
+const ADDED: &str = r#"
+[[light_scene]]
+name = "third"
+groups = { default = 0.3, ceiling = 0.6 }
+
+[[probe]]
+name = "wall"
+position = [0, 1, 1]
+normal = [1, 0, 0]
+"#;
+
+fn run(args: &[&str]) -> String {
+    let o = ugo(args);
+    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn read(file: &Path, name: &str) -> Vec<f64> {
+    hdf5::File::open(file).unwrap().dataset(name).unwrap().read_raw::<f64>().unwrap()
+}
+
+/// Largest difference of `a` from `b` relative to the largest `|b|`.
+fn relative(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs())) / scale
+}
+
+#[test]
+fn a_light_scene_and_a_probe_read_after_the_solve_equal_them_solved() {
+    for (name, kernel) in [("uniform", "uniform"), ("hierarchical", "hierarchical")] {
+        let dir = scratch(&format!("readout-{name}"));
+        let case = dir
+            .write("box.toml", &CASE.replace("patch_size = 0.5", &format!("patch_size = 0.5\nkernel = \"{kernel}\"")));
+        let edited = dir.write("box3.toml", &format!("{}{ADDED}", std::fs::read_to_string(&case).unwrap()));
+        let (case, edited) = (case.to_str().unwrap(), edited.to_str().unwrap());
+        let (solved, read_out, both) = (dir.join("a.h5"), dir.join("b.h5"), dir.join("c.h5"));
+        let (a, b, c) = (solved.to_str().unwrap(), read_out.to_str().unwrap(), both.to_str().unwrap());
+        run(&["solve", case, "--save-kernel", "-o", a]);
+        let before = std::fs::read(&solved).unwrap();
+        let summary = run(&["readout", a, edited, "-o", b]);
+        assert!(summary.contains("light scene \"third\"") && dir.join("b-third-probes.csv").exists(), "{summary}");
+        assert_eq!(std::fs::read(&solved).unwrap(), before, "{name}: -o changed the input");
+        // The same case solved with the scene and probe (on the hierarchy the file refined).
+        match kernel {
+            "uniform" => run(&["solve", edited, "-o", c]),
+            _ => run(&["solve", edited, "--kernel-file", a, "-o", c]),
+        };
+        for scene in ["night", "full", "third"] {
+            let at = |what: &str| format!("light_scenes/{scene}/{what}");
+            let field = relative(&read(&read_out, &at("field/luminance")), &read(&both, &at("field/luminance")));
+            assert!(field <= 1e-10, "{name}: {scene}: field {field:e}");
+            for what in ["probes/illuminance", "grids/desk/illuminance"] {
+                let d = relative(&read(&read_out, &at(what)), &read(&both, &at(what)));
+                assert!(d <= 1e-12, "{name}: {scene}: {what} {d:e}");
+            }
+        }
+        let probes = (read(&read_out, "probes/illuminance"), read(&both, "probes/illuminance"));
+        assert_eq!(probes.0.len(), 2);
+        assert!(relative(&probes.0, &probes.1) <= 1e-12, "{name}: {probes:?}");
+
+        // Without -o the file itself is replaced, and reads as a solve's.
+        run(&["readout", a, edited]);
+        assert_eq!(
+            read(&solved, "light_scenes/third/field/luminance"),
+            read(&read_out, "light_scenes/third/field/luminance")
+        );
+        run(&["report", a]);
+        run(&["render", a, "--light-scene", "third", "-o", dir.to_str().unwrap()]);
+    }
+}
+
+#[test]
+fn a_changed_case_is_refused_and_the_file_left_as_it_was() {
+    let dir = scratch("readout-refused");
+    let case = dir.write("box.toml", CASE);
+    let out = dir.join("a.h5");
+    let a = out.to_str().unwrap();
+    run(&["solve", case.to_str().unwrap(), "--save-kernel", "-o", a]);
+    let before = std::fs::read(&out).unwrap();
+    let refused = |text: &str, file: &str| {
+        let edited = dir.write("edited.toml", text);
+        let err = assert_clean_failure(&ugo(&["readout", file, edited.to_str().unwrap()]));
+        assert_eq!(std::fs::read(&out).unwrap(), before, "the file changed: {err}");
+        err
+    };
+    let err = refused(&CASE.replace("max = [2, 2, 2]", "max = [2, 2, 2.5]"), a);
+    assert!(err.contains("geometry") && err.contains("not reused"), "{err}");
+    let err = refused(&CASE.replace("ceiling", "lamp"), a);
+    assert!(
+        err.contains("\"full\"") && err.contains("group \"lamp\"") && err.contains("\"ceiling\", \"default\""),
+        "{err}"
+    );
+    let err = refused(&CASE.replace("flux = 300", "flux = 400"), a);
+    assert!(err.contains("\"lamp\"") && err.contains("emits"), "{err}");
+
+    let plain = dir.join("plain.h5");
+    run(&["solve", case.to_str().unwrap(), "-o", plain.to_str().unwrap()]);
+    let err = assert_clean_failure(&ugo(&["readout", plain.to_str().unwrap(), case.to_str().unwrap()]));
+    assert!(err.contains("--save-kernel"), "{err}");
+}
