@@ -38,7 +38,8 @@ enum Command {
         /// Reflection orders whose partial sums go to /orders (default 1,8,64 with neumann).
         #[arg(long, allow_negative_numbers = true, value_delimiter = ',', value_parser = cli::options::order)]
         orders: Option<Vec<usize>>,
-        /// Also compute the norms of K (needs the explicit product).
+        /// Also compute the norms of K (from the explicit product; matrix-free, without
+        /// ‖K‖_F and ‖K‖₂, when it is over the memory limit).
         #[arg(long)]
         norms: bool,
         #[command(flatten)]

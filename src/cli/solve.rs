@@ -17,7 +17,7 @@ use ugo::readout::daylight::DaylightReadings;
 use ugo::readout::grid::GridReading;
 use ugo::readout::probe::ProbeReading;
 use ugo::scene::{LightScene, Scene};
-use ugo::solve::norms::Norms;
+use ugo::solve::norms::{Estimate, Estimator, Norms};
 use ugo::solve::orders::OrderRecord;
 use ugo::solve::{Method, SolveParams};
 use ugo::study::{self, solve_case};
@@ -292,24 +292,44 @@ pub(super) fn write_grids(
 fn print_norms(n: &Norms, params: &SolveParams, runs: &[Run]) {
     let observed =
         runs.iter().find(|r| r.method == Method::Neumann).map_or("-".to_string(), |r| r.info.iterations.to_string());
-    println!("  norms of K");
+    match &n.matrix_free {
+        None => println!("  norms of K"),
+        Some(refused) => {
+            println!("  norms of K, matrix-free (exact for K ≥ 0): {}", refused.figures());
+            println!("    ‖K‖₁ = max Kᵀ·1 and ‖K‖∞ = max K·1 on the factored operator");
+        }
+    }
     println!("    ‖K‖₁             {:>12.6}", n.one);
     println!("    ‖K‖∞             {:>12.6}", n.infinity);
-    println!("    ‖K‖_F            {:>12.6}", n.frobenius);
-    println!(
-        "    ‖K‖₂             {:>12.6}   ({} power iterations{})",
-        n.two.value,
-        n.two.iterations,
-        converged(n.two.converged)
-    );
+    match (n.frobenius, n.two) {
+        (Some(frobenius), Some(two)) => {
+            println!("    ‖K‖_F            {frobenius:>12.6}");
+            println!("    ‖K‖₂             {:>12.6}   ({})", two.value, iterations(&two));
+        }
+        _ => {
+            println!("    ‖K‖_F            not computed (it needs every entry of K)");
+            println!(
+                "    ‖K‖₂             not computed (power iteration on KᵀK); ρ(K) ≤ ‖K‖₂ ≤ √(‖K‖₁‖K‖∞) = {:.6}",
+                n.two_bound()
+            );
+        }
+    }
     let r = &n.spectral_radius;
-    println!("    ρ(K)             {:>12.6}   ({} power iterations{})", r.value, r.iterations, converged(r.converged));
+    println!("    ρ(K)             {:>12.6}   ({})", r.value, iterations(r));
     println!("    cond∞(I − K)     {:>12.4}", n.condition_infinity);
     println!(
         "    Neumann iterations to {:.0e}: predicted {:.1}, observed {observed}",
         params.tolerance,
         n.predicted_iterations(params.tolerance)
     );
+}
+
+fn iterations(e: &Estimate) -> String {
+    let by = match e.by {
+        Estimator::Power => "power iterations",
+        Estimator::Arnoldi => "products with K by Arnoldi",
+    };
+    format!("{} {by}{}", e.iterations, converged(e.converged))
 }
 
 fn print_orders(orders: &OrderRecord, x: &[f64]) {

@@ -168,19 +168,21 @@ fn write_orders(g: &hdf5::Group, orders: &OrderRecord, k: usize) -> hdf5::Result
 }
 
 fn write_norms(g: &hdf5::Group, norms: &Norms, tolerance: f64) -> hdf5::Result<()> {
+    // matrix-free, ‖K‖_F and ‖K‖₂ are not computed: absent, with `matrix_free` 1 and the bound
+    let two = norms.two.map(|t| [("two", t.value), ("two_iterations", t.iterations as f64)]);
+    let optional = norms.frobenius.map(|f| ("frobenius", f)).into_iter().chain(two.into_iter().flatten());
     let values = [
         ("one", norms.one),
         ("infinity", norms.infinity),
-        ("frobenius", norms.frobenius),
-        ("two", norms.two.value),
-        ("two_iterations", norms.two.iterations as f64),
+        ("two_bound", norms.two_bound()),
+        ("matrix_free", norms.matrix_free.is_some() as u8 as f64),
         ("spectral_radius", norms.spectral_radius.value),
         ("spectral_radius_iterations", norms.spectral_radius.iterations as f64),
         ("spectral_radius_converged", norms.spectral_radius.converged as u8 as f64),
         ("condition_infinity", norms.condition_infinity),
         ("predicted_neumann_iterations", norms.predicted_iterations(tolerance)),
     ];
-    for (name, value) in values {
+    for (name, value) in values.into_iter().chain(optional) {
         g.new_attr::<f64>().create(name)?.write_scalar(&value)?;
     }
     Ok(())

@@ -4,7 +4,7 @@
 //! Solvers see both through `crate::solve::LinOp`; the factored form never builds the
 //! product, the explicit one is there for norms, direct solves and export.
 
-use super::blocks::apply_blocks;
+use super::blocks::{apply_blocks, apply_blocks_transposed};
 use super::hierarchy::Hierarchy;
 use super::memory::{BYTES_PER_NONZERO, Footprint};
 use super::refusal::TooLarge;
@@ -82,6 +82,17 @@ impl Kernel {
     /// transmission of what arrives at its twin.
     pub fn apply_materials(&self, z: &[f64], y: &mut [f64]) {
         apply_blocks(&self.blocks, &self.patch_material, &self.twin, self.cells(), z, y);
+    }
+
+    /// `z = Bᵀ y`, the transpose of [`Kernel::apply_materials`].
+    pub fn apply_materials_transposed(&self, y: &[f64], z: &mut [f64]) {
+        apply_blocks_transposed(&self.blocks, &self.patch_material, &self.twin, self.cells(), y, z);
+    }
+
+    /// True when every material block is non-negative, so that `K = B·G ≥ 0` entrywise
+    /// (`G ≥ 0`: form factors, cell shares and balancing factors are).
+    pub fn is_nonnegative(&self) -> bool {
+        self.blocks.iter().all(Block::is_nonnegative)
     }
 
     /// Upper bound of the non-zeros of the explicit product `B·G`: each row `(i,d)` of `G`
@@ -183,6 +194,18 @@ impl Factored<'_> {
         let mut z = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
         self.kernel.apply_transport(x, &mut z);
         self.kernel.apply_materials(&z, y);
+    }
+
+    /// `x = Kᵀ y = Gᵀ (Bᵀ y)`, never forming the product (`Gᵀ` scatters: serial).
+    pub fn apply_transposed(&self, y: &[f64], x: &mut [f64]) {
+        let mut z = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
+        self.kernel.apply_materials_transposed(y, &mut z);
+        self.kernel.g.leaving(&z, x);
+    }
+
+    /// The kernel it applies.
+    pub fn kernel(&self) -> &Kernel {
+        self.kernel
     }
 }
 

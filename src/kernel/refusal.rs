@@ -55,12 +55,26 @@ impl std::fmt::Display for TooLarge {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match &self.need {
             Need::Model(e) => model(f, e, self.limit),
-            Need::Matrix(m) => write!(
+            Need::Matrix(_) => write!(
                 f,
-                "the {} would need about {:.2} GiB ({:.3e} non-zeros for {} patches × {} cells), over the limit \
-                 of {:.2} GiB. Ways out: a coarser patch_size (memory grows as patch_size⁻⁴), fewer direction \
+                "{}. Ways out: a coarser patch_size (memory grows as patch_size⁻⁴), fewer direction \
                  cells, the factored operator instead of the explicit product, or a higher --memory-limit if \
                  the machine has the RAM",
+                self.figures()
+            ),
+        }
+    }
+}
+
+impl TooLarge {
+    /// What was over the limit, with its figures, without the ways out (a matrix's; a
+    /// model's whole refusal).
+    pub fn figures(&self) -> String {
+        match &self.need {
+            Need::Model(_) => self.to_string(),
+            Need::Matrix(m) => format!(
+                "the {} would need about {:.2} GiB ({:.3e} non-zeros for {} patches × {} cells), over the limit \
+                 of {:.2} GiB",
                 m.what,
                 m.bytes / GIB,
                 m.nonzeros,

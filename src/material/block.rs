@@ -69,6 +69,25 @@ impl Block {
             mat_vec(t, self.k, x, y, true);
         }
     }
+
+    /// `y = ρ̄ᵀ x`: the transpose of [`Block::apply`] (the light arriving in each cell `d`
+    /// weighed by what the outgoing cells ask of it).
+    pub fn apply_transposed(&self, x: &[f64], y: &mut [f64]) {
+        transposed_mat_vec(&self.reflect, self.k, x, y, false);
+    }
+
+    /// `y += τ̄ᵀ x`, the transpose of [`Block::apply_transmit`], when the material transmits.
+    pub fn apply_transmit_transposed(&self, x: &[f64], y: &mut [f64]) {
+        if let Some(t) = &self.transmit {
+            transposed_mat_vec(t, self.k, x, y, true);
+        }
+    }
+
+    /// True when no reflection or transmission value is negative (every block a material
+    /// model builds; a kernel file's may not be).
+    pub fn is_nonnegative(&self) -> bool {
+        self.reflect.iter().chain(self.transmit.iter().flatten()).all(|&v| v >= 0.0)
+    }
 }
 
 #[inline]
@@ -76,5 +95,14 @@ fn mat_vec(values: &[f64], k: usize, x: &[f64], y: &mut [f64], add: bool) {
     for (row, yk) in values.chunks_exact(k).zip(y.iter_mut()) {
         let v: f64 = row.iter().zip(x).map(|(a, b)| a * b).sum();
         *yk = if add { *yk + v } else { v };
+    }
+}
+
+fn transposed_mat_vec(values: &[f64], k: usize, x: &[f64], y: &mut [f64], add: bool) {
+    if !add {
+        y.fill(0.0);
+    }
+    for (row, xk) in values.chunks_exact(k).zip(x) {
+        y.iter_mut().zip(row).for_each(|(yd, a)| *yd += a * xk);
     }
 }

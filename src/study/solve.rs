@@ -10,7 +10,7 @@ use super::kernel::model_with_kernel;
 use super::light_scenes::{GroupSolves, solve_light_scenes};
 use crate::basis::{Basis, Factorization, Reduced};
 use crate::io::{MonteCarlo, Run, Solution};
-use crate::kernel::{Explicit, Factored};
+use crate::kernel::{Explicit, Factored, Kernel, TooLarge};
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
@@ -85,12 +85,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     let factors =
         job.basis.map(|b| Factorization::new(b, &model.kernel.blocks, &model.kernel.directions)).transpose()?;
     let reduced = factors.as_ref().map(|f| Reduced::new(&model.kernel, f));
-    let needs_explicit = job.norms || methods.iter().any(Method::needs_explicit);
-    let explicit = match (&reduced, needs_explicit) {
-        (_, false) => None,
-        (Some(r), true) => Some(Explicit(r.explicit(scene.discretization.memory_limit)?)),
-        (None, true) => Some(Explicit(model.kernel.explicit(scene.discretization.memory_limit)?)),
-    };
+    let (explicit, refused) = explicit_product(&model.kernel, reduced.as_ref(), job, &methods, scene)?;
     let factored = Factored::new(&model.kernel);
     let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
     let source = reduced.as_ref().map(|r| r.source(&model.l0));
@@ -115,9 +110,14 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     crate::interrupt::check(|| "the forward reference's photons".to_string())?;
     let basis = factors.map(|f| (f, relative_residual(&factored, &model.l0, &x)));
     let orders = order_record(job, &methods, &model);
-    let norms = explicit.as_ref().filter(|_| job.norms).map(Norms::of);
+    let count = job.spectrum.or(refused.is_some().then_some(RHO_PAIRS));
+    let spectrum = count.map(|count| arnoldi(&factored, &ArnoldiParams::largest(count))).transpose()?;
+    let norms = match (refused, &spectrum) {
+        (Some(refused), Some(spectrum)) => Some(Norms::matrix_free(&factored, spectrum, refused)?),
+        _ => explicit.as_ref().filter(|_| job.norms).map(Norms::of),
+    };
     crate::interrupt::check(|| "the norms' power iterations".to_string())?;
-    let spectrum = job.spectrum.map(|count| arnoldi(&factored, &ArnoldiParams::largest(count))).transpose()?;
+    let spectrum = spectrum.filter(|_| job.spectrum.is_some());
     let runs = runs.into_iter().map(|(r, _)| r).collect();
     let k = model.kernel.cells();
     let field = Field::from_unknowns(&x, k);
@@ -157,6 +157,32 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         solved.light_scenes = Some(solve_light_scenes(scene, &mut solved.model, &solved.x, &how, progress)?);
     }
     Ok(solved)
+}
+
+/// Leading eigenvalues computed for `ρ(K)` when the norms are matrix-free and no spectrum
+/// was asked for: two, so that a `−ρ` as large as `ρ` (two facing plates) is resolved too.
+const RHO_PAIRS: usize = 2;
+
+/// The explicit product (of the reduced operator in a basis) when a method or the norms need
+/// it. A refusal (over the memory limit) that only the norms met, in the full cell basis, is
+/// returned instead of raised: the norms are then computed without it (`Norms::matrix_free`).
+fn explicit_product(
+    kernel: &Kernel,
+    reduced: Option<&Reduced>,
+    job: &Job,
+    methods: &[Method],
+    scene: &Scene,
+) -> Result<(Option<Explicit>, Option<TooLarge>), StudyError> {
+    let limit = scene.discretization.memory_limit;
+    let methods_need = methods.iter().any(Method::needs_explicit);
+    if !(job.norms || methods_need) {
+        return Ok((None, None));
+    }
+    match reduced.map_or_else(|| kernel.explicit(limit), |r| r.explicit(limit)) {
+        Ok(product) => Ok((Some(Explicit(product)), None)),
+        Err(refused) if !methods_need && reduced.is_none() => Ok((None, Some(refused))),
+        Err(refused) => Err(refused.into()),
+    }
 }
 
 /// Every method on `system`: the runs that succeeded with their unknowns, and the failures

@@ -10,6 +10,7 @@ mod growth;
 mod memory;
 mod model;
 mod monte_carlo;
+mod norms;
 mod open_box;
 mod plates;
 mod push;

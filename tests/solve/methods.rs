@@ -77,7 +77,7 @@ fn spectral_radius_of_a_closed_box_is_its_reflectance() {
             "{}",
             norms.condition_infinity
         );
-        assert!(norms.two.value >= norms.spectral_radius.value - 1e-9);
+        assert!(norms.two.unwrap().value >= norms.spectral_radius.value - 1e-9);
     }
 }
 

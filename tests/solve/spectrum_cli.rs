@@ -114,3 +114,40 @@ fn rates_are_measured_over_the_tail_and_predicted_from_the_spectrum() {
     complex.pairs[1].im = 0.1;
     assert!(chebyshev_rate(&complex).is_nan());
 }
+
+/// An attribute of `/norms`, `None` when absent.
+fn norm(h5: &std::path::Path, name: &str) -> Option<f64> {
+    hdf5::File::open(h5).unwrap().group("norms").unwrap().attr(name).ok().map(|a| a.read_scalar().unwrap())
+}
+
+/// A memory limit (GiB) that refuses the explicit product of the hierarchical Cornell box at
+/// 0.1 m (1.5e5 non-zeros, 5.6 MiB) and not its linking (2.3e4 non-zeros).
+const LIMIT: &str = "0.003";
+
+#[test]
+fn norms_over_the_memory_limit_are_matrix_free_and_equal_the_explicit_ones() {
+    let dir = scratch("norms-matrix-free");
+    let case = "cases/cornell-box.toml";
+    let (explicit, free) = (dir.join("explicit.h5"), dir.join("free.h5"));
+    let common = ["--kernel", "hierarchical", "--patch-size", "0.1"];
+    let o = ugo(&[&["norms", case, "-o", explicit.to_str().unwrap()][..], &common].concat());
+    assert!(o.status.success(), "{}", text(&o));
+    // the explicit product is refused at this limit, the hierarchy is not
+    let limited = [&["norms", case, "-o", free.to_str().unwrap(), "--memory-limit", LIMIT][..], &common].concat();
+    let o = ugo(&limited);
+    assert!(o.status.success(), "{}", text(&o));
+    let out = text(&o);
+    assert!(out.contains("matrix-free") && out.contains("explicit product B·G would need"), "{out}");
+    assert!(out.contains("‖K‖_F            not computed") && out.contains("‖K‖₂             not computed"), "{out}");
+    assert_eq!((norm(&explicit, "matrix_free"), norm(&free, "matrix_free")), (Some(0.0), Some(1.0)));
+    assert!(norm(&free, "frobenius").is_none() && norm(&free, "two").is_none());
+    for (name, tolerance) in
+        [("infinity", 1e-12), ("one", 1e-12), ("spectral_radius", 1e-9), ("condition_infinity", 1e-9)]
+    {
+        let (a, b) = (norm(&free, name).unwrap(), norm(&explicit, name).unwrap());
+        eprintln!("{name}: matrix-free {a:.15} explicit {b:.15}");
+        assert!((a - b).abs() <= tolerance * b, "{name}: matrix-free {a} against explicit {b}");
+    }
+    let two = norm(&explicit, "two").unwrap();
+    assert!(two <= norm(&free, "two_bound").unwrap() + 1e-12);
+}
