@@ -22,10 +22,10 @@
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::{ConvexPolygon, Frame, Mesh, Patch};
-use crate::sky::{BeamGlass, Opening, Sky, through_window};
+use crate::sky::{BeamGlass, Opening, SHADOW_SHARE, Sky, through_window, unshadowed};
 use crate::transfer::image::PlaneMirror;
 use crate::transfer::occlusion::{cut_along_shadows, polygon_points};
-use crate::visibility::{NO_FACE, Visibility};
+use crate::visibility::{NO_FACE, SightFrom, Visibility};
 use glam::DVec3;
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -246,19 +246,20 @@ impl Onto<'_> {
 
     /// The sky and ground through `window`: `piece` is cut into quarters while it is large
     /// seen from the opening (diameter over distance above [`WINDOW_ETA`], at most
-    /// [`WINDOW_DEPTH`] times), and each piece gets the light at its centroid.
+    /// [`WINDOW_DEPTH`] times), and each piece gets the light at its centroid, its shadow
+    /// edges cut while a piece of the opening holds [`SHADOW_SHARE`] of its light.
     fn window(&mut self, sky: &Sky, window: &Opening, piece: &ConvexPolygon, depth: u32) {
         let c = piece.centroid();
         if depth < WINDOW_DEPTH && piece.diameter() > WINDOW_ETA * window.polygon.distance_to(c) {
             piece.split().iter().for_each(|p| self.window(sky, window, p, depth + 1));
             return;
         }
-        let (visibility, face, area) = (self.visibility, self.patch.face, piece.area());
-        let sees = |x: DVec3| visibility.escapes(c, x - c, face);
-        let least = self.least / area;
+        let (visibility, face, normal, area) = (self.visibility, self.patch.face, self.patch.normal, piece.area());
+        let sight = SightFrom { visibility, p: c, n: normal, ignore: face };
+        let least = (self.least / area).max(SHADOW_SHARE * unshadowed(sky, window, c, normal));
         let mut arrivals = Vec::new();
         let mut arrive = |towards, e, _| arrivals.push((towards, e * area));
-        self.rays += through_window(OPENING_ETA, sky, window, c, self.patch.normal, &sees, least, &mut arrive);
+        self.rays += through_window(OPENING_ETA, sky, window, c, normal, &sight, least, &mut arrive);
         arrivals.into_iter().for_each(|(towards, flux)| self.add(towards, flux));
     }
 

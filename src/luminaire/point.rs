@@ -8,7 +8,7 @@ use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::Frame;
 use crate::sky::through_window;
-use crate::visibility::{NO_FACE, Visibility};
+use crate::visibility::{NO_FACE, SightFrom, Visibility};
 use glam::DVec3;
 use std::f64::consts::PI;
 
@@ -70,9 +70,9 @@ pub fn arriving_along(
             Light::Point { position, .. } => (*position - p).dot(normal) > 0.0,
             Light::Parallel { direction, .. } => direction.dot(normal) < 0.0,
             Light::Window { window, sky } => {
-                let sees = |x: DVec3| visibility.escapes(p, x - p, ignore);
+                let sight = SightFrom { visibility, p, n: normal, ignore };
                 let mut piece = |towards: DVec3, e: f64, _| arrive(towards, e / PI);
-                through_window(opening_eta, sky, window, p, normal, &sees, 0.0, &mut piece);
+                through_window(opening_eta, sky, window, p, normal, &sight, 0.0, &mut piece);
                 false
             }
         };

@@ -20,10 +20,10 @@ use crate::luminaire::{DirectLight, Light, OPENING_ETA, PatchLight, Source, arri
 use crate::material::Block;
 use crate::progress::Progress;
 use crate::scene::{Hierarchical, Scene};
-use crate::sky::{Opening, Sky, glimpse};
+use crate::sky::{self, Opening, Sky, glimpse};
 use crate::solve::{Method, SolveParams, System, solve};
 use crate::transfer::exposure::measure_exposure;
-use crate::visibility::{Faces, Visibility};
+use crate::visibility::{Faces, SightFrom, Visibility};
 use glam::DVec3;
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -223,14 +223,14 @@ fn varies(
     }
     let n = patch.normal;
     let unshadowed: Vec<f64> =
-        points.iter().flat_map(|&x| windows.iter().map(move |(w, sky)| glimpse::unshadowed(sky, w, x, n))).collect();
+        points.iter().flat_map(|&x| windows.iter().map(move |(w, sky)| sky::unshadowed(sky, w, x, n))).collect();
     let most = unshadowed.chunks(windows.len()).map(|u| u.iter().sum::<f64>()).fold(0.0, f64::max);
     if lamps + most <= allowed {
         return false;
     }
     let shadowed = points.iter().zip(unshadowed.chunks(windows.len())).zip(&lit).map(|((&x, u), e)| {
-        let sees = |y: DVec3| visibility.escapes(x, y - x, patch.face);
-        e + windows.iter().zip(u).map(|((w, _), u)| u * glimpse::seen_share(w, x, n, &sees)).sum::<f64>()
+        let sight = SightFrom { visibility, p: x, n, ignore: patch.face };
+        e + windows.iter().zip(u).map(|((w, _), u)| u * glimpse::seen_share(w, x, n, &sight)).sum::<f64>()
     });
     spread(shadowed) > allowed
 }

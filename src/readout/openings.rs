@@ -8,6 +8,7 @@ use crate::luminaire::Light;
 use crate::model::Model;
 use crate::readout::gather::Receiver;
 use crate::sky::{Component, ETA, through_window};
+use crate::visibility::SightFrom;
 use glam::DVec3;
 
 /// The illuminance (lx) at `p` (receiving side facing the unit `n`) from the sky and from
@@ -15,11 +16,11 @@ use glam::DVec3;
 pub fn sky_and_ground(model: &Model, p: DVec3, n: DVec3) -> (f64, f64) {
     let Receiver { frame, ignore, .. } = Receiver::at(model, p, n);
     let normal = frame.normal;
-    let sees = |x: DVec3| model.visibility.escapes(p, x - p, ignore);
     let (mut sky, mut ground) = (0.0, 0.0);
     for source in &model.sources {
         if let Light::Window { window, sky: outside } = &source.light {
-            through_window(ETA, outside, window, p, normal, &sees, 0.0, &mut |_, e, component| match component {
+            let sight = SightFrom { visibility: &model.visibility, p, n: normal, ignore };
+            through_window(ETA, outside, window, p, normal, &sight, 0.0, &mut |_, e, component| match component {
                 Component::Sky => sky += e,
                 Component::Ground => ground += e,
             });

@@ -9,7 +9,9 @@
 //! direction of its centroid and the projected solid angle exact (Lambert's contour
 //! integral, `crate::transfer::contour`), times the fraction of its points from which the
 //! ray through them leaves the scene (`sees`), pieces on a shadow edge cut further
-//! (`crate::transfer::occlusion::cut_along_shadows`). A uniform sky is thus exact
+//! (`crate::transfer::occlusion::cut_along_shadows`) while the piece's unshadowed light
+//! exceeds the caller's least (on a patch, [`SHADOW_SHARE`] of the whole opening's). A
+//! uniform sky is thus exact
 //! (`E = π L F`), and the error of a graded sky is of second order in the pieces' size.
 //! A glazed opening multiplies each piece's luminance by the glazing's `τ(θ)` at the
 //! incidence of the piece's direction on the opening (`glazing.rs`).
@@ -18,12 +20,19 @@ use super::{Glazing, Sky};
 use crate::geometry::{ConvexPolygon, MAX_CLIPPED};
 use crate::transfer::contour::projected_solid_angle;
 use crate::transfer::occlusion::cut_along_shadows;
+use crate::visibility::Sight;
 use glam::DVec3;
 
 /// A piece is cut while its diameter exceeds `ETA` times its distance from the point.
 pub const ETA: f64 = 0.1;
 /// Most levels of cutting for size.
 pub const MAX_DEPTH: u32 = 8;
+/// Where the opening's light is averaged over a patch, a piece crossed by a shadow edge is
+/// cut further only while its unshadowed light exceeds this share of the whole opening's
+/// [`unshadowed`] light at the point: each piece left uncut is off by at most that share,
+/// in either direction, and is read at its four points. A reading (a probe, a grid point)
+/// cuts every such piece down to the deepest level.
+pub const SHADOW_SHARE: f64 = 1e-4;
 
 /// An opening: a parallelogram (or triangle) in the surfaces, glazed or not.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -45,11 +54,12 @@ pub enum Component {
 
 /// Hands `visit` every piece of the opening `window` seen from `p` (unit normal `n`): the unit
 /// direction towards it, the illuminance it gives on the plane of `p` (lx) and its
-/// component. `sees(x)` says whether the ray from `p` through the point `x` of the
-/// opening leaves the scene; a piece crossed by a shadow edge is cut further only while
-/// its unshadowed illuminance exceeds `least` lx, and every piece is cut for size while its
-/// diameter exceeds `eta` times its distance ([`ETA`] at a point; coarser where the light
-/// is averaged anyway, over a patch). Returns the rays traced.
+/// component. `sight` says whether the ray from `p` through a point of the opening leaves
+/// the scene, and whether nothing stands before a whole piece (then no ray is traced
+/// through it); a piece crossed by a shadow edge is cut further only while
+/// its unshadowed illuminance exceeds `least` lx, and every piece is cut for size while its diameter
+/// exceeds `eta` times its distance ([`ETA`] at a point; coarser where the light is
+/// averaged anyway, over a patch). Returns the rays traced.
 #[allow(clippy::too_many_arguments)]
 pub fn through_window(
     eta: f64,
@@ -57,24 +67,47 @@ pub fn through_window(
     opening: &Opening,
     p: DVec3,
     n: DVec3,
-    sees: &dyn Fn(DVec3) -> bool,
+    sight: &dyn Sight,
     least: f64,
     visit: &mut dyn FnMut(DVec3, f64, Component),
 ) -> usize {
     let window = &opening.polygon;
-    let glazing = opening.glazing.map(|g| (g, window.normal()));
     let size = window.diameter();
     if window.vertices().iter().all(|v| (*v - p).dot(n) <= 1e-12 * size) {
         return 0;
     }
     let smallest = 1e-12 * size * size;
+    // the whole opening first: a shaft through a part cut from it is tested more loosely
+    let clear = sight.clear(window);
     let mut rays = 0;
     for_each_part(window, p, n, &mut |piece, component| {
-        let mut view = View { sky, glazing, p, n, sees, least, component, visit: &mut *visit, rays: 0, smallest, eta };
-        view.piece(piece, 0);
+        let mut view = View { sky, opening, p, n, sight, least, component, visit: &mut *visit, rays: 0, smallest, eta };
+        view.piece(piece, 0, clear);
         rays += view.rays;
     });
     rays
+}
+
+/// The illuminance (lx) the opening gives the plane of `p` (unit normal `n`) with nothing in
+/// the way but the opening's own edges: per part above and below the horizontal plane
+/// through `p`, its exact projected solid angle times the luminance seen towards its centre.
+pub fn unshadowed(sky: &Sky, opening: &Opening, p: DVec3, n: DVec3) -> f64 {
+    let mut e = 0.0;
+    for_each_part(&opening.polygon, p, n, &mut |part, component| {
+        let towards = (part.centroid() - p).normalize_or_zero();
+        e += luminance_through(sky, opening, towards, component) * projected_solid_angle(p, n, part.vertices()).abs();
+    });
+    e
+}
+
+/// The outside's luminance seen through `opening` along the unit `towards` (cd/m²): the
+/// sky's or the ground's, as `component` says, times the glass's `τ(θ)`.
+fn luminance_through(sky: &Sky, opening: &Opening, towards: DVec3, component: Component) -> f64 {
+    let outside = match component {
+        Component::Sky => sky.sky_luminance(towards),
+        Component::Ground => sky.ground_luminance(),
+    };
+    opening.glazing.map_or(outside, |g| outside * g.transmittance(towards.dot(opening.polygon.normal())))
 }
 
 /// Hands `visit` the parts of `window` in front of `p` (unit normal `n`), cut into triangles
@@ -102,11 +135,10 @@ pub(super) fn for_each_part(
 /// One component of one triangle of the opening, seen from one point.
 struct View<'a, 'v> {
     sky: &'a Sky,
-    /// The glass and the opening's unit normal.
-    glazing: Option<(Glazing, DVec3)>,
+    opening: &'a Opening,
     p: DVec3,
     n: DVec3,
-    sees: &'a dyn Fn(DVec3) -> bool,
+    sight: &'a dyn Sight,
     least: f64,
     component: Component,
     visit: &'v mut dyn FnMut(DVec3, f64, Component),
@@ -118,28 +150,32 @@ struct View<'a, 'v> {
 }
 
 impl View<'_, '_> {
-    fn piece(&mut self, piece: &ConvexPolygon, depth: u32) {
+    /// `piece`, cut `depth` times; `clear` when nothing stands before it.
+    fn piece(&mut self, piece: &ConvexPolygon, depth: u32, clear: bool) {
         if piece.area() <= self.smallest {
             return;
         }
+        let clear = clear || self.sight.clear(piece);
         if depth < MAX_DEPTH && piece.diameter() > self.eta * piece.distance_to(self.p) {
-            piece.split().iter().for_each(|q| self.piece(q, depth + 1));
+            piece.split().iter().for_each(|q| self.piece(q, depth + 1, clear));
             return;
         }
-        let (sky, p, n, component, least) = (self.sky, self.p, self.n, self.component, self.least);
-        let glazing = self.glazing;
+        let (sky, opening, p, n, component, least) =
+            (self.sky, self.opening, self.p, self.n, self.component, self.least);
         let light = |part: &ConvexPolygon| {
             let towards = (part.centroid() - p).normalize_or_zero();
-            let outside = match component {
-                Component::Sky => sky.sky_luminance(towards),
-                Component::Ground => sky.ground_luminance(),
-            };
-            let luminance = glazing.map_or(outside, |(g, normal)| outside * g.transmittance(towards.dot(normal)));
+            let luminance = luminance_through(sky, opening, towards, component);
             (towards, luminance * projected_solid_angle(p, n, part.vertices()).abs())
         };
         let worth = |part: &ConvexPolygon| light(part).1 > least;
         let visit = &mut *self.visit;
-        self.rays += cut_along_shadows(piece, 0, self.sees, &worth, &mut |part, seen| {
+        if clear {
+            let (towards, e) = light(piece);
+            visit(towards, e, component);
+            return;
+        }
+        let sight = self.sight;
+        self.rays += cut_along_shadows(piece, 0, &|x| sight.sees(x), &worth, &mut |part, seen| {
             let (towards, e) = light(part);
             visit(towards, e * seen, component);
         });

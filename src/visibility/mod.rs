@@ -20,8 +20,10 @@
 //! query's ray starts that far behind its origin, its `tmin` moved on to match.
 
 mod faces;
+mod shaft;
 
 pub use faces::{Faces, Landing, standoff};
+pub use shaft::{Sight, SightFrom};
 
 use crate::geometry::Mesh;
 use glam::{DMat3, DVec3, Vec3A};
@@ -32,6 +34,7 @@ use obvhs::{
     ray::{Ray, RayHit},
     triangle::Triangle,
 };
+use std::sync::OnceLock;
 use std::time::Duration;
 
 /// Which BVH layout the queries run on.
@@ -78,6 +81,8 @@ pub struct Visibility {
     face_of: Vec<u32>,
     rotation: DMat3,
     epsilon: f64,
+    /// The binary BVH of the shaft queries (`shaft.rs`), built on the first.
+    shafts: OnceLock<Bvh2>,
 }
 
 /// The first face hit by a ray.
@@ -150,6 +155,7 @@ impl Visibility {
             face_of: order.iter().map(|&i| face_of[i as usize]).collect(),
             rotation,
             epsilon: 1e-6 * mesh.extent(),
+            shafts: OnceLock::new(),
         }
     }
 

@@ -82,7 +82,7 @@ fn a_glazed_opening_weighs_the_sky_by_the_transmittance_direction_by_direction()
 /// The sky through `opening` at `p` facing `n`, lx.
 fn through(sky: &Sky, opening: &Opening, p: DVec3, n: DVec3) -> f64 {
     let mut e = 0.0;
-    through_window(ETA, sky, opening, p, n, &|_| true, 0.0, &mut |_, x, c| {
+    through_window(ETA, sky, opening, p, n, &|_: DVec3| true, 0.0, &mut |_, x, c| {
         assert_eq!(c, Component::Sky);
         e += x;
     });

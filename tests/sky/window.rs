@@ -18,7 +18,7 @@ fn sky(distribution: Distribution, ground: f64) -> Sky {
 fn components(sky: &Sky, window: &ConvexPolygon, p: DVec3, n: DVec3) -> (f64, f64) {
     let (mut s, mut g) = (0.0, 0.0);
     let opening = Opening { polygon: *window, glazing: None };
-    through_window(ETA, sky, &opening, p, n, &|_| true, 0.0, &mut |_, e, c| match c {
+    through_window(ETA, sky, &opening, p, n, &|_: DVec3| true, 0.0, &mut |_, e, c| match c {
         Component::Sky => s += e,
         Component::Ground => g += e,
     });

@@ -122,3 +122,51 @@ fn a_ray_escapes_exactly_when_it_hits_nothing() {
     assert!(escaped > rays / 10 && escaped < rays * 9 / 10, "{escaped} of {rays} escaped");
     assert_eq!(different, 0, "{different} of {rays} rays answered differently");
 }
+
+/// From each patch at `size` of `case` facing its first opening: how many patches face it,
+/// how many shafts are found empty, how many patches have a blocked ray among 400 through a
+/// grid over the opening, and how many of those had an empty shaft.
+fn shafts(case: &str, size: f64) -> [usize; 4] {
+    let scene = Scene::load(Path::new(case)).unwrap();
+    let window = scene.luminaires.iter().find_map(|l| match &l.kind {
+        ugo::luminaire::LuminaireKind::Window { window, .. } => Some(window.polygon),
+        _ => None,
+    });
+    let window = window.expect("the case has an opening");
+    let mesh = Mesh::build(&scene.surfaces, size);
+    let v = Visibility::build(&mesh);
+    let [a, b, _, d] = [0, 1, 2, 3].map(|i| window.vertices()[i]);
+    let mut counts = [0; 4];
+    for p in &mesh.patches {
+        let x = p.centroid;
+        if window.vertices().iter().all(|w| (*w - x).dot(p.normal) <= 0.0) {
+            continue;
+        }
+        let clear = v.shaft_is_empty(x, p.normal, &window, p.face);
+        let escaping = (0..400).all(|k| {
+            let (s, t) = (((k % 20) as f64 + 0.5) / 20.0, ((k / 20) as f64 + 0.5) / 20.0);
+            let y = a + s * (b - a) + t * (d - a);
+            (y - x).dot(p.normal) <= 0.0 || v.escapes(x, y - x, p.face)
+        });
+        let found = [true, clear, !escaping, clear && !escaping];
+        counts.iter_mut().zip(found).for_each(|(c, f)| *c += f as usize);
+    }
+    eprintln!(
+        "{case}: {} patches face the opening, {} empty shafts, {} with a blocked ray",
+        counts[0], counts[1], counts[2]
+    );
+    counts
+}
+
+#[test]
+fn an_empty_shaft_lets_every_ray_through_the_opening_out() {
+    // The classroom's window band (cut into its south wall), desks, whiteboard and the wall
+    // around the opening in the way or not; and CIE 171's room under an overhang outside
+    // its opening, which stops rays beyond the opening.
+    let [facing, empty, blocked, wrong] = shafts("cases/classroom.toml", 0.25);
+    assert_eq!(wrong, 0, "{wrong} empty shafts had a blocked ray");
+    assert!(empty > facing / 4 && blocked > facing / 10, "the test must see both kinds");
+    let [_, empty, blocked, wrong] = shafts("cases/cie171/5.13-overhang-1.0.toml", 0.5);
+    assert_eq!(wrong, 0, "{wrong} empty shafts had a blocked ray under the overhang");
+    assert!(empty > 0 && blocked > 0, "the test must see both kinds");
+}
