@@ -42,6 +42,18 @@ impl Model {
         SourceTerm { emission, direct, l0 }
     }
 
+    /// The model's own source term less that of the luminaires `luminaires` and the
+    /// surfaces `surfaces` ([`Model::source_term_of`]): the source term of every other
+    /// emitter, for the cost of integrating those. Each source's light is integrated on its
+    /// own, so this equals the others' source term integrated afresh to round-off.
+    pub fn source_term_without(&self, luminaires: &[usize], surfaces: &[usize]) -> SourceTerm {
+        let own = SourceTerm { emission: self.mesh.emission.clone(), direct: self.direct.clone(), l0: self.l0.clone() };
+        let left_out = self.source_term_of(luminaires, surfaces);
+        let mut rest = SourceTerm::superpose(&[(1.0, &own), (-1.0, &left_out)]);
+        rest.direct.rays = left_out.direct.rays;
+        rest
+    }
+
     /// Puts `sources` (the placed luminaires, one per luminaire of the model) and `term`
     /// in place of the model's own emitters and returns those.
     pub fn relight(&mut self, sources: Vec<Source>, term: SourceTerm) -> (Vec<Source>, SourceTerm) {

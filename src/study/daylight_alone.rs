@@ -35,7 +35,12 @@ pub fn daylight_readings(
     if !electric {
         return Ok(Some(read_daylight(model, sky, probes, grids)));
     }
-    let term = model.source_term_of(&daylight, &[]);
+    // The openings' light costs far more to integrate again than the luminaires': it is
+    // the case's own less theirs.
+    let others: Vec<usize> = (0..model.sources.len()).filter(|i| !daylight.contains(i)).collect();
+    let surfaces: Vec<usize> =
+        (0..model.mesh.patches.iter().map(|p| p.surface as usize + 1).max().unwrap_or(0)).collect();
+    let term = model.source_term_without(&others, &surfaces);
     let x = solve_alone(model, &term.l0, how, progress)?;
     let mut lit = vec![0.0; model.sources.len()];
     daylight.iter().for_each(|&i| lit[i] = 1.0);

@@ -281,3 +281,23 @@ fn the_groups_of_a_hierarchical_case_are_solved_on_its_one_hierarchy() {
     let (all, exposed) = (relative(&sum, &model.l0), relative(&pick(&sum), &pick(&model.l0)));
     assert!(exposed < 1e-12 && all < 1e-12, "wholly exposed leaves {exposed}, all {all}");
 }
+
+#[test]
+fn the_light_without_one_group_is_the_other_groups_light() {
+    // `Model::source_term_without` (the daylight alone of a case with luminaires is its own
+    // light less theirs, docs/daylight.md): the case's light less the first group's equals
+    // the other groups' integrated afresh, to round-off.
+    let scene = room(HIERARCHICAL, 1.0, 1.0, 500.0);
+    let model = Model::build(&scene, &Silent).unwrap();
+    let (first, rest) = scene.lighting.groups.split_first().expect("groups");
+    let luminaires: Vec<usize> = rest.iter().flat_map(|g| g.luminaires.iter().copied()).collect();
+    let surfaces: Vec<usize> = rest.iter().flat_map(|g| g.surfaces.iter().copied()).collect();
+    let without = model.source_term_without(&first.luminaires, &first.surfaces);
+    let others = model.source_term_of(&luminaires, &surfaces);
+    assert!(others.l0.iter().any(|&v| v > 0.0) && first.luminaires.len() + first.surfaces.len() > 0);
+    let apart = relative(&without.l0, &others.l0);
+    assert!(apart < 1e-12, "L0 {apart:e}");
+    assert!(relative(&without.direct.intercepted, &others.direct.intercepted) < 1e-12);
+    let emitted = without.emission.iter().zip(&others.emission).all(|(a, b)| (a - b).abs() <= 1e-12 * b.abs().max(1.0));
+    assert!(emitted, "the surfaces' emission differs");
+}
