@@ -19,7 +19,7 @@ use std::time::Duration;
 
 /// The binary BVH of the shaft queries over `triangles`, whose primitive indices are
 /// indices into `triangles`.
-pub(super) fn shaft_tree(triangles: &[Triangle]) -> Bvh2 {
+fn shaft_tree(triangles: &[Triangle]) -> Bvh2 {
     build_bvh2_from_tris(triangles, BvhBuildParams::fast_build(), &mut Duration::default())
 }
 
