@@ -180,7 +180,7 @@ fn refine(
 
 /// Degree-2 rule: barycentric points (2/3, 1/6, 1/6) and permutations, equal weights;
 /// `f(x, w)` returns the weighted integrand at `x`.
-fn three_point(tri: &[DVec3; 3], f: &mut dyn FnMut(DVec3, f64) -> f64) -> f64 {
+pub(super) fn three_point(tri: &[DVec3; 3], f: &mut dyn FnMut(DVec3, f64) -> f64) -> f64 {
     let [a, b, c] = *tri;
     let w = 0.5 * (b - a).cross(c - a).length() / 3.0;
     let (p, q) = (2.0 / 3.0, 1.0 / 6.0);

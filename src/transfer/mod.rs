@@ -7,6 +7,7 @@
 pub mod closure;
 pub mod contour;
 pub mod exposure;
+pub mod far_field;
 pub mod form_factor;
 pub mod image;
 pub mod occlusion;

@@ -2,3 +2,4 @@
 
 mod closure;
 mod exposure;
+mod far_field;

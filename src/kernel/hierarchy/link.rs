@@ -13,6 +13,7 @@ use super::node::Node;
 use super::sight::Sight;
 use crate::directions::DirectionSet;
 use crate::geometry::Patch;
+use crate::transfer::far_field::far_pair_integral;
 use crate::transfer::form_factor::{Binning, Quadrature, binned_pair_integral, pair_integral};
 use std::f64::consts::PI;
 
@@ -51,7 +52,8 @@ pub fn element_factor(
     binning: Option<&Binning>,
 ) -> (f64, Vec<Piece>) {
     let Some(binning) = binning else {
-        return (visible * pair_integral(p, q, quadrature).adaptive / p.area, Vec::new());
+        let integral = far_pair_integral(p, q).unwrap_or_else(|| pair_integral(p, q, quadrature).adaptive);
+        return (visible * integral / p.area, Vec::new());
     };
     let (mut bins, mut back) = (Vec::new(), Vec::new());
     let whole = binned_pair_integral(p, q, quadrature, binning, &mut bins);

@@ -18,7 +18,7 @@
 use super::node::{Kind, Node};
 use super::tree::Tree;
 use crate::geometry::Patch;
-use crate::transfer::contour::point_to_patch;
+use crate::transfer::far_field::point_factor;
 use crate::transfer::occlusion::polygon_points;
 use std::f64::consts::PI;
 
@@ -50,7 +50,7 @@ pub fn variation(p: &Patch, q: &Patch) -> Variation {
 /// Smallest and largest `scale · F_{dA(x)→to}` over the sample points `x` of `from`.
 fn extremes(from: &Patch, to: &Patch, scale: f64) -> (f64, f64) {
     sample_points(from).fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
-        let f = scale * point_to_patch(x, from.normal, to);
+        let f = scale * point_factor(x, from.normal, to);
         (lo.min(f), hi.max(f))
     })
 }

@@ -32,7 +32,7 @@ use super::sight::Sight;
 use super::tree::Tree;
 use crate::geometry::Patch;
 use crate::random::mix;
-use crate::transfer::contour::point_to_patch;
+use crate::transfer::far_field::point_factor;
 use crate::transfer::occlusion::{polygon_points, visible_fraction};
 use crate::visibility::{NO_BLOCKER, Visibility};
 use rayon::prelude::*;
@@ -131,7 +131,7 @@ fn seen(tree: &Tree, visibility: &Visibility, links: &[Link], own: &[u32], a: u3
             let source = tree.node(link.source);
             match source.patch() {
                 Some(q) => {
-                    let f: f64 = points.iter().map(|&x| point_to_patch(x, patch.normal, q)).sum();
+                    let f: f64 = points.iter().map(|&x| point_factor(x, patch.normal, q)).sum();
                     let visible = match a == id || f == 0.0 || straddles || link.sight == Sight::Clear {
                         true => link.visible,
                         false => {
