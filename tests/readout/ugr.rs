@@ -139,6 +139,17 @@ fn a_panel_close_to_the_eye_is_outside_the_formulas_solid_angles() {
     assert!(r.sources[1].solid_angle > 0.1, "ω = {} sr", r.sources[1].solid_angle);
 }
 
+/// `ugo solve` of the case `text` in `dir` (`case.toml` → `res.h5`): the file and the summary.
+fn solved_file(dir: &std::path::Path, text: &str) -> (hdf5::File, String) {
+    let case = dir.join("case.toml");
+    std::fs::write(&case, text).expect("writable");
+    let out = dir.join("res.h5");
+    let o = crate::support::ugo(&["solve", case.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(o.status.success(), "{stdout}{}", String::from_utf8_lossy(&o.stderr));
+    (hdf5::File::open(&out).unwrap(), stdout)
+}
+
 /// Every light scene reads its observers under its dimmed luminaires and its own field
 /// (issue 38, point 1): all at half gives `UGR − 8 log10 2` exactly, the panel off no
 /// source, in the summary and in `/light_scenes/NAME/observers`.
@@ -155,13 +166,7 @@ fn each_light_scene_reads_its_own_ugr() {
          [[light_scene]]\nname = \"half\"\ngroups = {{ walls = 0.5, panel = 0.5 }}\n\
          [[light_scene]]\nname = \"dark\"\ngroups = {{ walls = 1, panel = false }}\n"
     );
-    let case = dir.as_ref().join("case.toml");
-    std::fs::write(&case, text).expect("writable");
-    let out = dir.as_ref().join("res.h5");
-    let o = crate::support::ugo(&["solve", case.to_str().unwrap(), "-o", out.to_str().unwrap()]);
-    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
-    assert!(o.status.success(), "{stdout}{}", String::from_utf8_lossy(&o.stderr));
-    let file = hdf5::File::open(&out).unwrap();
+    let (file, stdout) = solved_file(dir.as_ref(), &text);
     let ugr = |scene: &str| {
         file.dataset(&format!("light_scenes/{scene}/observers/ugr")).unwrap().read_raw::<f64>().unwrap()[0]
     };
@@ -191,13 +196,7 @@ fn a_grids_ugr_is_the_largest_of_its_observers() {
              [[observer]]\nname = \"far\"\nposition = [0.8, 1.2, 0.6]\nlook = [1, 0, 0]\ngrid = \"desk\"\n\
              [[observer]]\nname = \"elsewhere\"\nposition = [0.8, 1.8, 2.5]\nlook = [1, 0, 0]\n"
         );
-    let case = dir.as_ref().join("case.toml");
-    std::fs::write(&case, text).expect("writable");
-    let out = dir.as_ref().join("res.h5");
-    let o = crate::support::ugo(&["solve", case.to_str().unwrap(), "-o", out.to_str().unwrap()]);
-    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
-    assert!(o.status.success(), "{stdout}{}", String::from_utf8_lossy(&o.stderr));
-    let file = hdf5::File::open(&out).unwrap();
+    let (file, stdout) = solved_file(dir.as_ref(), &text);
     let observers = file.dataset("observers/ugr").unwrap().read_raw::<f64>().unwrap();
     let grid = file.group("grids/desk").unwrap();
     let attr = |name: &str| grid.attr(name).unwrap().read_scalar::<f64>().unwrap();
@@ -207,7 +206,7 @@ fn a_grids_ugr_is_the_largest_of_its_observers() {
     let line = stdout.lines().find(|l| l.trim_start().starts_with("desk") && l.contains("16")).expect("its line");
     let verdict = if attr("UGR") <= 16.0 { "met" } else { "NOT MET" };
     assert!(line.contains(&format!("{:.2}", attr("UGR"))) && line.contains(verdict), "{line}");
-    let page = dir.as_ref().join("res.html");
+    let (out, page) = (dir.as_ref().join("res.h5"), dir.as_ref().join("res.html"));
     let o = crate::support::ugo(&["report", out.to_str().unwrap(), "-o", page.to_str().unwrap()]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let html = std::fs::read_to_string(&page).unwrap();
