@@ -1,5 +1,5 @@
 //! The `ugo` command line (`docs/design.md` §6): `solve`, `norms`, `compare`, `render`, `trace`,
-//! `agree`, `info`, `bench`, `export`, `probes`.
+//! `agree`, `info`, `bench`, `export`, `probes`, `glare`.
 
 mod cli;
 
@@ -203,6 +203,20 @@ enum Command {
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
+    /// The UGR table of CIE 190 of a luminaire (IES or EULUMDAT): the 19 standard rooms
+    /// viewed crosswise and endwise under the five reflectance combinations, for 1000 lm of
+    /// lamp flux, with the summand for the luminaire's own (docs/photometry.md).
+    Glare {
+        /// The luminaire's photometric file (.ies or .ldt).
+        #[arg(long, value_name = "LUMINAIRE")]
+        table: PathBuf,
+        /// Also write the table as CSV, one row per cell.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// The spacing-to-height ratio of the luminaires' array (the catalogues' 0.25; CIE 190's examples use 1).
+        #[arg(long, default_value_t = ugo::readout::ugr_table::CATALOGUE_SPACING)]
+        spacing: f64,
+    },
     /// Probes, grids, observers, cameras and light scenes of an edited case read on the
     /// field of a solve saved with --save-kernel: no assembly, no solve (each light scene a
     /// weighted sum of the stored groups' fields).
@@ -374,6 +388,7 @@ fn run(command: Command) -> anyhow::Result<()> {
             cli::agree::run(&solution, &reference, &rendering, precise)
         }
         Command::Report { solution, output } => cli::report::run(&solution, output),
+        Command::Glare { table, csv, spacing } => cli::glare_table::run(&table, csv, spacing),
         Command::Readout { solution, case, output, discretize } => {
             cli::readout::run(&solution, case.as_deref(), &discretize, output)
         }

@@ -57,7 +57,7 @@ pub fn report_scenes(
             println!("      {}", csv.display());
         }
         if !scene.observers.is_empty() {
-            super::glare::report(&scene.observers, "    ");
+            super::glare::report(&scene.observers, &scene.grids, "    ");
         }
         write_grids(&scene.grids, &base, described)?;
     }

@@ -31,7 +31,7 @@ pub fn run(file: &Path, case: Option<&Path>, d: &Discretize, output: Option<Path
     println!("ugo readout: {} read on the field of {} in {seconds:.3} s", scene.path.display(), file.display());
     print_probes(&r.readings.probes);
     if !r.readings.observers.is_empty() {
-        super::glare::report(&r.readings.observers, "  ");
+        super::glare::report(&r.readings.observers, &r.readings.grids, "  ");
     }
     let names: Vec<String> = scene.surfaces.iter().map(|s| s.name.clone()).collect();
     let files = GridFiles { sources: &r.model.sources, mesh: &r.model.mesh, surfaces: &names };

@@ -220,7 +220,7 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
     }
     print_probes(&s.probes);
     if !s.observers.is_empty() {
-        super::glare::report(&s.observers, "  ");
+        super::glare::report(&s.observers, &s.grids, "  ");
     }
     if let Some(d) = s.daylight.as_ref() {
         super::daylight::report(d, &s.probes, &s.grids);

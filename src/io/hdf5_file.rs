@@ -101,7 +101,7 @@ fn write_to(path: &Path, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     s.daylight.as_ref().map(|d| write_daylight(&file.create_group("daylight")?, d, &s.probes, &s.grids)).transpose()?;
     let grids = file.create_group("grids")?;
     for grid in &s.grids {
-        write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
+        write_grid(&grids.create_group(&grid.grid.name)?, grid, &s.observers)?;
     }
     write_luminaires(&file.create_group("luminaires")?, scene, s)?;
     if let Some(light) = &s.light_scenes {

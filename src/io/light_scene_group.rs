@@ -160,7 +160,7 @@ fn write_scene(g: &hdf5::Group, s: &LightSceneField, n: usize, k: usize) -> hdf5
     write_observers(&g.create_group("observers")?, &s.observers)?;
     let grids = g.create_group("grids")?;
     for grid in &s.grids {
-        write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
+        write_grid(&grids.create_group(&grid.grid.name)?, grid, &s.observers)?;
     }
     g.new_attr::<f64>().shape(s.factors.len()).create("factors")?.write_raw(&s.factors)?;
     let e = &s.energy;

@@ -52,7 +52,7 @@ fn rewrite(path: &Path, scene: &Scene, r: &Readout) -> hdf5::Result<()> {
     write_observers(&file.create_group("observers")?, &r.readings.observers)?;
     let grids = file.create_group("grids")?;
     for grid in &r.readings.grids {
-        write_grid(&grids.create_group(&grid.grid.name)?, grid)?;
+        write_grid(&grids.create_group(&grid.grid.name)?, grid, &r.readings.observers)?;
     }
     if file.link_exists("light_groups") {
         let groups = file.group("light_groups")?;

@@ -4,6 +4,7 @@
 use super::dataset::{dataset, strings};
 use crate::readout::grid::GridReading;
 use crate::readout::probe::ProbeReading;
+use crate::readout::ugr::{UgrReading, grid_ugr};
 use ndarray::{Array1, Array2, Array3};
 
 pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
@@ -23,9 +24,10 @@ pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Re
 /// for one left out, `readout::obstructed`) as `nv × nu` arrays (row `b` runs along
 /// `edge_u`), and why a point is left out: `obstruction_surface` (the surface over it, −1
 /// for a point that counts), `obstruction_inside` (1 inside a solid), `obstruction_distance`
-/// (m, NaN for a point that counts). Attributes: the statistics and the `target`'s
-/// `Em_target` (lx) and `U0_target` when the case gives them.
-pub(super) fn write_grid(g: &hdf5::Group, grid: &GridReading) -> hdf5::Result<()> {
+/// (m, NaN for a point that counts). Attributes: the statistics, `UGR` (the largest of the
+/// `observers` that name the grid, `readout::ugr::grid_ugr`) when one does, and the
+/// `target`'s `Em_target` (lx), `U0_target` and `UGR_target` when the case gives them.
+pub(super) fn write_grid(g: &hdf5::Group, grid: &GridReading, observers: &[UgrReading]) -> hdf5::Result<()> {
     let [nu, nv] = grid.grid.resolution;
     let map = |f: &dyn Fn(usize) -> f64| Array2::from_shape_fn((nv, nu), |(b, a)| f(b * nu + a));
     dataset(g, "points", &Array3::from_shape_fn((nv, nu, 3), |(b, a, c)| grid.points[b * nu + a][c]))?;
@@ -42,7 +44,8 @@ pub(super) fn write_grid(g: &hdf5::Group, grid: &GridReading) -> hdf5::Result<()
     let n = grid.grid.normal;
     g.new_attr::<f64>().shape(3).create("normal")?.write_raw(&[n.x, n.y, n.z])?;
     let target = grid.grid.target;
-    let targets = [("Em_target", target.em), ("U0_target", target.u0)];
+    let ugr = grid_ugr(&grid.grid.name, observers);
+    let targets = [("Em_target", target.em), ("U0_target", target.u0), ("UGR_target", target.ugr), ("UGR", ugr)];
     let stats = [("E_avg", st.average), ("E_min", st.min), ("E_max", st.max), ("U0", st.u0)];
     for (name, value) in stats.into_iter().chain(targets.into_iter().filter_map(|(n, v)| Some((n, v?)))) {
         g.new_attr::<f64>().create(name)?.write_scalar(&value)?;

@@ -131,6 +131,7 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
     }
     table.tilt = tilt;
     table.stated_flux = (lumens > 0.0).then_some(stated);
+    table.lamp_flux = table.stated_flux;
     table.luminous = LuminousOpening::of_ies(size[0], size[1], size[2]);
     table.description = format!("IES LM-63-{year}, type {kind:?}, {}", layout.name);
     Ok(table)

@@ -146,6 +146,7 @@ pub fn parse(file: &Path, text: &str) -> Result<IntensityDistribution, Photometr
         return Err(PhotometryError::at(file, conversion_line, message));
     }
     table.stated_flux = Some(lorl / 100.0 * lamp_flux);
+    table.lamp_flux = Some(lamp_flux);
     table.luminous = LuminousOpening::of_ldt(length, width, height);
     table.description = format!("EULUMDAT, Isym {isym}: {name}");
     Ok(table)

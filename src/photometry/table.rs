@@ -32,6 +32,9 @@ pub struct IntensityDistribution {
     pub tilt: Option<Tilt>,
     /// The luminaire flux the file states, lm (none for absolute photometry).
     pub stated_flux: Option<f64>,
+    /// The flux of the bare lamps the intensities are given for, lm (IES: lamps × lumens;
+    /// EULUMDAT: the lamp sets' total); none for absolute photometry.
+    pub lamp_flux: Option<f64>,
     /// The luminous opening the file sizes, if any (what the eye sees of the luminaire).
     pub luminous: Option<LuminousOpening>,
     /// What the file was, for reports (`"IES LM-63-2002, type C, 0–90° quadrant symmetry"`).
@@ -73,6 +76,7 @@ impl IntensityDistribution {
             periodic,
             tilt: None,
             stated_flux: None,
+            lamp_flux: None,
             luminous: None,
             description: String::new(),
         }

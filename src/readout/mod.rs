@@ -1,7 +1,8 @@
 //! Readouts of a solved field (`docs/design.md` §5, §7): the field as an `N × K × C` array, the
 //! illuminance of patches and points, probes (point sensors, luminance meters, cylindrical
-//! illuminance), the UGR at observers, grids and the energy balance in lumens.
+//! illuminance), the UGR at observers and the UGR table of a luminaire, grids and the energy balance in lumens.
 
+pub mod cavity;
 pub mod correction;
 pub mod cylindrical;
 pub mod daylight;
@@ -21,4 +22,6 @@ pub mod obstructed;
 pub mod openings;
 pub mod probe;
 pub mod readings;
+pub mod standard_room;
 pub mod ugr;
+pub mod ugr_table;

@@ -11,13 +11,14 @@
 //! part. No source in view gives `−∞`; the formula holds for `3·10⁻⁴ < ω < 0.1` sr, and a
 //! reading keeps its sources so the caller can warn of those outside.
 
-use crate::luminaire::seen_from;
+use crate::luminaire::{Source, seen_from};
 use crate::model::Model;
 use crate::readout::correction::corrected;
 use crate::readout::field::Field;
 use crate::readout::guth::position_index;
 use crate::scene::Observer;
 use crate::visibility::NO_FACE;
+use glam::DVec3;
 use std::f64::consts::PI;
 
 /// The solid angles within which CIE 117's formula holds, sr.
@@ -57,15 +58,43 @@ pub struct UgrReading {
 impl UgrReading {
     /// The UGR (`−∞` with no source in view).
     pub fn ugr(&self) -> f64 {
-        let sum: f64 =
-            self.sources.iter().map(|s| s.luminance * s.luminance * s.solid_angle / s.position_index.powi(2)).sum();
-        8.0 * (0.25 * sum / self.background).log10()
+        unified_glare_rating(&self.sources, self.background)
     }
 
     /// The counted sources whose solid angle is outside [`VALID_SOLID_ANGLE`].
     pub fn outside_validity(&self) -> usize {
         self.sources.iter().filter(|s| !s.valid()).count()
     }
+}
+
+/// `UGR = 8 log10((0.25 / L_b) Σ L² ω / p²)` over `sources` with the background `L_b`
+/// (cd/m²), design.md (5.6): `−∞` with no source.
+pub fn unified_glare_rating(sources: &[GlareSource], background: f64) -> f64 {
+    let sum: f64 = sources.iter().map(|s| s.luminance * s.luminance * s.solid_angle / s.position_index.powi(2)).sum();
+    8.0 * (0.25 * sum / background).log10()
+}
+
+/// The point luminaire `source` as the eye at `eye` looking along the unit `look` sees it,
+/// obstructions aside: `None` when it is not in front of the eye above its line of sight
+/// (`guth.rs`) or sends the eye no light.
+pub fn glare_source(source: &Source, eye: DVec3, look: DVec3) -> Option<GlareSource> {
+    let seen = seen_from(source, eye)?;
+    let r = seen.centre - eye;
+    let position_index = position_index(look, r.normalize())?;
+    (seen.luminance > 0.0).then(|| GlareSource {
+        name: source.name.clone(),
+        luminance: seen.luminance,
+        solid_angle: seen.area / r.length_squared(),
+        position_index,
+    })
+}
+
+/// The UGR of the `[[grid]]` named `grid`: the largest of the observers' in `readings`
+/// that name it (`−∞` when none sees a luminaire); `None` when no observer names it.
+pub fn grid_ugr(grid: &str, readings: &[UgrReading]) -> Option<f64> {
+    let mut named = readings.iter().filter(|r| r.observer.grid.as_deref() == Some(grid)).peekable();
+    named.peek()?;
+    Some(named.map(UgrReading::ugr).fold(f64::NEG_INFINITY, f64::max))
 }
 
 /// Reads every observer from a solved field.
@@ -80,17 +109,9 @@ fn read(observer: &Observer, model: &Model, field: &Field) -> UgrReading {
         .sources
         .iter()
         .filter_map(|source| {
-            let seen = seen_from(source, eye)?;
-            let r = seen.centre - eye;
-            let p = position_index(look, r.normalize())?;
-            let visible = seen.luminance > 0.0 && model.visibility.visible(eye, seen.centre, [NO_FACE, NO_FACE]);
-            let solid_angle = seen.area / r.length_squared();
-            visible.then(|| GlareSource {
-                name: source.name.clone(),
-                luminance: seen.luminance,
-                solid_angle,
-                position_index: p,
-            })
+            let glare = glare_source(source, eye, look)?;
+            let centre = seen_from(source, eye)?.centre;
+            model.visibility.visible(eye, centre, [NO_FACE, NO_FACE]).then_some(glare)
         })
         .collect();
     UgrReading { observer: observer.clone(), background: (e - direct) / PI, sources }

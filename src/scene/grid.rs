@@ -3,12 +3,13 @@
 //! edges and resolution, or the `work_plane` shorthand (`work_plane.rs`).
 
 use super::bounds::surfaces_bounds;
-use super::check::{Context, REL_TOL, show, unique_names};
+use super::check::{Context, REL_TOL, line, number, show, unique_names};
 use super::error::SceneError;
 use super::work_plane::{RawWorkPlane, work_plane};
 use crate::geometry::Surface;
 use glam::DVec3;
 use serde::Deserialize;
+use serde_spanned::Spanned;
 use std::path::Path;
 
 /// `[[grid]]`.
@@ -34,22 +35,26 @@ pub struct RawGrid {
     pub target: RawTarget,
 }
 
-/// `target = { em = 500, u0 = 0.6 }` of a `[[grid]]` as written.
+/// `target = { em = 500, u0 = 0.6, ugr = 19 }` of a `[[grid]]` as written.
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawTarget {
     pub em: Option<f64>,
     pub u0: Option<f64>,
+    pub ugr: Option<Spanned<f64>>,
 }
 
-/// The requirements of EN 12464-1 a grid is checked against in the report: the maintained
-/// illuminance `Ēm` (the least `E_avg`) and the least uniformity `U0`. Either may be absent.
+/// The requirements of EN 12464-1 a grid is checked against in the summary and the report:
+/// the maintained illuminance `Ēm` (the least `E_avg`), the least uniformity `U0` and the
+/// limit `UGR_L` of the largest UGR of the `[[observer]]`s that name the grid. Each may be absent.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Target {
     /// `Ēm`, lx.
     pub em: Option<f64>,
     /// `U0 = E_min / E_avg`.
     pub u0: Option<f64>,
+    /// `UGR_L`.
+    pub ugr: Option<f64>,
 }
 
 /// `map = { scale = "log", values = true, isolines = true }` of a `[[grid]]`: how its plan
@@ -111,14 +116,17 @@ impl Grid {
     }
 }
 
-pub(super) fn grids(path: &Path, raw: &[RawGrid], surfaces: &[Surface]) -> Result<Vec<Grid>, SceneError> {
+pub(super) fn grids(path: &Path, source: &str, raw: &[RawGrid], surfaces: &[Surface]) -> Result<Vec<Grid>, SceneError> {
     unique_names(path, "grid", raw.iter().map(|g| g.name.as_str()))?;
     let bounds = surfaces_bounds(surfaces);
-    raw.iter().enumerate().map(|(index, g)| grid(&Context::item(path, "grid", &g.name, index), g, bounds)).collect()
+    raw.iter()
+        .enumerate()
+        .map(|(index, g)| grid(&Context::item(path, "grid", &g.name, index), source, g, bounds))
+        .collect()
 }
 
-fn grid(at: &Context, g: &RawGrid, bounds: (DVec3, DVec3)) -> Result<Grid, SceneError> {
-    let target = target(at, &g.target)?;
+fn grid(at: &Context, source: &str, g: &RawGrid, bounds: (DVec3, DVec3)) -> Result<Grid, SceneError> {
+    let target = target(at, source, &g.target)?;
     if let Some(w) = &g.work_plane {
         let given = [("origin", g.origin.is_some()), ("edge_u", g.edge_u.is_some()), ("edge_v", g.edge_v.is_some())];
         let given = given.into_iter().chain([("resolution", g.resolution.is_some()), ("normal", g.normal.is_some())]);
@@ -171,13 +179,18 @@ fn grid(at: &Context, g: &RawGrid, bounds: (DVec3, DVec3)) -> Result<Grid, Scene
     Ok(Grid { name: g.name.clone(), origin, edge_u, edge_v, normal, resolution: [nu, nv], map: g.map, target })
 }
 
-/// `target`: `em` finite and > 0 lx, `u0` within (0, 1].
-fn target(at: &Context, t: &RawTarget) -> Result<Target, SceneError> {
+/// `target`: `em` finite and > 0 lx, `u0` within (0, 1], `ugr` within 0 and 40.
+fn target(at: &Context, source: &str, t: &RawTarget) -> Result<Target, SceneError> {
     if let Some(em) = t.em.filter(|e| !(e.is_finite() && *e > 0.0)) {
         return Err(at.error("target", format!("`em` must be a finite illuminance > 0 lx, got {em}")));
     }
     if let Some(u0) = t.u0.filter(|u| !(*u > 0.0 && *u <= 1.0)) {
         return Err(at.error("target", format!("`u0` must lie in (0, 1], got {u0}")));
     }
-    Ok(Target { em: t.em, u0: t.u0 })
+    if let Some(u) = t.ugr.as_ref().filter(|u| !(0.0..=40.0).contains(u.get_ref())) {
+        let message =
+            format!("{}`ugr` (UGR_L) must lie within 0 and 40, got {}", line(source, u), number(*u.get_ref()));
+        return Err(at.error("target", message));
+    }
+    Ok(Target { em: t.em, u0: t.u0, ugr: t.ugr.as_ref().map(|u| *u.get_ref()) })
 }

@@ -2,10 +2,12 @@
 //! reports the Unified Glare Rating of CIE 117:1995 (`docs/photometry.md`, "UGR"). What
 //! it reads is `crate::readout::ugr`.
 
-use super::check::{Context, number, unique_names};
+use super::check::{Context, line, number, unique_names};
 use super::error::SceneError;
+use super::grid::{Grid, RawGrid};
 use glam::DVec3;
 use serde::Deserialize;
+use serde_spanned::Spanned;
 use std::path::Path;
 
 /// `[[observer]]` as written.
@@ -18,6 +20,7 @@ pub struct RawObserver {
     #[serde(deserialize_with = "super::arrays::exact")]
     pub look: [f64; 3],
     pub ugr_limit: Option<f64>,
+    pub grid: Option<Spanned<String>>,
 }
 
 /// `[[observer]]`: an eye and its line of sight.
@@ -31,18 +34,45 @@ pub struct Observer {
     pub look: DVec3,
     /// The UGR the reading is checked against (EN 12464-1's `UGR_L`), if given.
     pub ugr_limit: Option<f64>,
+    /// The `[[grid]]` whose UGR it reads: a grid's UGR is the largest of its observers'.
+    pub grid: Option<String>,
 }
 
 /// The smallest angle between the line of sight and the vertical, degrees: the Guth
 /// position index needs the vertical plane through the line of sight.
 const FROM_VERTICAL_DEG: f64 = 1.0;
 
-pub(super) fn observers(path: &Path, raw: &[RawObserver]) -> Result<Vec<Observer>, SceneError> {
+/// The observers, each naming an existing grid if any; every grid with a `ugr` target
+/// named by one at least (`raw_grids` for the line of that target).
+pub(super) fn observers(
+    path: &Path,
+    source: &str,
+    raw: &[RawObserver],
+    (grids, raw_grids): (&[Grid], &[RawGrid]),
+) -> Result<Vec<Observer>, SceneError> {
     unique_names(path, "observer", raw.iter().map(|o| o.name.as_str()))?;
-    raw.iter().enumerate().map(|(index, o)| observer(&Context::item(path, "observer", &o.name, index), o)).collect()
+    let observers = raw
+        .iter()
+        .enumerate()
+        .map(|(index, o)| observer(&Context::item(path, "observer", &o.name, index), source, o, grids))
+        .collect::<Result<Vec<_>, _>>()?;
+    for (index, (grid, raw)) in grids.iter().zip(raw_grids).enumerate() {
+        let (Some(limit), false) = (&raw.target.ugr, observers.iter().any(|o| o.grid.as_ref() == Some(&grid.name)))
+        else {
+            continue;
+        };
+        let message = format!(
+            "{}`ugr` (UGR_L) needs an [[observer]] with `grid = \"{}\"`: a grid's UGR is the largest of the \
+             observers that name it",
+            line(source, limit),
+            grid.name
+        );
+        return Err(Context::item(path, "grid", &grid.name, index).error("target", message));
+    }
+    Ok(observers)
 }
 
-fn observer(at: &Context, o: &RawObserver) -> Result<Observer, SceneError> {
+fn observer(at: &Context, source: &str, o: &RawObserver, grids: &[Grid]) -> Result<Observer, SceneError> {
     let position = at.place("position", o.position)?;
     let look = at.direction("look", o.look)?;
     if look.y.abs() > FROM_VERTICAL_DEG.to_radians().cos() {
@@ -53,5 +83,12 @@ fn observer(at: &Context, o: &RawObserver) -> Result<Observer, SceneError> {
     if let Some(u) = ugr_limit.filter(|u| !(0.0..=40.0).contains(u)) {
         return Err(at.error("ugr_limit", format!("must be within 0 and 40, got {}", number(u))));
     }
-    Ok(Observer { name: o.name.clone(), position, look, ugr_limit })
+    let grid = match &o.grid {
+        Some(g) if !grids.iter().any(|grid| &grid.name == g.get_ref()) => {
+            let message = format!("{}names no [[grid]] of the case: \"{}\"", line(source, g), g.get_ref());
+            return Err(at.error("grid", message));
+        }
+        g => g.as_ref().map(|g| g.get_ref().clone()),
+    };
+    Ok(Observer { name: o.name.clone(), position, look, ugr_limit, grid })
 }

@@ -38,9 +38,9 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let (mut surfaces, surface_tables) = surfaces(path, &source, &raw.surface, (&materials, &file_warnings), &files)?;
     let placed = placements(path, &source, &raw.window, &raw.surface, &mut surfaces, &surface_tables)?;
     let probes = probes(path, &raw.probe)?;
-    let observers = observers(path, &raw.observer)?;
     let cameras = cameras(path, &raw.camera)?;
-    let grids = grids(path, &raw.grid, &surfaces)?;
+    let grids = grids(path, &source, &raw.grid, &surfaces)?;
+    let observers = observers(path, &source, &raw.observer, (&grids, &raw.grid))?;
     let (mut luminaires, groups) = luminaires(path, &source, &raw.luminaire, &files)?;
     let (sky, openings, glass) = daylight(path, raw.sky.as_ref(), &raw.window, &placed)?;
     glaze(&mut luminaires, &glass);

@@ -130,8 +130,8 @@ fn the_targets_are_read_from_the_grid_table_and_a_bad_one_is_refused_naming_it()
     let parse = |target: &str| Scene::parse(Path::new("plan.toml"), format!("{CASE}{target}\n"));
     assert_eq!(parse("").unwrap().grids[0].target, Target::default());
     let target = parse("target = { em = 500, u0 = 0.6 }").unwrap().grids[0].target;
-    assert_eq!(target, Target { em: Some(500.0), u0: Some(0.6) });
-    assert_eq!(parse("target = { u0 = 0.4 }").unwrap().grids[0].target, Target { em: None, u0: Some(0.4) });
+    assert_eq!(target, Target { em: Some(500.0), u0: Some(0.6), ugr: None });
+    assert_eq!(parse("target = { u0 = 0.4 }").unwrap().grids[0].target, Target { em: None, u0: Some(0.4), ugr: None });
     for bad in ["target = { em = -5 }", "target = { em = 0 }", "target = { u0 = 1.5 }", "target = { u0 = 0 }"] {
         let error = parse(bad).unwrap_err().to_string();
         assert!(error.contains("plan.toml") && error.contains("plane") && error.contains("target"), "{bad}: {error}");

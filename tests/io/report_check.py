@@ -118,19 +118,26 @@ def check_grids(table, h5, prefix="grids"):
 
 
 def check_stats(cells, attrs, what):
-    """E_avg, Ēm target, E_min, E_max, U0, U0 target, meets targets."""
+    """E_avg, Ēm target, E_min, E_max, U0, U0 target, UGR, UGR_L, meets targets."""
     em = attrs.get("Em_target")
     u0t = attrs.get("U0_target")
+    ugr = attrs.get("UGR")
+    ugr_l = attrs.get("UGR_target")
     same(cells[0], attrs["E_avg"], 1, f"{what} E_avg")
     same(cells[1], em if em is not None else np.nan, 0, f"{what} Ēm target")
     same(cells[2], attrs["E_min"], 1, f"{what} E_min")
     same(cells[3], attrs["E_max"], 1, f"{what} E_max")
     same(cells[4], attrs["U0"], 2, f"{what} U0")
     same(cells[5], u0t if u0t is not None else np.nan, 2, f"{what} U0 target")
+    glare = "-" if ugr is None else (f"{ugr:.1f}" if np.isfinite(ugr) else "no source")
+    if cells[6] != glare:
+        fail(f"{what}: UGR shows {cells[6]}, the file holds {ugr}")
+    same(cells[7], ugr_l if ugr_l is not None else np.nan, 0, f"{what} UGR_L")
     checks = ([attrs["E_avg"] >= em] if em is not None else []) + ([attrs["U0"] >= u0t] if u0t is not None else [])
+    checks += [ugr is not None and ugr <= ugr_l] if ugr_l is not None else []
     expected = "—" if not checks else ("yes" if all(checks) else "no")
-    if cells[6] != expected:
-        fail(f"{what}: meets targets shows {cells[6]}, expected {expected}")
+    if cells[8] != expected:
+        fail(f"{what}: meets targets shows {cells[8]}, expected {expected}")
 
 
 def check_luminaires(table, h5):
@@ -192,7 +199,7 @@ def check_light_scenes(table, h5):
     grid = table["head"].index("grid")
     for row in table["rows"]:
         if row[grid] != "—":
-            check_stats(row[grid + 1:grid + 8], h5[f"light_scenes/{row[0]}/grids/{row[grid]}"].attrs, f"light scene {row[0]}")
+            check_stats(row[grid + 1:grid + 10], h5[f"light_scenes/{row[0]}/grids/{row[grid]}"].attrs, f"light scene {row[0]}")
 
 
 def main():

@@ -8,6 +8,7 @@ mod error_bar;
 mod glossy;
 mod meter;
 mod ugr;
+mod ugr_table;
 
 use crate::support::{build, solve};
 use std::path::Path;

@@ -139,6 +139,17 @@ fn a_panel_close_to_the_eye_is_outside_the_formulas_solid_angles() {
     assert!(r.sources[1].solid_angle > 0.1, "ω = {} sr", r.sources[1].solid_angle);
 }
 
+/// `ugo solve` of the case `text` in `dir` (`case.toml` → `res.h5`): the file and the summary.
+fn solved_file(dir: &std::path::Path, text: &str) -> (hdf5::File, String) {
+    let case = dir.join("case.toml");
+    std::fs::write(&case, text).expect("writable");
+    let out = dir.join("res.h5");
+    let o = crate::support::ugo(&["solve", case.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(o.status.success(), "{stdout}{}", String::from_utf8_lossy(&o.stderr));
+    (hdf5::File::open(&out).unwrap(), stdout)
+}
+
 /// Every light scene reads its observers under its dimmed luminaires and its own field
 /// (issue 38, point 1): all at half gives `UGR − 8 log10 2` exactly, the panel off no
 /// source, in the summary and in `/light_scenes/NAME/observers`.
@@ -155,13 +166,7 @@ fn each_light_scene_reads_its_own_ugr() {
          [[light_scene]]\nname = \"half\"\ngroups = {{ walls = 0.5, panel = 0.5 }}\n\
          [[light_scene]]\nname = \"dark\"\ngroups = {{ walls = 1, panel = false }}\n"
     );
-    let case = dir.as_ref().join("case.toml");
-    std::fs::write(&case, text).expect("writable");
-    let out = dir.as_ref().join("res.h5");
-    let o = crate::support::ugo(&["solve", case.to_str().unwrap(), "-o", out.to_str().unwrap()]);
-    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
-    assert!(o.status.success(), "{stdout}{}", String::from_utf8_lossy(&o.stderr));
-    let file = hdf5::File::open(&out).unwrap();
+    let (file, stdout) = solved_file(dir.as_ref(), &text);
     let ugr = |scene: &str| {
         file.dataset(&format!("light_scenes/{scene}/observers/ugr")).unwrap().read_raw::<f64>().unwrap()[0]
     };
@@ -173,4 +178,63 @@ fn each_light_scene_reads_its_own_ugr() {
     let dark = stdout.split("light scene \"dark\"").nth(1).expect("the dark scene is reported");
     let line = dark.lines().find(|l| l.trim_start().starts_with("desk")).expect("its observer line");
     assert!(line.contains("no source") && line.contains("met"), "{line}");
+}
+
+/// A `[[grid]]`'s UGR is the largest of the observers that name it, checked against its
+/// `target`'s `ugr` (`UGR_L`) in the summary, the HDF5 file and the report (issue 38, point 1).
+#[test]
+fn a_grids_ugr_is_the_largest_of_its_observers() {
+    let dir = scratch("ugr-grid");
+    std::fs::write(dir.as_ref().join("panel.ies"), PANEL).expect("writable");
+    let [x, y, z] = AHEAD;
+    let text = room(4.0, 0.0, WALLS)
+        + &format!(
+            "[[luminaire]]\nname = \"panel\"\ntype = \"ies\"\nfile = \"panel.ies\"\nposition = [{x}, {y}, {z}]\n\
+             [[grid]]\nname = \"desk\"\norigin = [0.5, 0.8, 0.5]\nedge_u = [3, 0, 0]\nedge_v = [0, 0, 3]\n\
+             resolution = [3, 3]\nnormal = [0, 1, 0]\ntarget = {{ ugr = 16 }}\n\
+             [[observer]]\nname = \"near\"\nposition = {EYE:?}\nlook = [1, 0, 0]\ngrid = \"desk\"\n\
+             [[observer]]\nname = \"far\"\nposition = [0.8, 1.2, 0.6]\nlook = [1, 0, 0]\ngrid = \"desk\"\n\
+             [[observer]]\nname = \"elsewhere\"\nposition = [0.8, 1.8, 2.5]\nlook = [1, 0, 0]\n"
+        );
+    let (file, stdout) = solved_file(dir.as_ref(), &text);
+    let observers = file.dataset("observers/ugr").unwrap().read_raw::<f64>().unwrap();
+    let grid = file.group("grids/desk").unwrap();
+    let attr = |name: &str| grid.attr(name).unwrap().read_scalar::<f64>().unwrap();
+    assert_eq!(attr("UGR"), observers[0].max(observers[1]), "observers {observers:?}");
+    assert!(observers[2] > attr("UGR"), "the one naming no grid does not count: {observers:?}");
+    assert_eq!(attr("UGR_target"), 16.0);
+    let line = stdout.lines().find(|l| l.trim_start().starts_with("desk") && l.contains("16")).expect("its line");
+    let verdict = if attr("UGR") <= 16.0 { "met" } else { "NOT MET" };
+    assert!(line.contains(&format!("{:.2}", attr("UGR"))) && line.contains(verdict), "{line}");
+    let (out, page) = (dir.as_ref().join("res.h5"), dir.as_ref().join("res.html"));
+    let o = crate::support::ugo(&["report", out.to_str().unwrap(), "-o", page.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert!(
+        html.contains("<th>UGR_L</th>") && html.contains(&format!("<td>{:.1}</td>", attr("UGR"))),
+        "the grid table"
+    );
+}
+
+#[test]
+fn a_grids_ugr_limit_and_an_observers_grid_are_validated_naming_the_line() {
+    let base = room(4.0, 0.5, 10.0)
+        + "[[grid]]\nname = \"desk\"\norigin = [0.5, 0.8, 0.5]\nedge_u = [3, 0, 0]\nedge_v = [0, 0, 3]\n\
+           resolution = [3, 3]\n";
+    let rejected = |more: &str, table: &str, key: &str, words: &str| {
+        let error =
+            Scene::parse(std::path::Path::new("cases/test.toml"), format!("{base}{more}")).expect_err("rejected");
+        let shown = error.to_string();
+        let line = shown.contains("line ");
+        assert!(shown.contains("cases/test.toml") && shown.contains(table) && shown.contains(key), "{shown}");
+        assert!(shown.contains(words) && line, "{shown}");
+    };
+    let eye = "[[observer]]\nname = \"eye\"\nposition = [1, 1.2, 1]\nlook = [1, 0, 0]\n";
+    rejected("target = { ugr = 19 }\n", "[[grid]] \"desk\" (#1)", "target", "needs an [[observer]]");
+    rejected("target = { ugr = 19 }\n", "[[grid]] \"desk\" (#1)", "target", "grid = \"desk\"");
+    rejected("target = { ugr = 50 }\n", "[[grid]] \"desk\" (#1)", "target", "within 0 and 40");
+    rejected(&format!("{eye}grid = \"bench\"\n"), "[[observer]] \"eye\" (#1)", "grid", "names no [[grid]]");
+    let fine = format!("{base}target = {{ ugr = 19 }}\n{eye}grid = \"desk\"\n");
+    let scene = Scene::parse(std::path::Path::new("cases/test.toml"), fine).expect("valid");
+    assert_eq!((scene.grids[0].target.ugr, scene.observers[0].grid.as_deref()), (Some(19.0), Some("desk")));
 }

@@ -1,5 +1,6 @@
 //! The grids of the report (`docs/report.md`): each `[[grid]]` of the stored scene against
-//! the targets of EN 12464-1 its case gives it (`Ēm`, `U0`), from the statistics
+//! the targets of EN 12464-1 its case gives it (`Ēm`, `U0`, `UGR_L` against the largest UGR
+//! of the `[[observer]]`s that name it), from the statistics
 //! `/grids/<name>` holds, and its plan drawn again from the stored readings by
 //! `io::grid_map` (the same picture as `ugo solve`'s `OUT-<grid>.png`).
 
@@ -19,16 +20,20 @@ const STATS: [&str; 4] = ["E_avg", "E_min", "E_max", "U0"];
 
 /// The header of a grid's figures against its targets.
 pub(super) fn target_head() -> Vec<String> {
-    ["E_avg (lx)", "Ēm target (lx)", "E_min (lx)", "E_max (lx)", "U0", "U0 target", "meets targets"]
+    ["E_avg (lx)", "Ēm target (lx)", "E_min (lx)", "E_max (lx)", "U0", "U0 target", "UGR", "UGR_L", "meets targets"]
         .map(str::to_string)
         .to_vec()
 }
 
-/// The cells of `head` for the grid `grid` whose statistics are the attributes of `group`.
+/// The cells of `head` for the grid `grid` whose statistics are the attributes of `group`
+/// (its UGR the largest of the observers that name it, "-" where none does).
 pub(super) fn figures(h: &H5, group: &str, grid: &Grid) -> Vec<String> {
     let [avg, min, max, u0] = h.attrs(group, STATS);
     let t = grid.target;
-    let checks: Vec<bool> = [t.em.map(|em| avg >= em), t.u0.map(|least| u0 >= least)].into_iter().flatten().collect();
+    let ugr = h.attr(group, "UGR");
+    let glare = t.ugr.map(|limit| ugr.is_some_and(|u| u <= limit));
+    let checks: Vec<bool> =
+        [t.em.map(|em| avg >= em), t.u0.map(|least| u0 >= least), glare].into_iter().flatten().collect();
     let met = (!checks.is_empty()).then(|| checks.iter().all(|&ok| ok));
     vec![
         number(avg, 1),
@@ -37,6 +42,8 @@ pub(super) fn figures(h: &H5, group: &str, grid: &Grid) -> Vec<String> {
         number(max, 1),
         number(u0, 2),
         optional(t.u0, 2),
+        ugr.map_or("-".to_string(), super::glare::ugr),
+        optional(t.ugr, 0),
         verdict(met),
     ]
 }
