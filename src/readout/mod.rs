@@ -1,6 +1,6 @@
 //! Readouts of a solved field (`docs/design.md` §5, §7): the field as an `N × K × C` array, the
 //! illuminance of patches and points, probes (point sensors, luminance meters, cylindrical
-//! illuminance), the UGR at observers, grids and the energy balance in lumens.
+//! illuminance), the UGR at observers, grids, the readings' error bars and the energy balance in lumens.
 
 pub mod correction;
 pub mod cylindrical;
@@ -12,6 +12,7 @@ pub mod final_gather;
 pub mod gather;
 pub mod glossy;
 pub mod grid;
+pub mod grid_error;
 pub mod guth;
 pub mod illuminance;
 pub mod luminance;
