@@ -264,7 +264,11 @@ pub(super) fn write_grids(
     if grids.is_empty() {
         return Ok(());
     }
-    println!("  grids                      E_avg lx               E_min lx           E_max lx      U0");
+    let head = ("grids", "E_avg lx", "± δ", "E_min lx", "± δ", "E_max lx", "U0 ± δ");
+    println!(
+        "  {:<24} {:>12}   {:<8} {:>12}   {:<8} {:>12} {:>7}",
+        head.0, head.1, head.2, head.3, head.4, head.5, head.6
+    );
     for (i, (g, bars)) in grids.iter().zip(errors).enumerate() {
         let st = g.stats();
         let left_out = match g.left_out() {
