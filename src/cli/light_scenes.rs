@@ -7,13 +7,15 @@ use anyhow::Result;
 use std::path::{Path, PathBuf};
 use ugo::io::{LightSceneField, LightScenes, write_probes_csv};
 use ugo::readout::grid::GridReading;
+use ugo::readout::grid_error::GridErrorBars;
 use ugo::scene::LightScene;
 
-/// Writes a light scene's grids' files: its grids, the stem of their names, the light scene.
-pub type WriteGrids<'a> = dyn Fn(&[GridReading], &str, &LightScene) -> Result<()> + 'a;
+/// Writes a light scene's grids' files: its grids, their error bars, the stem of their
+/// names, the light scene.
+pub type WriteGrids<'a> = dyn Fn(&[GridReading], &[GridErrorBars], &str, &LightScene) -> Result<()> + 'a;
 
 /// Prints the groups' solves and every light scene, and writes its CSV files and, with
-/// `write_grids` (the solve's: grids, the stem of their files and the light scene of
+/// `write_grids` (the solve's: grids, their error bars, the stem of their files and the light scene of
 /// `light_scenes`, the case's, whose dimmed luminaires the plans draw), its grids' files.
 pub fn report(light: &LightScenes, light_scenes: &[LightScene], output: &Path, write_grids: &WriteGrids) -> Result<()> {
     println!("  light groups             applications   start residual   residual      time s");
@@ -59,7 +61,7 @@ pub fn report_scenes(
         if !scene.observers.is_empty() {
             super::glare::report(&scene.observers, &scene.grids, "    ");
         }
-        write_grids(&scene.grids, &base, described)?;
+        write_grids(&scene.grids, &scene.grid_errors, &base, described)?;
     }
     Ok(())
 }

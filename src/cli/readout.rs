@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 use ugo::io::{OutputLock, read_solution, write_probes_csv, write_readout};
 use ugo::readout::grid::GridReading;
+use ugo::readout::grid_error::GridErrorBars;
 use ugo::scene::{LightScene, Scene};
 use ugo::study;
 
@@ -35,15 +36,16 @@ pub fn run(file: &Path, case: Option<&Path>, d: &Discretize, output: Option<Path
     }
     let names: Vec<String> = scene.surfaces.iter().map(|s| s.name.clone()).collect();
     let files = GridFiles { sources: &r.model.sources, mesh: &r.model.mesh, surfaces: &names };
-    write_grids(&r.readings.grids, &output.with_extension("").display().to_string(), &files, None)?;
+    let stem = output.with_extension("").display().to_string();
+    write_grids(&r.readings.grids, &r.readings.grid_errors, &stem, &files, None)?;
     if !r.readings.probes.is_empty() {
         let csv = super::beside(&output, "-probes.csv");
         write_probes_csv(&csv, &r.readings.probes, None)?;
         println!("  probes             {}", csv.display());
     }
-    let lit = |grids: &[GridReading], stem: &str, light_scene: &LightScene| {
+    let lit = |grids: &[GridReading], errors: &[GridErrorBars], stem: &str, light_scene: &LightScene| {
         let dimmed = study::dimmed(&scene, &r.model.sources, light_scene);
-        write_grids(grids, stem, &GridFiles { sources: &dimmed, ..files }, None)
+        write_grids(grids, errors, stem, &GridFiles { sources: &dimmed, ..files }, None)
     };
     let groups: Vec<&str> = scene.lighting.groups.iter().map(|g| g.name.as_str()).collect();
     super::light_scenes::report_scenes(&groups, &r.light_scenes, &scene.lighting.scenes, &output, &lit)?;

@@ -15,6 +15,7 @@ use ugo::luminaire::Source;
 use ugo::model::HierarchyRecord;
 use ugo::readout::daylight::DaylightReadings;
 use ugo::readout::grid::GridReading;
+use ugo::readout::grid_error::GridErrorBars;
 use ugo::readout::probe::ProbeReading;
 use ugo::scene::{LightScene, Scene};
 use ugo::solve::norms::{Estimate, Estimator, Norms};
@@ -92,16 +93,17 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     super::kernel::print_record(&s.kernel);
     let names: Vec<String> = scene.surfaces.iter().map(|s| s.name.clone()).collect();
     let files = GridFiles { sources: &s.model.sources, mesh: &s.model.mesh, surfaces: &names };
-    write_grids(&s.grids, &output.with_extension("").display().to_string(), &files, s.daylight.as_ref())?;
+    let stem = output.with_extension("").display().to_string();
+    write_grids(&s.grids, &s.grid_errors, &stem, &files, s.daylight.as_ref())?;
     if !s.probes.is_empty() {
         let csv = super::beside(&output, "-probes.csv");
         write_probes_csv(&csv, &s.probes, s.daylight.as_ref())?;
         println!("  probes             {}", csv.display());
     }
     if let Some(light) = &s.light_scenes {
-        let lit = |grids: &[GridReading], stem: &str, light_scene: &LightScene| {
+        let lit = |grids: &[GridReading], errors: &[GridErrorBars], stem: &str, light_scene: &LightScene| {
             let dimmed = study::dimmed(&scene, &s.model.sources, light_scene);
-            write_grids(grids, stem, &GridFiles { sources: &dimmed, ..files }, None)
+            write_grids(grids, errors, stem, &GridFiles { sources: &dimmed, ..files }, None)
         };
         super::light_scenes::report(light, &scene.lighting.scenes, &output, &lit)?;
     }
@@ -248,11 +250,13 @@ pub(super) struct GridFiles<'a> {
     pub(super) surfaces: &'a [String],
 }
 
-/// Each grid's CSV and plan (`ugo::io::write_grid_map`), `<stem>-<grid>.{csv,png}`, and
-/// under a `[sky]` its daylight factor's (or ratio's) plan `<stem>-<grid>-DF.png` (`-DR`);
-/// the points left out of the statistics counted after them.
+/// Each grid's statistics with their error bars (`errors`, one per grid), its CSV and plan
+/// (`ugo::io::write_grid_map`), `<stem>-<grid>.{csv,png}`, and under a `[sky]` its daylight
+/// factor's (or ratio's) plan `<stem>-<grid>-DF.png` (`-DR`); the points left out of the
+/// statistics counted after them.
 pub(super) fn write_grids(
     grids: &[GridReading],
+    errors: &[GridErrorBars],
     stem: &str,
     files: &GridFiles,
     daylight: Option<&DaylightReadings>,
@@ -260,22 +264,26 @@ pub(super) fn write_grids(
     if grids.is_empty() {
         return Ok(());
     }
-    println!("  grids                      E_avg lx     E_min lx     E_max lx      U0");
-    for (i, g) in grids.iter().enumerate() {
+    let head = ("grids", "E_avg lx", "± δ", "E_min lx", "± δ", "E_max lx", "U0 ± δ");
+    println!(
+        "  {:<24} {:>12}   {:<8} {:>12}   {:<8} {:>12} {:>7}",
+        head.0, head.1, head.2, head.3, head.4, head.5, head.6
+    );
+    for (i, (g, bars)) in grids.iter().zip(errors).enumerate() {
         let st = g.stats();
         let left_out = match g.left_out() {
             0 => String::new(),
             n => format!("   ({n} of {} points left out)", g.points.len()),
         };
         println!(
-            "    {:<22} {:>12.4} {:>12.4} {:>12.4} {:>7.4}{left_out}",
-            g.grid.name, st.average, st.min, st.max, st.u0
+            "    {:<22} {:>12.4} ± {:<8.3} {:>12.4} ± {:<8.3} {:>12.4} {:>7.4} ± {:.4}{left_out}",
+            g.grid.name, st.average, bars.average, st.min, bars.min, st.max, st.u0, bars.u0
         );
         let base = format!("{stem}-{}", file_name(&g.grid.name));
         let (csv, png) = (PathBuf::from(format!("{base}.csv")), PathBuf::from(format!("{base}.png")));
         let df = daylight.map(|d| (d.symbol(), d.grid_factor(i)));
         let df = df.as_ref().map(|(x, values)| (*x, values.as_slice()));
-        write_grid_csv(&csv, g, files.surfaces, df)?;
+        write_grid_csv(&csv, g, bars, files.surfaces, df)?;
         let section = section(files.mesh, g.grid.origin, g.grid.normal);
         let overlay = Overlay { sources: files.sources, section: &section };
         write_grid_map(&png, g, &overlay)?;

@@ -28,7 +28,7 @@
 use super::dataset::{dataset, strings, text_attr};
 use super::daylight_group::write_daylight;
 use super::observer_group::write_observers;
-use super::readout_group::{write_grid, write_probes};
+use super::readout_group::{write_grids, write_probes};
 use super::solution::Solution;
 use crate::basis::{Factorization, MaterialFactor};
 use crate::directions::DirectionSet;
@@ -99,10 +99,7 @@ fn write_to(path: &Path, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     write_probes(&file.create_group("probes")?, &s.probes)?;
     write_observers(&file.create_group("observers")?, &s.observers)?;
     s.daylight.as_ref().map(|d| write_daylight(&file.create_group("daylight")?, d, &s.probes, &s.grids)).transpose()?;
-    let grids = file.create_group("grids")?;
-    for grid in &s.grids {
-        write_grid(&grids.create_group(&grid.grid.name)?, grid, &s.observers)?;
-    }
+    write_grids(&file.create_group("grids")?, &s.grids, &s.grid_errors, &s.observers)?;
     write_luminaires(&file.create_group("luminaires")?, scene, s)?;
     if let Some(light) = &s.light_scenes {
         super::light_scene_group::write_light_scenes(&file, scene, &s.model, light)?;

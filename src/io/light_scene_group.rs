@@ -16,11 +16,12 @@ use super::IoError;
 use super::dataset::{dataset, strings};
 use super::observer_group::write_observers;
 use super::read::StoredSolution;
-use super::readout_group::{write_grid, write_probes};
+use super::readout_group::{write_grids, write_probes};
 use crate::model::Model;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
 use crate::readout::grid::GridReading;
+use crate::readout::grid_error::GridErrorBars;
 use crate::readout::probe::ProbeReading;
 use crate::readout::ugr::UgrReading;
 use crate::scene::Scene;
@@ -69,6 +70,8 @@ pub struct LightSceneField {
     pub probes: Vec<ProbeReading>,
     /// Its grid readings.
     pub grids: Vec<GridReading>,
+    /// Their error bars, one per grid.
+    pub grid_errors: Vec<GridErrorBars>,
     /// The UGR at every `[[observer]]` under its dimmed luminaires and its background.
     pub observers: Vec<UgrReading>,
 }
@@ -158,10 +161,7 @@ fn write_scene(g: &hdf5::Group, s: &LightSceneField, n: usize, k: usize) -> hdf5
     dataset(&field, "direct_illuminance", &Array1::from(s.direct_illuminance.clone()))?;
     write_probes(&g.create_group("probes")?, &s.probes)?;
     write_observers(&g.create_group("observers")?, &s.observers)?;
-    let grids = g.create_group("grids")?;
-    for grid in &s.grids {
-        write_grid(&grids.create_group(&grid.grid.name)?, grid, &s.observers)?;
-    }
+    write_grids(&g.create_group("grids")?, &s.grids, &s.grid_errors, &s.observers)?;
     g.new_attr::<f64>().shape(s.factors.len()).create("factors")?.write_raw(&s.factors)?;
     let e = &s.energy;
     for (name, value) in [

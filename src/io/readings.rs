@@ -1,20 +1,24 @@
 //! The lighting-engineering tables of a solve: for an illuminance grid (`[[grid]]`) a CSV
-//! of every calculation point with its illuminance in lx (its plan is `super::grid_map`);
+//! of every calculation point with its illuminance and its error bar in lx (its plan is `super::grid_map`);
 //! for the probes a CSV of their luminance and illuminance (and kind).
 
 use super::IoError;
 use crate::readout::daylight::DaylightReadings;
 use crate::readout::grid::GridReading;
+use crate::readout::grid_error::GridErrorBars;
 use crate::readout::probe::ProbeReading;
 use std::path::Path;
 
-/// `u,v,x,y,z,E_lx,counted,left_out_by` per point (`u`, `v` the cell indices; `counted` 1
-/// for a point in the statistics, 0 for one left out, `left_out_by` then saying what
-/// stands over it), statistics in `#` comments; under a `[sky]` (`daylight`: the symbol
-/// `DF` or `DR` and one value per point, %) a last column `DF_pct` (or `DR_pct`).
+/// `u,v,x,y,z,E_lx,E_error_lx,counted,left_out_by` per point (`u`, `v` the cell indices;
+/// `E_error_lx` the illuminance's error bar of `errors`, empty for a point left out;
+/// `counted` 1 for a point in the statistics, 0 for one left out, `left_out_by` then saying
+/// what stands over it), statistics with their error bars in `#` comments; under a `[sky]`
+/// (`daylight`: the symbol `DF` or `DR` and one value per point, %) a last column `DF_pct`
+/// (or `DR_pct`).
 pub fn write_grid_csv(
     path: &Path,
     grid: &GridReading,
+    errors: &GridErrorBars,
     surfaces: &[String],
     daylight: Option<(&str, &[f64])>,
 ) -> Result<(), IoError> {
@@ -22,14 +26,17 @@ pub fn write_grid_csv(
     let st = grid.stats();
     let mut text = format!(
         "# grid \"{}\", illuminance in lx on the side facing {:?}\n\
-         # E_avg {:.6e}, E_min {:.6e}, E_max {:.6e}, U0 {:.6} over the {} of {} points counted\n\
-         u,v,x,y,z,E_lx,counted,left_out_by{}\n",
+         # E_avg {:.6e} ± {:.3e}, E_min {:.6e} ± {:.3e}, E_max {:.6e}, U0 {:.6} ± {:.6} over the {} of {} points counted\n\
+         u,v,x,y,z,E_lx,E_error_lx,counted,left_out_by{}\n",
         grid.grid.name,
         grid.grid.normal.to_array(),
         st.average,
+        errors.average,
         st.min,
+        errors.min,
         st.max,
         st.u0,
+        errors.u0,
         st.counted,
         grid.points.len(),
         daylight.map_or(String::new(), |(x, _)| format!(",{x}_pct"))
@@ -40,13 +47,14 @@ pub fn write_grid_csv(
             if o.inside { format!("inside {name}") } else { format!("{:.3} m under {name}", o.distance) }
         });
         text += &format!(
-            "{},{},{:.9},{:.9},{:.9},{:.9e},{},\"{by}\"{}\n",
+            "{},{},{:.9},{:.9},{:.9},{:.9e},{},{},\"{by}\"{}\n",
             i % nu,
             i / nu,
             p.x,
             p.y,
             p.z,
             e,
+            Some(errors.points[i]).filter(|d| !d.is_nan()).map_or(String::new(), |d| format!("{d:.3e}")),
             u8::from(o.is_none()),
             daylight.map_or(String::new(), |(_, df)| format!(",{:.9e}", df[i]))
         );

@@ -11,7 +11,7 @@
 use super::hdf5_file::{CASE_ATTRIBUTES, write_case};
 use super::light_scene_group::{write_factors, write_scenes};
 use super::observer_group::write_observers;
-use super::readout_group::{write_grid, write_probes};
+use super::readout_group::{write_grids, write_probes};
 use super::{IoError, LightSceneField};
 use crate::model::Model;
 use crate::readout::readings::Readings;
@@ -50,10 +50,7 @@ fn rewrite(path: &Path, scene: &Scene, r: &Readout) -> hdf5::Result<()> {
     write_case(&file, scene)?;
     write_probes(&file.create_group("probes")?, &r.readings.probes)?;
     write_observers(&file.create_group("observers")?, &r.readings.observers)?;
-    let grids = file.create_group("grids")?;
-    for grid in &r.readings.grids {
-        write_grid(&grids.create_group(&grid.grid.name)?, grid, &r.readings.observers)?;
-    }
+    write_grids(&file.create_group("grids")?, &r.readings.grids, &r.readings.grid_errors, &r.readings.observers)?;
     if file.link_exists("light_groups") {
         let groups = file.group("light_groups")?;
         groups.unlink("scene_names")?;

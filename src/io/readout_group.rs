@@ -3,6 +3,7 @@
 
 use super::dataset::{dataset, strings};
 use crate::readout::grid::GridReading;
+use crate::readout::grid_error::GridErrorBars;
 use crate::readout::probe::ProbeReading;
 use crate::readout::ugr::{UgrReading, grid_ugr};
 use ndarray::{Array1, Array2, Array3};
@@ -20,19 +21,41 @@ pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Re
     dataset(g, "error", &Array1::from_iter(probes.iter().map(|p| p.error.unwrap_or(f64::NAN))))
 }
 
+/// `/grids/<name>` for every grid of `grids` in `g`, each with its error bars of `errors`
+/// and its UGR from the `observers` that name it.
+pub(super) fn write_grids(
+    g: &hdf5::Group,
+    grids: &[GridReading],
+    errors: &[GridErrorBars],
+    observers: &[UgrReading],
+) -> hdf5::Result<()> {
+    grids
+        .iter()
+        .zip(errors)
+        .try_for_each(|(grid, errors)| write_grid(&g.create_group(&grid.grid.name)?, grid, errors, observers))
+}
+
 /// Points, illuminance, its `direct` part and `counted` (1 for a point in the statistics, 0
 /// for one left out, `readout::obstructed`) as `nv × nu` arrays (row `b` runs along
 /// `edge_u`), and why a point is left out: `obstruction_surface` (the surface over it, −1
 /// for a point that counts), `obstruction_inside` (1 inside a solid), `obstruction_distance`
-/// (m, NaN for a point that counts). Attributes: the statistics, `UGR` (the largest of the
-/// `observers` that name the grid, `readout::ugr::grid_ugr`) when one does, and the
-/// `target`'s `Em_target` (lx), `U0_target` and `UGR_target` when the case gives them.
-pub(super) fn write_grid(g: &hdf5::Group, grid: &GridReading, observers: &[UgrReading]) -> hdf5::Result<()> {
+/// (m, NaN for a point that counts), and `error`, the illuminance's error bar (lx, NaN for a
+/// point left out; `readout::grid_error`). Attributes: the statistics, their error bars
+/// `E_avg_error`, `E_min_error` (lx) and `U0_error`, `UGR` (the largest of the `observers`
+/// that name the grid, `readout::ugr::grid_ugr`) when one does, and the `target`'s
+/// `Em_target` (lx), `U0_target` and `UGR_target` when the case gives them.
+fn write_grid(
+    g: &hdf5::Group,
+    grid: &GridReading,
+    errors: &GridErrorBars,
+    observers: &[UgrReading],
+) -> hdf5::Result<()> {
     let [nu, nv] = grid.grid.resolution;
     let map = |f: &dyn Fn(usize) -> f64| Array2::from_shape_fn((nv, nu), |(b, a)| f(b * nu + a));
     dataset(g, "points", &Array3::from_shape_fn((nv, nu, 3), |(b, a, c)| grid.points[b * nu + a][c]))?;
     dataset(g, "illuminance", &map(&|i| grid.illuminance[i]))?;
     dataset(g, "direct", &map(&|i| grid.direct[i]))?;
+    dataset(g, "error", &map(&|i| errors.points[i]))?;
     let o = &grid.obstructed;
     dataset(g, "counted", &Array2::from_shape_fn((nv, nu), |(b, a)| u8::from(o[b * nu + a].is_none())))?;
     let surface = Array2::from_shape_fn((nv, nu), |(b, a)| o[b * nu + a].as_ref().map_or(-1, |x| x.surface as i64));
@@ -46,7 +69,15 @@ pub(super) fn write_grid(g: &hdf5::Group, grid: &GridReading, observers: &[UgrRe
     let target = grid.grid.target;
     let ugr = grid_ugr(&grid.grid.name, observers);
     let targets = [("Em_target", target.em), ("U0_target", target.u0), ("UGR_target", target.ugr), ("UGR", ugr)];
-    let stats = [("E_avg", st.average), ("E_min", st.min), ("E_max", st.max), ("U0", st.u0)];
+    let stats = [
+        ("E_avg", st.average),
+        ("E_min", st.min),
+        ("E_max", st.max),
+        ("U0", st.u0),
+        ("E_avg_error", errors.average),
+        ("E_min_error", errors.min),
+        ("U0_error", errors.u0),
+    ];
     for (name, value) in stats.into_iter().chain(targets.into_iter().filter_map(|(n, v)| Some((n, v?)))) {
         g.new_attr::<f64>().create(name)?.write_scalar(&value)?;
     }

@@ -8,6 +8,7 @@ use crate::readout::daylight::DaylightReadings;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
 use crate::readout::grid::GridReading;
+use crate::readout::grid_error::GridErrorBars;
 use crate::readout::probe::ProbeReading;
 use crate::readout::ugr::UgrReading;
 use crate::solve::norms::Norms;
@@ -46,6 +47,8 @@ pub struct Solution {
     pub observers: Vec<UgrReading>,
     /// The `[[grid]]` readings.
     pub grids: Vec<GridReading>,
+    /// Their error bars, one per grid.
+    pub grid_errors: Vec<GridErrorBars>,
     /// SC, ERC, IRC and DF at the probes and grids, under a `[sky]`.
     pub daylight: Option<DaylightReadings>,
     /// The reflection-order record, when taken.

@@ -4,7 +4,7 @@
 //! each surface Lambertian and of one uniform exitance. It owns the transfer factors
 //! `F_T,XW` of CIE 190: the flux the walls receive after one reflection or more per lumen
 //! that first lands on surface `X`, from the exact form factors of the cavity and the
-//! three-by-three interreflection (`docs/design.md` (5.7)),
+//! three-by-three interreflection (`docs/design.md` (5.8)),
 //!
 //! `Φ_j = Φ⁰_j + Σ_i ρ_i F_ij Φ_i`,   `F_T,XW = (Φ_W − Φ⁰_W) / Φ⁰_X` with `Φ⁰` one lumen on `X`.
 //!

@@ -66,7 +66,7 @@ pub fn openings(model: &Model, p: DVec3, axis: DVec3, facing: Option<DVec3>) -> 
 
 /// The normals of the vertical planes of the midpoint rule: [`PLANES`] over the circle
 /// about `axis`, or half of them over the half circle centred on `facing`.
-fn planes(axis: DVec3, facing: Option<DVec3>) -> Vec<DVec3> {
+pub fn planes(axis: DVec3, facing: Option<DVec3>) -> Vec<DVec3> {
     let h = facing.unwrap_or_else(|| Frame::around(axis).tangent);
     let side = axis.cross(h);
     let (start, span, planes) = match facing {

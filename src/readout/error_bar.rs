@@ -21,12 +21,16 @@
 //! It is a bar, not a correction: with 64 rays its noise (`2σ`, 1.3 % of the reading on
 //! average on the Cornell box's hard probes, 1.9 % on the open box's) exceeds the error it finds on most probes; added to the reading it would
 //! make the Cornell box's hard probes worse (`docs/accuracy.md`, "Error bars"). Each ray
-//! costs a gather, so a probe costs [`RAYS`] gathers; grids have no bar.
+//! costs a gather, so a probe costs [`RAYS`] gathers. A cylindrical probe's reading is the
+//! mean over vertical planes (`cylindrical.rs`): its [`RAYS`] directions are shared among
+//! them and their samples pooled, the estimate of the mean (not corrected, `ΔI = 0`). A
+//! grid's points pool fewer directions each with their neighbours' (`grid_error.rs`).
 
 use crate::geometry::cosine_direction;
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::random::Stratified;
+use crate::readout::cylindrical::planes;
 use crate::readout::field::Field;
 use crate::readout::gather::Receiver;
 use crate::readout::glossy::{ModelSurroundings, is_diffuse, stream};
@@ -43,6 +47,16 @@ pub const RAYS: usize = 64;
 /// The largest mean albedo the gain `1/(1 − ρ̄)` is taken at (a gain of 10).
 pub const MOST_ALBEDO: f64 = 0.9;
 
+/// One direction's sample of the residual: `π (L_gathered − L_h)` at the point it meets, lx,
+/// and that point's albedo (both 0 for a miss, a back face, a surface that is not Lambertian).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Sample {
+    /// `π r(y)`, lx.
+    pub illuminance: f64,
+    /// `ρ(y)`.
+    pub albedo: f64,
+}
+
 /// The one-bounce residual's illuminance at a point: `ΔE` (lx), its standard error `σ` (lx),
 /// and the mean albedo `ρ̄` of the points seen.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -56,6 +70,16 @@ pub struct Residual {
 }
 
 impl Residual {
+    /// The residual of `samples` (at least one) pooled with equal weights: their mean, its
+    /// standard error from their spread, and their mean albedo.
+    pub fn pooled<'a>(samples: impl Iterator<Item = &'a Sample> + Clone) -> Residual {
+        let (m, sum, albedo) =
+            samples.clone().fold((0.0, 0.0, 0.0), |(m, s, a), x| (m + 1.0, s + x.illuminance, a + x.albedo));
+        let mean = sum / m;
+        let variance = samples.map(|s| (s.illuminance - mean).powi(2)).sum::<f64>() / (m - 1.0).max(1.0);
+        Residual { illuminance: mean, standard_error: (variance / m).sqrt(), albedo: albedo / m }
+    }
+
     /// `δE` for a reading that was corrected near geometry by `correction` lx.
     pub fn error_bar(&self, correction: f64) -> f64 {
         let gain = 1.0 / (1.0 - self.albedo.min(MOST_ALBEDO));
@@ -63,57 +87,72 @@ impl Residual {
     }
 }
 
-/// Sets the error bar of every point sensor's and luminance meter's reading (the
-/// cylindrical kinds keep none), telling `progress` of each; a signal's stop leaves the
-/// rest without (`crate::interrupt`: the caller checks).
+/// Sets the error bar of every probe's reading, telling `progress` of each; a signal's stop
+/// leaves the rest without (`crate::interrupt`: the caller checks).
 pub fn estimate_errors(readings: &mut [ProbeReading], model: &Model, field: &Field, progress: &dyn Progress) {
     progress.begin("error bars", readings.len() as u64);
     for r in readings.iter_mut().take_while(|_| !crate::interrupt::asked()) {
-        if matches!(r.kind, ProbeKind::Point | ProbeKind::LuminanceMeter { .. }) {
-            r.error = Some(residual(model, field, r.position, r.normal, RAYS).error_bar(r.correction));
-        }
+        let receivers = receivers(r);
+        let samples = samples(model, field, &receivers, RAYS / receivers.len());
+        r.error = Some(Residual::pooled(samples.iter()).error_bar(r.correction));
         progress.advance(1);
     }
     progress.end();
 }
 
+/// The receivers `(p, n)` a probe's illuminance is the mean of: its own for a point sensor
+/// and a luminance meter, the vertical planes of the midpoint rule for the cylindrical
+/// kinds (`cylindrical.rs`), among which the [`RAYS`] directions are shared.
+fn receivers(r: &ProbeReading) -> Vec<(DVec3, DVec3)> {
+    let planes = match r.kind {
+        ProbeKind::Point | ProbeKind::LuminanceMeter { .. } => return vec![(r.position, r.normal)],
+        ProbeKind::Cylindrical => planes(r.normal, None),
+        ProbeKind::SemiCylindrical { axis } => planes(axis, Some(r.normal)),
+    };
+    planes.into_iter().map(|n| (r.position, n)).collect()
+}
+
 /// The residual at `p` on a receiver facing the unit `n`, over `rays` directions (a
 /// signal's stop leaves the rays after it unread: `crate::interrupt`).
 pub fn residual(model: &Model, field: &Field, p: DVec3, n: DVec3, rays: usize) -> Residual {
-    let at = Receiver::at(model, p, n);
-    let stored = ModelSurroundings::new(model, field);
-    let set = Stratified::new(rays, &mut stream(p, n));
-    let samples: Vec<(f64, f64)> = (0..rays)
-        .into_par_iter()
-        .map(|r| {
-            if crate::interrupt::asked() {
-                return (0.0, 0.0);
-            }
-            let [u, v] = set.point(r);
-            seen(&stored, p, at.frame.world(cosine_direction(u, v)), at.ignore)
-        })
-        .collect();
-    let m = rays as f64;
-    let mean = samples.iter().map(|s| s.0).sum::<f64>() / m;
-    let variance = samples.iter().map(|s| (s.0 - mean).powi(2)).sum::<f64>() / (m - 1.0).max(1.0);
-    let albedo = samples.iter().map(|s| s.1).sum::<f64>() / m;
-    Residual { illuminance: mean, standard_error: (variance / m).sqrt(), albedo }
+    Residual::pooled(samples(model, field, &[(p, n)], rays).iter())
 }
 
-/// `(π (L_gathered − L_h), ρ)` of the point `p` sees along `w` (ignoring face `ignore`),
-/// `L_h` as `stored` holds it:
-/// zero for a miss, the back of a surface, and a surface that is not Lambertian (a glossy
-/// surface's reading is relit already, a mirror's is its images').
-fn seen(stored: &ModelSurroundings, p: DVec3, w: DVec3, ignore: u32) -> (f64, f64) {
+/// The residual's samples over `rays` stratified cosine-distributed directions from each
+/// receiver at `p` facing the unit `n` of `receivers`, receiver after receiver (a signal's
+/// stop leaves the rays after it unread, zero: `crate::interrupt`).
+pub fn samples(model: &Model, field: &Field, receivers: &[(DVec3, DVec3)], rays: usize) -> Vec<Sample> {
+    let stored = ModelSurroundings::new(model, field);
+    let sets: Vec<(Receiver, Stratified)> = receivers
+        .par_iter()
+        .map(|&(p, n)| (Receiver::at(model, p, n), Stratified::new(rays, &mut stream(p, n))))
+        .collect();
+    (0..receivers.len() * rays)
+        .into_par_iter()
+        .map(|k| {
+            if crate::interrupt::asked() {
+                return Sample::default();
+            }
+            let ((at, set), p) = (&sets[k / rays], receivers[k / rays].0);
+            let [u, v] = set.point(k % rays);
+            seen(&stored, p, at.frame.world(cosine_direction(u, v)), at.ignore)
+        })
+        .collect()
+}
+
+/// The sample of the point `p` sees along `w` (ignoring face `ignore`), `L_h` as `stored`
+/// holds it: zero for a miss, the back of a surface, and a surface that is not Lambertian (a
+/// glossy surface's reading is relit already, a mirror's is its images').
+fn seen(stored: &ModelSurroundings, p: DVec3, w: DVec3, ignore: u32) -> Sample {
     let (model, field) = (stored.model, stored.field);
     let sphere = model.kernel.directions.is_sphere();
     let Some((j, y)) = model.faces.landing_patch(&model.mesh, &model.visibility, p, w, ignore, sphere) else {
-        return (0.0, 0.0);
+        return Sample::default();
     };
     let s = &model.mesh.patches[j];
     if s.normal.dot(w) >= 0.0 || !is_diffuse(&model.materials[s.material as usize]) {
-        return (0.0, 0.0);
+        return Sample::default();
     }
     let albedo = model.kernel.blocks[model.kernel.patch_material[j] as usize].albedo(0, &model.kernel.directions).0;
-    (PI * (gathered(model, field, j, y, -w) - stored.stored(j, w)), albedo)
+    Sample { illuminance: PI * (gathered(model, field, j, y, -w) - stored.stored(j, w)), albedo }
 }

@@ -1,6 +1,7 @@
 //! Readouts of a solved field (`docs/design.md` §5, §7): the field as an `N × K × C` array, the
 //! illuminance of patches and points, probes (point sensors, luminance meters, cylindrical
-//! illuminance), the UGR at observers and the UGR table of a luminaire, grids and the energy balance in lumens.
+//! illuminance), the UGR at observers and the UGR table of a luminaire, grids, the readings'
+//! error bars and the energy balance in lumens.
 
 pub mod cavity;
 pub mod correction;
@@ -13,6 +14,7 @@ pub mod final_gather;
 pub mod gather;
 pub mod glossy;
 pub mod grid;
+pub mod grid_error;
 pub mod guth;
 pub mod illuminance;
 pub mod luminance;

@@ -5,7 +5,7 @@
 //! coordinates, `y` up), and the luminaires turned so that it sees them crosswise or
 //! endwise. It owns the array and each luminaire's direct flux onto the reference plane
 //! (the floor of `cavity.rs`), the walls and the ceiling, integrated over the
-//! luminaire's distribution (`docs/design.md` (5.7)).
+//! luminaire's distribution (`docs/design.md` (5.8)).
 
 use super::cavity::Cavity;
 use crate::luminaire::{Light, Source, frame};

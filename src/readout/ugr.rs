@@ -68,7 +68,7 @@ impl UgrReading {
 }
 
 /// `UGR = 8 log10((0.25 / L_b) Σ L² ω / p²)` over `sources` with the background `L_b`
-/// (cd/m²), design.md (5.6): `−∞` with no source.
+/// (cd/m²), design.md (5.7): `−∞` with no source.
 pub fn unified_glare_rating(sources: &[GlareSource], background: f64) -> f64 {
     let sum: f64 = sources.iter().map(|s| s.luminance * s.luminance * s.solid_angle / s.position_index.powi(2)).sum();
     8.0 * (0.25 * sum / background).log10()

@@ -1,12 +1,12 @@
 //! The tabular UGR of CIE 190:2010 (`docs/photometry.md`, "The UGR table"): the UGR of
-//! CIE 117 (`docs/design.md` (5.6), [`unified_glare_rating`]) of one luminaire in the 19
+//! CIE 117 (`docs/design.md` (5.7), [`unified_glare_rating`]) of one luminaire in the 19
 //! standard rooms, viewed crosswise and endwise, under the five reflectance combinations,
 //! at the luminaire's own flux; the table of the reference flux is that less the summand
 //! `8 log10(Φ/Φ_ref)`. Each cell counts every luminaire of the room's array
 //! (`standard_room.rs`) within the extent of Guth's table (`T/R ≤ 3`), seen by
 //! [`glare_source`] exactly as an `[[observer]]` sees a luminaire, and takes the
 //! background `L_b = E_WID/π` from the mean indirect illuminance of the walls in the
-//! three-surface room (`cavity.rs`, `docs/design.md` (5.7)).
+//! three-surface room (`cavity.rs`, `docs/design.md` (5.8)).
 
 use super::cavity::{Reflectances, Transfer};
 use super::standard_room::{StandardRoom, Viewing};

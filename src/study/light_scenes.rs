@@ -168,7 +168,7 @@ fn read_out(
     }
     let k = model.kernel.cells();
     let field = Field::from_unknowns(&x, k);
-    let Readings { probes, grids, observers } = read_field(scene, model, &field, progress);
+    let Readings { probes, grids, grid_errors, observers } = read_field(scene, model, &field, progress);
     LightSceneField {
         name: light_scene.name.clone(),
         factors: light_scene.factors.clone(),
@@ -179,6 +179,7 @@ fn read_out(
         energy: EnergyBalance::of(model, &x, scene.surfaces.len()),
         probes,
         grids,
+        grid_errors,
         observers,
         field,
     }

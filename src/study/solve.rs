@@ -123,8 +123,10 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     let field = Field::from_unknowns(&x, k);
     let illuminance = patch_illuminance(&arriving(&model, &x), k);
     let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
-    let Readings { probes, grids, observers } = read_field(scene, &model, &field, progress);
-    crate::interrupt::check(|| "the readouts (probes, error bars, observers, grid points)".to_string())?;
+    let Readings { probes, grids, grid_errors, observers } = read_field(scene, &model, &field, progress);
+    crate::interrupt::check(|| {
+        "the readouts (probes, error bars, observers, grid points and their error bars)".to_string()
+    })?;
     let mut solved = Solution {
         model,
         params: job.params,
@@ -140,6 +142,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         probes,
         observers,
         grids,
+        grid_errors,
         daylight: None,
         orders,
         norms,

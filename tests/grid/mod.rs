@@ -130,15 +130,17 @@ fn solve_writes_each_grid_as_csv_and_a_map_in_lux() {
     let rows: Vec<Vec<f64>> = csv
         .lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with('u'))
-        .map(|l| l.split(',').take(7).map(|v| v.parse().unwrap()).collect())
+        .map(|l| l.split(',').take(8).map(|v| v.parse().unwrap()).collect())
         .collect();
     assert_eq!(rows.len(), 18);
     for r in &rows {
         let reference = exact(1000.0, (0.0, 1.0), (0.0, 1.0), 1.0, r[2], r[4]);
         assert!((r[5] / reference - 1.0).abs() < 1e-2, "{r:?}: closed form {reference}");
     }
-    assert!(csv.contains("# E_avg") && csv.contains("U0"), "{csv}");
-    assert!(rows.iter().all(|r| r[6] == 1.0) && csv.contains("u,v,x,y,z,E_lx,counted,left_out_by"), "{csv}");
+    assert!(csv.contains("# E_avg") && csv.contains(" ± ") && csv.contains("U0"), "{csv}");
+    assert!(rows.iter().all(|r| r[7] == 1.0) && csv.contains("u,v,x,y,z,E_lx,E_error_lx,counted,left_out_by"), "{csv}");
+    // Nothing but the lamp, which nothing lights: one more bounce changes nothing, no bar.
+    assert!(rows.iter().all(|r| (0.0..1e-6 * r[5]).contains(&r[6])), "bars on an exact field: {csv}");
     let map = image::open(dir.join("lamp-work_plane.png")).unwrap();
     assert!(map.width() > 400 && map.height() >= 240);
     let probes = std::fs::read_to_string(dir.join("lamp-probes.csv")).unwrap();
@@ -153,4 +155,9 @@ fn solve_writes_each_grid_as_csv_and_a_map_in_lux() {
     assert!(counted.shape() == [3, 6] && counted.iter().all(|&c| c == 1));
     let avg: f64 = file.group("grids/work plane").unwrap().attr("E_avg").unwrap().read_scalar().unwrap();
     assert!((avg - rows.iter().map(|r| r[5]).sum::<f64>() / 18.0).abs() < 1e-6 * avg);
+    let error = file.dataset("grids/work plane/error").unwrap().read_2d::<f64>().unwrap();
+    assert!(error.shape() == [3, 6] && error.iter().zip(&rows).all(|(&d, r)| (d - r[6]).abs() <= 1e-3 * d));
+    let avg_bar: f64 = file.group("grids/work plane").unwrap().attr("E_avg_error").unwrap().read_scalar().unwrap();
+    assert!((avg_bar - error.iter().sum::<f64>() / 18.0).abs() < 1e-9 * avg, "E_avg's bar is the points' mean bar");
+    assert!(out.contains(&format!("{avg:.4} ± ")), "{out}");
 }
