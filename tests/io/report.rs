@@ -63,6 +63,8 @@ fn the_report_of_a_daylit_office_parses_and_shows_the_files_figures() {
         assert!(said.contains(table), "no table {table}: {said}");
     }
     let html = std::fs::read_to_string(&page).unwrap();
+    // the grids' E_avg, E_min and U0 with their error bars (report_check.py checks each cell)
+    assert!(html.contains(" ± "), "the grids' statistics show no error bar");
     let chosen = dir.join("chosen.html");
     let again = ugo(&["report", s(&out), "-o", s(&chosen)]);
     assert!(again.status.success(), "{}", String::from_utf8_lossy(&again.stderr));

@@ -107,6 +107,15 @@ def same(cell, value, decimals, what):
         fail(f"{what}: the page shows {cell}, the file holds {value}")
 
 
+def same_with_bar(cell, attrs, key, decimals, what):
+    """A statistic shown with its error bar ("value ± bar") where the file holds a finite one."""
+    bar = attrs.get(f"{key}_error")
+    value = shown(attrs[key], decimals)
+    expected = f"{value} ± {bar:.{decimals}f}" if bar is not None and np.isfinite(bar) and value != "—" else value
+    if cell != expected:
+        fail(f"{what}: the page shows {cell}, the file holds {attrs[key]} ± {bar}")
+
+
 def check_grids(table, h5, prefix="grids"):
     for row in table["rows"]:
         name = row[0]
@@ -123,11 +132,11 @@ def check_stats(cells, attrs, what):
     u0t = attrs.get("U0_target")
     ugr = attrs.get("UGR")
     ugr_l = attrs.get("UGR_target")
-    same(cells[0], attrs["E_avg"], 1, f"{what} E_avg")
+    same_with_bar(cells[0], attrs, "E_avg", 1, f"{what} E_avg")
     same(cells[1], em if em is not None else np.nan, 0, f"{what} Ēm target")
-    same(cells[2], attrs["E_min"], 1, f"{what} E_min")
+    same_with_bar(cells[2], attrs, "E_min", 1, f"{what} E_min")
     same(cells[3], attrs["E_max"], 1, f"{what} E_max")
-    same(cells[4], attrs["U0"], 2, f"{what} U0")
+    same_with_bar(cells[4], attrs, "U0", 2, f"{what} U0")
     same(cells[5], u0t if u0t is not None else np.nan, 2, f"{what} U0 target")
     glare = "-" if ugr is None else (f"{ugr:.1f}" if np.isfinite(ugr) else "no source")
     if cells[6] != glare:

@@ -7,7 +7,7 @@
 use super::super::grid_map::{Shown, plan_png};
 use super::super::read::{Result, Why};
 use super::h5::H5;
-use super::html::{escape, image, number, optional, section, table, verdict};
+use super::html::{escape, image, number, optional, section, table, verdict, with_bar};
 use crate::geometry::section as cut;
 use crate::io::{Overlay, StoredSolution};
 use crate::luminaire::Source;
@@ -26,21 +26,23 @@ pub(super) fn target_head() -> Vec<String> {
 }
 
 /// The cells of `head` for the grid `grid` whose statistics are the attributes of `group`
-/// (its UGR the largest of the observers that name it, "-" where none does).
+/// (`E_avg`, `E_min` and `U0` with their error bars where the group holds them; its UGR the
+/// largest of the observers that name it, "-" where none does).
 pub(super) fn figures(h: &H5, group: &str, grid: &Grid) -> Vec<String> {
     let [avg, min, max, u0] = h.attrs(group, STATS);
     let t = grid.target;
     let ugr = h.attr(group, "UGR");
+    let bar = |name: &str| h.attr(group, &format!("{name}_error"));
     let glare = t.ugr.map(|limit| ugr.is_some_and(|u| u <= limit));
     let checks: Vec<bool> =
         [t.em.map(|em| avg >= em), t.u0.map(|least| u0 >= least), glare].into_iter().flatten().collect();
     let met = (!checks.is_empty()).then(|| checks.iter().all(|&ok| ok));
     vec![
-        number(avg, 1),
+        with_bar(avg, bar("E_avg"), 1),
         optional(t.em, 0),
-        number(min, 1),
+        with_bar(min, bar("E_min"), 1),
         number(max, 1),
-        number(u0, 2),
+        with_bar(u0, bar("U0"), 2),
         optional(t.u0, 2),
         ugr.map_or("-".to_string(), super::glare::ugr),
         optional(t.ugr, 0),

@@ -14,6 +14,14 @@ pub(super) fn number(value: f64, decimals: usize) -> String {
     if value.is_finite() { format!("{value:.decimals$}") } else { "—".to_string() }
 }
 
+/// A value and, where it has a finite one, its error bar: "value ± bar".
+pub(super) fn with_bar(value: f64, bar: Option<f64>, decimals: usize) -> String {
+    match bar.filter(|b| b.is_finite()) {
+        Some(bar) if value.is_finite() => format!("{} ± {}", number(value, decimals), number(bar, decimals)),
+        _ => number(value, decimals),
+    }
+}
+
 /// An optional value with `decimals` decimals, a dash where it is absent.
 pub(super) fn optional(value: Option<f64>, decimals: usize) -> String {
     value.map_or("—".to_string(), |v| number(v, decimals))
