@@ -31,8 +31,10 @@ use crate::readout::luminance::gathered;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::cut_along_shadows;
+use crate::visibility::NO_BLOCKER;
 use glam::DVec3;
 use rayon::prelude::*;
+use std::cell::Cell;
 use std::f64::consts::PI;
 
 /// A patch (and then a piece of it) is near a point closer than this many times its
@@ -101,10 +103,10 @@ pub fn near_correction(model: &Model, field: &Field, p: DVec3, frame: &Frame, ig
         .collect();
     near.par_iter()
         .fold(
-            || (vec![0.0; cells], Vec::new()),
-            |(mut sum, mut bins), &j| {
+            || (vec![0.0; cells], Vec::new(), Cell::new(NO_BLOCKER)),
+            |(mut sum, mut bins, blocker), &j| {
                 let s = &patches[j];
-                let sees = |y: DVec3| model.visibility.visible(p, y, [ignore, s.face]);
+                let sees = |y: DVec3| model.visibility.visible_shared(p, y, [ignore, s.face], &blocker);
                 let worth = |piece: &ConvexPolygon| piece.area() > s.area / SHADOW_PIECES;
                 cut_along_shadows(&s.polygon, 0, &sees, &worth, &mut |piece, seen| {
                     near_pieces(p, piece, 0, &mut |a| {
@@ -117,10 +119,10 @@ pub fn near_correction(model: &Model, field: &Field, p: DVec3, frame: &Frame, ig
                         }
                     });
                 });
-                (sum, bins)
+                (sum, bins, blocker)
             },
         )
-        .map(|(sum, _)| sum)
+        .map(|(sum, _, _)| sum)
         .reduce(|| vec![0.0; cells], |a, b| sum(&a, &b))
 }
 

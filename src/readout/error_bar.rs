@@ -28,7 +28,7 @@
 
 use crate::geometry::cosine_direction;
 use crate::model::Model;
-use crate::progress::Progress;
+use crate::progress::{Progress, Silent};
 use crate::random::Stratified;
 use crate::readout::cylindrical::planes;
 use crate::readout::field::Field;
@@ -93,7 +93,7 @@ pub fn estimate_errors(readings: &mut [ProbeReading], model: &Model, field: &Fie
     progress.begin("error bars", readings.len() as u64);
     for r in readings.iter_mut().take_while(|_| !crate::interrupt::asked()) {
         let receivers = receivers(r);
-        let samples = samples(model, field, &receivers, RAYS / receivers.len());
+        let samples = samples(model, field, &receivers, RAYS / receivers.len(), &Silent);
         r.error = Some(Residual::pooled(samples.iter()).error_bar(r.correction));
         progress.advance(1);
     }
@@ -115,13 +115,20 @@ fn receivers(r: &ProbeReading) -> Vec<(DVec3, DVec3)> {
 /// The residual at `p` on a receiver facing the unit `n`, over `rays` directions (a
 /// signal's stop leaves the rays after it unread: `crate::interrupt`).
 pub fn residual(model: &Model, field: &Field, p: DVec3, n: DVec3, rays: usize) -> Residual {
-    Residual::pooled(samples(model, field, &[(p, n)], rays).iter())
+    Residual::pooled(samples(model, field, &[(p, n)], rays, &Silent).iter())
 }
 
 /// The residual's samples over `rays` stratified cosine-distributed directions from each
 /// receiver at `p` facing the unit `n` of `receivers`, receiver after receiver (a signal's
-/// stop leaves the rays after it unread, zero: `crate::interrupt`).
-pub fn samples(model: &Model, field: &Field, receivers: &[(DVec3, DVec3)], rays: usize) -> Vec<Sample> {
+/// stop leaves the rays after it unread, zero: `crate::interrupt`); `progress` advances by
+/// one as each receiver's last direction is read.
+pub fn samples(
+    model: &Model,
+    field: &Field,
+    receivers: &[(DVec3, DVec3)],
+    rays: usize,
+    progress: &dyn Progress,
+) -> Vec<Sample> {
     let stored = ModelSurroundings::new(model, field);
     let sets: Vec<(Receiver, Stratified)> = receivers
         .par_iter()
@@ -135,7 +142,11 @@ pub fn samples(model: &Model, field: &Field, receivers: &[(DVec3, DVec3)], rays:
             }
             let ((at, set), p) = (&sets[k / rays], receivers[k / rays].0);
             let [u, v] = set.point(k % rays);
-            seen(&stored, p, at.frame.world(cosine_direction(u, v)), at.ignore)
+            let sample = seen(&stored, p, at.frame.world(cosine_direction(u, v)), at.ignore);
+            if k % rays == rays - 1 {
+                progress.advance(1);
+            }
+            sample
         })
         .collect()
 }

@@ -27,9 +27,10 @@ use crate::sky::ETA;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::cut_along_shadows;
-use crate::visibility::NO_FACE;
+use crate::visibility::{NO_BLOCKER, NO_FACE};
 use glam::DVec3;
 use rayon::prelude::*;
+use std::cell::Cell;
 use std::f64::consts::PI;
 
 /// Illuminance, lx, on a receiver at `p` facing the unit `n` (on a surface or in free
@@ -123,9 +124,9 @@ fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, 
         .enumerate()
         .filter(|&(j, _)| unoccluded[j] > 0.0)
         .fold(
-            || (vec![0.0; cells], Vec::new()),
-            |(mut sum, mut bins), (j, s)| {
-                let sees = |y: DVec3| model.visibility.visible(p, y, [ignore, s.face]);
+            || (vec![0.0; cells], Vec::new(), Cell::new(NO_BLOCKER)),
+            |(mut sum, mut bins, blocker), (j, s)| {
+                let sees = |y: DVec3| model.visibility.visible_shared(p, y, [ignore, s.face], &blocker);
                 let per_area = unoccluded[j] / s.area;
                 let worth = |piece: &ConvexPolygon| per_area * piece.area() > least;
                 let glossy = has_lobe(&model.materials[s.material as usize]);
@@ -138,10 +139,10 @@ fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, 
                         sum[d as usize] += f * seen * towards_p.unwrap_or_else(|| field.at(j, m as usize));
                     }
                 });
-                (sum, bins)
+                (sum, bins, blocker)
             },
         )
-        .map(|(sum, _)| sum)
+        .map(|(sum, _, _)| sum)
         .reduce(|| vec![0.0; cells], |a, b| sum(&a, &b));
     sum(&surfaces, &through_mirrors(model, field, p, frame, ignore, shadow_cut))
 }

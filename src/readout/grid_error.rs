@@ -51,12 +51,13 @@ pub struct GridErrorBars {
 }
 
 impl GridErrorBars {
-    /// The bars of `grid`, read from `field` on `model` (a signal's stop leaves the rays
-    /// after it zero: `crate::interrupt`, the caller checks).
-    pub fn of(grid: &GridReading, model: &Model, field: &Field) -> GridErrorBars {
-        let counted: Vec<usize> = (0..grid.points.len()).filter(|&i| grid.obstructed[i].is_none()).collect();
+    /// The bars of `grid`, read from `field` on `model`, `progress` advanced by one per
+    /// counted point (a signal's stop leaves the rays after it zero: `crate::interrupt`,
+    /// the caller checks).
+    pub fn of(grid: &GridReading, model: &Model, field: &Field, progress: &dyn Progress) -> GridErrorBars {
+        let counted = counted(grid);
         let receivers: Vec<_> = counted.iter().map(|&i| (grid.points[i], grid.grid.normal)).collect();
-        let samples = samples(model, field, &receivers, GRID_RAYS);
+        let samples = samples(model, field, &receivers, GRID_RAYS, progress);
         let mut slot = vec![None; grid.points.len()];
         counted.iter().enumerate().for_each(|(k, &i)| slot[i] = Some(k));
         let [nu, nv] = grid.grid.resolution;
@@ -77,6 +78,11 @@ impl GridErrorBars {
             .collect();
         statistics(grid, points)
     }
+}
+
+/// The points of `grid` its statistics count (not obstructed).
+fn counted(grid: &GridReading) -> Vec<usize> {
+    (0..grid.points.len()).filter(|&i| grid.obstructed[i].is_none()).collect()
 }
 
 /// The cells at most [`NEIGHBOURS`] from `a` of `0..n`.
@@ -101,22 +107,15 @@ fn statistics(grid: &GridReading, points: Vec<f64>) -> GridErrorBars {
     GridErrorBars { points, average, min, u0 }
 }
 
-/// The error bars of every grid of `readings`, telling `progress` of each grid.
+/// The error bars of every grid of `readings`, telling `progress` of each counted point.
 pub fn grid_errors(
     readings: &[GridReading],
     model: &Model,
     field: &Field,
     progress: &dyn Progress,
 ) -> Vec<GridErrorBars> {
-    progress.begin("grid error bars", readings.len() as u64);
-    let bars = readings
-        .iter()
-        .map(|g| {
-            let bars = GridErrorBars::of(g, model, field);
-            progress.advance(1);
-            bars
-        })
-        .collect();
+    progress.begin("grid error bars", readings.iter().map(|g| counted(g).len() as u64).sum());
+    let bars = readings.iter().map(|g| GridErrorBars::of(g, model, field, progress)).collect();
     progress.end();
     bars
 }

@@ -34,6 +34,7 @@ use obvhs::{
     ray::{Ray, RayHit},
     triangle::Triangle,
 };
+use std::cell::Cell;
 use std::sync::OnceLock;
 use std::time::Duration;
 
@@ -174,6 +175,15 @@ impl Visibility {
             return true;
         }
         self.misses(&self.ray(a, d / length, self.epsilon, length - self.epsilon), ignore, blocker)
+    }
+
+    /// [`Visibility::visible_cached`] with the blocker in a cell, for the `Fn` closures of
+    /// a gather (`transfer::occlusion::cut_along_shadows`): one cell per worker.
+    pub fn visible_shared(&self, a: DVec3, b: DVec3, ignore: [u32; 2], blocker: &Cell<Blocker>) -> bool {
+        let mut last = blocker.get();
+        let visible = self.visible_cached(a, b, ignore, &mut last);
+        blocker.set(last);
+        visible
     }
 
     /// True when the ray from `origin` along `direction` crosses no face other than

@@ -54,7 +54,7 @@ fn coverage(case: &str) -> f64 {
     let s = solved(case);
     let (grid, references) = reference(&format!("{case}-floor"));
     let reading = GridReading::of(&grid, &s.model, &s.field, &Silent);
-    let bars = GridErrorBars::of(&reading, &s.model, &s.field);
+    let bars = GridErrorBars::of(&reading, &s.model, &s.field, &ugo::progress::Silent);
     let (mut n, mut covered, mut bar_pct, mut error_pct, mut truth) = (0, 0, 0.0, 0.0, Vec::new());
     for (i, o) in reading.obstructed.iter().enumerate().filter(|(_, o)| o.is_none()) {
         let e = references[i].unwrap_or_else(|| panic!("{case}: counted point {i} ({o:?}) has no reference"));

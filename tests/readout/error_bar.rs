@@ -14,7 +14,8 @@ use super::room;
 use crate::support::{build, solve};
 use std::f64::consts::PI;
 use std::path::Path;
-use ugo::progress::Silent;
+use std::sync::atomic::{AtomicU64, Ordering};
+use ugo::progress::{Progress, Silent};
 use ugo::readout::error_bar::estimate_errors;
 use ugo::readout::field::Field;
 use ugo::readout::grid::read_grids;
@@ -120,4 +121,37 @@ fn the_error_bars_of_a_grid_on_the_emission_alone_are_its_errors() {
         assert!(close(average.1, avg_error), "{name}: E_avg ± {} for an error of {avg_error}", average.1);
         assert!(close(min.1, min_error), "{name}: E_min ± {} for an error of {min_error}", min.1);
     }
+}
+
+/// Records what a stage announces and how far it advances.
+#[derive(Default)]
+struct Counted {
+    total: AtomicU64,
+    done: AtomicU64,
+}
+
+impl Progress for Counted {
+    fn begin(&self, _: &str, total: u64) {
+        self.total.store(total, Ordering::Relaxed);
+    }
+    fn advance(&self, done: u64) {
+        self.done.fetch_add(done, Ordering::Relaxed);
+    }
+    fn at(&self, _: u64, _: &str) {}
+    fn end(&self) {}
+}
+
+#[test]
+fn the_grids_error_bars_tell_their_progress_point_by_point() {
+    let text = format!("{}{GRIDS}", room(1.0, 0.5, 10.0));
+    let scene = Scene::parse(Path::new("cases/test.toml"), text).unwrap_or_else(|e| panic!("{e}"));
+    let model = build(&scene);
+    let field = Field::from_unknowns(&model.l0, model.kernel.cells());
+    let grids = read_grids(&scene.grids, &model, &field, &Silent);
+    let progress = Counted::default();
+    grid_errors(&grids, &model, &field, &progress);
+    let points: usize = grids.iter().map(|g| g.points.len() - g.left_out()).sum();
+    assert!(grids.len() > 1 && points > grids.len(), "{points} points in {} grids", grids.len());
+    assert_eq!(progress.total.load(Ordering::Relaxed), points as u64, "announced");
+    assert_eq!(progress.done.load(Ordering::Relaxed), points as u64, "advanced");
 }

@@ -1,10 +1,11 @@
 //! Visibility queries on the axis-aligned Cornell box (the layout that defeats compressed nodes).
 
 use glam::DVec3;
+use std::cell::Cell;
 use std::path::Path;
 use ugo::geometry::Mesh;
 use ugo::scene::Scene;
-use ugo::visibility::{NO_FACE, Visibility, VisibilityOptions};
+use ugo::visibility::{NO_BLOCKER, NO_FACE, Visibility, VisibilityOptions};
 
 fn cornell() -> Mesh {
     let scene = Scene::load(Path::new("cases/cornell-box.toml")).unwrap();
@@ -79,6 +80,34 @@ fn the_wide_and_binary_hierarchies_answer_every_query_alike() {
     }
     assert!(aligned > 100, "only {aligned} axis-aligned segments of {tested}");
     assert_eq!(different, 0, "{different} of {tested} segments answered differently");
+}
+
+#[test]
+fn a_gathers_cached_blocker_changes_no_answer_in_the_cornell_box() {
+    // A gather (`readout/gather.rs`) asks from one point for the sample points and corners
+    // of every patch in turn, trying the triangle that blocked its last query first; from
+    // points on the floor under and beside the blocks, in front of their feet and on their
+    // sides, every answer must be the traversal's own. (In the office a few differ: the
+    // cached triangle is tested without the traversal's culling of boxes within
+    // `NEAREST_BOX` of the origin; docs/performance.md, "The gathers' last blocker".)
+    let mesh = cornell();
+    let v = Visibility::build(&mesh);
+    let on = |i: usize| (mesh.patches[i].centroid + 1e-3 * mesh.patches[i].normal, mesh.patches[i].face);
+    let (mut tested, mut blocked, mut different) = (0, 0, 0);
+    for (p, face) in (0..mesh.len()).step_by(11).map(on) {
+        let blocker = Cell::new(NO_BLOCKER);
+        for s in &mesh.patches {
+            let points = ugo::transfer::occlusion::sample_points(s);
+            for y in points.iter().copied().chain(s.polygon.vertices().iter().map(|c| c.lerp(s.centroid, 1e-3))) {
+                let plain = v.visible(p, y, [face, s.face]);
+                different += (v.visible_shared(p, y, [face, s.face], &blocker) != plain) as usize;
+                blocked += !plain as usize;
+                tested += 1;
+            }
+        }
+    }
+    assert!(blocked > tested / 10, "only {blocked} of {tested} segments blocked");
+    assert_eq!(different, 0, "{different} of {tested} segments answered differently with the cache");
 }
 
 #[test]

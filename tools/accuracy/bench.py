@@ -8,10 +8,13 @@ header: a pilot (`ugo trace --probe-samples 16384 --seed S`) says how many paths
 needs for TARGET standard error, and the probes, grouped by that count (powers of two), are
 traced again with seed S + 1 (the pilot only chooses the counts); solve it with each setting
 (timed, wall clock and peak memory) and write every probe's relative error to
-out/accuracy/CASE-SETTING.csv (`--step compare` again from the solves' files). `report.py` turns those into the tables of docs/accuracy.md.
+out/accuracy/CASE-SETTING.csv (`--step compare` again from the solves' files); trace the
+probes with `ugo trace` in about the case's own solve time, compared like a setting
+(`trace-equal`, `--step trace`). `report.py` turns those into the tables of docs/accuracy.md.
 
     tools/accuracy/bench.py cornell-box open-box office            # all three steps
     tools/accuracy/bench.py --step solve office                       # the solves only
+    tools/accuracy/bench.py --step trace cornell-box                  # ugo trace at equal time
 
 Only the Python standard library: the ugo binary does the work.
 """
@@ -206,10 +209,36 @@ def compare(name, setting):
             w.writerow([probe, cls, e, se, x, relative(x - e), relative(bar)])
 
 
+def header_seconds(text, prefix):
+    """The seconds in parentheses on the header line of `text` starting with `prefix`."""
+    line = next(l for l in text.splitlines() if l.startswith(prefix))
+    return float(re.search(r"\(([0-9.]+) s\)\s*$", line)[1])
+
+
+def trace_equal(name, bench, seed):
+    """`ugo trace` of the benchmark case's probes in about the wall time of the case's own
+    solve (out/accuracy/name-case.run): paths per probe from the reference's pilot time,
+    scaled and rounded down to a power of two; its readings and error bars (2σ) in
+    out/accuracy/name-trace-equal-probes.csv, compared like a setting."""
+    case_seconds = float((OUT / f"{name}-case.run").read_text().split("seconds ")[1].split()[0])
+    pilot_seconds = header_seconds((DATA / f"{name}.csv").read_text(), "# pilot:")
+    paths = max(64, 1 << math.floor(math.log2(PILOT * case_seconds / pilot_seconds)))
+    command = [UGO, "trace", bench, "--probe-samples", paths, "--seed", seed + 2]
+    out, seconds, peak = run(command, OUT / f"{name}-trace-equal.log")
+    with open(OUT / f"{name}-trace-equal-probes.csv", "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["name", "E_lx", "E_error_lx"])
+        w.writerows([probe, e, 2 * se] for probe, _, _, e, se in reading_lines(out))
+    (OUT / f"{name}-trace-equal.run").write_text(
+        f"# {shown(command)}\n# seconds {seconds:.1f} peak_MB {peak:.0f}\n")
+    print(f"  trace-equal: {paths} paths a probe, {seconds:.1f} s (the case's solve {case_seconds:.1f} s)")
+    compare(name, "trace-equal")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("cases", nargs="+", help="names of cases/NAME.toml")
-    parser.add_argument("--step", choices=["all", "reference", "solve", "compare"], default="all")
+    parser.add_argument("--step", choices=["all", "reference", "solve", "compare", "trace"], default="all")
     parser.add_argument("--count", type=int, default=20, help="probes per class")
     parser.add_argument("--seed", type=int, default=1)
     args = parser.parse_args()
@@ -224,6 +253,8 @@ def main():
                 solve(name, bench, setting, flags)
             if args.step in ("all", "solve", "compare"):
                 compare(name, setting)
+        if args.step in ("all", "trace"):
+            trace_equal(name, bench, args.seed)
 
 
 if __name__ == "__main__":
