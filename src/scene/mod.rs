@@ -14,6 +14,8 @@ mod discretization_keys;
 mod error;
 mod files;
 mod gltf;
+mod gltf_texture;
+mod gltf_topology;
 mod grid;
 mod holes;
 mod instances;
