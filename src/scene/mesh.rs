@@ -81,8 +81,8 @@ pub(super) fn mesh(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Part>, SceneErro
     let rotation = DMat3::from_axis_angle(axis, angle);
     let file = k.at.file.parent().unwrap_or(Path::new("")).join(name);
     let format = Format::of(&file);
-    let mapped: Vec<&str> = s.materials.iter().flat_map(|t| t.get_ref().keys()).map(String::as_str).collect();
-    let loaded = format.load(&file, k.files, &mapped).map_err(|message| k.at.error("file", message))?;
+    let keys: Vec<&str> = s.materials.iter().flat_map(|t| t.get_ref().keys()).map(String::as_str).collect();
+    let loaded = format.load(&file, k.files, &keys).map_err(|message| k.at.error("file", message))?;
     k.warnings.borrow_mut().extend(loaded.warnings.iter().map(|w| k.at.error("file", w.as_str())));
     let mapped = materials_of(k, s, format, name, &file, &loaded)?;
     let place = |p: DVec3| rotation * (p * scale) + translate;
