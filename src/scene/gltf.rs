@@ -10,8 +10,8 @@
 use super::files::CaseFiles;
 use super::gltf_texture::Images;
 use super::gltf_topology::{has_area, triangles};
+use super::gltf_uri::uri_bytes;
 use super::loaded::{Group, Loaded};
-use base64::Engine;
 use glam::{DMat4, DQuat, DVec3};
 use gltf::accessor::{Accessor, DataType, Dimensions};
 use gltf::json::validation::Checked;
@@ -81,22 +81,6 @@ fn buffers(file: &Path, gltf: &Gltf, files: &CaseFiles) -> Result<Vec<Vec<u8>>, 
         }
     };
     gltf.buffers().map(read).collect()
-}
-
-/// The bytes a URI of the glTF `file` names: a base64 `data:` URI, or a file beside it
-/// (`%20` decoded, read through `files`, so that a solution file keeps a copy).
-pub(super) fn uri_bytes(file: &Path, uri: &str, files: &CaseFiles) -> Result<Vec<u8>, String> {
-    match uri.strip_prefix("data:") {
-        Some(data) => {
-            let base64 = data.split_once(";base64,").map(|(_, text)| text).ok_or("a data URI not in base64")?;
-            base64::engine::general_purpose::STANDARD.decode(base64).map_err(|e| format!("bad base64 ({e})"))
-        }
-        None => {
-            let name = urlencoding::decode(uri).map_err(|e| format!("the URI {uri}: {e}"))?;
-            let path = file.parent().unwrap_or(Path::new("")).join(&*name);
-            files.read(&path).map_err(|e| format!("cannot open {}: {e}", path.display()))
-        }
-    }
 }
 
 /// The file's materials as groups (named by their `name`, or `#i` when unnamed or when

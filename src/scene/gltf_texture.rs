@@ -6,7 +6,7 @@
 //! sampler and texture coordinates.
 
 use super::files::CaseFiles;
-use super::gltf::uri_bytes;
+use super::gltf_uri::uri_bytes;
 use crate::material::{linear_of_srgb, reflectance_of_colour};
 use gltf::image::Source;
 use gltf::texture::Info;

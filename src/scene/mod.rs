@@ -16,6 +16,7 @@ mod files;
 mod gltf;
 mod gltf_texture;
 mod gltf_topology;
+mod gltf_uri;
 mod grid;
 mod holes;
 mod instances;
