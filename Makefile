@@ -82,6 +82,7 @@ test-petsc: petsc build
 cases: deps
 	python3 $(ROOMS) --check
 	python3 cases/generate/daylight.py --check
+	python3 cases/generate/gltf_room.py --check
 	python3 $(ROOMS)
 
 $(HALL_OBJ): $(ROOMS) | deps

@@ -29,7 +29,7 @@ pub mod phong;
 mod sample;
 
 pub use block::Block;
-pub use colour::{LUMINANCE_WEIGHTS, reflectance_of_colour};
+pub use colour::{LUMINANCE_WEIGHTS, linear_of_srgb, reflectance_of_colour};
 pub use sample::Sample;
 
 use crate::directions::DirectionSet;

@@ -3,29 +3,32 @@
 //! `.glb` (binary). The triangles of the file's default scene (else its first), each node's
 //! transform (translation, rotation, scale or matrix) applied down the node tree, in metres
 //! as glTF defines; each primitive's material a group of `mesh.rs` named after it, with its
-//! base colour factor. Said as warnings, not read: primitives that are not triangles
-//! (points, lines, strips, fans), base colour textures, emissive factors and textures.
+//! base colour factor, times the mean of its base colour texture (`gltf_texture.rs`) unless
+//! `materials` maps it. Triangle lists, strips and fans are read (`gltf_topology.rs`). Said
+//! as warnings, not read: points and lines, emissive factors and textures.
 
 use super::files::CaseFiles;
+use super::gltf_texture::Images;
+use super::gltf_topology::{has_area, triangles};
+use super::gltf_uri::uri_bytes;
 use super::loaded::{Group, Loaded};
-use base64::Engine;
 use glam::{DMat4, DQuat, DVec3};
 use gltf::accessor::{Accessor, DataType, Dimensions};
 use gltf::json::validation::Checked;
-use gltf::mesh::Mode;
 use gltf::scene::Transform;
 use gltf::{Document, Gltf, Mesh, Node, Primitive};
 use std::path::Path;
 
-/// The triangles of a glTF file, placed by its nodes, with its materials; errors name the file.
-pub(super) fn load_gltf(file: &Path, files: &CaseFiles) -> Result<Loaded, String> {
+/// The triangles of a glTF file, placed by its nodes, with its materials (the base colour
+/// textures of those whose names `mapped` holds not read); errors name the file.
+pub(super) fn load_gltf(file: &Path, files: &CaseFiles, mapped: &[&str]) -> Result<Loaded, String> {
     let shown = file.display();
     let bytes = files.read(file).map_err(|e| format!("cannot open the glTF file {shown}: {e}"))?;
     let gltf = parse(&bytes).map_err(|e| format!("cannot read the glTF file {shown} (glTF 2.0 JSON or .glb): {e}"))?;
     let buffers = buffers(file, &gltf, files)?;
     let scene = gltf.default_scene().or_else(|| gltf.scenes().next());
     let scene = scene.ok_or_else(|| format!("the glTF file {shown} has no scene"))?;
-    let (groups, warnings) = groups(file, &gltf.document)?;
+    let (groups, warnings) = groups(&gltf.document, &Images { file, buffers: &buffers, files }, mapped)?;
     let mut reading = Reading { file, buffers, nodes: gltf.nodes().len(), triangles: Vec::new(), warnings };
     for node in scene.nodes() {
         reading.node(node, DMat4::IDENTITY, 0)?;
@@ -64,22 +67,9 @@ fn buffers(file: &Path, gltf: &Gltf, files: &CaseFiles) -> Result<Vec<Vec<u8>>, 
             gltf::buffer::Source::Bin => gltf.blob.clone().ok_or_else(|| {
                 format!("buffer #{index} of the glTF file {shown} is the binary chunk of a .glb, which it has not")
             })?,
-            gltf::buffer::Source::Uri(uri) => match uri.strip_prefix("data:") {
-                Some(data) => {
-                    let base64 = data.split_once(";base64,").map(|(_, text)| text);
-                    let base64 =
-                        base64.ok_or_else(|| format!("buffer #{index} of {shown}: a data URI not in base64"))?;
-                    let decoded = base64::engine::general_purpose::STANDARD.decode(base64);
-                    decoded.map_err(|e| format!("buffer #{index} of the glTF file {shown}: bad base64 ({e})"))?
-                }
-                None => {
-                    let name = urlencoding::decode(uri).map_err(|e| format!("buffer #{index} of {shown}: {e}"))?;
-                    let path = file.parent().unwrap_or(Path::new("")).join(&*name);
-                    let cannot =
-                        |e| format!("cannot open buffer #{index} of the glTF file {shown}, {}: {e}", path.display());
-                    files.read(&path).map_err(cannot)?
-                }
-            },
+            gltf::buffer::Source::Uri(uri) => {
+                uri_bytes(file, uri, files).map_err(|e| format!("buffer #{index} of the glTF file {shown}: {e}"))?
+            }
         };
         match bytes.len() < buffer.length() {
             true => Err(format!(
@@ -94,29 +84,31 @@ fn buffers(file: &Path, gltf: &Gltf, files: &CaseFiles) -> Result<Vec<Vec<u8>>, 
 }
 
 /// The file's materials as groups (named by their `name`, or `#i` when unnamed or when
-/// another material has the same name), and what of them is not read.
-fn groups(file: &Path, document: &Document) -> Result<(Vec<Group>, Vec<String>), String> {
+/// another material has the same name), each of its base colour (times its texture's mean
+/// unless `mapped` names it), and what of them is not read or is averaged.
+fn groups(document: &Document, images: &Images, mapped: &[&str]) -> Result<(Vec<Group>, Vec<String>), String> {
     let (mut groups, mut warnings) = (Vec::new(), Vec::new());
     for (index, material) in document.materials().enumerate() {
         let named = material.name().filter(|n| document.materials().filter(|m| m.name() == Some(n)).count() == 1);
         let name = named.map_or(format!("#{index}"), str::to_string);
         let [r, g, b, _] = material.pbr_metallic_roughness().base_color_factor().map(f64::from);
-        let about = format!("material \"{name}\" (#{index}) of the glTF file {}", file.display());
+        let about = format!("material \"{name}\" (#{index}) of the glTF file {}", images.file.display());
         if ![r, g, b].iter().all(|c| (0.0..=1.0).contains(c)) {
             return Err(format!("{about}: its baseColorFactor [{r}, {g}, {b}] is not within [0, 1]"));
         }
-        if material.pbr_metallic_roughness().base_color_texture().is_some() {
-            warnings.push(format!(
-                "{about} has a base colour texture, which is not read: its baseColorFactor [{r}, {g}, {b}] gives \
-                 the reflectance (or map it with `materials`)"
-            ));
+        let mut colour = [r, g, b];
+        let texture = material.pbr_metallic_roughness().base_color_texture();
+        if let Some(info) = texture.filter(|_| !mapped.contains(&name.as_str())) {
+            let (textured, note) = images.textured(&about, info, colour)?;
+            colour = textured;
+            warnings.push(note);
         }
         if material.emissive_factor().iter().any(|&e| e > 0.0) || material.emissive_texture().is_some() {
             warnings.push(format!(
                 "{about} emits: ignored (light comes from [[luminaire]] photometric files and surface `emission`)"
             ));
         }
-        groups.push(Group { name, origin: format!("material #{index}"), colour: Some([r, g, b]) });
+        groups.push(Group { name, origin: format!("material #{index}"), colour: Some(colour) });
     }
     Ok((groups, warnings))
 }
@@ -150,9 +142,9 @@ impl Reading<'_> {
 
     /// The triangles of `primitive` (called `mesh` in messages), placed by `world`.
     fn primitive(&mut self, mesh: &str, primitive: &Primitive, world: DMat4) -> Result<(), String> {
-        if primitive.mode() != Mode::Triangles {
-            let mode = primitive.mode();
-            self.warnings.push(format!("{mesh} is made of {mode:?}, not Triangles: skipped"));
+        let mode = primitive.mode();
+        if !has_area(mode) {
+            self.warnings.push(format!("{mesh} is made of {mode:?}, which have no area: skipped"));
             return Ok(());
         }
         let positions = primitive.get(&gltf::Semantic::Positions).ok_or_else(|| format!("{mesh} has no POSITION"))?;
@@ -173,11 +165,9 @@ impl Reading<'_> {
             (None, Some(_)) => return Err(outside("indices")),
             (None, None) => (0..corners.len()).collect(),
         };
-        if !order.len().is_multiple_of(3) {
-            return Err(format!("{mesh} has {} vertex indices, not a multiple of 3", order.len()));
-        }
+        let faces = triangles(mode, &order).map_err(|why| format!("{mesh} {why}"))?;
         let group = primitive.material().index().map_or(0, |m| m + 1);
-        for face in order.chunks_exact(3) {
+        for face in faces {
             let corner = |i: usize| {
                 let count = corners.len();
                 corners

@@ -58,10 +58,12 @@ impl Format {
         }
     }
 
-    fn load(self, file: &Path, files: &CaseFiles) -> Result<Loaded, String> {
+    /// The file loaded; `mapped` are the material names `materials` maps (a glTF file does
+    /// not read their textures).
+    fn load(self, file: &Path, files: &CaseFiles, mapped: &[&str]) -> Result<Loaded, String> {
         match self {
             Format::Obj => super::obj::load_obj(file, files),
-            Format::Gltf => super::gltf::load_gltf(file, files),
+            Format::Gltf => super::gltf::load_gltf(file, files, mapped),
         }
     }
 }
@@ -79,7 +81,8 @@ pub(super) fn mesh(k: &ShapeKeys, s: &RawSurface) -> Result<Vec<Part>, SceneErro
     let rotation = DMat3::from_axis_angle(axis, angle);
     let file = k.at.file.parent().unwrap_or(Path::new("")).join(name);
     let format = Format::of(&file);
-    let loaded = format.load(&file, k.files).map_err(|message| k.at.error("file", message))?;
+    let keys: Vec<&str> = s.materials.iter().flat_map(|t| t.get_ref().keys()).map(String::as_str).collect();
+    let loaded = format.load(&file, k.files, &keys).map_err(|message| k.at.error("file", message))?;
     k.warnings.borrow_mut().extend(loaded.warnings.iter().map(|w| k.at.error("file", w.as_str())));
     let mapped = materials_of(k, s, format, name, &file, &loaded)?;
     let place = |p: DVec3| rotation * (p * scale) + translate;

@@ -27,7 +27,7 @@ fn a_cube_as_obj_and_as_gltf_solves_to_the_same_field() {
     let primitive = json!({ "attributes": { "POSITION": 0 }, "indices": 1, "material": 0 });
     let document = json!({ "scene": 0, "scenes": [{ "nodes": [0] }], "nodes": [{ "mesh": 0 }],
                            "meshes": [{ "primitives": [primitive] }], "materials": material });
-    let gltf = Document { positions: cube_corners(), indices: vec![cube_triangles()], document };
+    let gltf = Document { positions: cube_corners(), indices: vec![cube_triangles()], image: Vec::new(), document };
     std::fs::write(dir.join("cube.glb"), gltf.binary()).unwrap();
     let obj = Scene::load(&dir.write("obj.toml", &room("cube.obj", "materials = { paint = \"grey\" }"))).unwrap();
     let glb = Scene::load(&dir.write("glb.toml", &room("cube.glb", ""))).unwrap();

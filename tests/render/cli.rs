@@ -83,12 +83,13 @@ fn render_fails_clearly_on_a_missing_or_foreign_file() {
 }
 
 /// Every bundled case, coarsened (patch size, direction cells) so that the test is quick.
-const CASES: [(&str, &str, &str); 10] = [
+const CASES: [(&str, &str, &str); 11] = [
     ("cornell-box", "0.1", "1"),
     ("daylit-office", "0.5", "1"),
     ("daylit-office-twin", "0.5", "1"),
     ("furnace-box", "0.25", "1"),
     ("glossy-cornell", "0.1", "16"),
+    ("gltf-room", "0.5", "1"),
     ("integrating-sphere", "0.35", "1"),
     ("mirror-room", "0.6", "16"),
     ("opal-diffuser", "0.25", "1"),

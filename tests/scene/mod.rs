@@ -4,6 +4,8 @@ mod assembly;
 mod copies;
 mod degenerate;
 mod gltf;
+mod gltf_strips;
+mod gltf_textures;
 mod holes;
 mod lengths;
 mod light_scenes;

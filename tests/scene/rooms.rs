@@ -1,7 +1,9 @@
 //! The furnished rooms of `cases/`, written by `cases/generate/rooms.py` (issue 14, point 5):
 //! they parse, hold about the number of quads (or OBJ triangles) intended, have probes,
 //! grids and a camera, keep every luminaire inside the room, and are closed: every ray
-//! from every luminaire meets the front of a face.
+//! from every luminaire meets the front of a face. The glTF dining room
+//! (`cases/generate/gltf_room.py`, issue 38, point 4) reads its furniture's strips, fans and
+//! texture, and is closed too.
 
 use glam::DVec3;
 use std::path::Path;
@@ -136,4 +138,31 @@ fn the_hall_of_meshed_seats_has_two_hundred_thousand_triangles() {
         }
     }
     assert!(luminaires(&scene).iter().all(|p| p.cmpgt(lo).all() && p.cmplt(hi).all()));
+}
+
+#[test]
+fn the_gltf_room_reads_its_strips_fans_and_texture_and_is_closed() {
+    let scene = load("cases/gltf-room.toml");
+    assert_eq!(triangles(&scene), 544, "lists, strips and fans, the chair placed by four nodes");
+    let names: Vec<&str> = scene.surfaces[6..].iter().map(|s| s.name.as_str()).collect();
+    let oak = "furniture/gltf-room/furniture.gltf:oak";
+    assert_eq!(names, [oak, "furniture/metal", "furniture/gltf-room/furniture.gltf:fabric"]);
+    let reflectance = |surface: usize| match scene.materials[scene.surfaces[surface].material].model {
+        ugo::material::MaterialModel::Lambert { reflectance, .. } => reflectance,
+        ref other => panic!("{other:?}"),
+    };
+    // wood.png's mean linear colour's luminance, as the generator works it out (rho = 0.1768).
+    assert!((reflectance(6) - 0.1768).abs() < 5e-5, "{}", reflectance(6));
+    assert_eq!(reflectance(7), 0.35, "steel mapped to metal");
+    let warnings: Vec<String> = scene.warnings().iter().map(|w| w.to_string()).collect();
+    assert!(warnings.iter().any(|w| w.contains("\"oak\"") && w.contains("averaged")), "{warnings:#?}");
+    assert_eq!(scene.luminaires.len(), 2);
+    assert!(scene.probes.len() >= 9 && !scene.cameras.is_empty());
+    let (lo, hi) = (DVec3::new(0.0, -1e-9, 0.0), DVec3::new(5.0, 2.8, 4.0));
+    for surface in &scene.surfaces[6..] {
+        let Shape::Mesh { triangles, .. } = &surface.shape else { panic!("{}", surface.name) };
+        let inside = |p: &DVec3| p.cmpgt(lo).all() && p.cmplt(hi).all();
+        assert!(triangles.iter().flatten().all(inside), "{}: a triangle outside the room", surface.name);
+    }
+    closed_around_luminaires(&scene);
 }

@@ -1,7 +1,8 @@
 //! Small glTF 2.0 files written by the tests (issue 38, point 4): one buffer of `f32`
-//! positions then `u32` indices, each index list a primitive's accessor, around the JSON
-//! the test gives (nodes, meshes, materials, scenes); written as a `.gltf` with the buffer
-//! embedded in base64, as a `.glb`, or as a `.gltf` beside its `.bin`.
+//! positions then `u32` indices, each index list a primitive's accessor, then optionally
+//! an image (buffer view 2), around the JSON the test gives (nodes, meshes, materials,
+//! scenes, images); written as a `.gltf` with the buffer embedded in base64, as a `.glb`,
+//! or as a `.gltf` beside its `.bin`.
 
 use base64::Engine;
 use serde_json::{Value, json};
@@ -26,18 +27,21 @@ pub fn cube_obj() -> String {
 }
 
 /// A glTF document: `positions` are accessor 0; index list `i` of `indices` is accessor
-/// `i + 1`; `document` holds the rest (`scene`, `scenes`, `nodes`, `meshes`, `materials`).
+/// `i + 1`; `image`, when not empty, is buffer view 2 (an image's `bufferView`); `document`
+/// holds the rest (`scene`, `scenes`, `nodes`, `meshes`, `materials`, `textures`, `images`).
 pub struct Document {
     pub positions: Vec<[f32; 3]>,
     pub indices: Vec<Vec<u32>>,
+    pub image: Vec<u8>,
     pub document: Value,
 }
 
 impl Document {
-    /// The buffer: positions, then every index list.
+    /// The buffer: positions, then every index list, then the image.
     fn bin(&self) -> Vec<u8> {
         let floats = self.positions.iter().flatten().flat_map(|x| x.to_le_bytes());
-        floats.chain(self.indices.iter().flatten().flat_map(|i| i.to_le_bytes())).collect()
+        let indices = self.indices.iter().flatten().flat_map(|i| i.to_le_bytes());
+        floats.chain(indices).chain(self.image.iter().copied()).collect()
     }
 
     /// The whole JSON, its one buffer described by `buffer`.
@@ -60,6 +64,10 @@ impl Document {
             { "buffer": 0, "byteOffset": 0, "byteLength": position_bytes },
             { "buffer": 0, "byteOffset": position_bytes, "byteLength": offset },
         ]);
+        if !self.image.is_empty() {
+            let view = json!({ "buffer": 0, "byteOffset": position_bytes + offset, "byteLength": self.image.len() });
+            whole["bufferViews"].as_array_mut().unwrap().push(view);
+        }
         whole["accessors"] = json!(accessors);
         whole
     }
