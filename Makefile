@@ -21,6 +21,8 @@ EVENING_EXPOSURE ?= --exposure 128
 # The furnished rooms of cases/ are written by a script; the seats' OBJ file of
 # cases/hall-obj.toml (about 8 MB) is not committed but written here.
 ROOMS := cases/generate/rooms.py
+# The building floor of issue 36 (cases/building.toml), written by its own script on rooms.py's.
+BUILDING := cases/generate/building.py
 HALL_OBJ := cases/hall-obj/seats.obj
 
 .PHONY: all deps build demo test petsc test-petsc cases clean
@@ -56,6 +58,7 @@ demo: build
 	cp $(DEMO_IMAGES) docs/img/
 
 test: deps $(HALL_OBJ)
+	python3 $(BUILDING) --check
 	$(CARGO) test --release
 
 # The PETSc/SLEPc backend (docs/petsc.md): Debian's petsc4py and slepc4py (PETSc and
@@ -77,13 +80,15 @@ petsc: deps
 test-petsc: petsc build
 	/usr/bin/python3 tools/petsc/check.py target/release/ugo out/petsc-check
 
-# Checks that the committed cases are what the script writes, then writes every file
+# Checks that the committed cases are what the scripts write, then writes every file
 # (the OBJ included).
 cases: deps
 	python3 $(ROOMS) --check
 	python3 cases/generate/daylight.py --check
 	python3 cases/generate/gltf_room.py --check
+	python3 $(BUILDING) --check
 	python3 $(ROOMS)
+	python3 $(BUILDING)
 
 $(HALL_OBJ): $(ROOMS) | deps
 	python3 $(ROOMS)

@@ -97,11 +97,11 @@ const CASES: [(&str, &str, &str); 11] = [
     ("parallel-plates", "0.25", "1"),
 ];
 
-/// The furnished rooms (`cases/generate/rooms.py`): too large to solve here even coarsened
-/// (the office at 1 m patches is over 1,300 patches of furniture); `tests/scene/rooms.rs`
-/// checks them. The classroom has no camera and takes minutes at 0.5 m: `cli::classroom`
-/// solves it.
-const FURNISHED: [&str; 4] = ["classroom", "hall-obj", "lecture-hall", "office"];
+/// The furnished rooms (`cases/generate/rooms.py`, the building floor of
+/// `cases/generate/building.py`): too large to solve here even coarsened (the office at 1 m
+/// patches is over 1,300 patches of furniture); `tests/scene/rooms.rs` checks them. The
+/// classroom has no camera and takes minutes at 0.5 m: `cli::classroom` solves it.
+const FURNISHED: [&str; 5] = ["building", "classroom", "hall-obj", "lecture-hall", "office"];
 
 #[test]
 fn every_case_has_a_camera_and_renders_finite_lit_pixels() {

@@ -4,6 +4,8 @@
 //! from every luminaire meets the front of a face. The glTF dining room
 //! (`cases/generate/gltf_room.py`, issue 38, point 4) reads its furniture's strips, fans and
 //! texture, and is closed too.
+//! The building floor of issue 36 (`cases/generate/building.py`): its rooms, their
+//! luminaires, doors, windows and sky.
 
 use glam::DVec3;
 use std::path::Path;
@@ -165,4 +167,42 @@ fn the_gltf_room_reads_its_strips_fans_and_texture_and_is_closed() {
         assert!(triangles.iter().flatten().all(inside), "{}: a triangle outside the room", surface.name);
     }
     closed_around_luminaires(&scene);
+}
+
+/// The building floor (issue 36, point 4, `cases/generate/building.py`): 28 rooms (26
+/// offices, a meeting room, a stair core) and a corridor, each lit by downlights of its own
+/// group, a door from every room into the corridor (two into the meeting room), a glazed
+/// window in every room but the stair core and at both ends of the corridor, the sky.
+#[test]
+fn the_building_has_twenty_eight_rooms_lit_by_their_own_groups_doors_windows_and_sky() {
+    let scene = load("cases/building.toml");
+    assert_eq!(scene.discretization.patch_size, 0.15);
+    let hierarchical = ugo::scene::Hierarchical { root_size: 1.0, link_tolerance: 1e-2 };
+    assert_eq!(scene.discretization.kernel, ugo::scene::KernelKind::Hierarchical(hierarchical));
+    let points = scene.luminaires.iter().filter(|l| matches!(l.kind, LuminaireKind::Point(_))).count();
+    let windows = scene.luminaires.iter().filter(|l| matches!(l.kind, LuminaireKind::Window { .. })).count();
+    assert_eq!((points, windows), (109, 29), "downlights and windows");
+    assert!(scene.sky.is_some(), "daylight through the facade needs the sky");
+    let rooms: Vec<&ugo::scene::LightGroup> =
+        scene.lighting.groups.iter().filter(|g| g.name.len() == 3 && g.name != "S07" && g.name != "N08").collect();
+    assert_eq!(rooms.len(), 26, "a group per office");
+    assert!(rooms.iter().all(|g| g.luminaires.len() >= 3), "three downlights or more per office");
+    for group in ["S07", "N08", "corridor"] {
+        assert!(scene.lighting.groups.iter().any(|g| g.name == group), "no group {group}");
+    }
+    let doors: usize = scene
+        .surfaces
+        .iter()
+        .filter(|s| s.name.contains("corridor wall"))
+        .map(|s| match &s.shape {
+            Shape::Holed { holes, .. } => holes.len(),
+            _ => 0,
+        })
+        .sum();
+    assert_eq!(doors, 29, "a door per room, two into the meeting room");
+    assert!(scene.surfaces.iter().filter(|s| s.two_sided).count() >= 50, "partitions and corridor walls");
+    let desks = scene.surfaces.iter().filter(|s| s.name.contains("desk") && s.name.contains(", top")).count();
+    assert_eq!(desks, 28, "a desk per one-person office, two per two-person office");
+    assert!(scene.probes.len() >= 3 && scene.grids.len() == 1);
+    assert!(std::fs::metadata("cases/building.toml").unwrap().len() < 300_000, "the file is small: furniture copied");
 }
