@@ -90,7 +90,8 @@ pub fn build(
     let root_visibility = Visibility::build(&roots);
     measure_exposure(&mut roots, &root_visibility, progress);
     crate::interrupt::check(|| "the roots' exposed areas".into())?;
-    let root_light = seed_light(&sources, &roots, &root_visibility, &directions);
+    let root_light = seed_light(&sources, &roots, &root_visibility, &directions, progress);
+    crate::interrupt::check(|| "the direct light on the roots".into())?;
     let root_l0 = source_term(&blocks, &roots, &root_light, k);
     check_source(scene, &roots, &root_light, &root_l0, k)?;
     let root_light_seconds = t.elapsed().as_secs_f64();
@@ -174,9 +175,18 @@ pub fn build(
 
 /// The luminaires' light on the roots, only to seed the oracle's first guess (each root's
 /// own light is integrated exactly once it is a leaf): `D_d` averaged over the oracle's
-/// sample points of each root, one shadow ray per point and source.
-fn seed_light(sources: &[Source], roots: &Mesh, visibility: &Visibility, directions: &DirectionSet) -> DirectLight {
+/// sample points of each root, one shadow ray per point and source; `progress` hears of
+/// each root (a signal's stop leaves the roots after it dark: `crate::interrupt`, the
+/// caller checks).
+fn seed_light(
+    sources: &[Source],
+    roots: &Mesh,
+    visibility: &Visibility,
+    directions: &DirectionSet,
+    progress: &dyn Progress,
+) -> DirectLight {
     let k = directions.len();
+    progress.begin("direct light on the roots", roots.patches.len() as u64);
     let arriving: Vec<f64> = roots
         .patches
         .par_iter()
@@ -184,14 +194,16 @@ fn seed_light(sources: &[Source], roots: &Mesh, visibility: &Visibility, directi
             let frame = patch.frame();
             let mut mean = vec![0.0; k];
             let mut points = 0.0;
-            for x in sample_points(patch) {
+            for x in sample_points(patch).take_while(|_| !crate::interrupt::asked()) {
                 let d = arriving_at(sources, visibility, directions, x, &frame, patch.face, OPENING_ETA);
                 mean.iter_mut().zip(d).for_each(|(m, d)| *m += d);
                 points += 1.0;
             }
-            mean.into_iter().map(move |m| m / points)
+            progress.advance(1);
+            mean.into_iter().map(move |m| m / f64::max(points, 1.0))
         })
         .collect();
+    progress.end();
     let points: usize = roots.patches.iter().map(|p| sample_points(p).count()).sum();
     DirectLight { arriving, rays: points * sources.len(), ..DirectLight::none(sources) }
 }

@@ -13,6 +13,7 @@ mod monte_carlo;
 mod norms;
 mod open_box;
 mod plates;
+mod progress;
 mod push;
 mod rebalance;
 mod spectrum;
