@@ -255,7 +255,7 @@ impl Onto<'_> {
             return;
         }
         let (visibility, face, normal, area) = (self.visibility, self.patch.face, self.patch.normal, piece.area());
-        let sight = SightFrom { visibility, p: c, n: normal, ignore: face };
+        let sight = SightFrom::new(visibility, c, normal, face);
         let least = (self.least / area).max(SHADOW_SHARE * unshadowed(sky, window, c, normal));
         let mut arrivals = Vec::new();
         let mut arrive = |towards, e, _| arrivals.push((towards, e * area));

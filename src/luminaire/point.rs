@@ -70,7 +70,7 @@ pub fn arriving_along(
             Light::Point { position, .. } => (*position - p).dot(normal) > 0.0,
             Light::Parallel { direction, .. } => direction.dot(normal) < 0.0,
             Light::Window { window, sky } => {
-                let sight = SightFrom { visibility, p, n: normal, ignore };
+                let sight = SightFrom::new(visibility, p, normal, ignore);
                 let mut piece = |towards: DVec3, e: f64, _| arrive(towards, e / PI);
                 through_window(opening_eta, sky, window, p, normal, &sight, 0.0, &mut piece);
                 false

@@ -241,7 +241,7 @@ fn varies(
         return false;
     }
     let shadowed = points.iter().zip(unshadowed.chunks(windows.len())).zip(&lit).map(|((&x, u), e)| {
-        let sight = SightFrom { visibility, p: x, n, ignore: patch.face };
+        let sight = SightFrom::new(visibility, x, n, patch.face);
         e + windows.iter().zip(u).map(|((w, _), u)| u * glimpse::seen_share(w, x, n, &sight)).sum::<f64>()
     });
     spread(shadowed) > allowed

@@ -19,7 +19,7 @@ pub fn sky_and_ground(model: &Model, p: DVec3, n: DVec3) -> (f64, f64) {
     let (mut sky, mut ground) = (0.0, 0.0);
     for source in &model.sources {
         if let Light::Window { window, sky: outside } = &source.light {
-            let sight = SightFrom { visibility: &model.visibility, p, n: normal, ignore };
+            let sight = SightFrom::new(&model.visibility, p, normal, ignore);
             through_window(ETA, outside, window, p, normal, &sight, 0.0, &mut |_, e, component| match component {
                 Component::Sky => sky += e,
                 Component::Ground => ground += e,

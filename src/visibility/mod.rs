@@ -190,8 +190,14 @@ impl Visibility {
     /// `ignore`: it leaves the scene. The query stops at the first face it meets, where
     /// [`Visibility::closest_hit`] looks on for the nearest.
     pub fn escapes(&self, origin: DVec3, direction: DVec3, ignore: u32) -> bool {
+        self.escapes_cached(origin, direction, ignore, &mut Blocker::default())
+    }
+
+    /// [`Visibility::escapes`] that first tries the triangle which blocked the caller's
+    /// previous query (`blocker`, updated), as [`Visibility::visible_cached`].
+    pub fn escapes_cached(&self, origin: DVec3, direction: DVec3, ignore: u32, blocker: &mut Blocker) -> bool {
         let ray = self.ray(origin, direction.normalize(), self.epsilon, f32::INFINITY as f64);
-        self.misses(&ray, [ignore, ignore], &mut Blocker::default())
+        self.misses(&ray, [ignore, ignore], blocker)
     }
 
     /// True when `ray` meets no face other than `ignore`, trying `blocker` first.

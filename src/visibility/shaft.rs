@@ -11,10 +11,11 @@
 //! traces its rays. The boxes are those of a binary BVH over the same triangles, built on
 //! the first query (the ray queries' wide BVH has no such traversal).
 
-use super::Visibility;
+use super::{Blocker, NO_BLOCKER, Visibility};
 use crate::geometry::{ConvexPolygon, MAX_CLIPPED};
 use glam::{DVec3, Vec3A};
 use obvhs::{BvhBuildParams, bvh2::Bvh2, bvh2::builder::build_bvh2_from_tris, triangle::Triangle};
+use std::cell::Cell;
 use std::time::Duration;
 
 /// The binary BVH of the shaft queries over `triangles`, whose primitive indices are
@@ -137,22 +138,31 @@ impl<F: Fn(DVec3) -> bool> Sight for F {
 }
 
 /// The scene's faces seen from `p` (receiving side facing the unit `n`, lying on the face
-/// `ignore`): rays that leave the scene, and shafts.
-#[derive(Clone, Copy)]
+/// `ignore`): rays that leave the scene, and shafts. Its rays try the triangle that
+/// blocked its last one first (`Visibility::visible_cached`): the rays from one point
+/// through the pieces of an opening hidden behind a wall all stop on the same triangle.
 pub struct SightFrom<'a> {
-    /// The faces.
-    pub visibility: &'a Visibility,
-    /// The point looking, m.
-    pub p: DVec3,
-    /// The unit normal of its receiving side.
-    pub n: DVec3,
-    /// The face it lies on, ignored.
-    pub ignore: u32,
+    visibility: &'a Visibility,
+    p: DVec3,
+    n: DVec3,
+    ignore: u32,
+    last: Cell<Blocker>,
+}
+
+impl<'a> SightFrom<'a> {
+    /// What `visibility`'s faces let `p` see, its receiving side facing the unit `n`, lying
+    /// on the face `ignore`.
+    pub fn new(visibility: &'a Visibility, p: DVec3, n: DVec3, ignore: u32) -> SightFrom<'a> {
+        SightFrom { visibility, p, n, ignore, last: Cell::new(NO_BLOCKER) }
+    }
 }
 
 impl Sight for SightFrom<'_> {
     fn sees(&self, x: DVec3) -> bool {
-        self.visibility.escapes(self.p, x - self.p, self.ignore)
+        let mut last = self.last.get();
+        let escapes = self.visibility.escapes_cached(self.p, x - self.p, self.ignore, &mut last);
+        self.last.set(last);
+        escapes
     }
 
     fn clear(&self, piece: &ConvexPolygon) -> bool {
