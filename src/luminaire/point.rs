@@ -7,7 +7,7 @@
 use super::{Light, Source};
 use crate::directions::DirectionSet;
 use crate::geometry::Frame;
-use crate::sky::through_window;
+use crate::sky::{Cuts, through_window};
 use crate::visibility::{NO_FACE, SightFrom, Visibility};
 use glam::DVec3;
 use std::f64::consts::PI;
@@ -37,8 +37,8 @@ pub fn incoming(source: &Source, visibility: &Visibility, p: DVec3, ignore: u32)
 
 /// `D_d(p) = E_d(p)/π` per cell of `frame` at `p` (whose receiving side faces
 /// `frame.normal`), ignoring the face `ignore` that `p` lies on; an opening's pieces are cut
-/// while larger than `opening_eta` times their distance (`crate::sky::ETA` for a reading,
-/// [`OPENING_ETA`](super::OPENING_ETA) where the light is averaged or only guessed).
+/// as `cuts` says (`crate::sky::READING` for a reading, coarser where the light is averaged
+/// or only guessed).
 pub fn arriving_at(
     sources: &[Source],
     visibility: &Visibility,
@@ -46,11 +46,11 @@ pub fn arriving_at(
     p: DVec3,
     frame: &Frame,
     ignore: u32,
-    opening_eta: f64,
+    cuts: Cuts,
 ) -> Vec<f64> {
     let mut out = vec![0.0; directions.len()];
     let mut arrive = |towards: DVec3, d: f64| out[directions.lookup(frame.local(towards))] += d;
-    arriving_along(sources, visibility, p, frame.normal, ignore, opening_eta, &mut arrive);
+    arriving_along(sources, visibility, p, frame.normal, ignore, cuts, &mut arrive);
     out
 }
 
@@ -62,7 +62,7 @@ pub fn arriving_along(
     p: DVec3,
     normal: DVec3,
     ignore: u32,
-    opening_eta: f64,
+    cuts: Cuts,
     arrive: &mut dyn FnMut(DVec3, f64),
 ) {
     for source in sources {
@@ -72,7 +72,8 @@ pub fn arriving_along(
             Light::Window { window, sky } => {
                 let sight = SightFrom::new(visibility, p, normal, ignore);
                 let mut piece = |towards: DVec3, e: f64, _| arrive(towards, e / PI);
-                through_window(opening_eta, sky, window, p, normal, &sight, 0.0, &mut piece);
+                let least = cuts.least(sky, window, p, normal);
+                through_window(cuts.eta, sky, window, p, normal, &sight, least, &mut piece);
                 false
             }
         };

@@ -20,7 +20,7 @@ use crate::luminaire::{DirectLight, Light, OPENING_ETA, PatchLight, Source, arri
 use crate::material::Block;
 use crate::progress::Progress;
 use crate::scene::{Hierarchical, Scene};
-use crate::sky::{self, Opening, Sky, glimpse};
+use crate::sky::{self, Cuts, Opening, SHADOW_SHARE, Sky, glimpse};
 use crate::solve::{Method, SolveParams, System, solve};
 use crate::transfer::exposure::measure_exposure;
 use crate::visibility::{Faces, SightFrom, Visibility};
@@ -32,6 +32,11 @@ use std::time::Instant;
 /// Relative residual of the solves between refinement passes: the oracle needs the field
 /// to a fraction of the link tolerance, not to the final stopping rule.
 pub const REFINEMENT_RESIDUAL: f64 = 1e-5;
+
+/// The openings' cuts for the roots' seed light, a first guess only: pieces of
+/// [`OPENING_ETA`], shadow edges cut while a piece holds [`SHADOW_SHARE`] of the opening's
+/// light, as on a patch (`luminaire::patch`).
+const SEED: Cuts = Cuts { eta: OPENING_ETA, shadow_share: SHADOW_SHARE };
 
 /// The luminaires' light on every node that has been a leaf (by node id): computed once
 /// per element, with the roots' ray caster (the elements keep their root's face).
@@ -87,7 +92,7 @@ pub fn build(
     let windows: Vec<(&Opening, &Sky)> = sources.iter().filter_map(window_of).collect();
     let mesh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
-    let root_visibility = Visibility::build(&roots);
+    let root_visibility = Visibility::build_for(&scene.surfaces, &roots);
     measure_exposure(&mut roots, &root_visibility, progress);
     crate::interrupt::check(|| "the roots' exposed areas".into())?;
     let root_light = seed_light(&sources, &roots, &root_visibility, &directions, progress);
@@ -140,7 +145,7 @@ pub fn build(
     let kernel_seconds = t.elapsed().as_secs_f64() - light_seconds;
     let direct = cache.on_leaves(&h, &sources, &directions);
     let t_bvh = Instant::now();
-    let visibility = Visibility::build(&mesh);
+    let visibility = Visibility::build_for(&scene.surfaces, &mesh);
     let bvh_seconds = t_bvh.elapsed().as_secs_f64();
     let stats = AssemblyStats {
         mesh_seconds,
@@ -195,7 +200,7 @@ fn seed_light(
             let mut mean = vec![0.0; k];
             let mut points = 0.0;
             for x in sample_points(patch).take_while(|_| !crate::interrupt::asked()) {
-                let d = arriving_at(sources, visibility, directions, x, &frame, patch.face, OPENING_ETA);
+                let d = arriving_at(sources, visibility, directions, x, &frame, patch.face, SEED);
                 mean.iter_mut().zip(d).for_each(|(m, d)| *m += d);
                 points += 1.0;
             }

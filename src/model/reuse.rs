@@ -104,7 +104,7 @@ impl Model {
         }
         let mesh_seconds = t.elapsed().as_secs_f64();
         let t = Instant::now();
-        let visibility = Visibility::build(&mesh);
+        let visibility = Visibility::build_for(&scene.surfaces, &mesh);
         let bvh_seconds = t.elapsed().as_secs_f64();
         let blocks =
             stored.blocks.unwrap_or_else(|| scene.materials.iter().map(|m| m.model.block(&directions)).collect());

@@ -27,7 +27,7 @@ pub fn build(scene: &Scene, progress: &dyn Progress) -> Result<Model, ModelError
     Forecast::counted(&mesh, scene.materials.len(), &directions).check(d.memory_limit)?;
     let mesh_seconds = t.elapsed().as_secs_f64();
     let t = Instant::now();
-    let visibility = Visibility::build(&mesh);
+    let visibility = Visibility::build_for(&scene.surfaces, &mesh);
     measure_exposure(&mut mesh, &visibility, progress);
     crate::interrupt::check(|| "the patches' exposed areas".into())?;
     let bvh_seconds = t.elapsed().as_secs_f64();

@@ -26,6 +26,7 @@ use crate::geometry::{ConvexPolygon, Frame, Mesh, NO_TWIN, Patch};
 use crate::luminaire::{OPENING_ETA, Source, arriving_along};
 use crate::material::MaterialModel;
 use crate::random::{Rng, Stratified};
+use crate::sky::Cuts;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::occlusion::{POINTS, polygon_points};
 use crate::visibility::Visibility;
@@ -94,13 +95,16 @@ fn direct_light(lit: &impl Surroundings, q: DVec3, n: DVec3, face: u32, factor: 
         }
     }
     let mut arrive = |towards: DVec3, d: f64| sum += d * factor(towards);
-    arriving_along(lit.sources(), visibility, q, n, face, OPENING_ETA, &mut arrive);
+    arriving_along(lit.sources(), visibility, q, n, face, PIXEL, &mut arrive);
     sum
 }
 
 /// Most times a piece of an emitter is cut into quarters where the luminance factor varies
 /// over it.
 const LOBE_DEPTH: u32 = 4;
+
+/// A pixel's cuts of an opening: pieces of [`OPENING_ETA`], every shadow edge cut.
+const PIXEL: Cuts = Cuts { eta: OPENING_ETA, shadow_share: 0.0 };
 
 /// A piece is cut while the luminance factor at its four points spreads by more than this
 /// fraction of their mean.

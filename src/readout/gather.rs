@@ -23,7 +23,7 @@ use crate::model::Model;
 use crate::readout::field::Field;
 use crate::readout::glossy::{ModelSurroundings, PIECE_RAYS, has_lobe};
 use crate::readout::mirrored::{on_mirrors, through_mirrors};
-use crate::sky::ETA;
+use crate::sky::READING;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::cut_along_shadows;
@@ -69,7 +69,8 @@ impl Receiver {
 /// gathered from the surfaces, and directly from the luminaires.
 pub(super) fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (Receiver, Vec<f64>, Vec<f64>) {
     let at = Receiver::at(model, p, n);
-    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &at.frame, at.ignore, ETA);
+    let direct =
+        arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &at.frame, at.ignore, READING);
     let incident = gather(model, field, p, &at.frame, at.ignore);
     (at, incident, direct)
 }
@@ -84,7 +85,7 @@ pub(super) fn arriving(model: &Model, field: &Field, q: DVec3, s: &Patch) -> Vec
 /// `shadow_cut` of all the point would receive unoccluded (as [`SHADOW_CUT`]).
 pub(super) fn arriving_within(model: &Model, field: &Field, q: DVec3, s: &Patch, shadow_cut: f64) -> Vec<f64> {
     let frame = s.frame();
-    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, q, &frame, s.face, ETA);
+    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, q, &frame, s.face, READING);
     sum(&per_cell(model, field, q, &frame, s.face, shadow_cut), &direct)
 }
 

@@ -18,13 +18,14 @@ pub const POINTS: usize = 16;
 
 /// The share of the opening's points in front of `p` (unit normal `n`) through which
 /// `sight` says the ray from `p` leaves the scene; 1 when none is in front, and without a
-/// ray when nothing stands before the whole opening.
+/// ray when nothing stands before the whole opening or one occluder hides it all.
 pub fn seen_share(opening: &Opening, p: DVec3, n: DVec3, sight: &dyn Sight) -> f64 {
     if sight.clear(&opening.polygon) {
         return 1.0;
     }
     let quarters = opening.polygon.split();
     let points = quarters.iter().flat_map(polygon_points).filter(|x| (*x - p).dot(n) > 0.0);
-    let (seen, all) = points.fold((0, 0), |(seen, all), x| (seen + usize::from(sight.sees(x)), all + 1));
+    let hidden = sight.hidden(&opening.polygon);
+    let (seen, all) = points.fold((0, 0), |(seen, all), x| (seen + usize::from(!hidden && sight.sees(x)), all + 1));
     if all == 0 { 1.0 } else { seen as f64 / all as f64 }
 }

@@ -35,7 +35,7 @@ pub use glazing_fresnel::Fresnel;
 pub use integrate::{gauss_legendre, hemisphere};
 pub use standard::{Distribution, GENERAL, Parameters, gradation, indicatrix};
 pub use sun::{SiteTime, SunPosition, day_of_year, declination_and_equation_of_time};
-pub use window::{Component, ETA, MAX_DEPTH, Opening, SHADOW_SHARE, through_window, unshadowed};
+pub use window::{Component, Cuts, ETA, MAX_DEPTH, Opening, READING, SHADOW_SHARE, through_window, unshadowed};
 
 use glam::DVec3;
 use std::f64::consts::PI;

@@ -34,6 +34,32 @@ pub const MAX_DEPTH: u32 = 8;
 /// cuts every such piece down to the deepest level.
 pub const SHADOW_SHARE: f64 = 1e-4;
 
+/// How finely an opening's pieces are cut seen from a point: for size while a piece's
+/// diameter exceeds `eta` times its distance, and along a shadow edge while a piece's
+/// unshadowed light exceeds `shadow_share` of the whole opening's ([`unshadowed`]; 0: down
+/// to the deepest level).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cuts {
+    /// A piece is cut while its diameter exceeds this times its distance.
+    pub eta: f64,
+    /// A shadowed piece is cut while its light exceeds this share of the opening's.
+    pub shadow_share: f64,
+}
+
+/// A reading's cuts (a probe, a grid point): [`ETA`], every shadow edge cut.
+pub const READING: Cuts = Cuts { eta: ETA, shadow_share: 0.0 };
+
+impl Cuts {
+    /// The least unshadowed light (lx) of a shadowed piece that is still cut, at `p` facing
+    /// the unit `n`.
+    pub fn least(&self, sky: &Sky, opening: &Opening, p: DVec3, n: DVec3) -> f64 {
+        match self.shadow_share > 0.0 {
+            true => self.shadow_share * unshadowed(sky, opening, p, n),
+            false => 0.0,
+        }
+    }
+}
+
 /// An opening: a parallelogram (or triangle) in the surfaces, glazed or not.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Opening {
@@ -79,6 +105,9 @@ pub fn through_window(
     let smallest = 1e-12 * size * size;
     // the whole opening first: a shaft through a part cut from it is tested more loosely
     let clear = sight.clear(window);
+    if !clear && sight.hidden(window) {
+        return 0;
+    }
     let mut rays = 0;
     for_each_part(window, p, n, &mut |piece, component| {
         let mut view = View { sky, opening, p, n, sight, least, component, visit: &mut *visit, rays: 0, smallest, eta };
@@ -156,6 +185,9 @@ impl View<'_, '_> {
             return;
         }
         let clear = clear || self.sight.clear(piece);
+        if !clear && self.sight.hidden(piece) {
+            return;
+        }
         if depth < MAX_DEPTH && piece.diameter() > self.eta * piece.distance_to(self.p) {
             piece.split().iter().for_each(|q| self.piece(q, depth + 1, clear));
             return;

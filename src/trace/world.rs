@@ -60,7 +60,7 @@ impl World {
     /// `mesh` must be `scene`'s (its patches name the scene's materials); its patches'
     /// exposed areas are measured (`transfer::exposure`), which the forward tracer bins by.
     pub fn new(scene: &Scene, mut mesh: Mesh) -> World {
-        let visibility = Visibility::build(&mesh);
+        let visibility = Visibility::build_for(&scene.surfaces, &mesh);
         measure_exposure(&mut mesh, &visibility, &Silent);
         World::with_visibility(scene, mesh, visibility)
     }

@@ -20,12 +20,14 @@
 //! query's ray starts that far behind its origin, its `tmin` moved on to match.
 
 mod faces;
+mod occluders;
 mod shaft;
 
 pub use faces::{Faces, Landing, standoff};
+pub use occluders::Occluders;
 pub use shaft::{Sight, SightFrom};
 
-use crate::geometry::Mesh;
+use crate::geometry::{Mesh, Surface};
 use glam::{DMat3, DVec3, Vec3A};
 use obvhs::{
     BvhBuildParams,
@@ -84,6 +86,8 @@ pub struct Visibility {
     epsilon: f64,
     /// The binary BVH of the shaft queries (`shaft.rs`), built on the first.
     shafts: OnceLock<Bvh2>,
+    /// The surfaces' large convex pieces that hide whole shafts, when the surfaces are known.
+    occluders: Option<Occluders>,
 }
 
 /// The first face hit by a ray.
@@ -157,7 +161,16 @@ impl Visibility {
             rotation,
             epsilon: 1e-6 * mesh.extent(),
             shafts: OnceLock::new(),
+            occluders: None,
         }
+    }
+
+    /// The default structure over the faces of `mesh`, meshed from `surfaces`, with their
+    /// occluders (`occluders.rs`): shafts hidden behind a wall are then known without rays.
+    pub fn build_for(surfaces: &[Surface], mesh: &Mesh) -> Visibility {
+        let mut visibility = Visibility::build(mesh);
+        visibility.occluders = Some(Occluders::of(surfaces, mesh));
+        visibility
     }
 
     /// True when the segment from `a` to `b` crosses no face other than `ignore`.

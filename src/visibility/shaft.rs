@@ -11,6 +11,7 @@
 //! traces its rays. The boxes are those of a binary BVH over the same triangles, built on
 //! the first query (the ray queries' wide BVH has no such traversal).
 
+use super::occluders::hides;
 use super::{Blocker, NO_BLOCKER, Visibility};
 use crate::geometry::{ConvexPolygon, MAX_CLIPPED};
 use glam::{DVec3, Vec3A};
@@ -124,6 +125,9 @@ pub trait Sight {
     fn sees(&self, x: DVec3) -> bool;
     /// True when no face can stop a ray from the point through `piece`; false when one may.
     fn clear(&self, piece: &ConvexPolygon) -> bool;
+    /// True when one opaque piece stops every ray from the point through `piece`; false
+    /// when none is known to.
+    fn hidden(&self, piece: &ConvexPolygon) -> bool;
 }
 
 /// A bare test `sees(x)`: no piece is known to be clear without its rays.
@@ -135,25 +139,31 @@ impl<F: Fn(DVec3) -> bool> Sight for F {
     fn clear(&self, _: &ConvexPolygon) -> bool {
         false
     }
+
+    fn hidden(&self, _: &ConvexPolygon) -> bool {
+        false
+    }
 }
 
 /// The scene's faces seen from `p` (receiving side facing the unit `n`, lying on the face
 /// `ignore`): rays that leave the scene, and shafts. Its rays try the triangle that
 /// blocked its last one first (`Visibility::visible_cached`): the rays from one point
-/// through the pieces of an opening hidden behind a wall all stop on the same triangle.
+/// through the pieces of an opening hidden behind a wall all stop on the same triangle;
+/// and a piece is hidden when the occluder that hid the last one hides it too.
 pub struct SightFrom<'a> {
     visibility: &'a Visibility,
     p: DVec3,
     n: DVec3,
     ignore: u32,
     last: Cell<Blocker>,
+    occluder: Cell<Option<&'a ConvexPolygon>>,
 }
 
 impl<'a> SightFrom<'a> {
     /// What `visibility`'s faces let `p` see, its receiving side facing the unit `n`, lying
     /// on the face `ignore`.
     pub fn new(visibility: &'a Visibility, p: DVec3, n: DVec3, ignore: u32) -> SightFrom<'a> {
-        SightFrom { visibility, p, n, ignore, last: Cell::new(NO_BLOCKER) }
+        SightFrom { visibility, p, n, ignore, last: Cell::new(NO_BLOCKER), occluder: Cell::new(None) }
     }
 }
 
@@ -167,5 +177,24 @@ impl Sight for SightFrom<'_> {
 
     fn clear(&self, piece: &ConvexPolygon) -> bool {
         self.visibility.shaft_is_empty(self.p, self.n, piece, self.ignore)
+    }
+
+    /// The last occluder first; else the occluder of the face that stops the ray through
+    /// the piece's centroid, if one does.
+    fn hidden(&self, piece: &ConvexPolygon) -> bool {
+        let Some(occluders) = &self.visibility.occluders else {
+            return false;
+        };
+        let margin = self.visibility.epsilon;
+        if self.occluder.get().is_some_and(|o| hides(o, self.p, piece, margin)) {
+            return true;
+        }
+        if self.sees(piece.centroid()) {
+            return false;
+        }
+        let face = self.last.get().0.map(|id| self.visibility.face_of[id]);
+        let occluder = face.and_then(|f| occluders.of_face(f));
+        self.occluder.set(occluder.or(self.occluder.get()));
+        occluder.is_some_and(|o| hides(o, self.p, piece, margin))
     }
 }

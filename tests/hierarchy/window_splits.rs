@@ -52,7 +52,7 @@ fn the_window_light_splits_the_leaves_until_it_is_even_on_each() {
                     x,
                     leaf.normal,
                     leaf.face,
-                    ugo::sky::ETA,
+                    ugo::sky::READING,
                     &mut |_, d| e += d * PI,
                 );
                 e

@@ -1,5 +1,7 @@
 //! Visibility queries on the axis-aligned Cornell box (the layout that defeats compressed nodes).
 
+mod occluders;
+
 use glam::DVec3;
 use std::cell::Cell;
 use std::path::Path;

@@ -1,0 +1,98 @@
+//! Occluders: the large opaque convex pieces of the surfaces, which hide whole shafts.
+//!
+//! A surface is cut into convex pieces before it is meshed (`geometry::tessellate` at an
+//! unbounded size: a rectangle, the pieces of a wall less its holes, the sides of a box, the
+//! ears of a polygon), and every mesh of the scene, at any patch size and after any split of
+//! its elements, tiles each such piece exactly. So when every segment from a point to a
+//! convex polygon crosses one piece strictly inside its edges, no ray from the point
+//! through the polygon gets past it ([`hides`], by convexity: the segments' crossings of the
+//! piece's plane lie in the convex hull of the crossings of the segments to the polygon's
+//! corners). Discs and spheres are left out (their pieces change with the patch size), and
+//! so are imported meshes (their triangles are small, and a face would have to be matched
+//! among all of them).
+//!
+//! The shaft of an opening seen from a point in another room is hidden by the wall between
+//! them: `docs/daylight.md`, "Openings hidden behind a wall".
+
+use crate::geometry::{ConvexPolygon, Mesh, Shape, Surface, tessellate};
+use glam::DVec3;
+
+/// A face that lies on no occluder.
+const NONE: u32 = u32::MAX;
+
+/// The occluders of a scene and the one each face of a mesh lies on.
+#[derive(Debug, Clone)]
+pub struct Occluders {
+    pieces: Vec<ConvexPolygon>,
+    of_face: Vec<u32>,
+}
+
+impl Occluders {
+    /// The occluders of `surfaces`, each face of `mesh` (meshed from them) matched to the
+    /// one of its surface that holds its centroid.
+    pub fn of(surfaces: &[Surface], mesh: &Mesh) -> Occluders {
+        let mut pieces = Vec::new();
+        let mut first = Vec::with_capacity(surfaces.len() + 1);
+        for surface in surfaces {
+            first.push(pieces.len());
+            if matches!(
+                surface.shape,
+                Shape::Rectangle { .. } | Shape::Polygon { .. } | Shape::Holed { .. } | Shape::Box { .. }
+            ) {
+                pieces.extend(tessellate(&surface.shape, f64::INFINITY));
+            }
+        }
+        first.push(pieces.len());
+        let tolerance = 1e-9 * mesh.extent();
+        let mut of_face = vec![NONE; mesh.faces];
+        for patch in &mesh.patches {
+            let s = patch.surface as usize;
+            let slot = &mut of_face[patch.face as usize];
+            if *slot == NONE {
+                let holds = |k: &usize| lies_on(&pieces[*k], patch.centroid, tolerance);
+                *slot = (first[s]..first[s + 1]).find(holds).map_or(NONE, |k| k as u32);
+            }
+        }
+        Occluders { pieces, of_face }
+    }
+
+    /// The occluder that `face` lies on, if any.
+    pub fn of_face(&self, face: u32) -> Option<&ConvexPolygon> {
+        let k = *self.of_face.get(face as usize)?;
+        (k != NONE).then(|| &self.pieces[k as usize])
+    }
+}
+
+/// True when `x` lies in the plane of `piece` and inside it, within `tolerance` (m).
+fn lies_on(piece: &ConvexPolygon, x: DVec3, tolerance: f64) -> bool {
+    let n = piece.normal();
+    let v = piece.vertices();
+    (x - v[0]).dot(n).abs() <= tolerance && inside_by(piece, n, x, -tolerance)
+}
+
+/// True when `x` (in the plane of `piece`, unit normal `n`) lies at least `margin` (m)
+/// inside every edge of it.
+fn inside_by(piece: &ConvexPolygon, n: DVec3, x: DVec3, margin: f64) -> bool {
+    let v = piece.vertices();
+    (0..v.len()).all(|i| {
+        let edge = v[(i + 1) % v.len()] - v[i];
+        n.cross(edge).normalize_or_zero().dot(x - v[i]) >= margin
+    })
+}
+
+/// True when every segment from `p` to a point of the convex `polygon` crosses `occluder` at
+/// least `margin` (m) inside its edges, `p` and the polygon at least `margin` off its plane
+/// on either side of it.
+pub fn hides(occluder: &ConvexPolygon, p: DVec3, polygon: &ConvexPolygon, margin: f64) -> bool {
+    let n = occluder.normal();
+    let at = occluder.vertices()[0];
+    let height = |x: DVec3| (x - at).dot(n);
+    let hp = height(p);
+    if hp.abs() <= margin {
+        return false;
+    }
+    polygon.vertices().iter().all(|&v| {
+        let hv = height(v);
+        hv * hp.signum() < -margin && inside_by(occluder, n, p + (v - p) * (hp / (hp - hv)), margin)
+    })
+}
