@@ -55,8 +55,8 @@ fn write_links(g: &hdf5::Group, links: &[Link]) -> hdf5::Result<()> {
     dataset(g, "receiver", &column(|l| l.receiver))?;
     dataset(g, "source", &column(|l| l.source))?;
     dataset(g, "factor", &Array1::from_iter(links.iter().map(|l| l.factor)))?;
-    dataset(g, "visible", &Array1::from_iter(links.iter().map(|l| l.visible)))?;
-    dataset(g, "sight", &Array1::from_iter(links.iter().map(|l| l.sight as u8)))?;
+    dataset(g, "visible", &Array1::from_iter(links.iter().map(|l| f64::from(l.visible))))?;
+    dataset(g, "sight", &Array1::from_iter(links.iter().map(|l| l.sight() as u8)))?;
     let pieces = g.create_group("pieces")?;
     let indptr = std::iter::once(0).chain(links.iter().scan(0u64, |n, l| {
         *n += l.pieces.len() as u64;
@@ -190,30 +190,18 @@ fn structure(file: &File) -> Result<Structure, Why> {
     let l = receiver.len();
     let same = [source.len(), factor.len(), visible.len(), sight.len(), indptr.len().saturating_sub(1)]
         .iter()
-        .all(|&x| x == l);
+        .all(|&x| x == l)
+        && sight.iter().zip(&visible).all(|(&s, &v)| s == Sight::of(v) as u8);
     let pieces_fit = indptr.first() == Some(&0)
         && indptr.windows(2).all(|w| w[0] <= w[1])
         && indptr.last().is_some_and(|&e| e as usize == d.len() && d.len() == m.len() && d.len() == f.len());
     if !same || !pieces_fit || receiver.iter().chain(&source).any(|&id| id as usize >= nodes) {
-        return Err(Why("/kernel/hierarchy/links: the links' arrays disagree or name nodes beyond the tree".into()));
+        return Err(Why("/kernel/hierarchy/links: the links' arrays disagree (in length, or a sight not the class of its visible fraction) or name nodes beyond the tree".into()));
     }
-    let sight_of = |s: u8| match s {
-        0 => Sight::Clear,
-        1 => Sight::Partial,
-        _ => Sight::Occluded,
-    };
     let links = (0..l)
         .map(|i| {
-            let (a, b) = (indptr[i] as usize, indptr[i + 1] as usize);
-            Link {
-                receiver: receiver[i],
-                source: source[i],
-                factor: factor[i],
-                visible: visible[i],
-                bound: 0.0,
-                sight: sight_of(sight[i]),
-                pieces: (a..b).map(|j| (d[j], m[j], f[j])).collect(),
-            }
+            let pieces = (indptr[i] as usize..indptr[i + 1] as usize).map(|j| (d[j], m[j], f[j])).collect();
+            Link::new(receiver[i], source[i], factor[i], visible[i], 0.0, pieces)
         })
         .collect();
     Ok(Structure { skeleton: Skeleton { parent, level }, links })

@@ -59,7 +59,7 @@ impl Census {
                 }
                 _ => census.cluster_links += 1,
             }
-            match link.sight {
+            match link.sight() {
                 Sight::Clear => census.clear += 1,
                 _ => census.partial += 1,
             }

@@ -10,6 +10,7 @@
 //! cells alike (`μ_d/π` each), so it holds in any frame.
 
 use super::node::Node;
+use super::pieces::{Piece, Pieces};
 use super::sight::Sight;
 use crate::directions::DirectionSet;
 use crate::geometry::Patch;
@@ -20,10 +21,8 @@ use std::f64::consts::PI;
 /// Receiver cell of a piece that arrives from all directions alike (`μ_d/π` in cell `d`).
 pub const ALL_CELLS: u16 = u16::MAX;
 
-/// One piece of a factor: receiver cell `d`, source cell `m`, `F^{d,m}`.
-pub type Piece = (u16, u16, f64);
-
-/// A link from source `source` to receiver `receiver` (node ids).
+/// A link from source `source` to receiver `receiver` (node ids), in 32 bytes (issue 35,
+/// point 3; `docs/performance.md`): the fractions in f32, the factor in f64.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Link {
     /// The node that gathers, `p`.
@@ -32,15 +31,27 @@ pub struct Link {
     pub source: u32,
     /// `F_pq` with visibility, dimensionless.
     pub factor: f64,
-    /// The visible fraction in `factor`.
-    pub visible: f64,
+    /// The visible fraction in `factor`: free segments of 4 or 16, exact in f32.
+    pub visible: f32,
     /// What the oracle multiplies by `ρ_p L_q`: the variation of the factor over the two
-    /// nodes, its largest value where visibility is partial, a bound for a cluster.
-    pub bound: f64,
-    /// Whether the tested segments were all free, some blocked, or none tested.
-    pub sight: Sight,
+    /// nodes, its largest value where visibility is partial, a bound for a cluster (an
+    /// estimate: f32 is ample).
+    pub bound: f32,
     /// The factor by cells; empty means the one piece `(0, 0, factor)` (`K = 1`).
-    pub pieces: Vec<Piece>,
+    pub pieces: Pieces,
+}
+
+impl Link {
+    /// The link from `source` to `receiver` with its factor, visible fraction, oracle's
+    /// bound and cell pieces (the fractions rounded to f32).
+    pub fn new(receiver: u32, source: u32, factor: f64, visible: f64, bound: f64, pieces: Vec<Piece>) -> Link {
+        Link { receiver, source, factor, visible: visible as f32, bound: bound as f32, pieces: pieces.into() }
+    }
+
+    /// Whether the tested segments were all free, some blocked, or all blocked.
+    pub fn sight(&self) -> Sight {
+        Sight::of(f64::from(self.visible))
+    }
 }
 
 /// `F_pq` of two elements with visible fraction `visible`, and its cell pieces when binned.

@@ -18,7 +18,7 @@ impl Hierarchy {
         let (mut redo, mut keep) = (Vec::new(), Vec::with_capacity(self.links.len()));
         for link in std::mem::take(&mut self.links) {
             let (p, q) = (link.receiver, link.source);
-            let error = self.oracle.error(self.tree.node(p).albedo, link.bound, brightness[q as usize]);
+            let error = self.oracle.error(self.tree.node(p).albedo, f64::from(link.bound), brightness[q as usize]);
             match self.oracle.choose(&self.tree, p, q).filter(|_| self.oracle.refines(error)) {
                 Some(n) => redo.push((p, q, n)),
                 None => keep.push(link),

@@ -132,8 +132,8 @@ fn seen(tree: &Tree, visibility: &Visibility, links: &[Link], own: &[u32], a: u3
             match source.patch() {
                 Some(q) => {
                     let f: f64 = points.iter().map(|&x| point_factor(x, patch.normal, q)).sum();
-                    let visible = match a == id || f == 0.0 || straddles || link.sight == Sight::Clear {
-                        true => link.visible,
+                    let visible = match a == id || f == 0.0 || straddles || link.sight() == Sight::Clear {
+                        true => f64::from(link.visible),
                         false => {
                             visible_fraction(visibility, patch, &points, q, &polygon_points(&q.polygon), &mut blocker)
                                 .fraction
@@ -162,7 +162,9 @@ fn seen(tree: &Tree, visibility: &Visibility, links: &[Link], own: &[u32], a: u3
 fn fingerprint(links: &[Link], own: &[u32]) -> u64 {
     own.iter().fold(0u64, |sum, &l| {
         let link = &links[l as usize];
-        let h = u64::from(link.source) ^ link.factor.to_bits().rotate_left(21) ^ link.visible.to_bits().rotate_left(42);
+        let h = u64::from(link.source)
+            ^ link.factor.to_bits().rotate_left(21)
+            ^ u64::from(link.visible.to_bits()).rotate_left(42);
         sum.wrapping_add(mix(h))
     })
 }

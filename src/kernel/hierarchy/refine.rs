@@ -195,8 +195,7 @@ fn clusters(
     }
     let (factor, mut pieces) = cluster_factor(a, b, settings.directions);
     pieces.iter_mut().for_each(|piece| piece.2 *= visible);
-    let link = Link { receiver: p, source: q, factor: visible * factor, visible, bound, sight: seen, pieces };
-    (Outcome::Keep(link), rays)
+    (Outcome::Keep(Link::new(p, q, visible * factor, visible, bound, pieces)), rays)
 }
 
 /// False when `a` is an element and `b` lies wholly behind its plane.
@@ -245,7 +244,7 @@ fn elements(
     if factor <= 0.0 {
         return (Outcome::Drop, rays);
     }
-    (Outcome::Keep(Link { receiver: p, source: q, factor, visible, bound, sight: seen, pieces }), rays)
+    (Outcome::Keep(Link::new(p, q, factor, visible, bound, pieces)), rays)
 }
 
 /// True when some sample point of `a` is not in front of `b`'s plane: the segments from it

@@ -22,16 +22,23 @@ pub enum Sight {
     Occluded,
 }
 
+impl Sight {
+    /// The class of a visible fraction (all, some or none of the tested segments free): a
+    /// link keeps only its fraction.
+    pub fn of(fraction: f64) -> Sight {
+        match fraction {
+            f if f >= 1.0 => Sight::Clear,
+            f if f > 0.0 => Sight::Partial,
+            _ => Sight::Occluded,
+        }
+    }
+}
+
 /// The visible fraction of the pair `(a, b)`, its class and the rays it took.
 pub fn sight(visibility: &Visibility, a: &Patch, b: &Patch, blocker: &mut Blocker) -> (Sight, f64, usize) {
     let (pa, pb) = (polygon_points(&a.polygon), polygon_points(&b.polygon));
     let v = visible_fraction(visibility, a, &pa, b, &pb, blocker);
-    let class = match v.fraction {
-        f if f >= 1.0 => Sight::Clear,
-        f if f > 0.0 => Sight::Partial,
-        _ => Sight::Occluded,
-    };
-    (class, v.fraction, v.rays)
+    (Sight::of(v.fraction), v.fraction, v.rays)
 }
 
 /// Four points standing for node `id` as seen from `towards`, each with the face it lies
@@ -113,8 +120,8 @@ pub fn stand_in_sight(
     };
     let first: usize = (0..POINTS).map(|k| free(k, k, blocker)).sum();
     if first == 0 || first == POINTS {
-        let class = if first == 0 { Sight::Occluded } else { Sight::Clear };
-        return (class, (first / POINTS) as f64, POINTS);
+        let fraction = (first / POINTS) as f64;
+        return (Sight::of(fraction), fraction, POINTS);
     }
     let mut seen = first;
     for k in 0..POINTS {
@@ -123,5 +130,6 @@ pub fn stand_in_sight(
         }
     }
     let all = POINTS * POINTS;
-    (if seen == all { Sight::Clear } else { Sight::Partial }, seen as f64 / all as f64, all)
+    let fraction = seen as f64 / all as f64;
+    (Sight::of(fraction), fraction, all)
 }
