@@ -12,6 +12,7 @@
 use super::hierarchy::{Hierarchy, Pass, Stopped, Work};
 use super::operator::{Factored, Kernel};
 use crate::geometry::Mesh;
+use crate::progress::Progress;
 use std::time::Instant;
 
 /// The caller's solver: `x = b + K x` for the kernel and right-hand side `b`, with the
@@ -37,11 +38,12 @@ pub struct Refined {
 }
 
 /// Solves, refines and solves again until a pass refines nothing or `options.passes`
-/// passes ran.
+/// passes ran; `progress` hears of each pass's linking.
 pub fn refine_with_solves<E: From<Stopped>>(
     hierarchy: &mut Hierarchy,
     source: &mut SourceTerm<E>,
     solve: &mut Solver<E>,
+    progress: &dyn Progress,
 ) -> Result<Refined, E> {
     let mut before = Work::default();
     let mut l0 = source(hierarchy)?;
@@ -51,7 +53,7 @@ pub fn refine_with_solves<E: From<Stopped>>(
     let mut history = vec![record(hierarchy, &kernel, 0, 1, &mut before, start)];
     while history.len() < hierarchy.options().passes {
         let solved_on = hierarchy.tree().leaves();
-        let refined = hierarchy.refine(&x)?;
+        let refined = hierarchy.refine(&x, progress)?;
         if refined == 0 {
             break;
         }

@@ -108,10 +108,18 @@ pub fn build(
         memory_limit: d.memory_limit,
         ..Options::default()
     };
-    // The passes grow in cost as the links multiply: counted, with no time left forecast.
+    // The passes grow in cost as the links multiply: counted, with no time left forecast;
+    // the linking tells its rounds' pairs settled, a batch at a time, between the solves.
     progress.begin("refinement", 0);
-    let mut h =
-        Hierarchy::new(&roots, root_visibility, directions.clone(), blocks.clone(), hierarchy_options, &root_l0)?;
+    let mut h = Hierarchy::new(
+        &roots,
+        root_visibility,
+        directions.clone(),
+        blocks.clone(),
+        hierarchy_options,
+        &root_l0,
+        progress,
+    )?;
     let mut cache = LightCache { lights: Vec::new() };
     let mut pass = 0;
     let mut source = |h: &mut Hierarchy| -> Result<Vec<f64>, ModelError> {
@@ -128,6 +136,7 @@ pub fn build(
         light_seconds += start.elapsed().as_secs_f64();
         Ok(l0)
     };
+    let mut solves = 0;
     let mut solver = |kernel: &Kernel, b: &[f64], scale: f64| -> Result<Vec<f64>, ModelError> {
         let g = &kernel.g;
         let (what, bytes, nonzeros, patches, cells) =
@@ -137,10 +146,12 @@ pub fn build(
         let operator = Factored::new(kernel);
         let system = System { operator: &operator, explicit: None, areas: &[], l0: b };
         let (x, _) = solve(Method::Gmres { restart: 30 }, &system, &params, &mut |_, _| {})?;
-        progress.advance(1);
+        solves += 1;
+        progress.at(solves, "refinement: passes solved");
         Ok(x)
     };
-    let Refined { kernel, leaves: mesh, l0, history, .. } = refine_with_solves(&mut h, &mut source, &mut solver)?;
+    let Refined { kernel, leaves: mesh, l0, history, .. } =
+        refine_with_solves(&mut h, &mut source, &mut solver, progress)?;
     progress.end();
     let kernel_seconds = t.elapsed().as_secs_f64() - light_seconds;
     let direct = cache.on_leaves(&h, &sources, &directions);

@@ -7,6 +7,7 @@ use super::{hierarchy, measured_roots, options};
 use std::path::Path;
 use ugo::directions::DirectionSet;
 use ugo::kernel::hierarchy::{Link, Options, Sight, Stopped};
+use ugo::progress::Silent;
 use ugo::scene::Scene;
 
 #[test]
@@ -17,7 +18,7 @@ fn a_linking_beyond_the_memory_limit_is_refused_with_its_figures() {
     let l0: Vec<f64> = roots.emission.clone();
     let tight = Options { memory_limit: 1 << 20, ..options(1e-2, 0.05) };
     let refused =
-        ugo::kernel::hierarchy::Hierarchy::new(&roots, visibility, DirectionSet::single(), blocks, tight, &l0);
+        ugo::kernel::hierarchy::Hierarchy::new(&roots, visibility, DirectionSet::single(), blocks, tight, &l0, &Silent);
     let Err(Stopped::TooLarge(too_large)) = refused else { panic!("a 1 MiB limit is not refused") };
     let message = too_large.to_string();
     eprintln!("{message}");

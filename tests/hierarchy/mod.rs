@@ -40,7 +40,7 @@ pub fn hierarchy(scene: &Scene, root_size: f64, directions: DirectionSet, option
     let blocks = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
     let k = directions.len();
     let l0: Vec<f64> = roots.emission.iter().flat_map(|&e| std::iter::repeat_n(e, k)).collect();
-    Hierarchy::new(&roots, visibility, directions, blocks, options, &l0).expect("the linking fits in memory")
+    Hierarchy::new(&roots, visibility, directions, blocks, options, &l0, &Silent).expect("the linking fits in memory")
 }
 
 /// The roots of `scene` meshed at `root_size` (m) with their exposed areas, and their ray
@@ -71,11 +71,13 @@ pub fn solver(method: Method) -> impl FnMut(&Kernel, &[f64], f64) -> Result<Vec<
 pub fn solved(h: &mut Hierarchy, method: Method) -> (Vec<f64>, Kernel) {
     type Failure = Box<dyn std::error::Error + Send + Sync>;
     let mut solve = solver(method);
-    let Refined { x, kernel, history, .. } =
-        refine_with_solves(h, &mut |h| Ok::<_, Failure>(h.emission()), &mut |k: &Kernel, b: &[f64], s: f64| {
-            solve(k, b, s).map_err(Failure::from)
-        })
-        .expect("the solve converges");
+    let Refined { x, kernel, history, .. } = refine_with_solves(
+        h,
+        &mut |h| Ok::<_, Failure>(h.emission()),
+        &mut |k: &Kernel, b: &[f64], s: f64| solve(k, b, s).map_err(Failure::from),
+        &Silent,
+    )
+    .expect("the solve converges");
     eprintln!("passes: {history:?}");
     (x, kernel)
 }

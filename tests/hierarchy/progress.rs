@@ -1,6 +1,7 @@
 //! The hierarchy's build tells its stages: the direct light on the roots (the daylit
 //! office's window on every root; the building floor's 29 windows made it minutes of
-//! silence) is announced with the number of roots and advances once per root.
+//! silence) is announced with the number of roots and advances once per root; the linking
+//! (the building's first pass: nine minutes without a line) tells the pairs it settles.
 
 use std::path::Path;
 use std::sync::Mutex;
@@ -8,9 +9,10 @@ use ugo::model::Model;
 use ugo::progress::Progress;
 use ugo::scene::{Hierarchical, KernelKind, Scene};
 
-/// Each stage begun, with its announced total and the units it advanced.
+/// Each stage begun, with its announced total and the units it advanced; and every
+/// position told, with its message.
 #[derive(Default)]
-struct Stages(Mutex<Vec<(String, u64, u64)>>);
+struct Stages(Mutex<Vec<(String, u64, u64)>>, Mutex<Vec<(u64, String)>>);
 
 impl Progress for Stages {
     fn begin(&self, what: &str, total: u64) {
@@ -19,7 +21,9 @@ impl Progress for Stages {
     fn advance(&self, done: u64) {
         self.0.lock().unwrap().last_mut().expect("a stage begun").2 += done;
     }
-    fn at(&self, _: u64, _: &str) {}
+    fn at(&self, position: u64, message: &str) {
+        self.1.lock().unwrap().push((position, message.to_string()));
+    }
     fn end(&self) {}
 }
 
@@ -35,4 +39,22 @@ fn the_direct_light_on_the_roots_advances_root_by_root() {
     let seed = stages.iter().find(|s| s.0 == "direct light on the roots").expect("the stage is announced");
     assert!(roots > 10, "{roots} roots");
     assert_eq!((seed.1, seed.2), (roots, roots), "announced and advanced per root");
+}
+
+#[test]
+fn the_linking_tells_the_pairs_it_settles_round_by_round() {
+    let mut scene = Scene::load(Path::new("cases/office.toml")).unwrap();
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 1.0, link_tolerance: 1e-1 });
+    scene.discretization.patch_size = 0.5;
+    let stages = Stages::default();
+    let model = Model::build(&scene, &stages).expect("fits in memory");
+    let told = stages.1.into_inner().unwrap();
+    let history = &model.hierarchy.as_ref().expect("hierarchical").history;
+    let linking: Vec<&(u64, String)> = told.iter().filter(|(_, m)| m.starts_with("linking, round ")).collect();
+    assert!(linking.len() >= history.len(), "{} linking reports for {} passes", linking.len(), history.len());
+    let solved: Vec<u64> = told.iter().filter(|(_, m)| m == "refinement: passes solved").map(|t| t.0).collect();
+    assert_eq!(solved, (1..=history.len() as u64).collect::<Vec<_>>(), "one report per pass solved");
+    let first_pass = told.iter().take_while(|(_, m)| m.starts_with("linking, round "));
+    let settled: Vec<u64> = first_pass.map(|t| t.0).collect();
+    assert!(settled.len() > 1 && settled.windows(2).all(|w| w[0] < w[1]), "pairs settled grow: {settled:?}");
 }

@@ -18,6 +18,7 @@ use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::material::Block;
+use crate::progress::Progress;
 use crate::transfer::exposure::Backs;
 use crate::visibility::Visibility;
 use std::time::Instant;
@@ -48,7 +49,8 @@ impl Hierarchy {
     /// `visibility`, the roots' ray caster), with one block per material; `l0` is the source term on the roots (`x[root·K + k]`,
     /// cd/m²), which with the ambient term of its interreflections is the first guess of
     /// the field. Links start from the top cluster's self-link; the linking stops with the
-    /// reason on a signal or beyond `options.memory_limit`.
+    /// reason on a signal or beyond `options.memory_limit`; `progress` hears of the pairs
+    /// settled.
     pub fn new(
         roots: &Mesh,
         visibility: Visibility,
@@ -56,6 +58,7 @@ impl Hierarchy {
         blocks: Vec<Block>,
         options: Options,
         l0: &[f64],
+        progress: &dyn Progress,
     ) -> Result<Hierarchy, Stopped> {
         let start = Instant::now();
         let albedo: Vec<f64> = blocks.iter().map(|b| largest_albedo(b, &directions)).collect();
@@ -81,7 +84,7 @@ impl Hierarchy {
         let mut brightness = h.brightness(&roots, &guess);
         let top = h.tree.top();
         let candidates = if top == NONE { Vec::new() } else { vec![(top, top)] };
-        h.refine_candidates(&mut brightness, candidates)?;
+        h.refine_candidates(&mut brightness, candidates, progress)?;
         h.work.seconds += start.elapsed().as_secs_f64();
         Ok(h)
     }

@@ -4,10 +4,11 @@
 //! applied on the leaves by pull, gather and push. The uniform kernel is the special case
 //! of all links between leaves.
 //!
-//! Use: `Hierarchy::new(&roots, directions, blocks, options, l0)` links the roots (a coarse
-//! `Mesh`, with its source term); `h.operator()` is `G` on the leaves, `h.leaf_mesh()` the
-//! leaves' mesh, `h.split_leaves(varies)` splits them along the luminaires' shadows,
-//! `h.refine(x)` refines again with a solved field. `K = B·G` over it, and the passes
+//! Use: `Hierarchy::new(&roots, visibility, directions, blocks, options, l0, progress)`
+//! links the roots (a coarse `Mesh`, with its source term); `h.operator()` is `G` on the
+//! leaves, `h.leaf_mesh()` the leaves' mesh, `h.split_leaves(varies)` splits them along the
+//! luminaires' shadows, `h.refine(x, progress)` refines again with a solved field (`progress`
+//! hears of the pairs settled). `K = B·G` over it, and the passes
 //! iterated with solves, are `crate::kernel::{Kernel, refine_with_solves}`: this module
 //! knows neither the material blocks' product nor the uniform kernel.
 

@@ -4,13 +4,15 @@
 use super::kernel::{Hierarchy, cell_shares};
 use super::node::NONE;
 use super::refine::{Settings, Stopped, children_pairs, refine, split_node};
+use crate::progress::Progress;
 use std::time::Instant;
 
 impl Hierarchy {
     /// One more pass with the field `x` of the current leaves (the order of
     /// [`Hierarchy::operator`]): every link the oracle now rejects is refined. Returns the
-    /// number of links refined (0: the hierarchy is final for this field), or why it stopped.
-    pub fn refine(&mut self, x: &[f64]) -> Result<usize, Stopped> {
+    /// number of links refined (0: the hierarchy is final for this field), or why it stopped;
+    /// `progress` hears of the pairs settled.
+    pub fn refine(&mut self, x: &[f64], progress: &dyn Progress) -> Result<usize, Stopped> {
         let start = Instant::now();
         let leaves = self.tree.leaves();
         self.oracle.epsilon = self.options.tolerance * self.mean_reflected(&leaves, x);
@@ -31,16 +33,18 @@ impl Hierarchy {
             split_node(&mut self.tree, &mut brightness, n, &|e| backs.exposed_area(visibility, e));
             children_pairs(&self.tree, p, q, n, &mut candidates);
         }
-        self.refine_candidates(&mut brightness, candidates)?;
+        self.refine_candidates(&mut brightness, candidates, progress)?;
         self.work.seconds += start.elapsed().as_secs_f64();
         Ok(redo.len())
     }
 
-    /// Links the `candidates` pairs where the oracle accepts them, refining the rest.
+    /// Links the `candidates` pairs where the oracle accepts them, refining the rest;
+    /// `progress` hears of the pairs settled.
     pub(super) fn refine_candidates(
         &mut self,
         brightness: &mut Vec<f64>,
         candidates: Vec<(u32, u32)>,
+        progress: &dyn Progress,
     ) -> Result<(), Stopped> {
         let settings = Settings {
             visibility: &self.visibility,
@@ -49,6 +53,7 @@ impl Hierarchy {
             quadrature: &self.options.quadrature,
             directions: &self.directions,
             memory_limit: self.options.memory_limit,
+            progress,
         };
         self.work.rays += refine(&mut self.tree, brightness, &settings, candidates, &mut self.links)?;
         Ok(())

@@ -17,6 +17,7 @@ use crate::geometry::{Patch, facing};
 use crate::interrupt::Interrupted;
 use crate::kernel::TooLarge;
 use crate::kernel::memory::Footprint;
+use crate::progress::Progress;
 use crate::transfer::exposure::Backs;
 use crate::transfer::form_factor::{Binning, Quadrature};
 use crate::transfer::occlusion::polygon_points;
@@ -37,7 +38,12 @@ pub struct Settings<'a> {
     pub directions: &'a DirectionSet,
     /// Bytes the refinement may take.
     pub memory_limit: u64,
+    /// Hears of the pairs settled, a batch at a time.
+    pub progress: &'a dyn Progress,
 }
+
+/// Candidate pairs evaluated between two progress reports.
+const BATCH: usize = 1 << 16;
 
 /// Why refinement stopped before every candidate was settled.
 #[derive(Debug, thiserror::Error)]
@@ -67,7 +73,7 @@ pub fn refine(
     links: &mut Vec<Link>,
 ) -> Result<usize, Stopped> {
     let binning = (settings.directions.len() > 1).then(|| Binning::new(settings.directions));
-    let mut rays = 0;
+    let (mut rays, mut round, mut settled) = (0, 0, 0);
     while !candidates.is_empty() {
         let (held, pending) = (links.len(), candidates.len());
         let stop = || {
@@ -77,14 +83,19 @@ pub fn refine(
         };
         stop()?;
         footprint(tree, held, pending, settings.directions.len()).check(settings.memory_limit)?;
-        // A round can take seconds: a signal skips the rest of its pairs, and ends it.
-        let outcomes: Vec<(Outcome, usize)> = candidates
-            .par_iter()
-            .map(|&(p, q)| match crate::interrupt::asked() {
+        round += 1;
+        // A round can take minutes: a signal skips the rest of its pairs, and ends it; the
+        // pairs settled are told a batch at a time.
+        let mut outcomes: Vec<(Outcome, usize)> = Vec::with_capacity(pending);
+        for batch in candidates.chunks(BATCH) {
+            outcomes.par_extend(batch.par_iter().map(|&(p, q)| match crate::interrupt::asked() {
                 true => (Outcome::Drop, 0),
                 false => evaluate(tree, brightness, settings, binning.as_ref(), p, q),
-            })
-            .collect();
+            }));
+            settled += batch.len() as u64;
+            let what = format!("linking, round {round} ({pending} pairs, {held} links before it): pairs settled");
+            settings.progress.at(settled, &what);
+        }
         stop()?;
         let mut split = Vec::new();
         for ((outcome, r), &(p, q)) in outcomes.into_iter().zip(&candidates) {
