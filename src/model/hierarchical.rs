@@ -38,6 +38,9 @@ pub const REFINEMENT_RESIDUAL: f64 = 1e-5;
 /// light, as on a patch (`luminaire::patch`).
 const SEED: Cuts = Cuts { eta: OPENING_ETA, shadow_share: SHADOW_SHARE };
 
+/// New leaves whose direct light is integrated between two progress reports.
+const LEAF_BATCH: usize = 4096;
+
 /// The luminaires' light on every node that has been a leaf (by node id): computed once
 /// per element, with the roots' ray caster (the elements keep their root's face).
 struct LightCache {
@@ -46,15 +49,29 @@ struct LightCache {
 
 impl LightCache {
     /// The direct light on the current leaves of `h`, in unknown order, computing it only
-    /// for the leaves new since the last call.
-    fn on_leaves(&mut self, h: &Hierarchy, sources: &[Source], directions: &DirectionSet) -> DirectLight {
+    /// for the leaves new since the last call; `progress` hears of them [`LEAF_BATCH`] at a
+    /// time.
+    fn on_leaves(
+        &mut self,
+        h: &Hierarchy,
+        sources: &[Source],
+        directions: &DirectionSet,
+        progress: &dyn Progress,
+    ) -> DirectLight {
         let leaves = h.tree().leaves();
         self.lights.resize(h.tree().len(), None);
         let new: Vec<u32> = leaves.iter().copied().filter(|&id| self.lights[id as usize].is_none()).collect();
         let patches: Vec<Patch> = new.iter().filter_map(|&id| h.tree().node(id).patch().copied()).collect();
         let least: Vec<f64> = new.iter().map(|&id| worth_cutting(h, id)).collect();
-        for (id, light) in new.iter().zip(patch_lights(sources, &patches, h.visibility(), directions, &least, &[])) {
-            self.lights[*id as usize] = Some(light);
+        let what = format!("direct light on {} new leaves: leaves done", new.len());
+        let batches = new.chunks(LEAF_BATCH).zip(patches.chunks(LEAF_BATCH)).zip(least.chunks(LEAF_BATCH));
+        let mut done = 0;
+        for ((ids, patches), least) in batches {
+            for (id, light) in ids.iter().zip(patch_lights(sources, patches, h.visibility(), directions, least, &[])) {
+                self.lights[*id as usize] = Some(light);
+            }
+            done += ids.len() as u64;
+            progress.at(done, &what);
         }
         let mut direct = DirectLight::none(sources);
         leaves.iter().filter_map(|&id| self.lights[id as usize].as_ref()).for_each(|l| direct.add(l));
@@ -129,7 +146,7 @@ pub fn build(
         h.split_leaves(&|visibility, patch, albedo, epsilon| {
             varies(&sources, &windows, visibility, patch, albedo, epsilon)
         });
-        let direct = cache.on_leaves(h, &sources, &directions);
+        let direct = cache.on_leaves(h, &sources, &directions, progress);
         let leaves = h.leaf_mesh();
         let l0 = source_term(&blocks, &leaves, &direct, k);
         check_source(scene, &leaves, &direct, &l0, k)?;
@@ -154,7 +171,7 @@ pub fn build(
         refine_with_solves(&mut h, &mut source, &mut solver, progress)?;
     progress.end();
     let kernel_seconds = t.elapsed().as_secs_f64() - light_seconds;
-    let direct = cache.on_leaves(&h, &sources, &directions);
+    let direct = cache.on_leaves(&h, &sources, &directions, progress);
     let t_bvh = Instant::now();
     let visibility = Visibility::build_for(&scene.surfaces, &mesh);
     let bvh_seconds = t_bvh.elapsed().as_secs_f64();

@@ -1,7 +1,8 @@
 //! The hierarchy's build tells its stages: the direct light on the roots (the daylit
 //! office's window on every root; the building floor's 29 windows made it minutes of
 //! silence) is announced with the number of roots and advances once per root; the linking
-//! (the building's first pass: nine minutes without a line) tells the pairs it settles.
+//! (the building's first pass: nine minutes without a line) tells the pairs it settles, and
+//! the leaves' direct light the leaves done.
 
 use std::path::Path;
 use std::sync::Mutex;
@@ -57,4 +58,7 @@ fn the_linking_tells_the_pairs_it_settles_round_by_round() {
     let first_pass = told.iter().take_while(|(_, m)| m.starts_with("linking, round "));
     let settled: Vec<u64> = first_pass.map(|t| t.0).collect();
     assert!(settled.len() > 1 && settled.windows(2).all(|w| w[0] < w[1]), "pairs settled grow: {settled:?}");
+    let light = told.iter().filter(|(_, m)| m.starts_with("direct light on ")).collect::<Vec<_>>();
+    let (last, message) = light.last().expect("the leaves' direct light is told");
+    assert_eq!(message, &format!("direct light on {last} new leaves: leaves done"), "every new leaf counted");
 }
