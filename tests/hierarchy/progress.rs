@@ -28,13 +28,19 @@ impl Progress for Stages {
     fn end(&self) {}
 }
 
-#[test]
-fn the_direct_light_on_the_roots_advances_root_by_root() {
-    let mut scene = Scene::load(Path::new("cases/daylit-office.toml")).unwrap();
+/// `case` built hierarchically (roots of 1 m, links to 0.1, leaves of 0.5 m), with what it told.
+fn built(case: &str) -> (Model, Stages) {
+    let mut scene = Scene::load(Path::new(case)).unwrap();
     scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 1.0, link_tolerance: 1e-1 });
     scene.discretization.patch_size = 0.5;
     let stages = Stages::default();
     let model = Model::build(&scene, &stages).expect("fits in memory");
+    (model, stages)
+}
+
+#[test]
+fn the_direct_light_on_the_roots_advances_root_by_root() {
+    let (model, stages) = built("cases/daylit-office.toml");
     let stages = stages.0.into_inner().unwrap();
     let roots = model.hierarchy.as_ref().expect("hierarchical").roots as u64;
     let seed = stages.iter().find(|s| s.0 == "direct light on the roots").expect("the stage is announced");
@@ -44,11 +50,7 @@ fn the_direct_light_on_the_roots_advances_root_by_root() {
 
 #[test]
 fn the_linking_tells_the_pairs_it_settles_round_by_round() {
-    let mut scene = Scene::load(Path::new("cases/office.toml")).unwrap();
-    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 1.0, link_tolerance: 1e-1 });
-    scene.discretization.patch_size = 0.5;
-    let stages = Stages::default();
-    let model = Model::build(&scene, &stages).expect("fits in memory");
+    let (model, stages) = built("cases/office.toml");
     let told = stages.1.into_inner().unwrap();
     let history = &model.hierarchy.as_ref().expect("hierarchical").history;
     let linking: Vec<&(u64, String)> = told.iter().filter(|(_, m)| m.starts_with("linking, round ")).collect();
