@@ -25,7 +25,7 @@ pub fn seen_share(opening: &Opening, p: DVec3, n: DVec3, sight: &dyn Sight) -> f
     }
     let quarters = opening.polygon.split();
     let points = quarters.iter().flat_map(polygon_points).filter(|x| (*x - p).dot(n) > 0.0);
-    let hidden = sight.hidden(&opening.polygon);
+    let hidden = sight.hidden(&opening.polygon, &mut 0);
     let (seen, all) = points.fold((0, 0), |(seen, all), x| (seen + usize::from(!hidden && sight.sees(x)), all + 1));
     if all == 0 { 1.0 } else { seen as f64 / all as f64 }
 }

@@ -105,10 +105,10 @@ pub fn through_window(
     let smallest = 1e-12 * size * size;
     // the whole opening first: a shaft through a part cut from it is tested more loosely
     let clear = sight.clear(window);
-    if !clear && sight.hidden(window) {
-        return 0;
-    }
     let mut rays = 0;
+    if !clear && sight.hidden(window, &mut rays) {
+        return rays;
+    }
     for_each_part(window, p, n, &mut |piece, component| {
         let mut view = View { sky, opening, p, n, sight, least, component, visit: &mut *visit, rays: 0, smallest, eta };
         view.piece(piece, 0, clear);
@@ -185,7 +185,7 @@ impl View<'_, '_> {
             return;
         }
         let clear = clear || self.sight.clear(piece);
-        if !clear && self.sight.hidden(piece) {
+        if !clear && self.sight.hidden(piece, &mut self.rays) {
             return;
         }
         if depth < MAX_DEPTH && piece.diameter() > self.eta * piece.distance_to(self.p) {

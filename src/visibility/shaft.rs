@@ -126,8 +126,8 @@ pub trait Sight {
     /// True when no face can stop a ray from the point through `piece`; false when one may.
     fn clear(&self, piece: &ConvexPolygon) -> bool;
     /// True when one opaque piece stops every ray from the point through `piece`; false
-    /// when none is known to.
-    fn hidden(&self, piece: &ConvexPolygon) -> bool;
+    /// when none is known to. Adds the rays it traced to `rays`.
+    fn hidden(&self, piece: &ConvexPolygon, rays: &mut usize) -> bool;
 }
 
 /// A bare test `sees(x)`: no piece is known to be clear without its rays.
@@ -140,7 +140,7 @@ impl<F: Fn(DVec3) -> bool> Sight for F {
         false
     }
 
-    fn hidden(&self, _: &ConvexPolygon) -> bool {
+    fn hidden(&self, _: &ConvexPolygon, _: &mut usize) -> bool {
         false
     }
 }
@@ -181,7 +181,7 @@ impl Sight for SightFrom<'_> {
 
     /// The last occluder first; else the occluder of the face that stops the ray through
     /// the piece's centroid, if one does.
-    fn hidden(&self, piece: &ConvexPolygon) -> bool {
+    fn hidden(&self, piece: &ConvexPolygon, rays: &mut usize) -> bool {
         let Some(occluders) = &self.visibility.occluders else {
             return false;
         };
@@ -189,6 +189,7 @@ impl Sight for SightFrom<'_> {
         if self.occluder.get().is_some_and(|o| hides(o, self.p, piece, margin)) {
             return true;
         }
+        *rays += 1;
         if self.sees(piece.centroid()) {
             return false;
         }

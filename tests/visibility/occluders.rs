@@ -50,7 +50,7 @@ fn an_opening_an_occluder_hides_lets_no_ray_out() {
             pairs += 1;
             let sight = SightFrom::new(&v, x, p.normal, p.face);
             for (k, piece) in std::iter::once(*window).chain(window.split()).enumerate() {
-                if sight.hidden(&piece) {
+                if sight.hidden(&piece, &mut 0) {
                     assert!(every_ray_blocked(&v, x, p.face, &piece), "piece {k} of an opening from {x} got out");
                     hidden += usize::from(k == 0);
                     pieces += 1;
