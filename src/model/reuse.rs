@@ -1,8 +1,8 @@
 //! The model around a stored kernel (issue 15 and issue 36, `docs/kernel-file.md`): `G` as
 //! read from a kernel file instead of assembled or refined, the blocks `B` and the
 //! luminaires' direct light `D` as stored or, when only they changed, rebuilt from the
-//! case, and `L0 = L_e + B·D` (`docs/design.md` §2, §3). The uniform kernel's mesh and ray
-//! caster are rebuilt from the case (cheap); a hierarchy's leaves are the file's
+//! case, and `L0 = L_e + B·D` (`docs/design.md` §2, §3). The uniform kernel's mesh, its ray
+//! caster and its patches' exposed areas are rebuilt from the case (cheap); a hierarchy's leaves are the file's
 //! (`StoredHierarchy`), with the case's materials and emission, and their ray caster is
 //! built on them as after a refinement.
 
@@ -14,7 +14,9 @@ use crate::kernel::hierarchy::{Census, Structure};
 use crate::kernel::{Kernel, Transport};
 use crate::luminaire::{DirectLight, Source, direct_light};
 use crate::material::Block;
+use crate::progress::Silent;
 use crate::scene::{Hierarchical, KernelKind, Scene};
+use crate::transfer::exposure::measure_exposure;
 use crate::visibility::{Faces, Visibility};
 use std::time::Instant;
 use thiserror::Error;
@@ -91,7 +93,7 @@ impl Model {
             KernelKind::Hierarchical(h) => Some(h),
             KernelKind::Uniform => None,
         };
-        let mesh = match (&stored.hierarchy, hierarchical) {
+        let mut mesh = match (&stored.hierarchy, hierarchical) {
             (Some(h), Some(parameters)) => leaf_mesh(scene, parameters.root_size, &h.leaves)?,
             (None, None) => Mesh::build(&scene.surfaces, scene.discretization.patch_size),
             (Some(_), None) => return Err(NotThisMesh::Kind { file: "hierarchical", case: "uniform" }),
@@ -105,6 +107,11 @@ impl Model {
         let mesh_seconds = t.elapsed().as_secs_f64();
         let t = Instant::now();
         let visibility = Visibility::build_for(&scene.surfaces, &mesh);
+        if stored.hierarchy.is_none() {
+            // the uniform mesh's exposed areas, as `uniform::build` measures them (the
+            // hierarchy's leaves keep the file's)
+            measure_exposure(&mut mesh, &visibility, &Silent);
+        }
         let bvh_seconds = t.elapsed().as_secs_f64();
         let blocks =
             stored.blocks.unwrap_or_else(|| scene.materials.iter().map(|m| m.model.block(&directions)).collect());
