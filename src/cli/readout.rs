@@ -1,8 +1,10 @@
 //! `ugo readout OUT.h5 [CASE] [-o NEW.h5]`: probes, grids, observers, cameras and light
 //! scenes of an edited case read on the field a solve stored (`ugo::study::read_out_solved`,
 //! `docs/light-scenes.md`, "After the solve: ugo readout"): no assembly, no refinement, no
-//! solve. Without `-o` the solution file itself is replaced, whole, when the new one is
-//! complete; the CSV and plan files are written beside the output as `ugo solve` writes them.
+//! solve; only what the edit changed is read. Without `-o` the solution file itself is
+//! replaced, whole, when the new one is complete; the CSV and plan files of what was read
+//! are written beside the output as `ugo solve` writes them (those of what was kept stay
+//! where the solve wrote them).
 
 use super::options::Discretize;
 use super::solve::{GridFiles, print_probes, write_grids};
@@ -13,6 +15,7 @@ use std::time::Instant;
 use ugo::io::{OutputLock, read_solution, write_probes_csv, write_readout};
 use ugo::readout::grid::GridReading;
 use ugo::readout::grid_error::GridErrorBars;
+use ugo::readout::readings::Readings;
 use ugo::scene::{LightScene, Scene};
 use ugo::study;
 
@@ -30,26 +33,43 @@ pub fn run(file: &Path, case: Option<&Path>, d: &Discretize, output: Option<Path
     let seconds = start.elapsed().as_secs_f64();
     write_readout(file, &output, &scene, &r).with_context(|| format!("writing {}", output.display()))?;
     println!("ugo readout: {} read on the field of {} in {seconds:.3} s", scene.path.display(), file.display());
-    print_probes(&r.readings.probes);
-    if !r.readings.observers.is_empty() {
-        super::glare::report(&r.readings.observers, &r.readings.grids, "  ");
+    if !r.traced.is_empty() {
+        let groups = r.traced.join(", ");
+        println!("  note: {} holds no /light_groups/direct (an older solve): traced again {groups}", file.display());
     }
     let names: Vec<String> = scene.surfaces.iter().map(|s| s.name.clone()).collect();
     let files = GridFiles { sources: &r.model.sources, mesh: &r.model.mesh, surfaces: &names };
-    let stem = output.with_extension("").display().to_string();
-    write_grids(&r.readings.grids, &r.readings.grid_errors, &stem, &files, None)?;
-    if !r.readings.probes.is_empty() {
-        let csv = super::beside(&output, "-probes.csv");
-        write_probes_csv(&csv, &r.readings.probes, None)?;
-        println!("  probes             {}", csv.display());
+    match &r.readings {
+        Some(readings) => own_readings(readings, &output, &files)?,
+        None => println!("  probes, grids, observers as stored (unchanged)"),
     }
     let lit = |grids: &[GridReading], errors: &[GridErrorBars], stem: &str, light_scene: &LightScene| {
         let dimmed = study::dimmed(&scene, &r.model.sources, light_scene);
         write_grids(grids, errors, stem, &GridFiles { sources: &dimmed, ..files }, None)
     };
     let groups: Vec<&str> = scene.lighting.groups.iter().map(|g| g.name.as_str()).collect();
-    super::light_scenes::report_scenes(&groups, &r.light_scenes, &scene.lighting.scenes, &output, &lit)?;
+    let read: Vec<LightScene> = scene.lighting.scenes.iter().filter(|s| !r.kept.contains(&s.name)).cloned().collect();
+    super::light_scenes::report_scenes(&groups, &r.light_scenes, &read, &output, &lit)?;
+    for name in &r.kept {
+        println!("  light scene \"{name}\" as stored (its factors and the readout tables unchanged)");
+    }
     println!("  written            {}", output.display());
+    Ok(())
+}
+
+/// Prints the case's own field's readings and writes their files beside `output`.
+fn own_readings(readings: &Readings, output: &Path, files: &GridFiles) -> Result<()> {
+    print_probes(&readings.probes);
+    if !readings.observers.is_empty() {
+        super::glare::report(&readings.observers, &readings.grids, "  ");
+    }
+    let stem = output.with_extension("").display().to_string();
+    write_grids(&readings.grids, &readings.grid_errors, &stem, files, None)?;
+    if !readings.probes.is_empty() {
+        let csv = super::beside(output, "-probes.csv");
+        write_probes_csv(&csv, &readings.probes, None)?;
+        println!("  probes             {}", csv.display());
+    }
     Ok(())
 }
 

@@ -1,12 +1,15 @@
 //! The light scenes of a solve in its HDF5 file (`docs/design.md` §8), and one of them read
 //! back for `ugo render --light-scene NAME`.
 //!
-//! `/light_groups/{name (G), luminance (G×N×K×1), emission (G×N), scene_names (S),
-//! factors (S×G), applications, iterations, start_residual, residual, seconds (G)}`: each
-//! group's field alone (cd/m²; any light scene is `Σ_g factors[s, g] · luminance[g]`), the
-//! patches' own emission of its surfaces, and what its solve cost (kernel applications,
-//! the relative residual of the projected start and of the solution, s); attribute
-//! `maintenance_factor`. `/light_scenes/<name>/field/{luminance,emission,source,
+//! `/light_groups/{name (G), luminance (G×N×K×1), emission (G×N), direct (G×N×K×1),
+//! intercepted (G×L), scene_names (S), factors (S×G), applications, iterations,
+//! start_residual, residual, seconds (G)}`: each group's field alone (cd/m²; any light
+//! scene is `Σ_g factors[s, g] · luminance[g]`), the patches' own emission of its surfaces,
+//! its luminaires' direct light `D_g` on the patches (in the units of `G x`) and the flux
+//! each of the L luminaires lands (lm), and what its solve cost (kernel applications, the
+//! relative residual of the projected start and of the solution, s); attribute
+//! `maintenance_factor`. Files solved before `direct` was stored have neither it nor
+//! `intercepted` (`ugo readout` traces the groups' light again). `/light_scenes/<name>/field/{luminance,emission,source,
 //! illuminance,direct_illuminance}`, `/light_scenes/<name>/probes/…` and
 //! `/light_scenes/<name>/grids/<grid>/…` as `/field`, `/probes` and `/grids` of the file,
 //! for the light scene; its attributes: `factors` (G) and `flux_emitted`, `flux_absorbed`,
@@ -17,6 +20,7 @@ use super::dataset::{dataset, strings};
 use super::observer_group::write_observers;
 use super::read::StoredSolution;
 use super::readout_group::{write_grids, write_probes};
+use crate::luminaire::DirectLight;
 use crate::model::Model;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
@@ -24,7 +28,7 @@ use crate::readout::grid::GridReading;
 use crate::readout::grid_error::GridErrorBars;
 use crate::readout::probe::ProbeReading;
 use crate::readout::ugr::UgrReading;
-use crate::scene::Scene;
+use crate::scene::{LightScene, Scene};
 use crate::solve::Successive;
 use hdf5::types::VarLenUnicode;
 use ndarray::{Array1, Array2, Array4};
@@ -44,6 +48,8 @@ pub struct GroupField {
     pub name: String,
     /// The emission of its surfaces per patch, cd/m².
     pub emission: Vec<f64>,
+    /// Its luminaires' direct light on the patches and the flux each luminaire lands.
+    pub direct: DirectLight,
     /// Its field and the record of its solve.
     pub solve: Successive,
 }
@@ -85,19 +91,18 @@ pub(super) fn write_light_scenes(
 ) -> hdf5::Result<()> {
     let g = file.create_group("light_groups")?;
     write_groups(&g, model, light)?;
-    write_factors(&g, &light.scenes)?;
+    write_factors(&g, &scene.lighting.scenes)?;
     g.new_attr::<f64>().create("maintenance_factor")?.write_scalar(&scene.lighting.maintenance_factor)?;
-    write_scenes(file, &light.scenes, model.mesh.len(), model.kernel.cells())
+    write_scenes(&file.create_group("light_scenes")?, &light.scenes, model.mesh.len(), model.kernel.cells())
 }
 
-/// `/light_scenes/<name>/…` of every light scene, on `n` patches of `k` cells.
-pub(super) fn write_scenes(file: &hdf5::File, scenes: &[LightSceneField], n: usize, k: usize) -> hdf5::Result<()> {
-    let group = file.create_group("light_scenes")?;
+/// `<name>/…` of every light scene in `group` (`/light_scenes`), on `n` patches of `k` cells.
+pub(super) fn write_scenes(group: &hdf5::Group, scenes: &[LightSceneField], n: usize, k: usize) -> hdf5::Result<()> {
     scenes.iter().try_for_each(|s| write_scene(&group.create_group(&s.name)?, s, n, k))
 }
 
 /// `/light_groups/{scene_names,factors}`: the light scenes and their factors per group.
-pub(super) fn write_factors(g: &hdf5::Group, scenes: &[LightSceneField]) -> hdf5::Result<()> {
+pub(super) fn write_factors(g: &hdf5::Group, scenes: &[LightScene]) -> hdf5::Result<()> {
     let count = scenes.first().map_or(0, |s| s.factors.len());
     strings(g, "scene_names", scenes.iter().map(|s| s.name.as_str()))?;
     dataset(g, "factors", &Array2::from_shape_fn((scenes.len(), count), |(s, a)| scenes[s].factors[a]))
@@ -109,6 +114,14 @@ fn write_groups(g: &hdf5::Group, model: &Model, light: &LightScenes) -> hdf5::Re
     let fields = Array4::from_shape_fn((count, n, k, 1), |(a, i, c, _)| light.groups[a].solve.x[i * k + c]);
     dataset(g, "luminance", &fields)?;
     dataset(g, "emission", &Array2::from_shape_fn((count, n), |(a, i)| light.groups[a].emission[i]))?;
+    let direct = Array4::from_shape_fn((count, n, k, 1), |(a, i, c, _)| light.groups[a].direct.arriving[i * k + c]);
+    dataset(g, "direct", &direct)?;
+    let luminaires = light.groups.first().map_or(0, |x| x.direct.intercepted.len());
+    dataset(
+        g,
+        "intercepted",
+        &Array2::from_shape_fn((count, luminaires), |(a, l)| light.groups[a].direct.intercepted[l]),
+    )?;
     let column = |f: fn(&Successive) -> f64| Array1::from_iter(light.groups.iter().map(|x| f(&x.solve)));
     dataset(g, "applications", &column(|s| s.applications as f64))?;
     dataset(g, "iterations", &column(|s| s.info.iterations as f64))?;
@@ -117,17 +130,21 @@ fn write_groups(g: &hdf5::Group, model: &Model, light: &LightScenes) -> hdf5::Re
     dataset(g, "seconds", &column(|s| s.info.seconds))
 }
 
-/// One group's field as a solve stored it (`/light_groups/{name,luminance}`).
+/// One group's field as a solve stored it (`/light_groups/{name,luminance,direct,intercepted}`).
 pub struct StoredGroup {
     /// The group's name.
     pub name: String,
     /// Its field alone, flat `x[i·K + k]`, cd/m².
     pub x: Vec<f64>,
+    /// Its luminaires' direct light (`arriving` and `intercepted`; no rays, no `least`), or
+    /// `None` in a file solved before it was stored.
+    pub direct: Option<DirectLight>,
 }
 
-/// The groups' fields of the solution file `path`, each `size` unknowns long; none when the
-/// case was solved without light scenes.
-pub fn read_light_groups(path: &Path, size: usize) -> Result<Vec<StoredGroup>, IoError> {
+/// The groups' fields of the solution file `path`, each `size` unknowns long, with their
+/// direct light on `luminaires` luminaires where the file holds it; none when the case was
+/// solved without light scenes.
+pub fn read_light_groups(path: &Path, size: usize, luminaires: usize) -> Result<Vec<StoredGroup>, IoError> {
     let (h5, bytes) = super::read::open(path)?;
     if !h5.link_exists("light_groups") {
         return Ok(Vec::new());
@@ -135,20 +152,41 @@ pub fn read_light_groups(path: &Path, size: usize) -> Result<Vec<StoredGroup>, I
     let file = super::read::File { h5: &h5, bytes };
     let why = |super::read::Why(why)| IoError::NotASolution { path: path.to_path_buf(), why };
     let names = file.raw::<VarLenUnicode>("light_groups/name").map_err(why)?;
-    let fields = file.raw::<f64>("light_groups/luminance").map_err(why)?;
-    if fields.len() != names.len() * size {
-        let what =
-            format!("/light_groups/luminance holds {} values, expected {} groups × {size}", fields.len(), names.len());
-        return Err(why(super::read::Why(what)));
+    let per_group = |what: &str, size: usize| per_group(&file, what, names.len(), size).map_err(why);
+    let fields = per_group("luminance", size)?;
+    let direct = match h5.link_exists("light_groups/direct") {
+        true => Some((per_group("direct", size)?, per_group("intercepted", luminaires)?)),
+        false => None,
+    };
+    let group = |(g, name): (usize, &VarLenUnicode)| StoredGroup {
+        name: name.as_str().to_string(),
+        x: fields[g].clone(),
+        direct: direct.as_ref().map(|(arriving, intercepted)| DirectLight {
+            arriving: arriving[g].clone(),
+            intercepted: intercepted[g].clone(),
+            rays: 0,
+            least: Vec::new(),
+        }),
+    };
+    Ok(names.iter().enumerate().map(group).collect())
+}
+
+/// `/light_groups/<what>` as `groups` rows of `size` finite values each.
+fn per_group(
+    file: &super::read::File,
+    what: &str,
+    groups: usize,
+    size: usize,
+) -> Result<Vec<Vec<f64>>, super::read::Why> {
+    let values = file.raw::<f64>(&format!("light_groups/{what}"))?;
+    if values.len() != groups * size {
+        let what = format!("/light_groups/{what} holds {} values, expected {groups} groups × {size}", values.len());
+        return Err(super::read::Why(what));
     }
-    if let Some(i) = fields.iter().position(|v| !v.is_finite()) {
-        return Err(why(super::read::Why(format!(
-            "/light_groups/luminance[{i}] = {}, not a finite luminance",
-            fields[i]
-        ))));
+    if let Some(i) = values.iter().position(|v| !v.is_finite()) {
+        return Err(super::read::Why(format!("/light_groups/{what}[{i}] = {}, not a finite value", values[i])));
     }
-    let chunks = fields.chunks(size.max(1));
-    Ok(names.iter().zip(chunks).map(|(n, x)| StoredGroup { name: n.as_str().to_string(), x: x.to_vec() }).collect())
+    Ok((0..groups).map(|g| values[g * size..(g + 1) * size].to_vec()).collect())
 }
 
 fn write_scene(g: &hdf5::Group, s: &LightSceneField, n: usize, k: usize) -> hdf5::Result<()> {

@@ -1,12 +1,14 @@
 //! The file `ugo readout` writes (issue 38, point 2; `docs/light-scenes.md`, "After the
-//! solve"): a copy of a solution file whose case, readouts and light scenes are replaced
-//! by those of the edited case — `/case_files` and the root attributes of the case,
-//! `/probes`, `/grids`, `/observers`, `/light_groups/{scene_names,factors}` and
-//! `/light_scenes` — laid out as `hdf5_file.rs` and `light_scene_group.rs` lay them out
-//! for a solve, so that `ugo report` and `ugo render --light-scene` read them alike. The
-//! field, the groups' fields, the mesh, the kernel and every record of the solve are kept as
-//! they were. The copy is written under a temporary name and renamed when complete
-//! (`atomic.rs`), so the input is never changed on error, even when it is also the output.
+//! solve"): a copy of a solution file whose case, readouts and light scenes are those of
+//! the edited case — `/case_files` and the root attributes of the case, `/probes`, `/grids`,
+//! `/observers` (when read again), `/light_groups/{scene_names,factors}` and
+//! `/light_scenes/<name>` of every new or changed light scene (those no longer in the case
+//! dropped, the unchanged ones kept) — laid out as `hdf5_file.rs` and `light_scene_group.rs`
+//! lay them out for a solve, so that `ugo report` and `ugo render --light-scene` read them
+//! alike. The field, the groups' fields, the mesh, the kernel and every record of the solve
+//! are kept as they were. The copy is written under a temporary name and renamed when
+//! complete (`atomic.rs`), so the input is never changed on error, even when it is also
+//! the output.
 
 use super::hdf5_file::{CASE_ATTRIBUTES, write_case};
 use super::light_scene_group::{write_factors, write_scenes};
@@ -22,10 +24,16 @@ use std::path::Path;
 pub struct Readout {
     /// The model rebuilt around the stored kernel, lit as the case.
     pub model: Model,
-    /// The case's own field read at the edited case's probes, grids and observers.
-    pub readings: Readings,
-    /// Every light scene of the edited case, a weighted sum of the stored groups' fields.
+    /// The case's own field read at the edited case's probes, grids and observers; `None`
+    /// when they are the stored ones, whose readings are kept.
+    pub readings: Option<Readings>,
+    /// Every new or changed light scene of the edited case, a weighted sum of the stored
+    /// groups' fields.
     pub light_scenes: Vec<LightSceneField>,
+    /// The light scenes kept as stored (their factors and the readout tables unchanged).
+    pub kept: Vec<String>,
+    /// The groups whose luminaires were traced again (a file without their direct light).
+    pub traced: Vec<String>,
 }
 
 /// Copies the solution file `input` to `output` (which may be `input`) with the case
@@ -42,21 +50,39 @@ fn rewrite(path: &Path, scene: &Scene, r: &Readout) -> hdf5::Result<()> {
     for name in CASE_ATTRIBUTES {
         file.delete_attr(name)?;
     }
-    for name in ["case_files", "probes", "observers", "grids", "light_scenes"] {
-        if file.link_exists(name) {
-            file.unlink(name)?;
+    unlink(&file, "case_files")?;
+    write_case(&file, scene)?;
+    if let Some(readings) = &r.readings {
+        ["probes", "observers", "grids"].into_iter().try_for_each(|name| unlink(&file, name))?;
+        write_probes(&file.create_group("probes")?, &readings.probes)?;
+        write_observers(&file.create_group("observers")?, &readings.observers)?;
+        write_grids(&file.create_group("grids")?, &readings.grids, &readings.grid_errors, &readings.observers)?;
+    }
+    if !file.link_exists("light_groups") {
+        unlink(&file, "light_scenes")?;
+        return file.close();
+    }
+    let groups = file.group("light_groups")?;
+    groups.unlink("scene_names")?;
+    groups.unlink("factors")?;
+    write_factors(&groups, &scene.lighting.scenes)?;
+    let scenes = match file.link_exists("light_scenes") {
+        true => file.group("light_scenes")?,
+        false => file.create_group("light_scenes")?,
+    };
+    for name in scenes.member_names()? {
+        if !r.kept.contains(&name) {
+            scenes.unlink(&name)?;
         }
     }
-    write_case(&file, scene)?;
-    write_probes(&file.create_group("probes")?, &r.readings.probes)?;
-    write_observers(&file.create_group("observers")?, &r.readings.observers)?;
-    write_grids(&file.create_group("grids")?, &r.readings.grids, &r.readings.grid_errors, &r.readings.observers)?;
-    if file.link_exists("light_groups") {
-        let groups = file.group("light_groups")?;
-        groups.unlink("scene_names")?;
-        groups.unlink("factors")?;
-        write_factors(&groups, &r.light_scenes)?;
-        write_scenes(&file, &r.light_scenes, r.model.mesh.len(), r.model.kernel.cells())?;
-    }
+    write_scenes(&scenes, &r.light_scenes, r.model.mesh.len(), r.model.kernel.cells())?;
     file.close()
+}
+
+/// Removes `name` from `file` when it is there.
+fn unlink(file: &hdf5::File, name: &str) -> hdf5::Result<()> {
+    match file.link_exists(name) {
+        true => file.unlink(name),
+        false => Ok(()),
+    }
 }

@@ -5,7 +5,7 @@
 
 use super::source::{SourceTerm, source_term_with};
 use super::system::Model;
-use crate::luminaire::{Source, direct_light};
+use crate::luminaire::{DirectLight, Source, direct_light};
 
 impl Model {
     /// The source term of the luminaires `luminaires` (indices into `sources`) and the
@@ -29,6 +29,13 @@ impl Model {
             intercepted[i] = flux;
         }
         direct.intercepted = intercepted;
+        self.source_term_from(surfaces, direct)
+    }
+
+    /// The source term of the surfaces `surfaces` (indices into the scene's surfaces) and
+    /// of luminaires whose direct light on the model's patches is `direct` (integrated
+    /// already, as [`Model::source_term_of`] integrates it, or as a solve stored it).
+    pub fn source_term_from(&self, surfaces: &[usize], direct: DirectLight) -> SourceTerm {
         let mut lit = vec![false; self.mesh.patches.iter().map(|p| p.surface as usize + 1).max().unwrap_or(0)];
         surfaces.iter().for_each(|&s| lit.get_mut(s).into_iter().for_each(|l| *l = true));
         let emission = self

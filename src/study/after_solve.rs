@@ -3,24 +3,29 @@
 //! (`super::kernel`: no assembly, no refinement) for the edited case, which must be the
 //! solved one in everything the field depends on: its geometry and discretization (the
 //! kernel file's fingerprint), its reflectances and luminaires, its surfaces' emission and
-//! its groups of sources. Then, with no solve, the stored field `x` is read at the case's
-//! probes, grids and observers, and every light scene is `x_s = Σ_g f_{s,g} x_g`
+//! its groups of sources. Then, with no solve, only what the edit changed is read: the
+//! stored field `x` at the case's probes, grids and observers when they are not the stored
+//! ones, and every new or changed light scene as `x_s = Σ_g f_{s,g} x_g`
 //! (`docs/design.md` §1: the field is linear in its sources) of the stored groups' fields,
-//! read out as the solve reads it (`super::light_scenes::read_light_scenes`).
+//! read out as the solve reads it (`super::light_scenes::read_light_scenes`) with each
+//! group's stored direct light (`super::group_light`). A light scene whose factors and
+//! readout tables are the stored ones keeps its stored readings.
 
 use super::error::StudyError;
+use super::group_light::stored_group_terms;
 use super::kernel::model_with_kernel;
-use super::light_scenes::{group_terms, read_light_scenes};
+use super::light_scenes::read_light_scenes;
 use super::readout_error::ReadoutError;
 use crate::io::{Readout, StoredGroup, read_light_groups, read_solution};
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::readout::field::Field;
 use crate::readout::readings::read_field;
-use crate::scene::Scene;
+use crate::scene::{LightScene, Scene};
 use std::path::Path;
 
-/// The readouts of `scene` on the field stored in the solution file `file`.
+/// The readouts of `scene` on the field stored in the solution file `file`: those the
+/// edit changed; the others are kept as stored (`Readout::readings`, `Readout::kept`).
 pub fn read_out_solved(file: &Path, scene: &Scene, progress: &dyn Progress) -> Result<Readout, StudyError> {
     let (mut model, record) = model_with_kernel(scene, Some(file), false, progress)?;
     let paths = || (scene.path.clone(), file.to_path_buf());
@@ -30,25 +35,32 @@ pub fn read_out_solved(file: &Path, scene: &Scene, progress: &dyn Progress) -> R
     }
     let stored = read_solution(file)?;
     same_emission(scene, &model, &stored.mesh.emission, file)?;
-    if scene.sky.is_some() && (scene.probes != stored.scene.probes || scene.grids != stored.scene.grids) {
+    let (probes, grids) = (scene.probes == stored.scene.probes, scene.grids == stored.scene.grids);
+    if scene.sky.is_some() && !(probes && grids) {
         let (case, file) = paths();
         return Err(ReadoutError::Daylight { case, file }.into());
     }
+    let same_tables = probes && grids && scene.observers == stored.scene.observers;
     let x = stored.luminance;
     let k = model.kernel.cells();
-    let readings = read_field(scene, &model, &Field::from_unknowns(&x, k), progress);
-    let groups = read_light_groups(file, x.len())?;
-    let light_scenes = match scene.lighting.scenes.is_empty() {
-        true => Vec::new(),
+    let readings = (!same_tables).then(|| read_field(scene, &model, &Field::from_unknowns(&x, k), progress));
+    let (kept, read): (Vec<&LightScene>, Vec<&LightScene>) =
+        scene.lighting.scenes.iter().partition(|s| same_tables && stored.scene.lighting.scenes.contains(s));
+    let groups = read_light_groups(file, x.len(), model.sources.len())?;
+    if !scene.lighting.scenes.is_empty() {
+        same_groups(scene, &stored.scene, &groups, file)?;
+    }
+    let (light_scenes, traced) = match read.is_empty() {
+        true => (Vec::new(), Vec::new()),
         false => {
-            same_groups(scene, &stored.scene, &groups, file)?;
             let xs: Vec<&[f64]> = groups.iter().map(|g| g.x.as_slice()).collect();
-            let lit = |g: usize| scene.lighting.scenes.iter().any(|s| s.factors[g] != 0.0);
-            let terms = group_terms(scene, &model, lit);
-            read_light_scenes(scene, &mut model, &terms, &xs, progress)?
+            let lit = |g: usize| read.iter().any(|s| s.factors[g] != 0.0);
+            let (terms, traced) = stored_group_terms(scene, &model, &groups, lit);
+            (read_light_scenes(scene, &mut model, &terms, &xs, &read, progress)?, traced)
         }
     };
-    Ok(Readout { model, readings, light_scenes })
+    let kept = kept.into_iter().map(|s| s.name.clone()).collect();
+    Ok(Readout { model, readings, light_scenes, kept, traced })
 }
 
 /// Refuses a case whose surfaces emit otherwise than the solved ones (`stored`, per patch).

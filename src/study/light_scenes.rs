@@ -46,7 +46,8 @@ pub fn solve_light_scenes(
     let terms = group_terms(scene, model, |_| true);
     let fields = solve_groups(scene, model, x, &terms, how, progress)?;
     let xs: Vec<&[f64]> = fields.iter().map(|g| g.solve.x.as_slice()).collect();
-    let scenes = read_light_scenes(scene, model, &terms, &xs, progress)?;
+    let all: Vec<&LightScene> = scene.lighting.scenes.iter().collect();
+    let scenes = read_light_scenes(scene, model, &terms, &xs, &all, progress)?;
     Ok(LightScenes { groups: fields, scenes })
 }
 
@@ -63,20 +64,22 @@ pub(super) fn group_terms(scene: &Scene, model: &Model, wanted: impl Fn(usize) -
         .collect()
 }
 
-/// Every light scene of `scene` from the groups' source terms `terms` and fields `xs` (one
-/// per group of the scene): `x_s = Σ_g f_{s,g} x_g` and its readouts, `model` relit by each
-/// light scene in turn and given back as it came. Shared by the solve and `ugo readout`.
+/// The light scenes `light_scenes` of `scene` from the groups' source terms `terms` and
+/// fields `xs` (one per group of the scene): `x_s = Σ_g f_{s,g} x_g` and its readouts,
+/// `model` relit by each light scene in turn and given back as it came. Shared by the solve
+/// (every light scene) and `ugo readout` (the new or changed ones).
 pub(super) fn read_light_scenes(
     scene: &Scene,
     model: &mut Model,
     terms: &[SourceTerm],
     xs: &[&[f64]],
+    light_scenes: &[&LightScene],
     progress: &dyn Progress,
 ) -> Result<Vec<LightSceneField>, StudyError> {
     let base = model.sources.clone();
     let mut own = None;
-    let mut scenes = Vec::with_capacity(scene.lighting.scenes.len());
-    for light_scene in &scene.lighting.scenes {
+    let mut scenes = Vec::with_capacity(light_scenes.len());
+    for &light_scene in light_scenes {
         let parts: Vec<(f64, &SourceTerm)> = light_scene.factors.iter().copied().zip(terms).collect();
         let relit = model.relight(dimmed(scene, &base, light_scene), SourceTerm::superpose(&parts));
         own.get_or_insert(relit);
@@ -138,7 +141,8 @@ fn solve_groups(
             progress.at(n as u64, &format!("{label}: {} {r:.1e}", how.method.name()))
         });
         progress.end();
-        fields.push(GroupField { name: group.name.clone(), emission: term.emission.clone(), solve: solved? });
+        let (emission, direct) = (term.emission.clone(), term.direct.clone());
+        fields.push(GroupField { name: group.name.clone(), emission, direct, solve: solved? });
     }
     Ok(fields)
 }

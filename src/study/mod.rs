@@ -11,6 +11,7 @@ pub mod bench;
 mod daylight_alone;
 mod error;
 mod grid_points;
+mod group_light;
 mod kernel;
 mod light_scenes;
 mod near;

@@ -1,14 +1,23 @@
 //! `ugo readout` (issue 38, point 2; `docs/light-scenes.md`, "After the solve"): a light
 //! scene and a probe added to a solved case and read on its stored field equal the same
 //! scene and probe solved with the case, on the uniform and the hierarchical kernel; the
-//! file is replaced whole or written beside; a changed geometry, a light scene lighting a
-//! group the file does not hold and a file without its kernel are refused, the file left
-//! as it was. (`group_by`'s groups: `tests/scene/luminaire_arrays.rs`.)
+//! file is replaced whole or written beside; a light scene added alone leaves every stored
+//! reading as it was (not read again), and the groups' stored direct light reads it as
+//! their light traced again does (a file solved before it was stored); a changed geometry,
+//! a light scene lighting a group the file does not hold and a file without its kernel are
+//! refused, the file left as it was. (`group_by`'s groups: `tests/scene/luminaire_arrays.rs`.)
 
 use super::light_scenes::CASE;
 use super::{assert_clean_failure, stderr};
 use crate::support::{scratch, ugo};
 use std::path::Path;
+
+/// The light scene added after the solve.
+const THIRD: &str = r#"
+[[light_scene]]
+name = "third"
+groups = { default = 0.3, ceiling = 0.6 }
+"#;
 
 /// The light scene and the probe added after the solve.
 const ADDED: &str = r#"
@@ -80,6 +89,64 @@ fn a_light_scene_and_a_probe_read_after_the_solve_equal_them_solved() {
         );
         run(&["report", a]);
         run(&["render", a, "--light-scene", "third", "-o", dir.to_str().unwrap()]);
+    }
+}
+
+/// A block standing on the floor: the floor's patches under it are partly covered (their
+/// exposed areas, which the energy balance weighs, are measured again around the kernel).
+const BLOCK: &str = r#"
+[[surface]]
+name = "block"
+shape = "box"
+material = "grey"
+min = [1.3, 0, 1.3]
+max = [1.8, 0.4, 1.8]
+"#;
+
+#[test]
+fn a_light_scene_added_alone_keeps_the_stored_readings_and_reads_the_stored_direct_light_as_traced() {
+    let dir = scratch("readout-kept");
+    let case = dir.write("box.toml", &format!("{CASE}{BLOCK}"));
+    let edited = dir.write("box3.toml", &format!("{CASE}{BLOCK}{THIRD}"));
+    let (solved, read_out, traced) = (dir.join("a.h5"), dir.join("b.h5"), dir.join("c.h5"));
+    let (a, b, c) = (solved.to_str().unwrap(), read_out.to_str().unwrap(), traced.to_str().unwrap());
+    let edited = edited.to_str().unwrap();
+    run(&["solve", case.to_str().unwrap(), "--save-kernel", "-o", a]);
+    let summary = run(&["readout", a, edited, "-o", b]);
+    assert!(summary.contains("light scene \"full\" as stored") && summary.contains("observers as stored"), "{summary}");
+    assert!(summary.contains("light scene \"third\"") && !summary.contains("traced again"), "{summary}");
+    let mut kept: Vec<String> =
+        ["probes/illuminance", "grids/desk/illuminance", "grids/desk/error"].map(String::from).into();
+    for scene in ["night", "full"] {
+        let at = ["field/illuminance", "probes/illuminance", "grids/desk/error"]
+            .map(|w| format!("light_scenes/{scene}/{w}"));
+        kept.extend(at);
+    }
+    let bits = |file: &Path, name: &str| read(file, name).iter().map(|v| v.to_bits()).collect::<Vec<u64>>();
+    for name in &kept {
+        assert_eq!(bits(&read_out, name), bits(&solved, name), "{name} was read again");
+    }
+    // Its energy balance is the solve's (each patch's exposed area as the solve measured it).
+    let both = dir.join("d.h5");
+    run(&["solve", edited, "-o", both.to_str().unwrap()]);
+    let flux = |file: &Path| -> f64 {
+        let g = hdf5::File::open(file).unwrap().group("light_scenes/third").unwrap();
+        g.attr("flux_absorbed").unwrap().read_scalar().unwrap()
+    };
+    let (ours, theirs) = (flux(&read_out), flux(&both));
+    assert!((ours - theirs).abs() <= 1e-10 * theirs, "absorbed {ours} lm, solved {theirs} lm");
+    // The file as a solve wrote it before the groups' direct light was stored.
+    let older = dir.join("older.h5");
+    std::fs::copy(&solved, &older).unwrap();
+    let file = hdf5::File::open_rw(&older).unwrap();
+    ["light_groups/direct", "light_groups/intercepted"].into_iter().for_each(|name| file.unlink(name).unwrap());
+    file.close().unwrap();
+    let summary = run(&["readout", older.to_str().unwrap(), edited, "-o", c]);
+    assert!(summary.contains("no /light_groups/direct") && summary.contains("traced again default"), "{summary}");
+    for what in ["field/luminance", "field/direct_illuminance", "probes/illuminance", "grids/desk/illuminance"] {
+        let at = format!("light_scenes/third/{what}");
+        let d = relative(&read(&read_out, &at), &read(&traced, &at));
+        assert!(d <= 1e-12, "{what}: stored against traced {d:e}");
     }
 }
 
