@@ -154,6 +154,17 @@ impl ConvexPolygon {
         ]
     }
 
+    /// Hands `visit` its pieces as seen from `x` within the angle `spread` (a piece's diameter
+    /// over its distance from `x`): quarters ([`ConvexPolygon::split`]) while a piece's
+    /// diameter exceeds `spread` times its distance, at most `depth` levels deep.
+    pub fn pieces_within(&self, x: DVec3, spread: f64, depth: u32, visit: &mut dyn FnMut(&ConvexPolygon)) {
+        if depth > 0 && self.diameter() > spread * self.distance_to(x) {
+            self.split().iter().for_each(|part| part.pieces_within(x, spread, depth - 1, visit));
+        } else {
+            visit(self);
+        }
+    }
+
     /// The solid angle it subtends at `x`, sr (Van Oosterom & Strackee, IEEE Trans. Biomed.
     /// Eng. 30 (1983), per fan triangle); 0 when `x` lies in its plane.
     pub fn solid_angle(&self, x: DVec3) -> f64 {

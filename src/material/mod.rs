@@ -34,7 +34,7 @@ pub use sample::Sample;
 
 use crate::directions::DirectionSet;
 use glam::DVec3;
-use std::f64::consts::FRAC_1_PI;
+use std::f64::consts::{FRAC_1_PI, FRAC_PI_2, SQRT_2};
 
 /// The models by name: what a `type` selects, matched exhaustively where its keys are read.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -142,6 +142,23 @@ impl MaterialModel {
     /// True when light also passes through to the other side of a two-sided surface.
     pub fn transmits(&self) -> bool {
         matches!(*self, MaterialModel::Lambert { transmittance, .. } if transmittance > 0.0)
+    }
+
+    /// The half width at half maximum of its glossy lobe, rad: how far from the lobe's axis
+    /// the outgoing direction turns before the specular part halves (Phong's `cosⁿα = 1/2`;
+    /// GGX's `D(h)` halved at `tan²θ_h = (√2 − 1)α²/(1 − √2 α²)`, and the reflected direction
+    /// turns by `2θ_h`), at most π/2 (a lobe so wide covers the hemisphere). `None` for a
+    /// Lambertian surface and a mirror, which have no lobe.
+    pub fn lobe_width(&self) -> Option<f64> {
+        match *self {
+            MaterialModel::Phong { exponent, .. } => Some(0.5f64.powf(1.0 / exponent).acos()),
+            MaterialModel::Ggx { roughness, .. } => {
+                let a2 = roughness * roughness;
+                let t = (SQRT_2 - 1.0) * a2 / (1.0 - SQRT_2 * a2);
+                Some(if t > 0.0 { (2.0 * t.sqrt().atan()).min(FRAC_PI_2) } else { FRAC_PI_2 })
+            }
+            MaterialModel::Lambert { .. } | MaterialModel::Mirror { .. } => None,
+        }
     }
 
     /// True when the material scatters into a single direction (no next-event estimation).

@@ -109,7 +109,7 @@ pub fn near_correction(model: &Model, field: &Field, p: DVec3, frame: &Frame, ig
                 let sees = |y: DVec3| model.visibility.visible_shared(p, y, [ignore, s.face], &blocker);
                 let worth = |piece: &ConvexPolygon| piece.area() > s.area / SHADOW_PIECES;
                 cut_along_shadows(&s.polygon, 0, &sees, &worth, &mut |piece, seen| {
-                    near_pieces(p, piece, 0, &mut |a| {
+                    piece.pieces_within(p, 1.0 / NEAR, NEAR_DEPTH, &mut |a| {
                         bins.clear();
                         binned_point(p, frame, &Patch { polygon: *a, ..*s }, &binning, &mut bins);
                         let c = a.centroid();
@@ -124,14 +124,4 @@ pub fn near_correction(model: &Model, field: &Field, p: DVec3, frame: &Frame, ig
         )
         .map(|(sum, _, _)| sum)
         .reduce(|| vec![0.0; cells], |a, b| sum(&a, &b))
-}
-
-/// Hands `visit` the pieces of `piece` (cut `depth` times): quarters while a piece lies
-/// closer to `p` than [`NEAR`] times its diameter.
-fn near_pieces(p: DVec3, piece: &ConvexPolygon, depth: u32, visit: &mut dyn FnMut(&ConvexPolygon)) {
-    if depth < NEAR_DEPTH && piece.distance_to(p) < NEAR * piece.diameter() {
-        piece.split().iter().for_each(|part| near_pieces(p, part, depth + 1, visit));
-    } else {
-        visit(piece);
-    }
 }

@@ -10,7 +10,9 @@
 //! weighed by its own rays, while the light the piece would send unoccluded exceeds
 //! [`SHADOW_CUT`] of all the point would receive unoccluded). A Phong or GGX patch's light
 //! towards `p` is, piece by piece, its final gather at the piece's centroid towards `p`
-//! (`glossy.rs`, [`PIECE_RAYS`] directions) instead of its cell value `L_j(m)`. A plane
+//! (`glossy.rs`, [`PIECE_RAYS`] directions) instead of its cell value `L_j(m)`, each shadow
+//! piece cut further while it spans more than [`LOBE_PIECE`] times the lobe's half width
+//! seen from `p`. A plane
 //! mirror's light is not its cell values but the images of the other patches seen through
 //! it (`mirrored.rs`, `docs/mirrors.md`). The
 //! luminaires' light arrives exactly at the point (`crate::luminaire::arriving_at`, one shadow ray each) as
@@ -21,7 +23,7 @@ use crate::geometry::{ConvexPolygon, Frame, Patch};
 use crate::luminaire::arriving_at;
 use crate::model::Model;
 use crate::readout::field::Field;
-use crate::readout::glossy::{ModelSurroundings, PIECE_RAYS, has_lobe};
+use crate::readout::glossy::{ModelSurroundings, PIECE_RAYS};
 use crate::readout::mirrored::{on_mirrors, through_mirrors};
 use crate::sky::READING;
 use crate::transfer::contour::point_to_patch;
@@ -99,6 +101,15 @@ pub(super) fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
 /// that see (`docs/hierarchy.md`, "Readouts", measures what this changes).
 pub const SHADOW_CUT: f64 = 1e-4;
 
+/// A piece of a Phong or GGX patch is cut into quarters while it spans, seen from the
+/// gathering point, more than this many times its lobe's half width (`lobe_width`): the
+/// light it sends towards the point follows the direction towards the point, which turns
+/// by the piece's diameter over its distance from one side of it to the other.
+pub const LOBE_PIECE: f64 = 1.0;
+
+/// Most levels of cutting a glossy piece by [`LOBE_PIECE`].
+pub const LOBE_DEPTH: u32 = 5;
+
 /// `I_d(p)`: the light arriving at `p` per cell of `frame`, ignoring face `ignore`.
 pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32) -> Vec<f64> {
     per_cell(model, field, p, frame, ignore, SHADOW_CUT)
@@ -130,15 +141,21 @@ fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, 
                 let sees = |y: DVec3| model.visibility.visible_shared(p, y, [ignore, s.face], &blocker);
                 let per_area = unoccluded[j] / s.area;
                 let worth = |piece: &ConvexPolygon| per_area * piece.area() > least;
-                let glossy = has_lobe(&model.materials[s.material as usize]);
+                let lobe = model.materials[s.material as usize].lobe_width();
                 cut_along_shadows(&s.polygon, 0, &sees, &worth, &mut |piece, seen| {
-                    bins.clear();
-                    binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);
-                    let c = piece.centroid();
-                    let towards_p = glossy.then(|| surroundings.outgoing(j, c, (p - c).normalize(), PIECE_RAYS));
-                    for &(d, m, f) in bins.iter() {
-                        sum[d as usize] += f * seen * towards_p.unwrap_or_else(|| field.at(j, m as usize));
-                    }
+                    let Some(width) = lobe else {
+                        bins.clear();
+                        binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);
+                        bins.iter().for_each(|&(d, m, f)| sum[d as usize] += f * seen * field.at(j, m as usize));
+                        return;
+                    };
+                    piece.pieces_within(p, LOBE_PIECE * width, LOBE_DEPTH, &mut |a| {
+                        bins.clear();
+                        binned_point(p, frame, &Patch { polygon: *a, ..*s }, &binning, &mut bins);
+                        let c = a.centroid();
+                        let towards_p = surroundings.outgoing(j, c, (p - c).normalize(), PIECE_RAYS);
+                        bins.iter().for_each(|&(d, _, f)| sum[d as usize] += f * seen * towards_p);
+                    });
                 });
                 (sum, bins, blocker)
             },

@@ -42,7 +42,7 @@ pub fn is_diffuse(material: &MaterialModel) -> bool {
 /// point of a piece cannot sample (so the mirror room's floor by the mirror read 131 lx
 /// against 181 ± 1 traced, and 187 from the cell values): its cell values stay.
 pub fn has_lobe(material: &MaterialModel) -> bool {
-    matches!(material, MaterialModel::Phong { .. } | MaterialModel::Ggx { .. })
+    material.lobe_width().is_some()
 }
 
 /// A model and its solved field as a final gather reads them.

@@ -6,6 +6,7 @@
 //! issue's target is every hard probe within 1 % of its reference (mean ≤ 0.3 %).
 
 mod error_bars;
+mod glossy;
 mod grid_error_bars;
 
 use crate::support::{build, solve};

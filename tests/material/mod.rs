@@ -4,6 +4,7 @@
 
 mod energy;
 mod ggx;
+mod lobe;
 mod phong;
 mod quadrature;
 mod reciprocity;
