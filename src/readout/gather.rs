@@ -105,7 +105,7 @@ pub const SHADOW_CUT: f64 = 1e-4;
 /// gathering point, more than this many times its lobe's half width (`lobe_width`): the
 /// light it sends towards the point follows the direction towards the point, which turns
 /// by the piece's diameter over its distance from one side of it to the other.
-pub const LOBE_PIECE: f64 = 1.0;
+pub const LOBE_PIECE: f64 = 2.0;
 
 /// Most levels of cutting a glossy piece by [`LOBE_PIECE`].
 pub const LOBE_DEPTH: u32 = 5;

@@ -6,7 +6,8 @@
 //! towards the probe follows the direction to it across the patch. Read at each shadow
 //! piece's centroid, they were up to 34 % off (+34.2 % at 5 cm above the floor beneath the
 //! lamp, −14.3 % at 2 cm in a corner); read piece by piece within twice the lobe's half
-//! width (`readout/gather.rs`, `LOBE_PIECE`), within 0.79 % (mean 0.28 %).
+//! width (`readout/gather.rs`, `LOBE_PIECE`), within 0.94 % (mean 0.37 %), held to those
+//! figures rounded up to the next 0.1 % plus 0.1 %, as the other classes of `mod.rs`.
 
 use super::{bench_scene, read, reference};
 
@@ -40,6 +41,6 @@ fn probes_beside_a_glossy_floor_read_its_lobe_piece_by_piece() {
         picked.len()
     );
     assert_eq!(picked.len(), 22);
-    assert!(largest < 1.0, "largest error {largest:.2} %");
-    assert!(mean < 0.4, "mean |error| {mean:.2} %");
+    assert!(largest < 1.1, "largest error {largest:.2} %");
+    assert!(mean < 0.5, "mean |error| {mean:.2} %");
 }
