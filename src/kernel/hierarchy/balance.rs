@@ -3,12 +3,20 @@
 //! leaf's row carries its closure `t_i` (`Σ_{j,m,d} G'[(i,d),(j,m)] = t_i`: the white
 //! furnace holds on every leaf) and every leaf's light lands on the scene's exposed
 //! areas in the same share (`Σ_i A_i Σ_{d,m} G'[(i,d),(j,m)] = A_j t_j`: energy is
-//! conserved). The exact kernel has both properties (reciprocity makes the columns the
-//! rows); the hierarchy's links lose them where a few rays between stand-ins decide a
-//! whole cluster pair's visibility, or a link is dropped as occluded while part of it is
-//! seen. The uniform kernel is balanced the same way (`kernel/uniform/balance.rs`, symmetrically:
-//! its exchange areas are reciprocal). Sinkhorn–Knopp by alternating row and column
-//! sweeps (Sinkhorn & Knopp 1967), each one application of `G` and one of `Gᵀ`.
+//! conserved) as far as its links can carry it. The exact kernel has both properties
+//! (reciprocity makes the columns the rows); the hierarchy's links lose them where a few
+//! rays between stand-ins decide a whole cluster pair's visibility, or a link is dropped as
+//! occluded while part of it is seen. A leaf's column is not its own, though: its light
+//! leaves through its ancestors' links as their mean, so its column also differs from its
+//! closure by the spread of closure among those ancestors' leaves, which a factor on the
+//! leaf cannot mend; scaling it moves light among the sources of every row. So a sending
+//! factor stays within `1 ± c` (the caller's `c`, a few link tolerances: what the links'
+//! own errors can explain); free, it read the hard probes of umbrae, contacts and dim
+//! corners 3–8 % bright (`docs/hierarchy.md`, "Sending factors held to the links' error").
+//! The uniform kernel is balanced the same way (`kernel/uniform/balance.rs`, symmetrically:
+//! its exchange areas are reciprocal, and its columns are its own). Sinkhorn–Knopp by
+//! alternating row and column sweeps (Sinkhorn & Knopp 1967), each one application of `G`
+//! and one of `Gᵀ`.
 
 use super::operator::Operator;
 use crate::kernel::BalanceReport;
@@ -28,21 +36,28 @@ const FURNACE: f64 = 1e-3;
 const STALLED: f64 = 1e-2;
 /// Sweeps before balancing gives up (it reports the mismatch it reached).
 const MAX_SWEEPS: usize = 100;
-/// Largest factor by which a leaf's light may be scaled either way.
+/// Largest factor by which a leaf's received light may be scaled either way.
 const MOST: f64 = 4.0;
 
 impl Operator {
     /// Balances the operator to the leaves' closures `targets` (in leaf order) with their
     /// exposed areas `areas`, m². A leaf with no target, no exposed area, or no light
-    /// arriving or leaving keeps its factors at 1; no factor goes beyond [`MOST`] either
-    /// way (a leaf whose links carry less than a quarter of its closure stays short, and
-    /// the report's residual says by how much). Sweeps stop when no factor changes by
+    /// arriving or leaving keeps its factors at 1; no receiving factor goes beyond [`MOST`]
+    /// either way (a leaf whose links carry less than a quarter of its closure stays short,
+    /// and the report's residual says by how much), no sending factor beyond `1 + sending`
+    /// either way. Sweeps stop when no factor changes by
     /// [`BALANCED`] any more, or once the columns are balanced and the rows of the leaves
     /// within those limits match their targets within [`ROWS_BALANCED`], or within
     /// [`FURNACE`] with a sweep that bettered them by less than [`STALLED`]. The sweeps start
     /// from the factors `start` (receiving, sending; in leaf order): all 1 for a new
     /// operator, else each leaf's (or its nearest ancestor's) in the last operator.
-    pub fn balance(&mut self, targets: &[f64], areas: &[f64], start: (Vec<f64>, Vec<f64>)) -> BalanceReport {
+    pub fn balance(
+        &mut self,
+        targets: &[f64],
+        areas: &[f64],
+        start: (Vec<f64>, Vec<f64>),
+        sending: f64,
+    ) -> BalanceReport {
         let (n, k) = (self.leaves().len(), self.cells());
         self.receive = vec![1.0; n];
         self.send = vec![1.0; n];
@@ -63,11 +78,11 @@ impl Operator {
                 break;
             }
             last = mismatch;
-            let mut change = rescale(&mut receive, &rows, targets, &free);
+            let mut change = rescale(&mut receive, &rows, targets, &free, MOST);
             x.chunks_mut(k).enumerate().for_each(|(l, x)| x.fill(areas[l] * receive[l]));
             self.leaving(&x, &mut z);
             let columns = sums(&z, k, |l| 1.0 / areas[l]);
-            change = change.max(rescale(&mut send, &columns, targets, &free));
+            change = change.max(rescale(&mut send, &columns, targets, &free, 1.0 + sending));
             report.iterations = sweep;
             if change < BALANCED {
                 break;
@@ -101,12 +116,12 @@ fn sums(z: &[f64], k: usize, scale: impl Fn(usize) -> f64) -> Vec<f64> {
     z.chunks(k).enumerate().map(|(l, z)| z.iter().sum::<f64>() * scale(l)).collect()
 }
 
-/// Sets each free leaf's factor to `target / sum` (within [`MOST`]); returns the largest
-/// relative change.
-fn rescale(factors: &mut [f64], sums: &[f64], targets: &[f64], free: &impl Fn(usize) -> bool) -> f64 {
+/// Sets each free leaf's factor to `target / sum`, at most `most` times or `1/most` of 1;
+/// returns the largest relative change.
+fn rescale(factors: &mut [f64], sums: &[f64], targets: &[f64], free: &impl Fn(usize) -> bool, most: f64) -> f64 {
     let mut change: f64 = 0.0;
     for (l, f) in factors.iter_mut().enumerate().filter(|(l, _)| free(*l) && sums[*l] > 0.0) {
-        let next = (targets[l] / sums[l]).clamp(1.0 / MOST, MOST);
+        let next = (targets[l] / sums[l]).clamp(1.0 / most, most);
         change = change.max((next / *f - 1.0).abs());
         *f = next;
     }

@@ -4,6 +4,13 @@
 use super::kernel::Hierarchy;
 use super::operator::Operator;
 
+/// How far a leaf's sending factor may move from 1, in link tolerances: a link is kept while
+/// its error is below the tolerance times the scene's mean reflected luminance, so a column
+/// off by more than a few tolerances is the spread of closure its ancestors' links carry as
+/// their mean, not their error (`balance.rs`). At 3 the integrating sphere's factors (within
+/// 2.3 %) stay free; the open box's (5th–95th percentile 0.86–1.11) are held.
+const SENDING: f64 = 3.0;
+
 impl Hierarchy {
     /// `G` on the current leaves, balanced to their closures unless `options.balance` is
     /// off (the rays of new leaves' closures count in the work).
@@ -16,7 +23,7 @@ impl Hierarchy {
             let areas: Vec<f64> = leaves.iter().map(|&id| self.tree.node(id).exposed).collect();
             let targets = self.closure_targets(&operator, &leaves, &areas);
             let start = leaves.iter().map(|&id| self.memo.last_factors(&self.tree, id)).unzip();
-            operator.balance(&targets, &areas, start);
+            operator.balance(&targets, &areas, start, SENDING * self.options.tolerance);
             self.memo.keep_factors(self.tree.len(), &leaves, &operator.receive, &operator.send);
         }
         operator
