@@ -9,7 +9,11 @@
 //! each of the L luminaires lands (lm), and what its solve cost (kernel applications, the
 //! relative residual of the projected start and of the solution, s); attribute
 //! `maintenance_factor`. Files solved before `direct` was stored have neither it nor
-//! `intercepted` (`ugo readout` traces the groups' light again). `/light_scenes/<name>/field/{luminance,emission,source,
+//! `intercepted` (`ugo readout` traces the groups' light again). `/light_groups/bar_samples`
+//! (G×M×2): each group's residual samples at the case's probes and grids
+//! (`readout::residual_samples`: `π r` in lx and the albedo of the point seen), every
+//! light scene's bars being those of `Σ_g factors[s, g] · bar_samples[g]`; absent from files
+//! solved before (`ugo readout` traces them and stores them). `/light_scenes/<name>/field/{luminance,emission,source,
 //! illuminance,direct_illuminance}`, `/light_scenes/<name>/probes/…` and
 //! `/light_scenes/<name>/grids/<grid>/…` as `/field`, `/probes` and `/grids` of the file,
 //! for the light scene; its attributes: `factors` (G) and `flux_emitted`, `flux_absorbed`,
@@ -23,15 +27,17 @@ use super::readout_group::{write_grids, write_probes};
 use crate::luminaire::DirectLight;
 use crate::model::Model;
 use crate::readout::energy::EnergyBalance;
+use crate::readout::error_bar::Sample;
 use crate::readout::field::Field;
 use crate::readout::grid::GridReading;
 use crate::readout::grid_error::GridErrorBars;
 use crate::readout::probe::ProbeReading;
+use crate::readout::residual_samples::ResidualSamples;
 use crate::readout::ugr::UgrReading;
 use crate::scene::{LightScene, Scene};
 use crate::solve::Successive;
 use hdf5::types::VarLenUnicode;
-use ndarray::{Array1, Array2, Array4};
+use ndarray::{Array1, Array2, Array3, Array4};
 use std::path::Path;
 
 /// The light scenes of a case: one field per group, and every light scene's readouts.
@@ -40,6 +46,9 @@ pub struct LightScenes {
     pub groups: Vec<GroupField>,
     /// One entry per `[[light_scene]]`.
     pub scenes: Vec<LightSceneField>,
+    /// Each group's residual samples at the case's probes and grids, from which every light
+    /// scene's error bars follow; empty without light scenes.
+    pub residual: Vec<ResidualSamples>,
 }
 
 /// One group's field alone, and its solve.
@@ -127,7 +136,38 @@ fn write_groups(g: &hdf5::Group, model: &Model, light: &LightScenes) -> hdf5::Re
     dataset(g, "iterations", &column(|s| s.info.iterations as f64))?;
     dataset(g, "start_residual", &column(|s| s.start))?;
     dataset(g, "residual", &column(|s| s.residual))?;
-    dataset(g, "seconds", &column(|s| s.info.seconds))
+    dataset(g, "seconds", &column(|s| s.info.seconds))?;
+    write_residual(g, &light.residual)
+}
+
+/// `/light_groups/bar_samples` (G×M×2): each group's residual samples, `π r` (lx) and the
+/// albedo of the point seen; none when there are none (no group, or no probe or grid).
+pub(super) fn write_residual(g: &hdf5::Group, residual: &[ResidualSamples]) -> hdf5::Result<()> {
+    let Some(m) = residual.first().map(|r| r.0.len()).filter(|&m| m > 0) else { return Ok(()) };
+    let samples = Array3::from_shape_fn((residual.len(), m, 2), |(a, i, c)| {
+        let s = residual[a].0[i];
+        [s.illuminance, s.albedo][c]
+    });
+    dataset(g, "bar_samples", &samples)
+}
+
+/// The groups' residual samples `/light_groups/bar_samples` of the solution file `path`, one
+/// per of its `groups` groups, or `None` when it holds none or not as many.
+pub fn read_group_residual(path: &Path, groups: usize) -> Result<Option<Vec<ResidualSamples>>, IoError> {
+    let (h5, bytes) = super::read::open(path)?;
+    if groups == 0 || !h5.link_exists("light_groups/bar_samples") {
+        return Ok(None);
+    }
+    let file = super::read::File { h5: &h5, bytes };
+    let why = |super::read::Why(why)| IoError::NotASolution { path: path.to_path_buf(), why };
+    let values = file.raw::<f64>("light_groups/bar_samples").map_err(why)?;
+    if values.len() % (2 * groups) != 0 || values.iter().any(|v| !v.is_finite()) {
+        return Ok(None);
+    }
+    let per_group = values.len() / groups;
+    let samples =
+        |chunk: &[f64]| ResidualSamples(chunk.chunks(2).map(|s| Sample { illuminance: s[0], albedo: s[1] }).collect());
+    Ok(Some(values.chunks(per_group.max(1)).map(samples).collect()))
 }
 
 /// One group's field as a solve stored it (`/light_groups/{name,luminance,direct,intercepted}`).

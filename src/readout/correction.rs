@@ -113,7 +113,7 @@ pub fn near_correction(model: &Model, field: &Field, p: DVec3, frame: &Frame, ig
                         bins.clear();
                         binned_point(p, frame, &Patch { polygon: *a, ..*s }, &binning, &mut bins);
                         let c = a.centroid();
-                        let l = gathered(model, field, j, c, (p - c).normalize());
+                        let l = gathered(model, field, j, c, (p - c).normalize(), &[]);
                         for &(d, m, f) in bins.iter() {
                             sum[d as usize] += f * seen * (l - field.at(j, m as usize));
                         }

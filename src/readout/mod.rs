@@ -5,6 +5,7 @@
 
 pub mod cavity;
 pub mod correction;
+pub mod cut;
 pub mod cylindrical;
 pub mod daylight;
 pub mod energy;
@@ -24,6 +25,7 @@ pub mod obstructed;
 pub mod openings;
 pub mod probe;
 pub mod readings;
+pub mod residual_samples;
 pub mod standard_room;
 pub mod ugr;
 pub mod ugr_table;

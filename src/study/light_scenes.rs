@@ -4,8 +4,11 @@
 //! known (`solve::Projection`, the case's own field first); every `[[light_scene]]` is then
 //! `x_s = Σ_g f_{s,g} x_g`, read out (patch illuminance, energy, probes, grids) by the model
 //! relit with its dimmed sources, exactly as a solve of the case with those sources would
-//! be. For the hierarchical kernel the hierarchy is the one refined under the case's own
-//! light (every group on at factor 1); each group is solved on it as it stands.
+//! be. Its error bars ((5.5), (5.6)) are the bar's formula applied to `Σ_g f_{s,g}
+//! samples_g` of the groups' residual samples, each group's traced once for every light
+//! scene (`readout::residual_samples`). For the hierarchical kernel the hierarchy is the one
+//! refined under the case's own light (every group on at factor 1); each group is solved on
+//! it as it stands.
 
 use super::error::StudyError;
 use crate::io::{GroupField, IoError, LightSceneField, LightScenes, StoredSolution};
@@ -16,7 +19,8 @@ use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
 use crate::readout::illuminance::{arriving, patch_illuminance};
-use crate::readout::readings::{Readings, read_field};
+use crate::readout::readings::{Readings, read_unbarred};
+use crate::readout::residual_samples::ResidualSamples;
 use crate::render::LitScene;
 use crate::scene::{LightScene, Scene};
 use crate::solve::{Method, Projection, SolveParams, System};
@@ -47,8 +51,8 @@ pub fn solve_light_scenes(
     let fields = solve_groups(scene, model, x, &terms, how, progress)?;
     let xs: Vec<&[f64]> = fields.iter().map(|g| g.solve.x.as_slice()).collect();
     let all: Vec<&LightScene> = scene.lighting.scenes.iter().collect();
-    let scenes = read_light_scenes(scene, model, &terms, &xs, &all, progress)?;
-    Ok(LightScenes { groups: fields, scenes })
+    let (scenes, residual) = read_light_scenes(scene, model, &terms, &xs, &all, None, progress)?;
+    Ok(LightScenes { groups: fields, scenes, residual })
 }
 
 /// Each group's source term alone on `model` (`Model::source_term_of`), in the order of
@@ -67,15 +71,19 @@ pub(super) fn group_terms(scene: &Scene, model: &Model, wanted: impl Fn(usize) -
 /// The light scenes `light_scenes` of `scene` from the groups' source terms `terms` and
 /// fields `xs` (one per group of the scene): `x_s = Σ_g f_{s,g} x_g` and its readouts,
 /// `model` relit by each light scene in turn and given back as it came. Shared by the solve
-/// (every light scene) and `ugo readout` (the new or changed ones).
+/// (every light scene) and `ugo readout` (the new or changed ones). The error bars are
+/// those of `Σ_g f_{s,g} samples_g`, the groups' residual samples (`residual_samples.rs`):
+/// `stored` when they were taken at these probes and grids, else traced here, each group's
+/// field on the model relit by the group alone; they are returned with the light scenes.
 pub(super) fn read_light_scenes(
     scene: &Scene,
     model: &mut Model,
     terms: &[SourceTerm],
     xs: &[&[f64]],
     light_scenes: &[&LightScene],
+    stored: Option<Vec<ResidualSamples>>,
     progress: &dyn Progress,
-) -> Result<Vec<LightSceneField>, StudyError> {
+) -> Result<(Vec<LightSceneField>, Vec<ResidualSamples>), StudyError> {
     let base = model.sources.clone();
     let mut own = None;
     let mut scenes = Vec::with_capacity(light_scenes.len());
@@ -85,11 +93,55 @@ pub(super) fn read_light_scenes(
         own.get_or_insert(relit);
         scenes.push(read_out(scene, model, light_scene, xs, progress));
     }
+    let residual = match scenes.first() {
+        None => Vec::new(),
+        Some(at) => {
+            let count = ResidualSamples::count(&at.probes, &at.grids);
+            let fits = |r: &Vec<ResidualSamples>| r.len() == xs.len() && r.iter().all(|g| g.0.len() == count);
+            match stored.filter(fits) {
+                Some(stored) => stored,
+                None => group_samples(scene, model, &base, terms, xs, at, progress),
+            }
+        }
+    };
+    for s in &mut scenes {
+        let parts: Vec<(f64, &ResidualSamples)> = s.factors.iter().copied().zip(&residual).collect();
+        s.grid_errors = ResidualSamples::superpose(&parts).bars(&mut s.probes, &s.grids);
+    }
     if let Some((sources, term)) = own {
         model.relight(sources, term);
     }
     crate::interrupt::check(|| "the light scenes' readouts".to_string())?;
-    Ok(scenes)
+    Ok((scenes, residual))
+}
+
+/// Each group's residual samples at the probes and grids `at` read, its field `xs[g]` on
+/// `model` relit by the group alone (its luminaires placed as in `base`, its source term
+/// `terms[g]`), every gather cut along shadow edges as any group's field asks
+/// (`readout::cut`), so that `Σ_g f_g samples_g` are the samples of `Σ_g f_g x_g` cut so;
+/// `model` is left relit by the last group.
+fn group_samples(
+    scene: &Scene,
+    model: &mut Model,
+    base: &[Source],
+    terms: &[SourceTerm],
+    xs: &[&[f64]],
+    at: &LightSceneField,
+    progress: &dyn Progress,
+) -> Vec<ResidualSamples> {
+    let k = model.kernel.cells();
+    let fields: Vec<Field> = xs.iter().map(|x| Field::from_unknowns(x, k)).collect();
+    let by: Vec<&Field> = fields.iter().collect();
+    let alone = |g: usize| LightScene {
+        name: String::new(),
+        factors: (0..terms.len()).map(|h| if h == g { 1.0 } else { 0.0 }).collect(),
+    };
+    (0..terms.len())
+        .map(|g| {
+            model.relight(dimmed(scene, base, &alone(g)), terms[g].clone());
+            ResidualSamples::of(&at.probes, &at.grids, model, &fields[g], &by, progress)
+        })
+        .collect()
 }
 
 /// The case's kernel as every group's solve takes it: factored, formed explicitly when the
@@ -158,7 +210,8 @@ pub fn dimmed(scene: &Scene, base: &[Source], light_scene: &LightScene) -> Vec<S
 }
 
 /// The light scene's field `Σ_g f_g x_g` (`xs` the groups' fields) and its readouts on
-/// `model`, relit by it (the observers' UGR from its dimmed luminaires and its own background).
+/// `model`, relit by it (the observers' UGR from its dimmed luminaires and its own
+/// background), without the error bars (`read_light_scenes` sets them).
 fn read_out(
     scene: &Scene,
     model: &Model,
@@ -172,7 +225,7 @@ fn read_out(
     }
     let k = model.kernel.cells();
     let field = Field::from_unknowns(&x, k);
-    let Readings { probes, grids, grid_errors, observers } = read_field(scene, model, &field, progress);
+    let Readings { probes, grids, grid_errors, observers } = read_unbarred(scene, model, &field, progress);
     LightSceneField {
         name: light_scene.name.clone(),
         factors: light_scene.factors.clone(),
