@@ -9,11 +9,12 @@
 //! each of the L luminaires lands (lm), and what its solve cost (kernel applications, the
 //! relative residual of the projected start and of the solution, s); attribute
 //! `maintenance_factor`. Files solved before `direct` was stored have neither it nor
-//! `intercepted` (`ugo readout` traces the groups' light again). `/light_groups/bar_samples`
-//! (G×M×2): each group's residual samples at the case's probes and grids
-//! (`readout::residual_samples`: `π r` in lx and the albedo of the point seen), every
-//! light scene's bars being those of `Σ_g factors[s, g] · bar_samples[g]`; absent from files
-//! solved before (`ugo readout` traces them and stores them). `/light_scenes/<name>/field/{luminance,emission,source,
+//! `intercepted` (`ugo readout` traces the groups' light again). `/light_groups/grid_readings`
+//! (G×P×2) and `/light_groups/bar_samples` (G×M×2): each group's readings of the grids'
+//! points (illuminance and its direct part, lx) and residual samples at the probes and grids
+//! (`π r` in lx and the albedo of the point seen; `readout::group_readouts`), every light
+//! scene's grid readings and bars being those of `Σ_g factors[s, g] · …[g]`; absent from
+//! files solved before (`ugo readout` reads them and stores them). `/light_scenes/<name>/field/{luminance,emission,source,
 //! illuminance,direct_illuminance}`, `/light_scenes/<name>/probes/…` and
 //! `/light_scenes/<name>/grids/<grid>/…` as `/field`, `/probes` and `/grids` of the file,
 //! for the light scene; its attributes: `factors` (G) and `flux_emitted`, `flux_absorbed`,
@@ -31,6 +32,7 @@ use crate::readout::error_bar::Sample;
 use crate::readout::field::Field;
 use crate::readout::grid::GridReading;
 use crate::readout::grid_error::GridErrorBars;
+use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::probe::ProbeReading;
 use crate::readout::residual_samples::ResidualSamples;
 use crate::readout::ugr::UgrReading;
@@ -46,9 +48,9 @@ pub struct LightScenes {
     pub groups: Vec<GroupField>,
     /// One entry per `[[light_scene]]`.
     pub scenes: Vec<LightSceneField>,
-    /// Each group's residual samples at the case's probes and grids, from which every light
-    /// scene's error bars follow; empty without light scenes.
-    pub residual: Vec<ResidualSamples>,
+    /// Each group's grid readings and residual samples, from which every light scene's
+    /// grid readings and error bars follow; `None` without light scenes.
+    pub shared: Option<GroupReadouts>,
 }
 
 /// One group's field alone, and its solve.
@@ -137,37 +139,53 @@ fn write_groups(g: &hdf5::Group, model: &Model, light: &LightScenes) -> hdf5::Re
     dataset(g, "start_residual", &column(|s| s.start))?;
     dataset(g, "residual", &column(|s| s.residual))?;
     dataset(g, "seconds", &column(|s| s.info.seconds))?;
-    write_residual(g, &light.residual)
+    light.shared.as_ref().map_or(Ok(()), |shared| write_group_readouts(g, shared))
 }
 
-/// `/light_groups/bar_samples` (G×M×2): each group's residual samples, `π r` (lx) and the
-/// albedo of the point seen; none when there are none (no group, or no probe or grid).
-pub(super) fn write_residual(g: &hdf5::Group, residual: &[ResidualSamples]) -> hdf5::Result<()> {
-    let Some(m) = residual.first().map(|r| r.0.len()).filter(|&m| m > 0) else { return Ok(()) };
-    let samples = Array3::from_shape_fn((residual.len(), m, 2), |(a, i, c)| {
-        let s = residual[a].0[i];
-        [s.illuminance, s.albedo][c]
-    });
-    dataset(g, "bar_samples", &samples)
+/// `/light_groups/grid_readings` (G×P×2: every grid's points in turn, the illuminance and
+/// its direct part, lx) and `/light_groups/bar_samples` (G×M×2: `π r` in lx and the albedo
+/// of the point seen) of the groups' readouts `shared`; each left out when it is empty (no
+/// grid point, no probe or grid).
+pub(super) fn write_group_readouts(g: &hdf5::Group, shared: &GroupReadouts) -> hdf5::Result<()> {
+    let samples: Vec<Vec<f64>> =
+        shared.samples.iter().map(|r| r.0.iter().flat_map(|s| [s.illuminance, s.albedo]).collect()).collect();
+    for (name, rows) in [("grid_readings", shared.values()), ("bar_samples", samples)] {
+        let Some(m) = rows.first().map(Vec::len).filter(|&m| m > 0) else { continue };
+        dataset(g, name, &Array3::from_shape_fn((rows.len(), m / 2, 2), |(a, i, c)| rows[a][2 * i + c]))?;
+    }
+    Ok(())
 }
 
-/// The groups' residual samples `/light_groups/bar_samples` of the solution file `path`, one
-/// per of its `groups` groups, or `None` when it holds none or not as many.
-pub fn read_group_residual(path: &Path, groups: usize) -> Result<Option<Vec<ResidualSamples>>, IoError> {
+/// The groups' readouts as a file stores them: per group, its grids' points' illuminance
+/// and direct part in turn (lx), and its residual samples.
+pub type StoredReadouts = (Vec<Vec<f64>>, Vec<ResidualSamples>);
+
+/// The groups' readouts the solution file `path` stores for `groups` groups, as
+/// [`GroupReadouts::stored`] takes them (absent datasets read as no values), or `None`
+/// when it stores none or holds values that are not finite.
+pub fn read_group_readouts(path: &Path, groups: usize) -> Result<Option<StoredReadouts>, IoError> {
     let (h5, bytes) = super::read::open(path)?;
-    if groups == 0 || !h5.link_exists("light_groups/bar_samples") {
+    let stored = |name: &str| h5.link_exists(&format!("light_groups/{name}"));
+    if groups == 0 || !(stored("grid_readings") || stored("bar_samples")) {
         return Ok(None);
     }
     let file = super::read::File { h5: &h5, bytes };
     let why = |super::read::Why(why)| IoError::NotASolution { path: path.to_path_buf(), why };
-    let values = file.raw::<f64>("light_groups/bar_samples").map_err(why)?;
-    if values.len() % (2 * groups) != 0 || values.iter().any(|v| !v.is_finite()) {
-        return Ok(None);
-    }
-    let per_group = values.len() / groups;
-    let samples =
-        |chunk: &[f64]| ResidualSamples(chunk.chunks(2).map(|s| Sample { illuminance: s[0], albedo: s[1] }).collect());
-    Ok(Some(values.chunks(per_group.max(1)).map(samples).collect()))
+    let rows = |name: &str| -> Result<Option<Vec<Vec<f64>>>, IoError> {
+        let values = match stored(name) {
+            true => file.raw::<f64>(&format!("light_groups/{name}")).map_err(why)?,
+            false => Vec::new(),
+        };
+        if values.len() % (2 * groups) != 0 || values.iter().any(|v| !v.is_finite()) {
+            return Ok(None);
+        }
+        let per_group = values.len() / groups;
+        Ok(Some((0..groups).map(|g| values[g * per_group..(g + 1) * per_group].to_vec()).collect()))
+    };
+    let (Some(values), Some(samples)) = (rows("grid_readings")?, rows("bar_samples")?) else { return Ok(None) };
+    let row =
+        |row: Vec<f64>| ResidualSamples(row.chunks(2).map(|s| Sample { illuminance: s[0], albedo: s[1] }).collect());
+    Ok(Some((values, samples.into_iter().map(row).collect())))
 }
 
 /// One group's field as a solve stored it (`/light_groups/{name,luminance,direct,intercepted}`).

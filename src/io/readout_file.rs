@@ -3,7 +3,7 @@
 //! the edited case — `/case_files` and the root attributes of the case, `/probes`, `/grids`,
 //! `/observers` (when read again), `/light_groups/{scene_names,factors}` and
 //! `/light_scenes/<name>` of every new or changed light scene (those no longer in the case
-//! dropped, the unchanged ones kept), `/light_groups/bar_samples` when light scenes were read
+//! dropped, the unchanged ones kept), `/light_groups/{grid_readings,bar_samples}` when light scenes were read
 //! (dropped when the readout tables changed and none was) — laid out as `hdf5_file.rs` and `light_scene_group.rs`
 //! lay them out for a solve, so that `ugo report` and `ugo render --light-scene` read them
 //! alike. The field, the groups' fields, the mesh, the kernel and every record of the solve
@@ -12,13 +12,13 @@
 //! the output.
 
 use super::hdf5_file::{CASE_ATTRIBUTES, write_case};
-use super::light_scene_group::{write_factors, write_residual, write_scenes};
+use super::light_scene_group::{write_factors, write_group_readouts, write_scenes};
 use super::observer_group::write_observers;
 use super::readout_group::{write_grids, write_probes};
 use super::{IoError, LightSceneField};
 use crate::model::Model;
+use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::readings::Readings;
-use crate::readout::residual_samples::ResidualSamples;
 use crate::scene::Scene;
 use std::path::Path;
 
@@ -32,9 +32,9 @@ pub struct Readout {
     /// Every new or changed light scene of the edited case, a weighted sum of the stored
     /// groups' fields.
     pub light_scenes: Vec<LightSceneField>,
-    /// The groups' residual samples the new light scenes' bars were read from (stored or
-    /// traced), when some were read: written as `/light_groups/bar_samples`.
-    pub residual: Option<Vec<ResidualSamples>>,
+    /// The groups' readouts the new light scenes' grids and bars were read from (stored
+    /// or read), when some were read: written as `/light_groups/{grid_readings,bar_samples}`.
+    pub shared: Option<GroupReadouts>,
     /// The light scenes kept as stored (their factors and the readout tables unchanged).
     pub kept: Vec<String>,
     /// The groups whose luminaires were traced again (a file without their direct light).
@@ -71,11 +71,11 @@ fn rewrite(path: &Path, scene: &Scene, r: &Readout) -> hdf5::Result<()> {
     groups.unlink("scene_names")?;
     groups.unlink("factors")?;
     write_factors(&groups, &scene.lighting.scenes)?;
-    if r.residual.is_some() || r.readings.is_some() {
-        unlink(&groups, "bar_samples")?;
+    if r.shared.is_some() || r.readings.is_some() {
+        ["grid_readings", "bar_samples"].into_iter().try_for_each(|name| unlink(&groups, name))?;
     }
-    if let Some(residual) = &r.residual {
-        write_residual(&groups, residual)?;
+    if let Some(shared) = &r.shared {
+        write_group_readouts(&groups, shared)?;
     }
     let scenes = match file.link_exists("light_scenes") {
         true => file.group("light_scenes")?,

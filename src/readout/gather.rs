@@ -40,12 +40,14 @@ use std::f64::consts::PI;
 /// space), the luminaires' direct light included; not corrected near geometry (a grid
 /// point's: `correction.rs` says why).
 pub fn illuminance_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> f64 {
-    illuminance_and_direct_at(model, field, p, n).0
+    illuminance_and_direct_at(model, field, p, n, &[]).0
 }
 
-/// [`illuminance_at`] and its part directly from the sources (luminaires, sun, openings), lx.
-pub fn illuminance_and_direct_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (f64, f64) {
-    let (_, incident, direct) = incident_at(model, field, p, n);
+/// [`illuminance_at`] and its part directly from the sources (luminaires, sun, openings), lx;
+/// the pieces along shadow edges cut by the field's own rule, or by that of any field of
+/// `by` (`cut.rs`: fields whose readings are summed).
+pub fn illuminance_and_direct_at(model: &Model, field: &Field, p: DVec3, n: DVec3, by: &[&Field]) -> (f64, f64) {
+    let (_, incident, direct) = incident_at(model, field, p, n, by);
     let direct = PI * direct.iter().sum::<f64>();
     (PI * incident.iter().sum::<f64>() + direct, direct)
 }
@@ -69,12 +71,19 @@ impl Receiver {
 }
 
 /// The receiver at `p` facing `n` and the light arriving there per cell of its frame:
-/// gathered from the surfaces, and directly from the luminaires.
-pub(super) fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (Receiver, Vec<f64>, Vec<f64>) {
+/// gathered from the surfaces (cut by the rules of `by`, as [`illuminance_and_direct_at`]),
+/// and directly from the luminaires.
+pub(super) fn incident_at(
+    model: &Model,
+    field: &Field,
+    p: DVec3,
+    n: DVec3,
+    by: &[&Field],
+) -> (Receiver, Vec<f64>, Vec<f64>) {
     let at = Receiver::at(model, p, n);
     let direct =
         arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &at.frame, at.ignore, READING);
-    let incident = gather(model, field, p, &at.frame, at.ignore);
+    let incident = per_cell(model, field, p, &at.frame, at.ignore, &Cut { fraction: SHADOW_CUT, by });
     (at, incident, direct)
 }
 

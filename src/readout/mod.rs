@@ -16,6 +16,7 @@ pub mod gather;
 pub mod glossy;
 pub mod grid;
 pub mod grid_error;
+pub mod group_readouts;
 pub mod guth;
 pub mod illuminance;
 pub mod luminance;

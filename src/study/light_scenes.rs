@@ -4,9 +4,9 @@
 //! known (`solve::Projection`, the case's own field first); every `[[light_scene]]` is then
 //! `x_s = Σ_g f_{s,g} x_g`, read out (patch illuminance, energy, probes, grids) by the model
 //! relit with its dimmed sources, exactly as a solve of the case with those sources would
-//! be. Its error bars ((5.5), (5.6)) are the bar's formula applied to `Σ_g f_{s,g}
-//! samples_g` of the groups' residual samples, each group's traced once for every light
-//! scene (`readout::residual_samples`). For the hierarchical kernel the hierarchy is the one
+//! be. Its grid readings and the residual samples of its error bars ((5.5), (5.6)) are
+//! `Σ_g f_{s,g}` of the groups', each group's read once for every light scene
+//! (`readout::group_readouts`), and the bar's formula is applied to its own samples. For the hierarchical kernel the hierarchy is the one
 //! refined under the case's own light (every group on at factor 1); each group is solved on
 //! it as it stands.
 
@@ -18,9 +18,12 @@ use crate::model::{Model, SourceTerm};
 use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
+use crate::readout::grid::read_grids_cut_by;
+use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::illuminance::{arriving, patch_illuminance};
-use crate::readout::readings::{Readings, read_unbarred};
+use crate::readout::probe::{ProbeReading, read_probes};
 use crate::readout::residual_samples::ResidualSamples;
+use crate::readout::ugr::read_observers;
 use crate::render::LitScene;
 use crate::scene::{LightScene, Scene};
 use crate::solve::{Method, Projection, SolveParams, System};
@@ -51,8 +54,8 @@ pub fn solve_light_scenes(
     let fields = solve_groups(scene, model, x, &terms, how, progress)?;
     let xs: Vec<&[f64]> = fields.iter().map(|g| g.solve.x.as_slice()).collect();
     let all: Vec<&LightScene> = scene.lighting.scenes.iter().collect();
-    let (scenes, residual) = read_light_scenes(scene, model, &terms, &xs, &all, None, progress)?;
-    Ok(LightScenes { groups: fields, scenes, residual })
+    let (scenes, shared) = read_light_scenes(scene, model, &terms, &xs, &all, None, progress)?;
+    Ok(LightScenes { groups: fields, scenes, shared })
 }
 
 /// Each group's source term alone on `model` (`Model::source_term_of`), in the order of
@@ -71,19 +74,19 @@ pub(super) fn group_terms(scene: &Scene, model: &Model, wanted: impl Fn(usize) -
 /// The light scenes `light_scenes` of `scene` from the groups' source terms `terms` and
 /// fields `xs` (one per group of the scene): `x_s = Σ_g f_{s,g} x_g` and its readouts,
 /// `model` relit by each light scene in turn and given back as it came. Shared by the solve
-/// (every light scene) and `ugo readout` (the new or changed ones). The error bars are
-/// those of `Σ_g f_{s,g} samples_g`, the groups' residual samples (`residual_samples.rs`):
-/// `stored` when they were taken at these probes and grids, else traced here, each group's
-/// field on the model relit by the group alone; they are returned with the light scenes.
+/// (every light scene) and `ugo readout` (the new or changed ones). The grid readings and
+/// error bars are those of `Σ_g f_{s,g}` of the groups' (`readout::group_readouts`):
+/// `stored` when they were read at these probes and grids, else read here; they are
+/// returned with the light scenes (`None` when there is none).
 pub(super) fn read_light_scenes(
     scene: &Scene,
     model: &mut Model,
     terms: &[SourceTerm],
     xs: &[&[f64]],
     light_scenes: &[&LightScene],
-    stored: Option<Vec<ResidualSamples>>,
+    stored: Option<GroupReadouts>,
     progress: &dyn Progress,
-) -> Result<(Vec<LightSceneField>, Vec<ResidualSamples>), StudyError> {
+) -> Result<(Vec<LightSceneField>, Option<GroupReadouts>), StudyError> {
     let base = model.sources.clone();
     let mut own = None;
     let mut scenes = Vec::with_capacity(light_scenes.len());
@@ -93,42 +96,37 @@ pub(super) fn read_light_scenes(
         own.get_or_insert(relit);
         scenes.push(read_out(scene, model, light_scene, xs, progress));
     }
-    let residual = match scenes.first() {
-        None => Vec::new(),
-        Some(at) => {
-            let count = ResidualSamples::count(&at.probes, &at.grids);
-            let fits = |r: &Vec<ResidualSamples>| r.len() == xs.len() && r.iter().all(|g| g.0.len() == count);
-            match stored.filter(fits) {
-                Some(stored) => stored,
-                None => group_samples(scene, model, &base, terms, xs, at, progress),
-            }
-        }
-    };
-    for s in &mut scenes {
-        let parts: Vec<(f64, &ResidualSamples)> = s.factors.iter().copied().zip(&residual).collect();
-        s.grid_errors = ResidualSamples::superpose(&parts).bars(&mut s.probes, &s.grids);
+    let shared = scenes.first().map(|at| match stored.filter(|s| s.fits(xs.len(), &at.probes)) {
+        Some(stored) => stored,
+        None => group_readouts(scene, model, &base, terms, xs, &at.probes, progress),
+    });
+    for s in scenes.iter_mut() {
+        let Some(shared) = &shared else { break };
+        let (grids, samples) = shared.of_light_scene(&s.factors);
+        s.grid_errors = samples.bars(&mut s.probes, &grids);
+        s.grids = grids;
     }
     if let Some((sources, term)) = own {
         model.relight(sources, term);
     }
     crate::interrupt::check(|| "the light scenes' readouts".to_string())?;
-    Ok((scenes, residual))
+    Ok((scenes, shared))
 }
 
-/// Each group's residual samples at the probes and grids `at` read, its field `xs[g]` on
-/// `model` relit by the group alone (its luminaires placed as in `base`, its source term
-/// `terms[g]`), every gather cut along shadow edges as any group's field asks
-/// (`readout::cut`), so that `Σ_g f_g samples_g` are the samples of `Σ_g f_g x_g` cut so;
-/// `model` is left relit by the last group.
-fn group_samples(
+/// Each group's grid readings and residual samples (at the probes `probes` read, and at
+/// its grids), its field `xs[g]` read on `model` relit by the group alone (its luminaires
+/// placed as in `base`, its source term `terms[g]`), every gather cut along shadow edges as
+/// any group's field asks (`readout::cut`), so that `Σ_g f_g` of them is the reading of
+/// `Σ_g f_g x_g` cut so; `model` is left relit by the last group.
+fn group_readouts(
     scene: &Scene,
     model: &mut Model,
     base: &[Source],
     terms: &[SourceTerm],
     xs: &[&[f64]],
-    at: &LightSceneField,
+    probes: &[ProbeReading],
     progress: &dyn Progress,
-) -> Vec<ResidualSamples> {
+) -> GroupReadouts {
     let k = model.kernel.cells();
     let fields: Vec<Field> = xs.iter().map(|x| Field::from_unknowns(x, k)).collect();
     let by: Vec<&Field> = fields.iter().collect();
@@ -136,12 +134,15 @@ fn group_samples(
         name: String::new(),
         factors: (0..terms.len()).map(|h| if h == g { 1.0 } else { 0.0 }).collect(),
     };
-    (0..terms.len())
+    let (grids, samples) = (0..terms.len())
         .map(|g| {
             model.relight(dimmed(scene, base, &alone(g)), terms[g].clone());
-            ResidualSamples::of(&at.probes, &at.grids, model, &fields[g], &by, progress)
+            let grids = read_grids_cut_by(&scene.grids, model, &fields[g], &by, progress);
+            let samples = ResidualSamples::of(probes, &grids, model, &fields[g], &by, progress);
+            (grids, samples)
         })
-        .collect()
+        .unzip();
+    GroupReadouts { grids, samples }
 }
 
 /// The case's kernel as every group's solve takes it: factored, formed explicitly when the
@@ -211,7 +212,7 @@ pub fn dimmed(scene: &Scene, base: &[Source], light_scene: &LightScene) -> Vec<S
 
 /// The light scene's field `Σ_g f_g x_g` (`xs` the groups' fields) and its readouts on
 /// `model`, relit by it (the observers' UGR from its dimmed luminaires and its own
-/// background), without the error bars (`read_light_scenes` sets them).
+/// background), without its grids and error bars (`read_light_scenes` sets them).
 fn read_out(
     scene: &Scene,
     model: &Model,
@@ -225,7 +226,8 @@ fn read_out(
     }
     let k = model.kernel.cells();
     let field = Field::from_unknowns(&x, k);
-    let Readings { probes, grids, grid_errors, observers } = read_unbarred(scene, model, &field, progress);
+    let probes = read_probes(&scene.probes, model, &field, progress);
+    let observers = read_observers(&scene.observers, model, &field);
     LightSceneField {
         name: light_scene.name.clone(),
         factors: light_scene.factors.clone(),
@@ -235,8 +237,8 @@ fn read_out(
         direct_illuminance: patch_illuminance(&model.direct.arriving, k),
         energy: EnergyBalance::of(model, &x, scene.surfaces.len()),
         probes,
-        grids,
-        grid_errors,
+        grids: Vec::new(),
+        grid_errors: Vec::new(),
         observers,
         field,
     }
