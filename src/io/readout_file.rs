@@ -6,7 +6,7 @@
 //! dropped, the unchanged ones kept), `/light_groups/{grid_readings,bar_samples}` when light scenes were read
 //! (dropped when the readout tables changed and none was) — laid out as `hdf5_file.rs` and `light_scene_group.rs`
 //! lay them out for a solve, so that `ugo report` and `ugo render --light-scene` read them
-//! alike. The field, the groups' fields, the mesh, the kernel and every record of the solve
+//! alike (`docs/design.md` §8). The field, the groups' fields, the mesh, the kernel and every record of the solve
 //! are kept as they were. The copy is written under a temporary name and renamed when
 //! complete (`atomic.rs`), so the input is never changed on error, even when it is also
 //! the output.

@@ -1,4 +1,5 @@
-//! The light arriving at an exact point by way of the plane mirrors (`docs/mirrors.md`):
+//! The light arriving at an exact point by way of the plane mirrors (`docs/mirrors.md`; the
+//! gather of `docs/design.md` §5):
 //! each mirror `M` in front of which `p` lies is a window into the mirrored scene, so the
 //! light it brings `p` is `ρ_M` times what the images `j′` of the other patches send `p`
 //! through `M`'s polygon,
@@ -10,7 +11,8 @@
 //! share of the image's points whose segment from `p` crosses the mirror's plane inside
 //! `M`, with nothing in the way before or after it (`transfer::image`). A piece of an image
 //! that the mirror's edge or a shadow crosses is cut into quarters
-//! (`transfer::occlusion::cut_along_shadows`), as the gather cuts along shadow edges. A Phong
+//! (`transfer::occlusion::cut_along_shadows`), as the gather cuts along shadow edges (by
+//! the rule of `cut.rs`). A Phong
 //! or GGX patch's light is its final gather towards the mirror point (`glossy.rs`).
 //!
 //! The mirror's own stored cell values hold its reflection averaged over each direction
