@@ -2,13 +2,14 @@
 //! sources). Each group of sources (`[[luminaire]]` and `[[surface]]` `group` keys) is solved
 //! alone against the case's one kernel, every solve started from the solutions already
 //! known (`solve::Projection`, the case's own field first); every `[[light_scene]]` is then
-//! `x_s = Σ_g f_{s,g} x_g`, read out (patch illuminance, energy, probes, grids) by the model
-//! relit with its dimmed sources, exactly as a solve of the case with those sources would
-//! be. Its grid readings and the residual samples of its error bars ((5.5), (5.6)) are
-//! `Σ_g f_{s,g}` of the groups', each group's read once for every light scene
-//! (`readout::group_readouts`), and the bar's formula is applied to its own samples. For the hierarchical kernel the hierarchy is the one
-//! refined under the case's own light (every group on at factor 1); each group is solved on
-//! it as it stands.
+//! `x_s = Σ_g f_{s,g} x_g`, read out (patch illuminance, energy, probes) by the model relit
+//! with its dimmed sources, exactly as a solve of the case with those sources would be. Its
+//! grid readings and the residual samples of its error bars ((5.5), (5.6)) are `Σ_g f_{s,g}`
+//! of the groups', each group's read once for every light scene with the groups' cut along
+//! shadow edges (`readout::group_readouts`, `readout::cut`), and the bar's formula is
+//! applied to its own samples. For the hierarchical kernel the hierarchy is the one refined
+//! under the case's own light (every group on at factor 1); each group is solved on it as
+//! it stands.
 
 use super::error::StudyError;
 use crate::io::{GroupField, IoError, LightSceneField, LightScenes, StoredSolution};
