@@ -9,7 +9,12 @@
 //! each of the L luminaires lands (lm), and what its solve cost (kernel applications, the
 //! relative residual of the projected start and of the solution, s); attribute
 //! `maintenance_factor`. Files solved before `direct` was stored have neither it nor
-//! `intercepted` (`ugo readout` traces the groups' light again). `/light_scenes/<name>/field/{luminance,emission,source,
+//! `intercepted` (`ugo readout` traces the groups' light again). `/light_groups/grid_readings`
+//! (G×P×2) and `/light_groups/bar_samples` (G×M×2): each group's readings of the grids'
+//! points (illuminance and its direct part, lx) and residual samples at the probes and grids
+//! (`π r` in lx and the albedo of the point seen; `readout::group_readouts`), every light
+//! scene's grid readings and bars being those of `Σ_g factors[s, g] · …[g]`; absent from
+//! files solved before (`ugo readout` reads them and stores them). `/light_scenes/<name>/field/{luminance,emission,source,
 //! illuminance,direct_illuminance}`, `/light_scenes/<name>/probes/…` and
 //! `/light_scenes/<name>/grids/<grid>/…` as `/field`, `/probes` and `/grids` of the file,
 //! for the light scene; its attributes: `factors` (G) and `flux_emitted`, `flux_absorbed`,
@@ -23,15 +28,18 @@ use super::readout_group::{write_grids, write_probes};
 use crate::luminaire::DirectLight;
 use crate::model::Model;
 use crate::readout::energy::EnergyBalance;
+use crate::readout::error_bar::Sample;
 use crate::readout::field::Field;
 use crate::readout::grid::GridReading;
 use crate::readout::grid_error::GridErrorBars;
+use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::probe::ProbeReading;
+use crate::readout::residual_samples::ResidualSamples;
 use crate::readout::ugr::UgrReading;
 use crate::scene::{LightScene, Scene};
 use crate::solve::Successive;
 use hdf5::types::VarLenUnicode;
-use ndarray::{Array1, Array2, Array4};
+use ndarray::{Array1, Array2, Array3, Array4};
 use std::path::Path;
 
 /// The light scenes of a case: one field per group, and every light scene's readouts.
@@ -40,6 +48,9 @@ pub struct LightScenes {
     pub groups: Vec<GroupField>,
     /// One entry per `[[light_scene]]`.
     pub scenes: Vec<LightSceneField>,
+    /// Each group's grid readings and residual samples, from which every light scene's
+    /// grid readings and error bars follow; `None` without light scenes.
+    pub shared: Option<GroupReadouts>,
 }
 
 /// One group's field alone, and its solve.
@@ -127,7 +138,54 @@ fn write_groups(g: &hdf5::Group, model: &Model, light: &LightScenes) -> hdf5::Re
     dataset(g, "iterations", &column(|s| s.info.iterations as f64))?;
     dataset(g, "start_residual", &column(|s| s.start))?;
     dataset(g, "residual", &column(|s| s.residual))?;
-    dataset(g, "seconds", &column(|s| s.info.seconds))
+    dataset(g, "seconds", &column(|s| s.info.seconds))?;
+    light.shared.as_ref().map_or(Ok(()), |shared| write_group_readouts(g, shared))
+}
+
+/// `/light_groups/grid_readings` (G×P×2: every grid's points in turn, the illuminance and
+/// its direct part, lx) and `/light_groups/bar_samples` (G×M×2: `π r` in lx and the albedo
+/// of the point seen) of the groups' readouts `shared`; each left out when it is empty (no
+/// grid point, no probe or grid).
+pub(super) fn write_group_readouts(g: &hdf5::Group, shared: &GroupReadouts) -> hdf5::Result<()> {
+    let samples: Vec<Vec<f64>> =
+        shared.samples.iter().map(|r| r.0.iter().flat_map(|s| [s.illuminance, s.albedo]).collect()).collect();
+    for (name, rows) in [("grid_readings", shared.values()), ("bar_samples", samples)] {
+        let Some(m) = rows.first().map(Vec::len).filter(|&m| m > 0) else { continue };
+        dataset(g, name, &Array3::from_shape_fn((rows.len(), m / 2, 2), |(a, i, c)| rows[a][2 * i + c]))?;
+    }
+    Ok(())
+}
+
+/// The groups' readouts as a file stores them: per group, its grids' points' illuminance
+/// and direct part in turn (lx), and its residual samples.
+pub type StoredReadouts = (Vec<Vec<f64>>, Vec<ResidualSamples>);
+
+/// The groups' readouts the solution file `path` stores for `groups` groups, as
+/// [`GroupReadouts::stored`] takes them (absent datasets read as no values), or `None`
+/// when it stores none or holds values that are not finite.
+pub fn read_group_readouts(path: &Path, groups: usize) -> Result<Option<StoredReadouts>, IoError> {
+    let (h5, bytes) = super::read::open(path)?;
+    let stored = |name: &str| h5.link_exists(&format!("light_groups/{name}"));
+    if groups == 0 || !(stored("grid_readings") || stored("bar_samples")) {
+        return Ok(None);
+    }
+    let file = super::read::File { h5: &h5, bytes };
+    let why = |super::read::Why(why)| IoError::NotASolution { path: path.to_path_buf(), why };
+    let rows = |name: &str| -> Result<Option<Vec<Vec<f64>>>, IoError> {
+        let values = match stored(name) {
+            true => file.raw::<f64>(&format!("light_groups/{name}")).map_err(why)?,
+            false => Vec::new(),
+        };
+        if values.len() % (2 * groups) != 0 || values.iter().any(|v| !v.is_finite()) {
+            return Ok(None);
+        }
+        let per_group = values.len() / groups;
+        Ok(Some((0..groups).map(|g| values[g * per_group..(g + 1) * per_group].to_vec()).collect()))
+    };
+    let (Some(values), Some(samples)) = (rows("grid_readings")?, rows("bar_samples")?) else { return Ok(None) };
+    let row =
+        |row: Vec<f64>| ResidualSamples(row.chunks(2).map(|s| Sample { illuminance: s[0], albedo: s[1] }).collect());
+    Ok(Some((values, samples.into_iter().map(row).collect())))
 }
 
 /// One group's field as a solve stored it (`/light_groups/{name,luminance,direct,intercepted}`).

@@ -53,7 +53,7 @@ pub use hdf5_file::write_solution;
 pub use isolines::isolines;
 pub use kernel_file::{StoredKernel, read_kernel};
 pub use light_scene_group::{
-    GroupField, LightSceneField, LightScenes, StoredGroup, read_light_groups, read_light_scene,
+    GroupField, LightSceneField, LightScenes, StoredGroup, read_group_readouts, read_light_groups, read_light_scene,
 };
 pub use lock::OutputLock;
 pub use no_room::survive_size_limit;

@@ -3,19 +3,21 @@
 //! the edited case — `/case_files` and the root attributes of the case, `/probes`, `/grids`,
 //! `/observers` (when read again), `/light_groups/{scene_names,factors}` and
 //! `/light_scenes/<name>` of every new or changed light scene (those no longer in the case
-//! dropped, the unchanged ones kept) — laid out as `hdf5_file.rs` and `light_scene_group.rs`
+//! dropped, the unchanged ones kept), `/light_groups/{grid_readings,bar_samples}` when light scenes were read
+//! (dropped when the readout tables changed and none was) — laid out as `hdf5_file.rs` and `light_scene_group.rs`
 //! lay them out for a solve, so that `ugo report` and `ugo render --light-scene` read them
-//! alike. The field, the groups' fields, the mesh, the kernel and every record of the solve
+//! alike (`docs/design.md` §8). The field, the groups' fields, the mesh, the kernel and every record of the solve
 //! are kept as they were. The copy is written under a temporary name and renamed when
 //! complete (`atomic.rs`), so the input is never changed on error, even when it is also
 //! the output.
 
 use super::hdf5_file::{CASE_ATTRIBUTES, write_case};
-use super::light_scene_group::{write_factors, write_scenes};
+use super::light_scene_group::{write_factors, write_group_readouts, write_scenes};
 use super::observer_group::write_observers;
 use super::readout_group::{write_grids, write_probes};
 use super::{IoError, LightSceneField};
 use crate::model::Model;
+use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::readings::Readings;
 use crate::scene::Scene;
 use std::path::Path;
@@ -30,6 +32,9 @@ pub struct Readout {
     /// Every new or changed light scene of the edited case, a weighted sum of the stored
     /// groups' fields.
     pub light_scenes: Vec<LightSceneField>,
+    /// The groups' readouts the new light scenes' grids and bars were read from (stored
+    /// or read), when some were read: written as `/light_groups/{grid_readings,bar_samples}`.
+    pub shared: Option<GroupReadouts>,
     /// The light scenes kept as stored (their factors and the readout tables unchanged).
     pub kept: Vec<String>,
     /// The groups whose luminaires were traced again (a file without their direct light).
@@ -66,6 +71,12 @@ fn rewrite(path: &Path, scene: &Scene, r: &Readout) -> hdf5::Result<()> {
     groups.unlink("scene_names")?;
     groups.unlink("factors")?;
     write_factors(&groups, &scene.lighting.scenes)?;
+    if r.shared.is_some() || r.readings.is_some() {
+        ["grid_readings", "bar_samples"].into_iter().try_for_each(|name| unlink(&groups, name))?;
+    }
+    if let Some(shared) = &r.shared {
+        write_group_readouts(&groups, shared)?;
+    }
     let scenes = match file.link_exists("light_scenes") {
         true => file.group("light_scenes")?,
         false => file.create_group("light_scenes")?,
@@ -80,7 +91,7 @@ fn rewrite(path: &Path, scene: &Scene, r: &Readout) -> hdf5::Result<()> {
 }
 
 /// Removes `name` from `file` when it is there.
-fn unlink(file: &hdf5::File, name: &str) -> hdf5::Result<()> {
+fn unlink(file: &hdf5::Group, name: &str) -> hdf5::Result<()> {
     match file.link_exists(name) {
         true => file.unlink(name),
         false => Ok(()),

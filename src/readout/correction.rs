@@ -77,7 +77,7 @@ impl Corrected {
 /// The light arriving at a receiver at `p` facing the unit `n`, gathered (`gather.rs`) and
 /// corrected near geometry.
 pub fn corrected(model: &Model, field: &Field, p: DVec3, n: DVec3) -> Corrected {
-    let (at, mut incident, direct) = incident_at(model, field, p, n);
+    let (at, mut incident, direct) = incident_at(model, field, p, n, &[]);
     let before = PI * incident.iter().sum::<f64>();
     let total = incident.iter().chain(&direct).sum::<f64>();
     let delta = near_correction(model, field, p, &at.frame, at.ignore, total);
@@ -113,7 +113,7 @@ pub fn near_correction(model: &Model, field: &Field, p: DVec3, frame: &Frame, ig
                         bins.clear();
                         binned_point(p, frame, &Patch { polygon: *a, ..*s }, &binning, &mut bins);
                         let c = a.centroid();
-                        let l = gathered(model, field, j, c, (p - c).normalize());
+                        let l = gathered(model, field, j, c, (p - c).normalize(), &[]);
                         for &(d, m, f) in bins.iter() {
                             sum[d as usize] += f * seen * (l - field.at(j, m as usize));
                         }

@@ -90,14 +90,46 @@ impl Residual {
 /// Sets the error bar of every probe's reading, telling `progress` of each; a signal's stop
 /// leaves the rest without (`crate::interrupt`: the caller checks).
 pub fn estimate_errors(readings: &mut [ProbeReading], model: &Model, field: &Field, progress: &dyn Progress) {
+    let samples = probe_samples(readings, model, field, &[], progress);
+    set_errors(readings, &samples);
+}
+
+/// The residual's samples of every probe of `readings` ([`probe_rays`] each, probe after
+/// probe), the gathers cut by the rules of `by` (`samples`), telling `progress` of each; a
+/// signal's stop leaves the samples after it zero.
+pub fn probe_samples(
+    readings: &[ProbeReading],
+    model: &Model,
+    field: &Field,
+    by: &[&Field],
+    progress: &dyn Progress,
+) -> Vec<Sample> {
     progress.begin("error bars", readings.len() as u64);
-    for r in readings.iter_mut().take_while(|_| !crate::interrupt::asked()) {
+    let mut all = Vec::with_capacity(readings.iter().map(probe_rays).sum());
+    for r in readings {
         let receivers = receivers(r);
-        let samples = samples(model, field, &receivers, RAYS / receivers.len(), &Silent);
-        r.error = Some(Residual::pooled(samples.iter()).error_bar(r.correction));
+        all.extend(samples(model, field, &receivers, RAYS / receivers.len(), by, &Silent));
         progress.advance(1);
     }
     progress.end();
+    all
+}
+
+/// Sets the error bar of every probe of `readings` from its samples in `samples` (as
+/// [`probe_samples`] lays them out); the probes past the samples' end are left without.
+pub fn set_errors(readings: &mut [ProbeReading], samples: &[Sample]) {
+    let mut start = 0;
+    for r in readings.iter_mut() {
+        let Some(own) = samples.get(start..start + probe_rays(r)) else { return };
+        r.error = Some(Residual::pooled(own.iter()).error_bar(r.correction));
+        start += own.len();
+    }
+}
+
+/// The samples a probe's bar pools: [`RAYS`] shared among its receivers.
+pub fn probe_rays(r: &ProbeReading) -> usize {
+    let receivers = receivers(r).len();
+    RAYS / receivers * receivers
 }
 
 /// The receivers `(p, n)` a probe's illuminance is the mean of: its own for a point sensor
@@ -115,18 +147,21 @@ fn receivers(r: &ProbeReading) -> Vec<(DVec3, DVec3)> {
 /// The residual at `p` on a receiver facing the unit `n`, over `rays` directions (a
 /// signal's stop leaves the rays after it unread: `crate::interrupt`).
 pub fn residual(model: &Model, field: &Field, p: DVec3, n: DVec3, rays: usize) -> Residual {
-    Residual::pooled(samples(model, field, &[(p, n)], rays, &Silent).iter())
+    Residual::pooled(samples(model, field, &[(p, n)], rays, &[], &Silent).iter())
 }
 
 /// The residual's samples over `rays` stratified cosine-distributed directions from each
 /// receiver at `p` facing the unit `n` of `receivers`, receiver after receiver (a signal's
 /// stop leaves the rays after it unread, zero: `crate::interrupt`); `progress` advances by
-/// one as each receiver's last direction is read.
+/// one as each receiver's last direction is read. The gathers at the points seen cut along
+/// shadow edges by the field's own rule, or by that of any field of `by` (`cut.rs`: fields
+/// whose samples are summed).
 pub fn samples(
     model: &Model,
     field: &Field,
     receivers: &[(DVec3, DVec3)],
     rays: usize,
+    by: &[&Field],
     progress: &dyn Progress,
 ) -> Vec<Sample> {
     let stored = ModelSurroundings::new(model, field);
@@ -142,7 +177,7 @@ pub fn samples(
             }
             let ((at, set), p) = (&sets[k / rays], receivers[k / rays].0);
             let [u, v] = set.point(k % rays);
-            let sample = seen(&stored, p, at.frame.world(cosine_direction(u, v)), at.ignore);
+            let sample = seen(&stored, p, at.frame.world(cosine_direction(u, v)), at.ignore, by);
             if k % rays == rays - 1 {
                 progress.advance(1);
             }
@@ -153,8 +188,9 @@ pub fn samples(
 
 /// The sample of the point `p` sees along `w` (ignoring face `ignore`), `L_h` as `stored`
 /// holds it: zero for a miss, the back of a surface, and a surface that is not Lambertian (a
-/// glossy surface's reading is relit already, a mirror's is its images').
-fn seen(stored: &ModelSurroundings, p: DVec3, w: DVec3, ignore: u32) -> Sample {
+/// glossy surface's reading is relit already, a mirror's is its images'); its gather cut by
+/// the rules of `by`.
+fn seen(stored: &ModelSurroundings, p: DVec3, w: DVec3, ignore: u32, by: &[&Field]) -> Sample {
     let (model, field) = (stored.model, stored.field);
     let sphere = model.kernel.directions.is_sphere();
     let Some((j, y)) = model.faces.landing_patch(&model.mesh, &model.visibility, p, w, ignore, sphere) else {
@@ -165,5 +201,5 @@ fn seen(stored: &ModelSurroundings, p: DVec3, w: DVec3, ignore: u32) -> Sample {
         return Sample::default();
     }
     let albedo = model.kernel.blocks[model.kernel.patch_material[j] as usize].albedo(0, &model.kernel.directions).0;
-    Sample { illuminance: PI * (gathered(model, field, j, y, -w) - stored.stored(j, w)), albedo }
+    Sample { illuminance: PI * (gathered(model, field, j, y, -w, by) - stored.stored(j, w)), albedo }
 }

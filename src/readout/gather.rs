@@ -22,6 +22,7 @@
 use crate::geometry::{ConvexPolygon, Frame, Patch};
 use crate::luminaire::arriving_at;
 use crate::model::Model;
+use crate::readout::cut::{Cut, Worth};
 use crate::readout::field::Field;
 use crate::readout::glossy::{ModelSurroundings, PIECE_RAYS};
 use crate::readout::mirrored::{on_mirrors, through_mirrors};
@@ -39,12 +40,14 @@ use std::f64::consts::PI;
 /// space), the luminaires' direct light included; not corrected near geometry (a grid
 /// point's: `correction.rs` says why).
 pub fn illuminance_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> f64 {
-    illuminance_and_direct_at(model, field, p, n).0
+    illuminance_and_direct_at(model, field, p, n, &[]).0
 }
 
-/// [`illuminance_at`] and its part directly from the sources (luminaires, sun, openings), lx.
-pub fn illuminance_and_direct_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (f64, f64) {
-    let (_, incident, direct) = incident_at(model, field, p, n);
+/// [`illuminance_at`] and its part directly from the sources (luminaires, sun, openings), lx;
+/// the pieces along shadow edges cut by the field's own rule, or by that of any field of
+/// `by` (`cut.rs`: fields whose readings are summed).
+pub fn illuminance_and_direct_at(model: &Model, field: &Field, p: DVec3, n: DVec3, by: &[&Field]) -> (f64, f64) {
+    let (_, incident, direct) = incident_at(model, field, p, n, by);
     let direct = PI * direct.iter().sum::<f64>();
     (PI * incident.iter().sum::<f64>() + direct, direct)
 }
@@ -68,27 +71,33 @@ impl Receiver {
 }
 
 /// The receiver at `p` facing `n` and the light arriving there per cell of its frame:
-/// gathered from the surfaces, and directly from the luminaires.
-pub(super) fn incident_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> (Receiver, Vec<f64>, Vec<f64>) {
+/// gathered from the surfaces (cut by the rules of `by`, as [`illuminance_and_direct_at`]),
+/// and directly from the luminaires.
+pub(super) fn incident_at(
+    model: &Model,
+    field: &Field,
+    p: DVec3,
+    n: DVec3,
+    by: &[&Field],
+) -> (Receiver, Vec<f64>, Vec<f64>) {
     let at = Receiver::at(model, p, n);
     let direct =
         arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &at.frame, at.ignore, READING);
-    let incident = gather(model, field, p, &at.frame, at.ignore);
+    let incident = per_cell(model, field, p, &at.frame, at.ignore, &Cut { fraction: SHADOW_CUT, by });
     (at, incident, direct)
 }
 
 /// All the light arriving at point `q` of patch `s` per cell of its frame: gathered from
 /// the surfaces plus direct from the luminaires.
 pub(super) fn arriving(model: &Model, field: &Field, q: DVec3, s: &Patch) -> Vec<f64> {
-    arriving_within(model, field, q, s, SHADOW_CUT)
+    arriving_within(model, field, q, s, &Cut::own(SHADOW_CUT))
 }
 
-/// [`arriving`], with the pieces along shadow edges cut while their light exceeds
-/// `shadow_cut` of all the point would receive unoccluded (as [`SHADOW_CUT`]).
-pub(super) fn arriving_within(model: &Model, field: &Field, q: DVec3, s: &Patch, shadow_cut: f64) -> Vec<f64> {
+/// [`arriving`], with the pieces along shadow edges cut by `cut` (as [`SHADOW_CUT`]).
+pub(super) fn arriving_within(model: &Model, field: &Field, q: DVec3, s: &Patch, cut: &Cut) -> Vec<f64> {
     let frame = s.frame();
     let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, q, &frame, s.face, READING);
-    sum(&per_cell(model, field, q, &frame, s.face, shadow_cut), &direct)
+    sum(&per_cell(model, field, q, &frame, s.face, cut), &direct)
 }
 
 pub(super) fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
@@ -112,35 +121,34 @@ pub const LOBE_DEPTH: u32 = 5;
 
 /// `I_d(p)`: the light arriving at `p` per cell of `frame`, ignoring face `ignore`.
 pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32) -> Vec<f64> {
-    per_cell(model, field, p, frame, ignore, SHADOW_CUT)
+    per_cell(model, field, p, frame, ignore, &Cut::own(SHADOW_CUT))
 }
 
-fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, shadow_cut: f64) -> Vec<f64> {
+fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, cut: &Cut) -> Vec<f64> {
     let directions = &model.kernel.directions;
     let cells = directions.len();
     let binning = Binning::new(directions);
     let patches = &model.mesh.patches;
     let mirrored = on_mirrors(model);
-    let unoccluded: Vec<f64> = patches
+    let geometric: Vec<f64> = patches
         .par_iter()
         .enumerate()
         .map(|(j, s)| match s.face == ignore || mirrored[j] {
             true => 0.0,
-            false => point_to_patch(p, frame.normal, s).max(0.0) * field.brightest(j),
+            false => point_to_patch(p, frame.normal, s).max(0.0),
         })
         .collect();
-    let least = shadow_cut * unoccluded.iter().sum::<f64>();
+    let worth = Worth::new(cut, field, &geometric, |j| j, 1.0);
     let surroundings = ModelSurroundings::new(model, field);
     let surfaces = patches
         .par_iter()
         .enumerate()
-        .filter(|&(j, _)| unoccluded[j] > 0.0)
+        .filter(|&(j, _)| worth.lit(j))
         .fold(
             || (vec![0.0; cells], Vec::new(), Cell::new(NO_BLOCKER)),
             |(mut sum, mut bins, blocker), (j, s)| {
                 let sees = |y: DVec3| model.visibility.visible_shared(p, y, [ignore, s.face], &blocker);
-                let per_area = unoccluded[j] / s.area;
-                let worth = |piece: &ConvexPolygon| per_area * piece.area() > least;
+                let worth = |piece: &ConvexPolygon| worth.cuts(j, s.area, piece.area());
                 let lobe = model.materials[s.material as usize].lobe_width();
                 cut_along_shadows(&s.polygon, 0, &sees, &worth, &mut |piece, seen| {
                     let Some(width) = lobe else {
@@ -162,5 +170,5 @@ fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, 
         )
         .map(|(sum, _, _)| sum)
         .reduce(|| vec![0.0; cells], |a, b| sum(&a, &b));
-    sum(&surfaces, &through_mirrors(model, field, p, frame, ignore, shadow_cut))
+    sum(&surfaces, &through_mirrors(model, field, p, frame, ignore, cut))
 }

@@ -47,18 +47,47 @@ impl GridReading {
     /// The illuminance at every calculation point of `grid`, each point told to `progress`;
     /// a signal's stop leaves the points after it unread (`crate::interrupt`: the caller checks).
     pub fn of(grid: &Grid, model: &Model, field: &Field, progress: &dyn Progress) -> GridReading {
-        let points = grid.points();
-        let (illuminance, direct) = points
+        GridReading::cut_by(grid, model, field, &[], progress)
+    }
+
+    /// [`GridReading::of`], each point's gather cut along shadow edges by the rules of the
+    /// fields `by` (`cut.rs`: fields whose readings are summed; none: the field's own).
+    pub fn cut_by(grid: &Grid, model: &Model, field: &Field, by: &[&Field], progress: &dyn Progress) -> GridReading {
+        let (illuminance, direct) = grid
+            .points()
             .iter()
             .take_while(|_| !crate::interrupt::asked())
             .map(|&p| {
-                let reading = illuminance_and_direct_at(model, field, p, grid.normal);
+                let reading = illuminance_and_direct_at(model, field, p, grid.normal, by);
                 progress.advance(1);
                 reading
             })
             .unzip();
+        GridReading::with(grid, model, illuminance, direct)
+    }
+
+    /// The reading of `grid` whose points read `illuminance`, of it `direct` (lx): its
+    /// points and which of them `model` obstructs.
+    pub fn with(grid: &Grid, model: &Model, illuminance: Vec<f64>, direct: Vec<f64>) -> GridReading {
+        let points = grid.points();
         let obstructed = obstructions(model, grid, &points);
         GridReading { grid: grid.clone(), points, illuminance, direct, obstructed }
+    }
+
+    /// `Σ w·R` over the `(w, R)` of `parts` (readings of one grid, each of one group's
+    /// field read by [`GridReading::cut_by`] the groups' rules): the reading of `Σ w x`.
+    pub fn superpose(parts: &[(f64, &GridReading)]) -> Option<GridReading> {
+        let (_, first) = parts.first()?;
+        let mut sum = GridReading {
+            illuminance: vec![0.0; first.points.len()],
+            direct: vec![0.0; first.points.len()],
+            ..(*first).clone()
+        };
+        for (w, part) in parts {
+            sum.illuminance.iter_mut().zip(&part.illuminance).for_each(|(s, e)| *s += w * e);
+            sum.direct.iter_mut().zip(&part.direct).for_each(|(s, e)| *s += w * e);
+        }
+        Some(sum)
     }
 
     /// The statistics of the illuminance over the points that count.
@@ -87,8 +116,20 @@ impl GridReading {
 
 /// Reads every grid of a scene from a solved field, telling `progress` of each point.
 pub fn read_grids(grids: &[Grid], model: &Model, field: &Field, progress: &dyn Progress) -> Vec<GridReading> {
+    read_grids_cut_by(grids, model, field, &[], progress)
+}
+
+/// [`read_grids`], the gathers cut along shadow edges by the rules of the fields `by`
+/// ([`GridReading::cut_by`]).
+pub fn read_grids_cut_by(
+    grids: &[Grid],
+    model: &Model,
+    field: &Field,
+    by: &[&Field],
+    progress: &dyn Progress,
+) -> Vec<GridReading> {
     progress.begin("grid points", grids.iter().map(|g| g.points().len() as u64).sum());
-    let readings = grids.iter().map(|g| GridReading::of(g, model, field, progress)).collect();
+    let readings = grids.iter().map(|g| GridReading::cut_by(g, model, field, by, progress)).collect();
     progress.end();
     readings
 }

@@ -23,7 +23,7 @@
 //!   `[max(0, E_min − δE_min)/(E_avg + δE_avg), (E_min + δE_min)/(E_avg − δE_avg)]`
 //!   (infinite once `δE_avg ≥ E_avg`).
 
-use super::error_bar::{Residual, samples};
+use super::error_bar::{Residual, Sample, samples};
 use super::field::Field;
 use super::grid::GridReading;
 use crate::model::Model;
@@ -55,11 +55,13 @@ impl GridErrorBars {
     /// counted point (a signal's stop leaves the rays after it zero: `crate::interrupt`,
     /// the caller checks).
     pub fn of(grid: &GridReading, model: &Model, field: &Field, progress: &dyn Progress) -> GridErrorBars {
-        let counted = counted(grid);
-        let receivers: Vec<_> = counted.iter().map(|&i| (grid.points[i], grid.grid.normal)).collect();
-        let samples = samples(model, field, &receivers, GRID_RAYS, progress);
+        GridErrorBars::from_samples(grid, &grid_samples(grid, model, field, &[], progress))
+    }
+
+    /// The bars of `grid` from its counted points' samples ([`grid_samples`]).
+    pub fn from_samples(grid: &GridReading, samples: &[Sample]) -> GridErrorBars {
         let mut slot = vec![None; grid.points.len()];
-        counted.iter().enumerate().for_each(|(k, &i)| slot[i] = Some(k));
+        counted(grid).iter().enumerate().for_each(|(k, &i)| slot[i] = Some(k));
         let [nu, nv] = grid.grid.resolution;
         let points = (0..grid.points.len())
             .into_par_iter()
@@ -78,6 +80,40 @@ impl GridErrorBars {
             .collect();
         statistics(grid, points)
     }
+}
+
+/// The residual's samples of the counted points of `grid` ([`GRID_RAYS`] each, point after
+/// point), read from `field` on `model` (cut by the rules of `by`: `error_bar::samples`),
+/// `progress` advanced by one per counted point.
+pub fn grid_samples(
+    grid: &GridReading,
+    model: &Model,
+    field: &Field,
+    by: &[&Field],
+    progress: &dyn Progress,
+) -> Vec<Sample> {
+    let receivers: Vec<_> = counted(grid).iter().map(|&i| (grid.points[i], grid.grid.normal)).collect();
+    samples(model, field, &receivers, GRID_RAYS, by, progress)
+}
+
+/// The samples of every grid of `readings`, grid after grid (cut by the rules of `by`),
+/// telling `progress` of each counted point.
+pub fn grids_samples(
+    readings: &[GridReading],
+    model: &Model,
+    field: &Field,
+    by: &[&Field],
+    progress: &dyn Progress,
+) -> Vec<Sample> {
+    progress.begin("grid error bars", readings.iter().map(|g| counted(g).len() as u64).sum());
+    let samples = readings.iter().flat_map(|g| grid_samples(g, model, field, by, progress)).collect();
+    progress.end();
+    samples
+}
+
+/// The samples the bars of `grid` pool: [`GRID_RAYS`] per counted point.
+pub fn grid_rays(grid: &GridReading) -> usize {
+    counted(grid).len() * GRID_RAYS
 }
 
 /// The points of `grid` its statistics count (not obstructed).

@@ -22,9 +22,10 @@ use crate::geometry::{Mesh, NO_TWIN};
 use crate::luminaire::Source;
 use crate::material::MaterialModel;
 use crate::model::Model;
+use crate::readout::cut::Cut;
 use crate::readout::field::Field;
 use crate::readout::final_gather::{Surroundings, indirect};
-use crate::readout::gather::{arriving, arriving_within};
+use crate::readout::gather::{SHADOW_CUT, arriving, arriving_within};
 use crate::readout::glossy::{self, ModelSurroundings, PIECE_RAYS, has_lobe, is_diffuse, stream};
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
@@ -47,7 +48,7 @@ pub fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVe
     if !is_diffuse(&model.materials[model.mesh.patches[i].material as usize]) {
         return relit(model, field, i, q, direction, RELIT_RAYS);
     }
-    lambertian(model, field, i, q, direction, incident)
+    lambertian(model, field, i, q, direction, incident, &[])
 }
 
 /// The luminance (cd/m²) seen from `p` along the unit `v`: the outgoing luminance, gathered
@@ -63,27 +64,39 @@ pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3, relit_rays: usize)
             if !is_diffuse(&model.materials[s.material as usize]) {
                 return Some(relit(model, field, i, q, -v, relit_rays));
             }
-            Some(lambertian(model, field, i, q, -v, &arriving(model, field, q, s)))
+            Some(lambertian(model, field, i, q, -v, &arriving(model, field, q, s), &[]))
         })
         .unwrap_or(0.0)
 }
 
 /// The Lambertian luminance of patch `j`'s point `y` towards `direction`, from the light
-/// gathered at `y` (its pieces along shadow edges cut at [`RELIT_SHADOW_CUT`]), cd/m².
-pub fn gathered(model: &Model, field: &Field, j: usize, y: DVec3, direction: DVec3) -> f64 {
+/// gathered at `y` (its pieces along shadow edges cut at [`RELIT_SHADOW_CUT`] by the
+/// field's rule, or by that of any field of `by`: `cut.rs`), cd/m².
+pub fn gathered(model: &Model, field: &Field, j: usize, y: DVec3, direction: DVec3, by: &[&Field]) -> f64 {
     let s = &model.mesh.patches[j];
-    lambertian(model, field, j, y, direction, &arriving_within(model, field, y, s, RELIT_SHADOW_CUT))
+    let incident = arriving_within(model, field, y, s, &Cut { fraction: RELIT_SHADOW_CUT, by });
+    lambertian(model, field, j, y, direction, &incident, by)
 }
 
-/// The Lambertian outgoing luminance of patch `i` at `q` towards `direction`.
-fn lambertian(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVec3, incident: &[f64]) -> f64 {
+/// The Lambertian outgoing luminance of patch `i` at `q` towards `direction`, the light
+/// through a transmitter gathered as [`arriving`] cuts it, by the rules of `by` (`cut.rs`).
+fn lambertian(
+    model: &Model,
+    field: &Field,
+    i: usize,
+    q: DVec3,
+    direction: DVec3,
+    incident: &[f64],
+    by: &[&Field],
+) -> f64 {
     let kernel = &model.kernel;
     let patch = &model.mesh.patches[i];
     let k = kernel.directions.lookup(patch.frame().local(direction));
     let block = &kernel.blocks[kernel.patch_material[i] as usize];
     let mut l = model.mesh.emission[i] + incident.iter().enumerate().map(|(d, e)| block.at(k, d) * e).sum::<f64>();
     if block.transmits() && patch.twin != NO_TWIN {
-        let through = arriving(model, field, q, &model.mesh.patches[patch.twin as usize]);
+        let twin = &model.mesh.patches[patch.twin as usize];
+        let through = arriving_within(model, field, q, twin, &Cut { fraction: SHADOW_CUT, by });
         l += through.iter().enumerate().map(|(d, e)| block.transmit_at(k, d).unwrap_or(0.0) * e).sum::<f64>();
     }
     l
@@ -142,7 +155,7 @@ impl Surroundings for Relit<'_> {
         let light = if s.normal.dot(w) >= 0.0 {
             self.stored.stored(j, w)
         } else if is_diffuse(material) {
-            gathered(model, field, j, y, -w)
+            gathered(model, field, j, y, -w, &[])
         } else if has_lobe(material) {
             self.stored.outgoing(j, y, -w, PIECE_RAYS)
         } else {

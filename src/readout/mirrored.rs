@@ -1,4 +1,5 @@
-//! The light arriving at an exact point by way of the plane mirrors (`docs/mirrors.md`):
+//! The light arriving at an exact point by way of the plane mirrors (`docs/mirrors.md`; the
+//! gather of `docs/design.md` §5):
 //! each mirror `M` in front of which `p` lies is a window into the mirrored scene, so the
 //! light it brings `p` is `ρ_M` times what the images `j′` of the other patches send `p`
 //! through `M`'s polygon,
@@ -10,7 +11,8 @@
 //! share of the image's points whose segment from `p` crosses the mirror's plane inside
 //! `M`, with nothing in the way before or after it (`transfer::image`). A piece of an image
 //! that the mirror's edge or a shadow crosses is cut into quarters
-//! (`transfer::occlusion::cut_along_shadows`), as the gather cuts along shadow edges. A Phong
+//! (`transfer::occlusion::cut_along_shadows`), as the gather cuts along shadow edges (by
+//! the rule of `cut.rs`). A Phong
 //! or GGX patch's light is its final gather towards the mirror point (`glossy.rs`).
 //!
 //! The mirror's own stored cell values hold its reflection averaged over each direction
@@ -20,6 +22,7 @@
 
 use crate::geometry::{ConvexPolygon, Frame, Patch};
 use crate::model::Model;
+use crate::readout::cut::{Cut, Worth};
 use crate::readout::field::Field;
 use crate::readout::glossy::{ModelSurroundings, PIECE_RAYS, has_lobe};
 use crate::transfer::contour::point_to_patch;
@@ -38,16 +41,9 @@ pub fn on_mirrors(model: &Model) -> Vec<bool> {
 /// `I^M_d(p)` summed over the mirrors: the light arriving at `p` per cell of `frame` by way
 /// of the plane mirrors of `model` (`ignore`: the face `p` lies on). A piece crossed by a
 /// shadow or the mirror's edge is cut further while the light it would send unoccluded
-/// exceeds `shadow_cut` of all the images' light at `p` unoccluded (as the gather's
-/// `SHADOW_CUT`).
-pub fn through_mirrors(
-    model: &Model,
-    field: &Field,
-    p: DVec3,
-    frame: &Frame,
-    ignore: u32,
-    shadow_cut: f64,
-) -> Vec<f64> {
+/// exceeds `cut`'s fraction of all the images' light at `p` unoccluded (as the gather's
+/// `SHADOW_CUT`, `cut.rs`).
+pub fn through_mirrors(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, cut: &Cut) -> Vec<f64> {
     let directions = &model.kernel.directions;
     let cells = directions.len();
     let binning = Binning::new(directions);
@@ -63,21 +59,21 @@ pub fn through_mirrors(
             .filter(|&(j, s)| !held[j] && mirror.in_front(s))
             .map(|(j, s)| {
                 let image = mirror.image(s);
-                let unoccluded = point_to_patch(p, frame.normal, &image).max(0.0) * field.brightest(j);
-                (j, image, mirror.reflectance * unoccluded)
+                (j, image, point_to_patch(p, frame.normal, &image).max(0.0))
             })
-            .filter(|&(_, _, u)| u > 0.0)
             .collect();
-        let least = shadow_cut * images.iter().map(|i| i.2).sum::<f64>();
+        let geometric: Vec<f64> = images.iter().map(|i| i.2).collect();
+        let worth = Worth::new(cut, field, &geometric, |k| images[k].0, mirror.reflectance);
         let light = images
             .par_iter()
+            .enumerate()
+            .filter(|&(k, _)| worth.lit(k))
             .fold(
                 || (vec![0.0; cells], Vec::new()),
-                |(mut sum, mut bins), (j, image, unoccluded)| {
+                |(mut sum, mut bins), (k, (j, image, _))| {
                     let (j, real) = (*j, &patches[*j]);
                     let sees = |y: DVec3| mirror.passes(&model.visibility, p, ignore, y, real.face);
-                    let per_area = unoccluded / image.area;
-                    let worth = |piece: &ConvexPolygon| per_area * piece.area() > least;
+                    let worth = |piece: &ConvexPolygon| worth.cuts(k, image.area, piece.area());
                     let glossy = has_lobe(&model.materials[real.material as usize]);
                     cut_along_shadows(&image.polygon, 0, &sees, &worth, &mut |piece, seen| {
                         bins.clear();

@@ -5,6 +5,7 @@
 
 pub mod cavity;
 pub mod correction;
+pub mod cut;
 pub mod cylindrical;
 pub mod daylight;
 pub mod energy;
@@ -15,6 +16,7 @@ pub mod gather;
 pub mod glossy;
 pub mod grid;
 pub mod grid_error;
+pub mod group_readouts;
 pub mod guth;
 pub mod illuminance;
 pub mod luminance;
@@ -24,6 +26,7 @@ pub mod obstructed;
 pub mod openings;
 pub mod probe;
 pub mod readings;
+pub mod residual_samples;
 pub mod standard_room;
 pub mod ugr;
 pub mod ugr_table;

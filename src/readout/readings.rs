@@ -1,12 +1,13 @@
 //! The readouts of one field on a model (`docs/design.md` §5): its probes and grids with their
 //! error bars and the UGR at its observers, read alike for the case's own field, for
-//! each light scene and by `ugo readout` after the solve.
+//! each light scene and by `ugo readout` after the solve. The bars follow from the field's
+//! residual samples (`residual_samples.rs`), a light scene's from its groups'.
 
-use super::error_bar::estimate_errors;
 use super::field::Field;
 use super::grid::{GridReading, read_grids};
-use super::grid_error::{GridErrorBars, grid_errors};
+use super::grid_error::GridErrorBars;
 use super::probe::{ProbeReading, read_probes};
+use super::residual_samples::ResidualSamples;
 use super::ugr::{UgrReading, read_observers};
 use crate::model::Model;
 use crate::progress::Progress;
@@ -26,10 +27,25 @@ pub struct Readings {
 
 /// The readings of `field` on `model` (lit as the field was) at the tables of `scene`.
 pub fn read_field(scene: &Scene, model: &Model, field: &Field, progress: &dyn Progress) -> Readings {
-    let mut probes = read_probes(&scene.probes, model, field, progress);
-    estimate_errors(&mut probes, model, field, progress);
+    let mut readings = read_unbarred(scene, model, field, progress);
+    let samples = ResidualSamples::of(&readings.probes, &readings.grids, model, field, &[], progress);
+    readings.set_bars(&samples);
+    readings
+}
+
+/// [`read_field`] without the error bars (no probe's `error`, no `grid_errors`), to be
+/// set from the field's residual samples ([`Readings::set_bars`]).
+pub fn read_unbarred(scene: &Scene, model: &Model, field: &Field, progress: &dyn Progress) -> Readings {
+    let probes = read_probes(&scene.probes, model, field, progress);
     let observers = read_observers(&scene.observers, model, field);
     let grids = read_grids(&scene.grids, model, field, progress);
-    let grid_errors = grid_errors(&grids, model, field, progress);
-    Readings { probes, grids, grid_errors, observers }
+    Readings { probes, grids, grid_errors: Vec::new(), observers }
+}
+
+impl Readings {
+    /// Sets the probes' and the grids' error bars from `samples`, the residual samples of
+    /// the field read at them.
+    pub fn set_bars(&mut self, samples: &ResidualSamples) {
+        self.grid_errors = samples.bars(&mut self.probes, &self.grids);
+    }
 }

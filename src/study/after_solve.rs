@@ -8,18 +8,23 @@
 //! ones, and every new or changed light scene as `x_s = Σ_g f_{s,g} x_g`
 //! (`docs/design.md` §1: the field is linear in its sources) of the stored groups' fields,
 //! read out as the solve reads it (`super::light_scenes::read_light_scenes`) with each
-//! group's stored direct light (`super::group_light`). A light scene whose factors and
-//! readout tables are the stored ones keeps its stored readings.
+//! group's stored direct light (`super::group_light`), its grid readings and error bars
+//! from the groups' readouts the file stores (`/light_groups/{grid_readings,bar_samples}`,
+//! `readout::group_readouts`), read here (every group's, once) when the file holds none
+//! for these probes and grids.
+//! A light scene whose factors and readout tables are the stored ones keeps its stored
+//! readings.
 
 use super::error::StudyError;
 use super::group_light::stored_group_terms;
 use super::kernel::model_with_kernel;
 use super::light_scenes::read_light_scenes;
 use super::readout_error::ReadoutError;
-use crate::io::{Readout, StoredGroup, read_light_groups, read_solution};
+use crate::io::{Readout, StoredGroup, read_group_readouts, read_light_groups, read_solution};
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::readout::field::Field;
+use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::readings::read_field;
 use crate::scene::{LightScene, Scene};
 use std::path::Path;
@@ -50,17 +55,24 @@ pub fn read_out_solved(file: &Path, scene: &Scene, progress: &dyn Progress) -> R
     if !scene.lighting.scenes.is_empty() {
         same_groups(scene, &stored.scene, &groups, file)?;
     }
-    let (light_scenes, traced) = match read.is_empty() {
-        true => (Vec::new(), Vec::new()),
+    let stored = match probes && grids {
+        true => read_group_readouts(file, groups.len())?,
+        false => None,
+    };
+    let stored = stored.and_then(|(values, samples)| GroupReadouts::stored(&scene.grids, &model, values, samples));
+    let (light_scenes, shared, traced) = match read.is_empty() {
+        true => (Vec::new(), None, Vec::new()),
         false => {
             let xs: Vec<&[f64]> = groups.iter().map(|g| g.x.as_slice()).collect();
-            let lit = |g: usize| read.iter().any(|s| s.factors[g] != 0.0);
+            let every = stored.is_none();
+            let lit = |g: usize| every || read.iter().any(|s| s.factors[g] != 0.0);
             let (terms, traced) = stored_group_terms(scene, &model, &groups, lit);
-            (read_light_scenes(scene, &mut model, &terms, &xs, &read, progress)?, traced)
+            let (scenes, shared) = read_light_scenes(scene, &mut model, &terms, &xs, &read, stored, progress)?;
+            (scenes, shared, traced)
         }
     };
     let kept = kept.into_iter().map(|s| s.name.clone()).collect();
-    Ok(Readout { model, readings, light_scenes, kept, traced })
+    Ok(Readout { model, readings, light_scenes, shared, kept, traced })
 }
 
 /// Refuses a case whose surfaces emit otherwise than the solved ones (`stored`, per patch).

@@ -2,10 +2,14 @@
 //! sources). Each group of sources (`[[luminaire]]` and `[[surface]]` `group` keys) is solved
 //! alone against the case's one kernel, every solve started from the solutions already
 //! known (`solve::Projection`, the case's own field first); every `[[light_scene]]` is then
-//! `x_s = Σ_g f_{s,g} x_g`, read out (patch illuminance, energy, probes, grids) by the model
-//! relit with its dimmed sources, exactly as a solve of the case with those sources would
-//! be. For the hierarchical kernel the hierarchy is the one refined under the case's own
-//! light (every group on at factor 1); each group is solved on it as it stands.
+//! `x_s = Σ_g f_{s,g} x_g`, read out (patch illuminance, energy, probes) by the model relit
+//! with its dimmed sources, exactly as a solve of the case with those sources would be. Its
+//! grid readings and the residual samples of its error bars ((5.5), (5.6)) are `Σ_g f_{s,g}`
+//! of the groups', each group's read once for every light scene with the groups' cut along
+//! shadow edges (`readout::group_readouts`, `readout::cut`), and the bar's formula is
+//! applied to its own samples. For the hierarchical kernel the hierarchy is the one refined
+//! under the case's own light (every group on at factor 1); each group is solved on it as
+//! it stands.
 
 use super::error::StudyError;
 use crate::io::{GroupField, IoError, LightSceneField, LightScenes, StoredSolution};
@@ -15,8 +19,12 @@ use crate::model::{Model, SourceTerm};
 use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
+use crate::readout::grid::read_grids_cut_by;
+use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::illuminance::{arriving, patch_illuminance};
-use crate::readout::readings::{Readings, read_field};
+use crate::readout::probe::{ProbeReading, read_probes};
+use crate::readout::residual_samples::ResidualSamples;
+use crate::readout::ugr::read_observers;
 use crate::render::LitScene;
 use crate::scene::{LightScene, Scene};
 use crate::solve::{Method, Projection, SolveParams, System};
@@ -47,8 +55,8 @@ pub fn solve_light_scenes(
     let fields = solve_groups(scene, model, x, &terms, how, progress)?;
     let xs: Vec<&[f64]> = fields.iter().map(|g| g.solve.x.as_slice()).collect();
     let all: Vec<&LightScene> = scene.lighting.scenes.iter().collect();
-    let scenes = read_light_scenes(scene, model, &terms, &xs, &all, progress)?;
-    Ok(LightScenes { groups: fields, scenes })
+    let (scenes, shared) = read_light_scenes(scene, model, &terms, &xs, &all, None, progress)?;
+    Ok(LightScenes { groups: fields, scenes, shared })
 }
 
 /// Each group's source term alone on `model` (`Model::source_term_of`), in the order of
@@ -67,15 +75,19 @@ pub(super) fn group_terms(scene: &Scene, model: &Model, wanted: impl Fn(usize) -
 /// The light scenes `light_scenes` of `scene` from the groups' source terms `terms` and
 /// fields `xs` (one per group of the scene): `x_s = Σ_g f_{s,g} x_g` and its readouts,
 /// `model` relit by each light scene in turn and given back as it came. Shared by the solve
-/// (every light scene) and `ugo readout` (the new or changed ones).
+/// (every light scene) and `ugo readout` (the new or changed ones). The grid readings and
+/// error bars are those of `Σ_g f_{s,g}` of the groups' (`readout::group_readouts`):
+/// `stored` when they were read at these probes and grids, else read here; they are
+/// returned with the light scenes (`None` when there is none).
 pub(super) fn read_light_scenes(
     scene: &Scene,
     model: &mut Model,
     terms: &[SourceTerm],
     xs: &[&[f64]],
     light_scenes: &[&LightScene],
+    stored: Option<GroupReadouts>,
     progress: &dyn Progress,
-) -> Result<Vec<LightSceneField>, StudyError> {
+) -> Result<(Vec<LightSceneField>, Option<GroupReadouts>), StudyError> {
     let base = model.sources.clone();
     let mut own = None;
     let mut scenes = Vec::with_capacity(light_scenes.len());
@@ -85,11 +97,53 @@ pub(super) fn read_light_scenes(
         own.get_or_insert(relit);
         scenes.push(read_out(scene, model, light_scene, xs, progress));
     }
+    let shared = scenes.first().map(|at| match stored.filter(|s| s.fits(xs.len(), &at.probes)) {
+        Some(stored) => stored,
+        None => group_readouts(scene, model, &base, terms, xs, &at.probes, progress),
+    });
+    for s in scenes.iter_mut() {
+        let Some(shared) = &shared else { break };
+        let (grids, samples) = shared.of_light_scene(&s.factors);
+        s.grid_errors = samples.bars(&mut s.probes, &grids);
+        s.grids = grids;
+    }
     if let Some((sources, term)) = own {
         model.relight(sources, term);
     }
     crate::interrupt::check(|| "the light scenes' readouts".to_string())?;
-    Ok(scenes)
+    Ok((scenes, shared))
+}
+
+/// Each group's grid readings and residual samples (at the probes `probes` read, and at
+/// its grids), its field `xs[g]` read on `model` relit by the group alone (its luminaires
+/// placed as in `base`, its source term `terms[g]`), every gather cut along shadow edges as
+/// any group's field asks (`readout::cut`), so that `Σ_g f_g` of them is the reading of
+/// `Σ_g f_g x_g` cut so; `model` is left relit by the last group.
+fn group_readouts(
+    scene: &Scene,
+    model: &mut Model,
+    base: &[Source],
+    terms: &[SourceTerm],
+    xs: &[&[f64]],
+    probes: &[ProbeReading],
+    progress: &dyn Progress,
+) -> GroupReadouts {
+    let k = model.kernel.cells();
+    let fields: Vec<Field> = xs.iter().map(|x| Field::from_unknowns(x, k)).collect();
+    let by: Vec<&Field> = fields.iter().collect();
+    let alone = |g: usize| LightScene {
+        name: String::new(),
+        factors: (0..terms.len()).map(|h| if h == g { 1.0 } else { 0.0 }).collect(),
+    };
+    let (grids, samples) = (0..terms.len())
+        .map(|g| {
+            model.relight(dimmed(scene, base, &alone(g)), terms[g].clone());
+            let grids = read_grids_cut_by(&scene.grids, model, &fields[g], &by, progress);
+            let samples = ResidualSamples::of(probes, &grids, model, &fields[g], &by, progress);
+            (grids, samples)
+        })
+        .unzip();
+    GroupReadouts { grids, samples }
 }
 
 /// The case's kernel as every group's solve takes it: factored, formed explicitly when the
@@ -158,7 +212,8 @@ pub fn dimmed(scene: &Scene, base: &[Source], light_scene: &LightScene) -> Vec<S
 }
 
 /// The light scene's field `Σ_g f_g x_g` (`xs` the groups' fields) and its readouts on
-/// `model`, relit by it (the observers' UGR from its dimmed luminaires and its own background).
+/// `model`, relit by it (the observers' UGR from its dimmed luminaires and its own
+/// background), without its grids and error bars (`read_light_scenes` sets them).
 fn read_out(
     scene: &Scene,
     model: &Model,
@@ -172,7 +227,8 @@ fn read_out(
     }
     let k = model.kernel.cells();
     let field = Field::from_unknowns(&x, k);
-    let Readings { probes, grids, grid_errors, observers } = read_field(scene, model, &field, progress);
+    let probes = read_probes(&scene.probes, model, &field, progress);
+    let observers = read_observers(&scene.observers, model, &field);
     LightSceneField {
         name: light_scene.name.clone(),
         factors: light_scene.factors.clone(),
@@ -182,8 +238,8 @@ fn read_out(
         direct_illuminance: patch_illuminance(&model.direct.arriving, k),
         energy: EnergyBalance::of(model, &x, scene.surfaces.len()),
         probes,
-        grids,
-        grid_errors,
+        grids: Vec::new(),
+        grid_errors: Vec::new(),
         observers,
         field,
     }

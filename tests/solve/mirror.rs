@@ -31,6 +31,7 @@ use ugo::luminaire::{Luminaire, LuminaireKind};
 use ugo::material::MaterialModel;
 use ugo::model::{Fingerprint, Model, Part};
 use ugo::photometry::Distribution;
+use ugo::readout::cut::Cut;
 use ugo::readout::energy::EnergyBalance;
 use ugo::readout::field::Field;
 use ugo::readout::gather::illuminance_at;
@@ -183,7 +184,7 @@ fn a_floor_point_reads_the_image_through_the_mirror() {
     for x in [0.05, 0.3, 0.75, 1.4, 1.95] {
         let p = DVec3::new(x, 0.0, 0.2);
         let frame = Frame::around(DVec3::Y);
-        let got = PI * through_mirrors(&model, &field, p, &frame, NO_FACE, 1e-4).iter().sum::<f64>();
+        let got = PI * through_mirrors(&model, &field, p, &frame, NO_FACE, &Cut::own(1e-4)).iter().sum::<f64>();
         let exact = PI * RHO * LUMINANCE * point_to_polygon(p, DVec3::Y, &image);
         worst = worst.max((got / exact - 1.0).abs());
         // the whole reading, as a grid point or a probe gathers it: the emitter and its image

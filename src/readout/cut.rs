@@ -1,0 +1,64 @@
+//! How a gather cuts the pieces of a patch crossed by a shadow edge by the light they carry
+//! (`docs/design.md` §5, the gather `I_d(p)`; `docs/hierarchy.md`, "Readouts"): a piece is
+//! cut further while the light it would send unoccluded exceeds a fraction (`SHADOW_CUT`,
+//! `RELIT_SHADOW_CUT`) of all the point would receive unoccluded, by the field read; or, for
+//! fields read alike and summed (a light scene's groups, `residual_samples.rs`), while it
+//! does by any of them: every field is cut at least as finely as its own rule asks, and all
+//! of them in the same pieces, so that a gather of `Σ_g f_g x_g` is the sum of theirs.
+
+use super::field::Field;
+
+/// The rule a gather cuts by: the fraction, and the fields it is applied to (none: the
+/// field read).
+#[derive(Debug, Clone, Copy)]
+pub struct Cut<'a> {
+    /// The fraction of all the light the point would receive unoccluded.
+    pub fraction: f64,
+    /// The fields whose rules are united; empty for the field read alone.
+    pub by: &'a [&'a Field],
+}
+
+impl Cut<'static> {
+    /// The rule of the field read alone.
+    pub fn own(fraction: f64) -> Cut<'static> {
+        Cut { fraction, by: &[] }
+    }
+}
+
+/// Per field of a [`Cut`], the light every candidate (a patch, or a patch's image in a
+/// mirror) would send unoccluded, and the least light of a piece cut further.
+pub(super) struct Worth {
+    unoccluded: Vec<Vec<f64>>,
+    least: Vec<f64>,
+}
+
+impl Worth {
+    /// The candidates' light: `scale · (geometric[k] · max_m |L(patch(k), m)|)` by each field
+    /// of `cut` (`field`, the one read, when it names none).
+    pub(super) fn new(
+        cut: &Cut,
+        field: &Field,
+        geometric: &[f64],
+        patch: impl Fn(usize) -> usize,
+        scale: f64,
+    ) -> Worth {
+        let own = [field];
+        let fields = if cut.by.is_empty() { &own[..] } else { cut.by };
+        let light = |f: &&Field| -> Vec<f64> {
+            geometric.iter().enumerate().map(|(k, g)| scale * (g * f.brightest(patch(k)))).collect()
+        };
+        let unoccluded: Vec<Vec<f64>> = fields.iter().map(light).collect();
+        let least = unoccluded.iter().map(|u| cut.fraction * u.iter().sum::<f64>()).collect();
+        Worth { unoccluded, least }
+    }
+
+    /// Whether candidate `k` sends light by any field.
+    pub(super) fn lit(&self, k: usize) -> bool {
+        self.unoccluded.iter().any(|u| u[k] > 0.0)
+    }
+
+    /// Whether a piece of area `piece` of candidate `k` (of area `area`) is cut further.
+    pub(super) fn cuts(&self, k: usize, area: f64, piece: f64) -> bool {
+        self.unoccluded.iter().zip(&self.least).any(|(u, least)| u[k] / area * piece > *least)
+    }
+}
