@@ -72,7 +72,7 @@ impl Operator {
             x.chunks_mut(k).zip(&send).for_each(|(x, s)| x.fill(*s));
             self.arriving(&x, &mut z);
             let rows = sums(&z, k, |_| 1.0);
-            let mismatch = row_mismatch(&receive, &send, &rows, targets, &free);
+            let mismatch = row_mismatch(&receive, &rows, targets, &free);
             let stalled = mismatch < FURNACE && mismatch > (1.0 - STALLED) * last;
             if sweep > 1 && (mismatch < ROWS_BALANCED || stalled) {
                 break;
@@ -92,7 +92,7 @@ impl Operator {
         x.chunks_mut(k).zip(&send).for_each(|(x, s)| x.fill(*s));
         self.arriving(&x, &mut z);
         let rows = sums(&z, k, |_| 1.0);
-        report.residual = row_mismatch(&receive, &send, &rows, targets, &free);
+        report.residual = row_mismatch(&receive, &rows, targets, &free);
         report.max_correction = receive.iter().chain(&send).map(|f| (f - 1.0).abs()).fold(0.0, f64::max);
         self.receive = receive;
         self.send = send;
@@ -101,12 +101,13 @@ impl Operator {
     }
 }
 
-/// The largest `|r_i · row_i / t_i − 1|` over the free leaves whose factors are within
-/// [`MOST`] (`rows` with the current sending factors).
-fn row_mismatch(receive: &[f64], send: &[f64], rows: &[f64], targets: &[f64], free: &impl Fn(usize) -> bool) -> f64 {
+/// The largest `|r_i · row_i / t_i − 1|` over the free leaves whose receiving factors are
+/// within [`MOST`] (`rows` with the current sending factors, which their own limit keeps
+/// well inside it).
+fn row_mismatch(receive: &[f64], rows: &[f64], targets: &[f64], free: &impl Fn(usize) -> bool) -> f64 {
     let within = |f: f64| f > 1.0 / MOST && f < MOST;
     (0..rows.len())
-        .filter(|&l| free(l) && within(receive[l]) && within(send[l]))
+        .filter(|&l| free(l) && within(receive[l]))
         .map(|l| (receive[l] * rows[l] / targets[l] - 1.0).abs())
         .fold(0.0, f64::max)
 }
