@@ -14,6 +14,7 @@
 
 mod balance;
 mod balanced;
+mod brightness;
 mod bundle;
 mod census;
 mod cluster;

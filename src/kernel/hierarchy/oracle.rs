@@ -1,5 +1,6 @@
 //! The refinement oracle (`docs/design.md` §3b, "Oracle"; Hanrahan, Salzman & Aupperle 1991):
-//! a link is refined while `ρ_p · ΔF_pq · L_q > ε`, brightness-weighted. `ΔF` bounds how
+//! a link is refined while `ρ_p · ΔF_pq · L_q > ε`, brightness-weighted (`L_q` times the
+//! receiver's gain of (3b.3a) after the first pass, `brightness.rs`). `ΔF` bounds how
 //! much the factor varies over the two nodes: the spread of the exact point-to-polygon
 //! factors at sample points of each end (centroid, the four stratified occlusion points and
 //! the corners pulled 1 % towards the centroid; the source's scaled by `A_q/A_p`), the

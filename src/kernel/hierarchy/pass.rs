@@ -1,8 +1,8 @@
 //! One more refinement pass (`docs/design.md` §3b, "Oracle"): with a solved field, every
 //! link the oracle now rejects is refined, its receiver or source split.
 
+use super::brightness::Brightness;
 use super::kernel::{Hierarchy, cell_shares};
-use super::node::NONE;
 use super::refine::{Settings, Stopped, children_pairs, refine, split_node};
 use crate::progress::Progress;
 use std::time::Instant;
@@ -15,12 +15,14 @@ impl Hierarchy {
     pub fn refine(&mut self, x: &[f64], progress: &dyn Progress) -> Result<usize, Stopped> {
         let start = Instant::now();
         let leaves = self.tree.leaves();
-        self.oracle.epsilon = self.options.tolerance * self.mean_reflected(&leaves, x);
-        let mut brightness = self.brightness(&leaves, x);
+        let mean = self.mean_reflected(&leaves, x);
+        self.oracle.epsilon = self.options.tolerance * mean;
+        let least = self.least_reflected(&leaves, x);
+        let mut brightness = self.brightness(&leaves, x).with_gains(&self.tree, least, mean, self.options.dim_floor);
         let (mut redo, mut keep) = (Vec::new(), Vec::with_capacity(self.links.len()));
         for link in std::mem::take(&mut self.links) {
             let (p, q) = (link.receiver, link.source);
-            let error = self.oracle.error(self.tree.node(p).albedo, f64::from(link.bound), brightness[q as usize]);
+            let error = self.oracle.error(self.tree.node(p).albedo, f64::from(link.bound), brightness.weight(p, q));
             match self.oracle.choose(&self.tree, p, q).filter(|_| self.oracle.refines(error)) {
                 Some(n) => redo.push((p, q, n)),
                 None => keep.push(link),
@@ -42,7 +44,7 @@ impl Hierarchy {
     /// `progress` hears of the pairs settled.
     pub(super) fn refine_candidates(
         &mut self,
-        brightness: &mut Vec<f64>,
+        brightness: &mut Brightness,
         candidates: Vec<(u32, u32)>,
         progress: &dyn Progress,
     ) -> Result<(), Stopped> {
@@ -65,28 +67,37 @@ impl Hierarchy {
         let (mut sum, mut area) = (0.0, 0.0);
         for (l, &id) in leaves.iter().enumerate() {
             let node = self.tree.node(id);
-            let cells = x.get(l * share.len()..(l + 1) * share.len()).unwrap_or(&[]);
-            let value: f64 = cells.iter().zip(&share).map(|(v, s)| v * s).sum();
-            sum += node.exposed * (value - node.emission);
+            sum += node.exposed * self.reflected(l, id, x, &share);
             area += node.exposed;
         }
         if area > 0.0 { (sum / area).max(0.0) } else { 0.0 }
     }
 
-    /// Largest value under every node of the leaf field `x` (cd/m²).
-    pub(super) fn brightness(&self, leaves: &[u32], x: &[f64]) -> Vec<f64> {
+    /// Leaf `l`'s (node `id`'s) `x − L0`, exitance-weighted over its cells by `share`, cd/m².
+    fn reflected(&self, l: usize, id: u32, x: &[f64], share: &[f64]) -> f64 {
+        let cells = x.get(l * share.len()..(l + 1) * share.len()).unwrap_or(&[]);
+        let value: f64 = cells.iter().zip(share).map(|(v, s)| v * s).sum();
+        value - self.tree.node(id).emission
+    }
+
+    /// Each leaf's reflected light (`reflected`), infinite elsewhere, one per node, cd/m².
+    fn least_reflected(&self, leaves: &[u32], x: &[f64]) -> Vec<f64> {
+        let share = cell_shares(&self.directions);
+        let mut least = vec![f64::INFINITY; self.tree.len()];
+        for (l, &id) in leaves.iter().enumerate() {
+            least[id as usize] = self.reflected(l, id, x, &share).max(0.0);
+        }
+        least
+    }
+
+    /// The brightest value of the leaf field `x` under every node (cd/m²), every gain 1.
+    pub(super) fn brightness(&self, leaves: &[u32], x: &[f64]) -> Brightness {
         let k = self.directions.len();
         let mut b = vec![0.0; self.tree.len()];
         for (l, &id) in leaves.iter().enumerate() {
             let cells = x.get(l * k..(l + 1) * k).unwrap_or(&[]);
             b[id as usize] = cells.iter().copied().fold(0.0, f64::max);
         }
-        for id in self.tree.preorder().into_iter().rev() {
-            let parent = self.tree.node(id).parent;
-            if parent != NONE {
-                b[parent as usize] = f64::max(b[parent as usize], b[id as usize]);
-            }
-        }
-        b
+        Brightness::of(&self.tree, b)
     }
 }

@@ -7,6 +7,7 @@
 //! Every round starts only if no signal asked to stop and the links, candidates and tree
 //! fit in the memory limit; else refinement stops with the reason ([`Stopped`]).
 
+use super::brightness::Brightness;
 use super::link::{Link, cluster_factor, element_factor};
 use super::node::Node;
 use super::oracle::{Oracle, cluster_bound, variation};
@@ -63,11 +64,11 @@ enum Outcome {
     Keep(Link),
 }
 
-/// Refines `candidates` into `links`; `brightness` (per node, cd/m²) grows with the tree,
-/// new nodes taking their parent's. Returns the occlusion rays traced.
+/// Refines `candidates` into `links`; `brightness` (per node) grows with the tree, new
+/// nodes taking their parent's. Returns the occlusion rays traced.
 pub fn refine(
     tree: &mut Tree,
-    brightness: &mut Vec<f64>,
+    brightness: &mut Brightness,
     settings: &Settings,
     mut candidates: Vec<(u32, u32)>,
     links: &mut Vec<Link>,
@@ -131,12 +132,9 @@ fn footprint(tree: &Tree, links: usize, candidates: usize, cells: usize) -> Foot
 
 /// Splits `n` (a no-op for a cluster or an element already split); new nodes inherit
 /// their parent's brightness.
-pub fn split_node(tree: &mut Tree, brightness: &mut Vec<f64>, n: u32, exposed: &Exposure<'_>) {
+pub fn split_node(tree: &mut Tree, brightness: &mut Brightness, n: u32, exposed: &Exposure<'_>) {
     tree.split(n, exposed);
-    for id in brightness.len()..tree.len() {
-        let parent = tree.node(id as u32).parent;
-        brightness.push(brightness[parent as usize]);
-    }
+    brightness.grow(tree);
 }
 
 /// The pairs that replace `(p, q)` once `n` (one of them) is split.
@@ -153,7 +151,7 @@ pub fn children_pairs(tree: &Tree, p: u32, q: u32, n: u32, out: &mut Vec<(u32, u
 
 fn evaluate(
     tree: &Tree,
-    brightness: &[f64],
+    brightness: &Brightness,
     settings: &Settings,
     binning: Option<&Binning>,
     p: u32,
@@ -173,8 +171,8 @@ fn evaluate(
         return (Outcome::Split(n), 0);
     }
     match (a.patch(), b.patch()) {
-        (Some(pa), Some(pb)) => elements(tree, brightness[q as usize], settings, binning, (p, pa), (q, pb), blocker),
-        _ => clusters(tree, brightness[q as usize], settings, p, q, blocker),
+        (Some(pa), Some(pb)) => elements(tree, brightness.weight(p, q), settings, binning, (p, pa), (q, pb), blocker),
+        _ => clusters(tree, brightness.weight(p, q), settings, p, q, blocker),
     }
 }
 

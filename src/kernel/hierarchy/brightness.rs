@@ -1,0 +1,55 @@
+//! What the oracle weighs a link's factor bound by (`docs/design.md` §3b, "Oracle", (3b.3)
+//! and (3b.3a)): the brightest light under its source node, and its receiver's gain, how
+//! many times finer than the scene's allowance its own is where its reflected light is dim.
+
+use super::node::NONE;
+use super::tree::Tree;
+
+/// Per node: the brightest light under it as a source, cd/m², and its gain as a receiver.
+#[derive(Debug, Clone, Default)]
+pub struct Brightness {
+    source: Vec<f64>,
+    gain: Vec<f64>,
+}
+
+impl Brightness {
+    /// Every node's brightest leaf value (`largest`, one per node, leaves set) and gain 1.
+    pub fn of(tree: &Tree, mut largest: Vec<f64>) -> Brightness {
+        for id in tree.preorder().into_iter().rev() {
+            let parent = tree.node(id).parent;
+            if parent != NONE {
+                largest[parent as usize] = f64::max(largest[parent as usize], largest[id as usize]);
+            }
+        }
+        let gain = vec![1.0; largest.len()];
+        Brightness { source: largest, gain }
+    }
+
+    /// The gains of the receivers: `L̄ / max(min(L_p, L̄), floor · L̄)`, at least 1, `L_p` the least reflected light
+    /// under node `p` (`least`, one per node, leaves set), `L̄` the scene's mean.
+    pub fn with_gains(mut self, tree: &Tree, mut least: Vec<f64>, mean: f64, floor: f64) -> Brightness {
+        for id in tree.preorder().into_iter().rev() {
+            let parent = tree.node(id).parent;
+            if parent != NONE {
+                least[parent as usize] = f64::min(least[parent as usize], least[id as usize]);
+            }
+        }
+        self.gain =
+            least.iter().map(|&l| if mean > 0.0 { mean / l.min(mean).max(floor * mean) } else { 1.0 }).collect();
+        self
+    }
+
+    /// The weight of a link from `q` to `p`: `q`'s brightness times `p`'s gain, cd/m².
+    pub fn weight(&self, p: u32, q: u32) -> f64 {
+        self.source[q as usize] * self.gain[p as usize]
+    }
+
+    /// New nodes of `tree` take their parent's values.
+    pub fn grow(&mut self, tree: &Tree) {
+        for id in self.source.len()..tree.len() {
+            let parent = tree.node(id as u32).parent as usize;
+            self.source.push(self.source[parent]);
+            self.gain.push(self.gain[parent]);
+        }
+    }
+}
