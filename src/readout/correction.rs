@@ -19,7 +19,7 @@
 //! patches, read at their means, are left as they are.
 //!
 //! Each piece costs a gather over every patch (about 9 ms on the Cornell box's 3,400
-//! leaves here, growing with the patches): probes are corrected, grid points
+//! leaves here before the clear hulls of `visibility/hull.rs`, growing with the patches): probes are corrected, grid points
 //! (`grid.rs`, hundreds a plane, often a few centimetres above desks) are not.
 
 use crate::geometry::{ConvexPolygon, Frame, Patch};
