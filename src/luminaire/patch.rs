@@ -203,7 +203,7 @@ impl Onto<'_> {
             let w = (part.centroid() - s).normalize();
             intensity(w) * part.solid_angle(s) > least
         };
-        let rays = cut_along_shadows(piece, depth, sees, &worth, &mut |part, seen| {
+        let rays = cut_along_shadows(piece, depth, &sees, &worth, &mut |part, seen| {
             let w = (part.centroid() - s).normalize();
             self.add(-w, intensity(w) * part.solid_angle(s) * seen);
         });

@@ -19,7 +19,7 @@
 //! patches, read at their means, are left as they are.
 //!
 //! Each piece costs a gather over every patch (about 9 ms on the Cornell box's 3,400
-//! leaves here, growing with the patches): probes are corrected, grid points
+//! leaves here before the clear hulls of `visibility/hull.rs`, growing with the patches): probes are corrected, grid points
 //! (`grid.rs`, hundreds a plane, often a few centimetres above desks) are not.
 
 use crate::geometry::{ConvexPolygon, Frame, Patch};
@@ -31,7 +31,7 @@ use crate::readout::luminance::gathered;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::cut_along_shadows;
-use crate::visibility::NO_BLOCKER;
+use crate::visibility::{NO_BLOCKER, SightTo};
 use glam::DVec3;
 use rayon::prelude::*;
 use std::cell::Cell;
@@ -106,9 +106,9 @@ pub fn near_correction(model: &Model, field: &Field, p: DVec3, frame: &Frame, ig
             || (vec![0.0; cells], Vec::new(), Cell::new(NO_BLOCKER)),
             |(mut sum, mut bins, blocker), &j| {
                 let s = &patches[j];
-                let sees = |y: DVec3| model.visibility.visible_shared(p, y, [ignore, s.face], &blocker);
+                let sight = SightTo::new(&model.visibility, p, [ignore, s.face], &blocker);
                 let worth = |piece: &ConvexPolygon| piece.area() > s.area / SHADOW_PIECES;
-                cut_along_shadows(&s.polygon, 0, &sees, &worth, &mut |piece, seen| {
+                cut_along_shadows(&s.polygon, 0, &sight, &worth, &mut |piece, seen| {
                     piece.pieces_within(p, 1.0 / NEAR, NEAR_DEPTH, &mut |a| {
                         bins.clear();
                         binned_point(p, frame, &Patch { polygon: *a, ..*s }, &binning, &mut bins);

@@ -30,7 +30,7 @@ use crate::sky::READING;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::cut_along_shadows;
-use crate::visibility::{NO_BLOCKER, NO_FACE};
+use crate::visibility::{NO_BLOCKER, NO_FACE, SightTo};
 use glam::DVec3;
 use rayon::prelude::*;
 use std::cell::Cell;
@@ -147,10 +147,10 @@ fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, 
         .fold(
             || (vec![0.0; cells], Vec::new(), Cell::new(NO_BLOCKER)),
             |(mut sum, mut bins, blocker), (j, s)| {
-                let sees = |y: DVec3| model.visibility.visible_shared(p, y, [ignore, s.face], &blocker);
+                let sight = SightTo::new(&model.visibility, p, [ignore, s.face], &blocker);
                 let worth = |piece: &ConvexPolygon| worth.cuts(j, s.area, piece.area());
                 let lobe = model.materials[s.material as usize].lobe_width();
-                cut_along_shadows(&s.polygon, 0, &sees, &worth, &mut |piece, seen| {
+                cut_along_shadows(&s.polygon, 0, &sight, &worth, &mut |piece, seen| {
                     let Some(width) = lobe else {
                         bins.clear();
                         binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);

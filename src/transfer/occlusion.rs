@@ -6,7 +6,7 @@
 //! first; only when they disagree (a penumbra) are all `POINTS²` segments traced.
 
 use crate::geometry::{ConvexPolygon, Patch};
-use crate::visibility::{Blocker, Visibility};
+use crate::visibility::{Blocker, Sight, Visibility};
 use glam::DVec3;
 
 /// Points per patch; a pair is tested with `POINTS²` segments.
@@ -93,29 +93,34 @@ pub fn piece_visibility(polygon: &ConvexPolygon, sees: impl Fn(DVec3) -> bool) -
 pub const SHADOW_DEPTH: u32 = 6;
 
 /// Cuts `piece` (already cut `depth` times) into quarters while its test points and corners
-/// disagree about `sees` (a shadow edge crosses it), down to [`SHADOW_DEPTH`] levels and
-/// only while `worth` says the piece matters enough, and hands every final piece that some
-/// of its points see to `visit` with the fraction of its points that see. A piece that will
-/// not be cut (the deepest level, or not `worth` it) is tested with its points alone.
-/// Returns the rays traced.
+/// disagree about what `sight` sees (a shadow edge crosses it), down to [`SHADOW_DEPTH`]
+/// levels and only while `worth` says the piece matters enough, and hands every final piece
+/// that some of its points see to `visit` with the fraction of its points that see. A piece
+/// that will not be cut (the deepest level, or not `worth` it) is tested with its points
+/// alone; a piece `sight` knows to be clear is handed on whole and seen, without rays, as
+/// they would all have seen. Returns the rays traced.
 pub fn cut_along_shadows(
     piece: &ConvexPolygon,
     depth: u32,
-    sees: &dyn Fn(DVec3) -> bool,
+    sight: &dyn Sight,
     worth: &dyn Fn(&ConvexPolygon) -> bool,
     visit: &mut dyn FnMut(&ConvexPolygon, f64),
 ) -> usize {
+    if sight.clear(piece) {
+        visit(piece, 1.0);
+        return 0;
+    }
     if depth >= SHADOW_DEPTH || !worth(piece) {
-        let seen = polygon_points(piece).iter().filter(|&&x| sees(x)).count();
+        let seen = polygon_points(piece).iter().filter(|&&x| sight.sees(x)).count();
         if seen > 0 {
             visit(piece, seen as f64 / POINTS as f64);
         }
         return POINTS;
     }
-    let test = piece_visibility(piece, sees);
+    let test = piece_visibility(piece, |x| sight.sees(x));
     if !test.uniform {
         return test.rays
-            + piece.split().iter().map(|part| cut_along_shadows(part, depth + 1, sees, worth, visit)).sum::<usize>();
+            + piece.split().iter().map(|part| cut_along_shadows(part, depth + 1, sight, worth, visit)).sum::<usize>();
     }
     if test.seen > 0 {
         visit(piece, test.seen as f64 / POINTS as f64);

@@ -19,15 +19,18 @@
 //! length, in the scene's metres) of the ray's origin, whatever the ray's own `tmin`: every
 //! query's ray starts that far behind its origin, its `tmin` moved on to match.
 
+mod between;
 mod faces;
+mod hull;
 mod occluders;
 mod shaft;
 
+pub use between::SightTo;
 pub use faces::{Faces, Landing, standoff};
 pub use occluders::Occluders;
 pub use shaft::{Sight, SightFrom};
 
-use crate::geometry::{Mesh, Surface};
+use crate::geometry::{ConvexPolygon, Mesh, Surface};
 use glam::{DMat3, DVec3, Vec3A};
 use obvhs::{
     BvhBuildParams,
@@ -171,6 +174,13 @@ impl Visibility {
         let mut visibility = Visibility::build(mesh);
         visibility.occluders = Some(Occluders::of(surfaces, mesh));
         visibility
+    }
+
+    /// True when no face stands in the hull of `p` and the convex `polygon` (`p` in front of
+    /// its plane), so that every segment from `p` to the polygon is clear
+    /// (`Occluders::clear`); false when one may, or when the occluders are not known.
+    pub fn hull_is_clear(&self, p: DVec3, polygon: &ConvexPolygon) -> bool {
+        self.occluders.as_ref().is_some_and(|o| o.clear(p, polygon, self.epsilon))
     }
 
     /// True when the segment from `a` to `b` crosses no face other than `ignore`.

@@ -13,7 +13,12 @@
 //!
 //! The shaft of an opening seen from a point in another room is hidden by the wall between
 //! them: `docs/daylight.md`, "Openings hidden behind a wall".
+//!
+//! And when every face lies on an occluder, the hull of a point and a polygon that no
+//! occluder meets ([`Occluders::clear`], `hull.rs`) holds no face: every segment from the
+//! point to the polygon is clear, without a ray (`between.rs`, a gather's pieces of a patch).
 
+use super::hull::Hull;
 use crate::geometry::{ConvexPolygon, Mesh, Shape, Surface, tessellate};
 use glam::DVec3;
 
@@ -25,6 +30,10 @@ const NONE: u32 = u32::MAX;
 pub struct Occluders {
     pieces: Vec<ConvexPolygon>,
     of_face: Vec<u32>,
+    /// The pieces' unit normals.
+    normals: Vec<DVec3>,
+    /// Every face lies on an occluder.
+    complete: bool,
 }
 
 impl Occluders {
@@ -53,13 +62,24 @@ impl Occluders {
                 *slot = (first[s]..first[s + 1]).find(holds).map_or(NONE, |k| k as u32);
             }
         }
-        Occluders { pieces, of_face }
+        let complete = of_face.iter().all(|&k| k != NONE);
+        let normals = pieces.iter().map(ConvexPolygon::normal).collect();
+        Occluders { pieces, of_face, normals, complete }
     }
 
     /// The occluder that `face` lies on, if any.
     pub fn of_face(&self, face: u32) -> Option<&ConvexPolygon> {
         let k = *self.of_face.get(face as usize)?;
         (k != NONE).then(|| &self.pieces[k as usize])
+    }
+
+    /// True when no face stands in the hull of `p` and the convex `polygon` (`p` in front of
+    /// its plane): every face lies on an occluder and every occluder is apart from the hull
+    /// (`Hull::apart`), `p` counting as on a plane within `near` (m) of it. False when
+    /// one may, or `p` is not in front.
+    pub fn clear(&self, p: DVec3, polygon: &ConvexPolygon, near: f64) -> bool {
+        let Some(hull) = self.complete.then(|| Hull::of(p, polygon)).flatten() else { return false };
+        self.pieces.iter().zip(&self.normals).all(|(o, &n)| hull.apart(o, n, near))
     }
 }
 

@@ -117,13 +117,15 @@ fn bounding_planes(apex: DVec3, n: DVec3, front: &[DVec3], slack: f64, planes: &
     count
 }
 
-/// What stands between a point and the pieces of an opening: whether the ray from the point
-/// through `x` leaves the scene, and whether nothing at all stands before a whole `piece`
-/// (so that no ray need be traced through it).
+/// What stands between a point and the pieces of an opening or of a face: whether the point
+/// sees `x` (the ray from the point through `x` leaves the scene; or, for a face's point
+/// (`between.rs`), the segment to it crosses no other face), and whether nothing at all
+/// stands before a whole `piece` (so that no ray need be traced through it).
 pub trait Sight {
-    /// True when the ray from the point through `x` leaves the scene.
+    /// True when the point sees `x`.
     fn sees(&self, x: DVec3) -> bool;
-    /// True when no face can stop a ray from the point through `piece`; false when one may.
+    /// True when no face can stop a ray from the point through (or to) `piece`; false when
+    /// one may.
     fn clear(&self, piece: &ConvexPolygon) -> bool;
     /// True when one opaque piece stops every ray from the point through `piece`; false
     /// when none is known to. Adds the rays it traced to `rays`.

@@ -1,5 +1,6 @@
 //! Visibility queries on the axis-aligned Cornell box (the layout that defeats compressed nodes).
 
+mod hulls;
 mod occluders;
 
 use glam::DVec3;
