@@ -7,6 +7,7 @@
 //! the rays' `f32` and edge slack may find a face at their ends are left to the rays
 //! ([`GRAZING`]).
 
+use super::shaft::edge_sides;
 use crate::geometry::{ConvexPolygon, MAX_CLIPPED};
 use glam::DVec3;
 
@@ -46,14 +47,10 @@ impl<'a> Hull<'a> {
         }
         let mut planes = [(DVec3::ZERO, DVec3::ZERO); MAX_CLIPPED + 1];
         planes[0] = (-normal, corners[0]);
-        let centroid = polygon.centroid();
         let mut count = 1;
-        for (i, &a) in corners.iter().enumerate() {
-            let side = (a - p).cross(corners[(i + 1) % corners.len()] - p).normalize_or_zero();
-            if side != DVec3::ZERO {
-                planes[count] = (if side.dot(centroid - p) < 0.0 { side } else { -side }, p);
-                count += 1;
-            }
+        for outward in edge_sides(p, corners) {
+            planes[count] = (outward, p);
+            count += 1;
         }
         Some(Hull { apex: p, corners, planes, count })
     }

@@ -102,19 +102,24 @@ impl Visibility {
 /// `slack`: the apex's plane and one through the apex and each edge. Returns how many of
 /// `planes` it filled.
 fn bounding_planes(apex: DVec3, n: DVec3, front: &[DVec3], slack: f64, planes: &mut [Plane]) -> usize {
-    let centroid = front.iter().sum::<DVec3>() / front.len() as f64;
     planes[0] = Plane::new(-n, apex, slack);
     let mut count = 1;
-    for (i, &a) in front.iter().enumerate() {
-        let b = front[(i + 1) % front.len()];
-        let side = (a - apex).cross(b - apex).normalize_or_zero();
-        if side != DVec3::ZERO {
-            let outward = if side.dot(centroid - apex) < 0.0 { side } else { -side };
-            planes[count] = Plane::new(outward, apex, slack);
-            count += 1;
-        }
+    for outward in edge_sides(apex, front) {
+        planes[count] = Plane::new(outward, apex, slack);
+        count += 1;
     }
     count
+}
+
+/// The outward unit normals of the planes through `apex` and each edge of the convex
+/// polygon `corners` (not containing the apex); an edge seen end-on gives none.
+pub(super) fn edge_sides(apex: DVec3, corners: &[DVec3]) -> impl Iterator<Item = DVec3> + '_ {
+    let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
+    corners.iter().enumerate().filter_map(move |(i, &a)| {
+        let b = corners[(i + 1) % corners.len()];
+        let side = (a - apex).cross(b - apex).normalize_or_zero();
+        (side != DVec3::ZERO).then(|| if side.dot(centroid - apex) < 0.0 { side } else { -side })
+    })
 }
 
 /// What stands between a point and the pieces of an opening or of a face: whether the point

@@ -6,7 +6,7 @@ use super::node::NONE;
 use super::tree::Tree;
 
 /// Per node: the brightest light under it as a source, cd/m², and its gain as a receiver.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone)]
 pub struct Brightness {
     source: Vec<f64>,
     gain: Vec<f64>,
@@ -14,26 +14,17 @@ pub struct Brightness {
 
 impl Brightness {
     /// Every node's brightest leaf value (`largest`, one per node, leaves set) and gain 1.
-    pub fn of(tree: &Tree, mut largest: Vec<f64>) -> Brightness {
-        for id in tree.preorder().into_iter().rev() {
-            let parent = tree.node(id).parent;
-            if parent != NONE {
-                largest[parent as usize] = f64::max(largest[parent as usize], largest[id as usize]);
-            }
-        }
-        let gain = vec![1.0; largest.len()];
-        Brightness { source: largest, gain }
+    pub fn of(tree: &Tree, largest: Vec<f64>) -> Brightness {
+        let source = up_the_tree(tree, largest, f64::max);
+        let gain = vec![1.0; source.len()];
+        Brightness { source, gain }
     }
 
-    /// The gains of the receivers: `L̄ / max(min(L_p, L̄), floor · L̄)`, at least 1, `L_p` the least reflected light
-    /// under node `p` (`least`, one per node, leaves set), `L̄` the scene's mean.
-    pub fn with_gains(mut self, tree: &Tree, mut least: Vec<f64>, mean: f64, floor: f64) -> Brightness {
-        for id in tree.preorder().into_iter().rev() {
-            let parent = tree.node(id).parent;
-            if parent != NONE {
-                least[parent as usize] = f64::min(least[parent as usize], least[id as usize]);
-            }
-        }
+    /// The gains of the receivers, at least 1: `L̄ / max(min(L_p, L̄), floor · L̄)`, `L_p` the
+    /// least reflected light under node `p` (`least`, one per node, leaves set), `L̄` the
+    /// scene's mean.
+    pub fn with_gains(mut self, tree: &Tree, least: Vec<f64>, mean: f64, floor: f64) -> Brightness {
+        let least = up_the_tree(tree, least, f64::min);
         self.gain =
             least.iter().map(|&l| if mean > 0.0 { mean / l.min(mean).max(floor * mean) } else { 1.0 }).collect();
         self
@@ -52,4 +43,16 @@ impl Brightness {
             self.gain.push(self.gain[parent]);
         }
     }
+}
+
+/// `values` (one per node, the leaves' set) with every node's folded by `combine` into its
+/// parent's, children before parents.
+fn up_the_tree(tree: &Tree, mut values: Vec<f64>, combine: fn(f64, f64) -> f64) -> Vec<f64> {
+    for id in tree.preorder().into_iter().rev() {
+        let parent = tree.node(id).parent;
+        if parent != NONE {
+            values[parent as usize] = combine(values[parent as usize], values[id as usize]);
+        }
+    }
+    values
 }

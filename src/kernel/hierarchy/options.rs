@@ -1,6 +1,7 @@
 //! How the hierarchical kernel refines (`docs/design.md` §3b, "Oracle"): the link tolerance
-//! and its floor for dim receivers, the finest patches, the element factors' quadrature, the most passes, whether the
-//! operator is balanced and the memory it may take; one default each.
+//! and its floor for dim receivers, the finest patches, the element factors' quadrature,
+//! the most passes, whether the operator is balanced and the memory it may take; one
+//! default each.
 
 use crate::transfer::form_factor::Quadrature;
 
@@ -59,8 +60,8 @@ impl Default for Options {
 pub const DEFAULT_TOLERANCE: f64 = 1e-2;
 
 /// The default [`Options::dim_floor`]: a receiver's allowance follows its reflected light
-/// down to three tenths of the scene's mean. On the open box's hard probes (`docs/hierarchy.md`,
-/// "Dim receivers' own allowance") 47 of 240 read beyond 1 % with 1 (no floor), 31 with
+/// down to three tenths of the scene's mean. On the open box's hard probes
+/// (`docs/hierarchy.md`, "Dim receivers' own allowance") 47 of 240 read beyond 1 % with 1 (no floor), 31 with
 /// 0.3, 29 with 0.1 and 28 with 0.03, at 187, 241, 268 and 273 thousand links; the Cornell
 /// box's hierarchy 15 with 0.3 and with 0.1; the lecture hall's links grow by 11 % with 0.3
 /// and by 50 % with 0.1.

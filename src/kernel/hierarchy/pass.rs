@@ -15,9 +15,10 @@ impl Hierarchy {
     pub fn refine(&mut self, x: &[f64], progress: &dyn Progress) -> Result<usize, Stopped> {
         let start = Instant::now();
         let leaves = self.tree.leaves();
-        let mean = self.mean_reflected(&leaves, x);
+        let reflected = self.reflected(&leaves, x);
+        let mean = self.mean_reflected(&leaves, &reflected);
         self.oracle.epsilon = self.options.tolerance * mean;
-        let least = self.least_reflected(&leaves, x);
+        let least = self.per_node(&leaves, reflected.iter().map(|r| r.max(0.0)), f64::INFINITY);
         let mut brightness = self.brightness(&leaves, x).with_gains(&self.tree, least, mean, self.options.dim_floor);
         let (mut redo, mut keep) = (Vec::new(), Vec::with_capacity(self.links.len()));
         for link in std::mem::take(&mut self.links) {
@@ -61,43 +62,38 @@ impl Hierarchy {
         Ok(())
     }
 
-    /// Area-weighted mean over the leaves of `x − L0` (exitance-weighted over cells), cd/m².
-    fn mean_reflected(&self, leaves: &[u32], x: &[f64]) -> f64 {
+    /// Each leaf's `x − L0` (in `leaves` order), exitance-weighted over its cells, cd/m².
+    fn reflected(&self, leaves: &[u32], x: &[f64]) -> Vec<f64> {
         let share = cell_shares(&self.directions);
+        let k = share.len();
+        let cells = |l: usize| x.get(l * k..(l + 1) * k).unwrap_or(&[]);
+        let value = |l: usize| cells(l).iter().zip(&share).map(|(v, s)| v * s).sum::<f64>();
+        leaves.iter().enumerate().map(|(l, &id)| value(l) - self.tree.node(id).emission).collect()
+    }
+
+    /// The area-weighted mean of the leaves' `reflected`, at least 0, cd/m².
+    fn mean_reflected(&self, leaves: &[u32], reflected: &[f64]) -> f64 {
         let (mut sum, mut area) = (0.0, 0.0);
-        for (l, &id) in leaves.iter().enumerate() {
-            let node = self.tree.node(id);
-            sum += node.exposed * self.reflected(l, id, x, &share);
-            area += node.exposed;
+        for (&id, r) in leaves.iter().zip(reflected) {
+            let exposed = self.tree.node(id).exposed;
+            sum += exposed * r;
+            area += exposed;
         }
         if area > 0.0 { (sum / area).max(0.0) } else { 0.0 }
     }
 
-    /// Leaf `l`'s (node `id`'s) `x − L0`, exitance-weighted over its cells by `share`, cd/m².
-    fn reflected(&self, l: usize, id: u32, x: &[f64], share: &[f64]) -> f64 {
-        let cells = x.get(l * share.len()..(l + 1) * share.len()).unwrap_or(&[]);
-        let value: f64 = cells.iter().zip(share).map(|(v, s)| v * s).sum();
-        value - self.tree.node(id).emission
-    }
-
-    /// Each leaf's reflected light (`reflected`), infinite elsewhere, one per node, cd/m².
-    fn least_reflected(&self, leaves: &[u32], x: &[f64]) -> Vec<f64> {
-        let share = cell_shares(&self.directions);
-        let mut least = vec![f64::INFINITY; self.tree.len()];
-        for (l, &id) in leaves.iter().enumerate() {
-            least[id as usize] = self.reflected(l, id, x, &share).max(0.0);
-        }
-        least
+    /// One value per node: the leaves' `values` (in `leaves` order), `elsewhere` for the rest.
+    fn per_node(&self, leaves: &[u32], values: impl Iterator<Item = f64>, elsewhere: f64) -> Vec<f64> {
+        let mut out = vec![elsewhere; self.tree.len()];
+        leaves.iter().zip(values).for_each(|(&id, v)| out[id as usize] = v);
+        out
     }
 
     /// The brightest value of the leaf field `x` under every node (cd/m²), every gain 1.
     pub(super) fn brightness(&self, leaves: &[u32], x: &[f64]) -> Brightness {
         let k = self.directions.len();
-        let mut b = vec![0.0; self.tree.len()];
-        for (l, &id) in leaves.iter().enumerate() {
-            let cells = x.get(l * k..(l + 1) * k).unwrap_or(&[]);
-            b[id as usize] = cells.iter().copied().fold(0.0, f64::max);
-        }
-        Brightness::of(&self.tree, b)
+        let largest =
+            (0..leaves.len()).map(|l| x.get(l * k..(l + 1) * k).unwrap_or(&[]).iter().copied().fold(0.0, f64::max));
+        Brightness::of(&self.tree, self.per_node(leaves, largest, 0.0))
     }
 }
