@@ -7,7 +7,6 @@
 //! the rays' `f32` and edge slack may find a face at their ends are left to the rays
 //! ([`GRAZING`]).
 
-use super::shaft::edge_sides;
 use crate::geometry::{ConvexPolygon, MAX_CLIPPED};
 use glam::DVec3;
 
@@ -76,4 +75,15 @@ impl<'a> Hull<'a> {
             |&(outward, on): &(DVec3, DVec3)| occluder.vertices().iter().all(|&o| (o - on).dot(outward) >= -touching);
         self.planes[..self.count].iter().any(beyond)
     }
+}
+
+/// The outward unit normals of the planes through `apex` and each edge of the convex
+/// polygon `corners` (not containing the apex); an edge seen end-on gives none.
+pub(super) fn edge_sides(apex: DVec3, corners: &[DVec3]) -> impl Iterator<Item = DVec3> + '_ {
+    let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
+    corners.iter().enumerate().filter_map(move |(i, &a)| {
+        let b = corners[(i + 1) % corners.len()];
+        let side = (a - apex).cross(b - apex).normalize_or_zero();
+        (side != DVec3::ZERO).then(|| if side.dot(centroid - apex) < 0.0 { side } else { -side })
+    })
 }

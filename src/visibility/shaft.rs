@@ -11,6 +11,7 @@
 //! traces its rays. The boxes are those of a binary BVH over the same triangles, built on
 //! the first query (the ray queries' wide BVH has no such traversal).
 
+use super::hull::edge_sides;
 use super::occluders::hides;
 use super::{Blocker, NO_BLOCKER, Visibility};
 use crate::geometry::{ConvexPolygon, MAX_CLIPPED};
@@ -109,17 +110,6 @@ fn bounding_planes(apex: DVec3, n: DVec3, front: &[DVec3], slack: f64, planes: &
         count += 1;
     }
     count
-}
-
-/// The outward unit normals of the planes through `apex` and each edge of the convex
-/// polygon `corners` (not containing the apex); an edge seen end-on gives none.
-pub(super) fn edge_sides(apex: DVec3, corners: &[DVec3]) -> impl Iterator<Item = DVec3> + '_ {
-    let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
-    corners.iter().enumerate().filter_map(move |(i, &a)| {
-        let b = corners[(i + 1) % corners.len()];
-        let side = (a - apex).cross(b - apex).normalize_or_zero();
-        (side != DVec3::ZERO).then(|| if side.dot(centroid - apex) < 0.0 { side } else { -side })
-    })
 }
 
 /// What stands between a point and the pieces of an opening or of a face: whether the point
