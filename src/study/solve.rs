@@ -16,7 +16,7 @@ use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
 use crate::readout::illuminance::{arriving, patch_illuminance};
-use crate::readout::readings::{Readings, read_field};
+use crate::readout::readings::{Readings, read_field, read_unbarred};
 use crate::scene::Scene;
 use crate::solve::norms::Norms;
 use crate::solve::orders::{OrderRecord, reflection_orders};
@@ -123,7 +123,11 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     let field = Field::from_unknowns(&x, k);
     let illuminance = patch_illuminance(&arriving(&model, &x), k);
     let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
-    let Readings { probes, grids, grid_errors, observers } = read_field(scene, &model, &field, progress);
+    // With light scenes the case's own light is every group at factor 1, and its error bars
+    // are the groups' residual samples summed (set below), not gathered a third time.
+    let scenes = !scene.lighting.scenes.is_empty();
+    let read = if scenes { read_unbarred } else { read_field };
+    let Readings { probes, grids, grid_errors, observers } = read(scene, &model, &field, progress);
     crate::interrupt::check(|| {
         "the readouts (probes, error bars, observers, grid points and their error bars)".to_string()
     })?;
@@ -156,8 +160,13 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     let how = GroupSolves { method: solved.runs[solved.reference].method, params: job.params, warm: true };
     let readings = (solved.probes.as_slice(), solved.grids.as_slice());
     solved.daylight = daylight_readings(scene, &mut solved.model, readings, &how, progress)?;
-    if !scene.lighting.scenes.is_empty() {
-        solved.light_scenes = Some(solve_light_scenes(scene, &mut solved.model, &solved.x, &how, progress)?);
+    if scenes {
+        let light_scenes = solve_light_scenes(scene, &mut solved.model, &solved.x, &how, progress)?;
+        if let Some(shared) = &light_scenes.shared {
+            let (_, samples) = shared.of_light_scene(&vec![1.0; scene.lighting.groups.len()]);
+            solved.grid_errors = samples.bars(&mut solved.probes, &solved.grids);
+        }
+        solved.light_scenes = Some(light_scenes);
     }
     Ok(solved)
 }

@@ -15,6 +15,7 @@ use ugo::model::{Model, SourceTerm};
 use ugo::progress::Silent;
 use ugo::readout::field::Field;
 use ugo::readout::grid::{read_grids, read_grids_cut_by};
+use ugo::readout::grid_error::GridErrorBars;
 use ugo::readout::illuminance::{arriving, patch_illuminance};
 use ugo::readout::probe::read_probes;
 use ugo::readout::readings::{Readings, read_field, read_unbarred};
@@ -312,6 +313,27 @@ fn the_light_without_one_group_is_the_other_groups_light() {
     assert!(relative(&without.direct.intercepted, &others.direct.intercepted) < 1e-12);
     let emitted = without.emission.iter().zip(&others.emission).all(|(a, b)| (a - b).abs() <= 1e-12 * b.abs().max(1.0));
     assert!(emitted, "the surfaces' emission differs");
+}
+
+/// With light scenes the case's own error bars are its groups' residual samples summed at
+/// factor 1 (`study::solve`), not gathered again: equal, to the solves' tolerance, to those
+/// of the case's own field gathered with the groups' cut.
+#[test]
+fn the_cases_own_error_bars_are_its_groups_summed() {
+    let scene = room(UNIFORM, 1.0, 1.0, 500.0);
+    let s = solved(&scene);
+    let light = s.light_scenes.as_ref().expect("the light scenes");
+    let k = s.model.kernel.cells();
+    let fields: Vec<Field> = light.groups.iter().map(|g| Field::from_unknowns(&g.solve.x, k)).collect();
+    let by: Vec<&Field> = fields.iter().collect();
+    let mut alone = read_unbarred(&scene, &s.model, &s.field, &Silent);
+    alone.set_bars(&ResidualSamples::of(&alone.probes, &alone.grids, &s.model, &s.field, &by, &Silent));
+    let ours: Vec<f64> = s.probes.iter().map(|p| p.error.expect("a bar")).collect();
+    let theirs: Vec<f64> = alone.probes.iter().map(|p| p.error.expect("a bar")).collect();
+    let grid = |e: &[GridErrorBars]| e[0].points.iter().copied().filter(|b| !b.is_nan()).collect::<Vec<f64>>();
+    let d = [relative(&ours, &theirs), relative(&grid(&s.grid_errors), &grid(&alone.grid_errors))];
+    assert!(d[0] <= 1e-9 && d[1] <= 1e-9, "probes', grid's bars differ by {d:?} of the largest");
+    assert!(ours.iter().all(|b| *b > 0.0), "every probe has a bar: {ours:?}");
 }
 
 /// A light scene's grid readings and error bars, `Σ_g f_g` of its groups' readings and
