@@ -34,7 +34,8 @@ use crate::readout::cylindrical::planes;
 use crate::readout::field::Field;
 use crate::readout::gather::Receiver;
 use crate::readout::glossy::{ModelSurroundings, is_diffuse, stream};
-use crate::readout::luminance::gathered;
+use crate::readout::lit::Lit;
+use crate::readout::luminance::gathered_each;
 use crate::readout::probe::ProbeReading;
 use crate::scene::ProbeKind;
 use glam::DVec3;
@@ -90,25 +91,27 @@ impl Residual {
 /// Sets the error bar of every probe's reading, telling `progress` of each; a signal's stop
 /// leaves the rest without (`crate::interrupt`: the caller checks).
 pub fn estimate_errors(readings: &mut [ProbeReading], model: &Model, field: &Field, progress: &dyn Progress) {
-    let samples = probe_samples(readings, model, field, &[], progress);
-    set_errors(readings, &samples);
+    let samples = probe_samples(readings, model, &[Lit::own(model, field)], &[], progress);
+    set_errors(readings, &samples[0]);
 }
 
 /// The residual's samples of every probe of `readings` ([`probe_rays`] each, probe after
-/// probe), the gathers cut by the rules of `by` (`samples`), telling `progress` of each; a
-/// signal's stop leaves the samples after it zero.
+/// probe), for each field of `lits` (`samples`: the gathers shared, cut by the rules of
+/// `by`), telling `progress` of each probe; a signal's stop leaves the samples after it zero.
 pub fn probe_samples(
     readings: &[ProbeReading],
     model: &Model,
-    field: &Field,
+    lits: &[Lit],
     by: &[&Field],
     progress: &dyn Progress,
-) -> Vec<Sample> {
+) -> Vec<Vec<Sample>> {
     progress.begin("error bars", readings.len() as u64);
-    let mut all = Vec::with_capacity(readings.iter().map(probe_rays).sum());
+    let total = readings.iter().map(probe_rays).sum();
+    let mut all: Vec<Vec<Sample>> = lits.iter().map(|_| Vec::with_capacity(total)).collect();
     for r in readings {
         let receivers = receivers(r);
-        all.extend(samples(model, field, &receivers, RAYS / receivers.len(), by, &Silent));
+        let each = samples(model, lits, &receivers, RAYS / receivers.len(), by, &Silent);
+        all.iter_mut().zip(each).for_each(|(all, s)| all.extend(s));
         progress.advance(1);
     }
     progress.end();
@@ -147,59 +150,71 @@ fn receivers(r: &ProbeReading) -> Vec<(DVec3, DVec3)> {
 /// The residual at `p` on a receiver facing the unit `n`, over `rays` directions (a
 /// signal's stop leaves the rays after it unread: `crate::interrupt`).
 pub fn residual(model: &Model, field: &Field, p: DVec3, n: DVec3, rays: usize) -> Residual {
-    Residual::pooled(samples(model, field, &[(p, n)], rays, &[], &Silent).iter())
+    Residual::pooled(samples(model, &[Lit::own(model, field)], &[(p, n)], rays, &[], &Silent)[0].iter())
 }
 
 /// The residual's samples over `rays` stratified cosine-distributed directions from each
-/// receiver at `p` facing the unit `n` of `receivers`, receiver after receiver (a signal's
-/// stop leaves the rays after it unread, zero: `crate::interrupt`); `progress` advances by
-/// one as each receiver's last direction is read. The gathers at the points seen cut along
-/// shadow edges by the field's own rule, or by that of any field of `by` (`cut.rs`: fields
-/// whose samples are summed).
+/// receiver at `p` facing the unit `n` of `receivers`, receiver after receiver, for each
+/// field of `lits` (a signal's stop leaves the rays after it unread, zero:
+/// `crate::interrupt`); `progress` advances by one as each receiver's last direction is
+/// read. The point a direction meets and the gather there are found once for all the
+/// fields (`lit.rs`), cut along shadow edges by the rule of every field of `by` (`cut.rs`:
+/// fields whose samples are summed), or of `lits` when it names none.
 pub fn samples(
     model: &Model,
-    field: &Field,
+    lits: &[Lit],
     receivers: &[(DVec3, DVec3)],
     rays: usize,
     by: &[&Field],
     progress: &dyn Progress,
-) -> Vec<Sample> {
-    let stored = ModelSurroundings::new(model, field);
+) -> Vec<Vec<Sample>> {
+    let stored: Vec<ModelSurroundings> = lits.iter().map(|l| ModelSurroundings::new(model, l.field)).collect();
     let sets: Vec<(Receiver, Stratified)> = receivers
         .par_iter()
         .map(|&(p, n)| (Receiver::at(model, p, n), Stratified::new(rays, &mut stream(p, n))))
         .collect();
-    (0..receivers.len() * rays)
+    let each: Vec<Vec<Sample>> = (0..receivers.len() * rays)
         .into_par_iter()
         .map(|k| {
             if crate::interrupt::asked() {
-                return Sample::default();
+                return vec![Sample::default(); lits.len()];
             }
             let ((at, set), p) = (&sets[k / rays], receivers[k / rays].0);
             let [u, v] = set.point(k % rays);
-            let sample = seen(&stored, p, at.frame.world(cosine_direction(u, v)), at.ignore, by);
+            let sample = seen(model, lits, &stored, p, at.frame.world(cosine_direction(u, v)), at.ignore, by);
             if k % rays == rays - 1 {
                 progress.advance(1);
             }
             sample
         })
-        .collect()
+        .collect();
+    (0..lits.len()).map(|l| each.iter().map(|s| s[l]).collect()).collect()
 }
 
-/// The sample of the point `p` sees along `w` (ignoring face `ignore`), `L_h` as `stored`
-/// holds it: zero for a miss, the back of a surface, and a surface that is not Lambertian (a
-/// glossy surface's reading is relit already, a mirror's is its images'); its gather cut by
-/// the rules of `by`.
-fn seen(stored: &ModelSurroundings, p: DVec3, w: DVec3, ignore: u32, by: &[&Field]) -> Sample {
-    let (model, field) = (stored.model, stored.field);
+/// The sample, for each field of `lits` (`stored` holding each as `L_h`), of the point `p`
+/// sees along `w` (ignoring face `ignore`): zero for a miss, the back of a surface, and a
+/// surface that is not Lambertian (a glossy surface's reading is relit already, a mirror's
+/// is its images'); its gather cut by the rules of `by`.
+fn seen(
+    model: &Model,
+    lits: &[Lit],
+    stored: &[ModelSurroundings],
+    p: DVec3,
+    w: DVec3,
+    ignore: u32,
+    by: &[&Field],
+) -> Vec<Sample> {
     let sphere = model.kernel.directions.is_sphere();
+    let none = || vec![Sample::default(); lits.len()];
     let Some((j, y)) = model.faces.landing_patch(&model.mesh, &model.visibility, p, w, ignore, sphere) else {
-        return Sample::default();
+        return none();
     };
     let s = &model.mesh.patches[j];
     if s.normal.dot(w) >= 0.0 || !is_diffuse(&model.materials[s.material as usize]) {
-        return Sample::default();
+        return none();
     }
     let albedo = model.kernel.blocks[model.kernel.patch_material[j] as usize].albedo(0, &model.kernel.directions).0;
-    Sample { illuminance: PI * (gathered(model, field, j, y, -w, by) - stored.stored(j, w)), albedo }
+    let gathered = gathered_each(model, lits, j, y, -w, by);
+    let light = gathered.iter().zip(stored);
+    light.map(|(g, stored)| Sample { illuminance: PI * (g - stored.stored(j, w)), albedo }).collect()
 }

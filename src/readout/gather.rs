@@ -25,6 +25,7 @@ use crate::model::Model;
 use crate::readout::cut::{Cut, Worth};
 use crate::readout::field::Field;
 use crate::readout::glossy::{ModelSurroundings, PIECE_RAYS};
+use crate::readout::lit::Lit;
 use crate::readout::mirrored::{on_mirrors, through_mirrors};
 use crate::sky::READING;
 use crate::transfer::contour::point_to_patch;
@@ -95,9 +96,17 @@ pub(super) fn arriving(model: &Model, field: &Field, q: DVec3, s: &Patch) -> Vec
 
 /// [`arriving`], with the pieces along shadow edges cut by `cut` (as [`SHADOW_CUT`]).
 pub(super) fn arriving_within(model: &Model, field: &Field, q: DVec3, s: &Patch, cut: &Cut) -> Vec<f64> {
+    arriving_each(model, &[Lit::own(model, field)], q, s, cut).swap_remove(0)
+}
+
+/// [`arriving_within`] for each field of `lits` under its own light, the pieces' rays and
+/// factors shared (`lit.rs`).
+pub(super) fn arriving_each(model: &Model, lits: &[Lit], q: DVec3, s: &Patch, cut: &Cut) -> Vec<Vec<f64>> {
     let frame = s.frame();
-    let direct = arriving_at(&model.sources, &model.visibility, &model.kernel.directions, q, &frame, s.face, READING);
-    sum(&per_cell(model, field, q, &frame, s.face, cut), &direct)
+    let gathered = per_cell_each(model, lits, q, &frame, s.face, cut);
+    let direct =
+        |lit: &Lit| arriving_at(lit.sources, &model.visibility, &model.kernel.directions, q, &frame, s.face, READING);
+    lits.iter().zip(gathered).map(|(lit, g)| sum(&g, &direct(lit))).collect()
 }
 
 pub(super) fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
@@ -125,9 +134,15 @@ pub fn gather(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32
 }
 
 fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, cut: &Cut) -> Vec<f64> {
-    let directions = &model.kernel.directions;
-    let cells = directions.len();
-    let binning = Binning::new(directions);
+    per_cell_each(model, &[Lit::own(model, field)], p, frame, ignore, cut).swap_remove(0)
+}
+
+/// `I_d(p)` of each field of `lits`, every piece's rays and factors found once and its light
+/// weighed by each field; cut by the rule of `cut` (of all the fields of `lits` when it
+/// names none).
+fn per_cell_each(model: &Model, lits: &[Lit], p: DVec3, frame: &Frame, ignore: u32, cut: &Cut) -> Vec<Vec<f64>> {
+    let cells = model.kernel.directions.len();
+    let binning = Binning::new(&model.kernel.directions);
     let patches = &model.mesh.patches;
     let mirrored = on_mirrors(model);
     let geometric: Vec<f64> = patches
@@ -138,14 +153,16 @@ fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, 
             false => point_to_patch(p, frame.normal, s).max(0.0),
         })
         .collect();
-    let worth = Worth::new(cut, field, &geometric, |j| j, 1.0);
-    let surroundings = ModelSurroundings::new(model, field);
+    let fields: Vec<&Field> = lits.iter().map(|l| l.field).collect();
+    let rule = Cut { fraction: cut.fraction, by: if cut.by.is_empty() { &fields } else { cut.by } };
+    let worth = Worth::new(&rule, fields[0], &geometric, |j| j, 1.0);
+    let surroundings: Vec<ModelSurroundings> = fields.iter().map(|f| ModelSurroundings::new(model, f)).collect();
     let surfaces = patches
         .par_iter()
         .enumerate()
         .filter(|&(j, _)| worth.lit(j))
         .fold(
-            || (vec![0.0; cells], Vec::new(), Cell::new(NO_BLOCKER)),
+            || (vec![0.0; lits.len() * cells], Vec::new(), Cell::new(NO_BLOCKER)),
             |(mut sum, mut bins, blocker), (j, s)| {
                 let sight = SightTo::new(&model.visibility, p, [ignore, s.face], &blocker);
                 let worth = |piece: &ConvexPolygon| worth.cuts(j, s.area, piece.area());
@@ -154,21 +171,26 @@ fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, 
                     let Some(width) = lobe else {
                         bins.clear();
                         binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);
-                        bins.iter().for_each(|&(d, m, f)| sum[d as usize] += f * seen * field.at(j, m as usize));
+                        for (field, sum) in fields.iter().zip(sum.chunks_mut(cells)) {
+                            bins.iter().for_each(|&(d, m, f)| sum[d as usize] += f * seen * field.at(j, m as usize));
+                        }
                         return;
                     };
                     piece.pieces_within(p, LOBE_PIECE * width, LOBE_DEPTH, &mut |a| {
                         bins.clear();
                         binned_point(p, frame, &Patch { polygon: *a, ..*s }, &binning, &mut bins);
                         let c = a.centroid();
-                        let towards_p = surroundings.outgoing(j, c, (p - c).normalize(), PIECE_RAYS);
-                        bins.iter().for_each(|&(d, _, f)| sum[d as usize] += f * seen * towards_p);
+                        for (around, sum) in surroundings.iter().zip(sum.chunks_mut(cells)) {
+                            let towards_p = around.outgoing(j, c, (p - c).normalize(), PIECE_RAYS);
+                            bins.iter().for_each(|&(d, _, f)| sum[d as usize] += f * seen * towards_p);
+                        }
                     });
                 });
                 (sum, bins, blocker)
             },
         )
         .map(|(sum, _, _)| sum)
-        .reduce(|| vec![0.0; cells], |a, b| sum(&a, &b));
-    sum(&surfaces, &through_mirrors(model, field, p, frame, ignore, cut))
+        .reduce(|| vec![0.0; lits.len() * cells], |a, b| sum(&a, &b));
+    let mirrors = |field: &Field| through_mirrors(model, field, p, frame, ignore, cut);
+    surfaces.chunks(cells).zip(&fields).map(|(s, f)| sum(s, &mirrors(f))).collect()
 }

@@ -26,6 +26,7 @@
 use super::error_bar::{Residual, Sample, samples};
 use super::field::Field;
 use super::grid::GridReading;
+use super::lit::Lit;
 use crate::model::Model;
 use crate::progress::Progress;
 use rayon::prelude::*;
@@ -55,7 +56,7 @@ impl GridErrorBars {
     /// counted point (a signal's stop leaves the rays after it zero: `crate::interrupt`,
     /// the caller checks).
     pub fn of(grid: &GridReading, model: &Model, field: &Field, progress: &dyn Progress) -> GridErrorBars {
-        GridErrorBars::from_samples(grid, &grid_samples(grid, model, field, &[], progress))
+        GridErrorBars::from_samples(grid, &grid_samples(grid, model, &[Lit::own(model, field)], &[], progress)[0])
     }
 
     /// The bars of `grid` from its counted points' samples ([`grid_samples`]).
@@ -83,32 +84,36 @@ impl GridErrorBars {
 }
 
 /// The residual's samples of the counted points of `grid` ([`GRID_RAYS`] each, point after
-/// point), read from `field` on `model` (cut by the rules of `by`: `error_bar::samples`),
-/// `progress` advanced by one per counted point.
+/// point) for each field of `lits` on `model` (the gathers shared, cut by the rules of
+/// `by`: `error_bar::samples`), `progress` advanced by one per counted point.
 pub fn grid_samples(
     grid: &GridReading,
     model: &Model,
-    field: &Field,
+    lits: &[Lit],
     by: &[&Field],
     progress: &dyn Progress,
-) -> Vec<Sample> {
+) -> Vec<Vec<Sample>> {
     let receivers: Vec<_> = counted(grid).iter().map(|&i| (grid.points[i], grid.grid.normal)).collect();
-    samples(model, field, &receivers, GRID_RAYS, by, progress)
+    samples(model, lits, &receivers, GRID_RAYS, by, progress)
 }
 
-/// The samples of every grid of `readings`, grid after grid (cut by the rules of `by`),
-/// telling `progress` of each counted point.
+/// The samples of every grid of `readings`, grid after grid, for each field of `lits` (cut
+/// by the rules of `by`), telling `progress` of each counted point.
 pub fn grids_samples(
     readings: &[GridReading],
     model: &Model,
-    field: &Field,
+    lits: &[Lit],
     by: &[&Field],
     progress: &dyn Progress,
-) -> Vec<Sample> {
+) -> Vec<Vec<Sample>> {
     progress.begin("grid error bars", readings.iter().map(|g| counted(g).len() as u64).sum());
-    let samples = readings.iter().flat_map(|g| grid_samples(g, model, field, by, progress)).collect();
+    let mut all: Vec<Vec<Sample>> = vec![Vec::new(); lits.len()];
+    for grid in readings {
+        let each = grid_samples(grid, model, lits, by, progress);
+        all.iter_mut().zip(each).for_each(|(all, s)| all.extend(s));
+    }
     progress.end();
-    samples
+    all
 }
 
 /// The samples the bars of `grid` pool: [`GRID_RAYS`] per counted point.

@@ -25,8 +25,9 @@ use crate::model::Model;
 use crate::readout::cut::Cut;
 use crate::readout::field::Field;
 use crate::readout::final_gather::{Surroundings, indirect};
-use crate::readout::gather::{SHADOW_CUT, arriving, arriving_within};
+use crate::readout::gather::{SHADOW_CUT, arriving, arriving_each};
 use crate::readout::glossy::{self, ModelSurroundings, PIECE_RAYS, has_lobe, is_diffuse, stream};
+use crate::readout::lit::Lit;
 use crate::visibility::{NO_FACE, Visibility};
 use glam::DVec3;
 
@@ -48,7 +49,7 @@ pub fn outgoing(model: &Model, field: &Field, i: usize, q: DVec3, direction: DVe
     if !is_diffuse(&model.materials[model.mesh.patches[i].material as usize]) {
         return relit(model, field, i, q, direction, RELIT_RAYS);
     }
-    lambertian(model, field, i, q, direction, incident, &[])
+    lambertian(model, &Lit::own(model, field), i, q, direction, incident, &[])
 }
 
 /// The luminance (cd/m²) seen from `p` along the unit `v`: the outgoing luminance, gathered
@@ -64,7 +65,7 @@ pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3, relit_rays: usize)
             if !is_diffuse(&model.materials[s.material as usize]) {
                 return Some(relit(model, field, i, q, -v, relit_rays));
             }
-            Some(lambertian(model, field, i, q, -v, &arriving(model, field, q, s), &[]))
+            Some(lambertian(model, &Lit::own(model, field), i, q, -v, &arriving(model, field, q, s), &[]))
         })
         .unwrap_or(0.0)
 }
@@ -73,30 +74,31 @@ pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3, relit_rays: usize)
 /// gathered at `y` (its pieces along shadow edges cut at [`RELIT_SHADOW_CUT`] by the
 /// field's rule, or by that of any field of `by`: `cut.rs`), cd/m².
 pub fn gathered(model: &Model, field: &Field, j: usize, y: DVec3, direction: DVec3, by: &[&Field]) -> f64 {
-    let s = &model.mesh.patches[j];
-    let incident = arriving_within(model, field, y, s, &Cut { fraction: RELIT_SHADOW_CUT, by });
-    lambertian(model, field, j, y, direction, &incident, by)
+    gathered_each(model, &[Lit::own(model, field)], j, y, direction, by)[0]
 }
 
-/// The Lambertian outgoing luminance of patch `i` at `q` towards `direction`, the light
-/// through a transmitter gathered as [`arriving`] cuts it, by the rules of `by` (`cut.rs`).
-fn lambertian(
-    model: &Model,
-    field: &Field,
-    i: usize,
-    q: DVec3,
-    direction: DVec3,
-    incident: &[f64],
-    by: &[&Field],
-) -> f64 {
+/// [`gathered`] for each field of `lits` under its own light, the gather's rays and
+/// factors shared (`lit.rs`), cut by the rules of `by` (of all the fields of `lits` when
+/// it names none).
+pub fn gathered_each(model: &Model, lits: &[Lit], j: usize, y: DVec3, direction: DVec3, by: &[&Field]) -> Vec<f64> {
+    let s = &model.mesh.patches[j];
+    let incident = arriving_each(model, lits, y, s, &Cut { fraction: RELIT_SHADOW_CUT, by });
+    lits.iter().zip(&incident).map(|(lit, e)| lambertian(model, lit, j, y, direction, e, by)).collect()
+}
+
+/// The Lambertian outgoing luminance of patch `i` at `q` towards `direction` under `lit`,
+/// the light through a transmitter gathered as [`arriving`] cuts it, by the rules of `by`
+/// (`cut.rs`).
+fn lambertian(model: &Model, lit: &Lit, i: usize, q: DVec3, direction: DVec3, incident: &[f64], by: &[&Field]) -> f64 {
     let kernel = &model.kernel;
     let patch = &model.mesh.patches[i];
     let k = kernel.directions.lookup(patch.frame().local(direction));
     let block = &kernel.blocks[kernel.patch_material[i] as usize];
-    let mut l = model.mesh.emission[i] + incident.iter().enumerate().map(|(d, e)| block.at(k, d) * e).sum::<f64>();
+    let mut l = lit.emission[i] + incident.iter().enumerate().map(|(d, e)| block.at(k, d) * e).sum::<f64>();
     if block.transmits() && patch.twin != NO_TWIN {
         let twin = &model.mesh.patches[patch.twin as usize];
-        let through = arriving_within(model, field, q, twin, &Cut { fraction: SHADOW_CUT, by });
+        let cut = Cut { fraction: SHADOW_CUT, by };
+        let through = arriving_each(model, std::slice::from_ref(lit), q, twin, &cut).swap_remove(0);
         l += through.iter().enumerate().map(|(d, e)| block.transmit_at(k, d).unwrap_or(0.0) * e).sum::<f64>();
     }
     l

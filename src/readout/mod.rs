@@ -19,6 +19,7 @@ pub mod grid_error;
 pub mod group_readouts;
 pub mod guth;
 pub mod illuminance;
+pub mod lit;
 pub mod luminance;
 pub mod meter;
 pub mod mirrored;

@@ -13,6 +13,7 @@ use super::error_bar::{Sample, probe_rays, probe_samples, set_errors};
 use super::field::Field;
 use super::grid::GridReading;
 use super::grid_error::{GridErrorBars, grid_rays, grids_samples};
+use super::lit::Lit;
 use super::probe::ProbeReading;
 use crate::model::Model;
 use crate::progress::Progress;
@@ -35,9 +36,27 @@ impl ResidualSamples {
         by: &[&Field],
         progress: &dyn Progress,
     ) -> ResidualSamples {
-        let mut all = probe_samples(probes, model, field, by, progress);
-        all.extend(grids_samples(grids, model, field, by, progress));
-        ResidualSamples(all)
+        ResidualSamples::of_each(probes, grids, model, &[Lit::own(model, field)], by, progress).swap_remove(0)
+    }
+
+    /// [`ResidualSamples::of`] for each field of `lits` under its own light, every direction's
+    /// gather shared among them (`lit.rs`), cut by the rules of `by` (of all of `lits` when
+    /// it names none).
+    pub fn of_each(
+        probes: &[ProbeReading],
+        grids: &[GridReading],
+        model: &Model,
+        lits: &[Lit],
+        by: &[&Field],
+        progress: &dyn Progress,
+    ) -> Vec<ResidualSamples> {
+        let at_probes = probe_samples(probes, model, lits, by, progress);
+        let at_grids = grids_samples(grids, model, lits, by, progress);
+        let joined = |(mut all, at_grids): (Vec<Sample>, Vec<Sample>)| {
+            all.extend(at_grids);
+            ResidualSamples(all)
+        };
+        at_probes.into_iter().zip(at_grids).map(joined).collect()
     }
 
     /// How many samples the readings `probes` and `grids` take.

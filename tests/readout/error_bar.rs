@@ -12,14 +12,16 @@
 
 use super::room;
 use crate::support::{build, solve};
+use glam::DVec3;
 use std::f64::consts::PI;
 use std::path::Path;
 use std::sync::atomic::{AtomicU64, Ordering};
 use ugo::progress::{Progress, Silent};
-use ugo::readout::error_bar::estimate_errors;
+use ugo::readout::error_bar::{estimate_errors, samples};
 use ugo::readout::field::Field;
 use ugo::readout::grid::read_grids;
 use ugo::readout::grid_error::grid_errors;
+use ugo::readout::lit::Lit;
 use ugo::readout::probe::{ProbeReading, read_probes};
 use ugo::scene::Scene;
 
@@ -154,4 +156,44 @@ fn the_grids_error_bars_tell_their_progress_point_by_point() {
     assert!(grids.len() > 1 && points > grids.len(), "{points} points in {} grids", grids.len());
     assert_eq!(progress.total.load(Ordering::Relaxed), points as u64, "announced");
     assert_eq!(progress.done.load(Ordering::Relaxed), points as u64, "advanced");
+}
+
+/// Two fields gathered at once (`readout/lit.rs`: one landing and one gather a direction,
+/// each piece weighed by both) give each the samples it gets alone, to round-off; and a
+/// field under light other than the model's own is refused where a gather would read the
+/// model's own sources (a glossy surface).
+#[test]
+fn fields_gathered_at_once_sample_as_each_alone() {
+    let text = format!("{}{PROBES}{GRIDS}", room(1.0, 0.6, 10.0));
+    let scene = Scene::parse(Path::new("cases/test.toml"), text).unwrap_or_else(|e| panic!("{e}"));
+    let model = build(&scene);
+    let cells = model.kernel.cells();
+    let (solved, emitted) = (Field::from_unknowns(&solve(&model), cells), Field::from_unknowns(&model.l0, cells));
+    let receivers = [(DVec3::new(0.5, 0.5, 0.5), DVec3::Y), (DVec3::new(0.3, 0.001, 0.01), DVec3::Y)];
+    let by = [&solved, &emitted];
+    let lits = [Lit::own(&model, &solved), Lit::own(&model, &emitted)];
+    let together = samples(&model, &lits, &receivers, 16, &by, &Silent);
+    for (lit, together) in lits.iter().zip(&together) {
+        let alone = samples(&model, std::slice::from_ref(lit), &receivers, 16, &by, &Silent).swap_remove(0);
+        assert_eq!(alone.len(), together.len());
+        for (a, t) in alone.iter().zip(together) {
+            assert!((a.illuminance - t.illuminance).abs() <= 1e-12 * a.illuminance.abs().max(1.0), "{a:?} {t:?}");
+            assert_eq!(a.albedo, t.albedo);
+        }
+    }
+    assert!(together[0].iter().zip(&together[1]).any(|(a, b)| a.illuminance != b.illuminance), "two fields");
+    assert!(Lit::apart(&model, &solved, &model.sources, &model.mesh.emission).is_some(), "a Lambertian room");
+    let glossy = text_with_phong(&room(1.0, 0.6, 10.0));
+    let scene = Scene::parse(Path::new("cases/test.toml"), glossy).unwrap_or_else(|e| panic!("{e}"));
+    let model = build(&scene);
+    let field = Field::from_unknowns(&model.l0, model.kernel.cells());
+    assert!(Lit::apart(&model, &field, &model.sources, &model.mesh.emission).is_none(), "a glossy room");
+}
+
+/// `room` with its material made Phong.
+fn text_with_phong(room: &str) -> String {
+    room.replace(
+        "type = \"lambert\"\nreflectance = 0.6",
+        "type = \"phong\"\nexponent = 20\nspecular = 0.2\nreflectance = 0.4",
+    )
 }
