@@ -48,9 +48,22 @@ pub fn illuminance_at(model: &Model, field: &Field, p: DVec3, n: DVec3) -> f64 {
 /// the pieces along shadow edges cut by the field's own rule, or by that of any field of
 /// `by` (`cut.rs`: fields whose readings are summed).
 pub fn illuminance_and_direct_at(model: &Model, field: &Field, p: DVec3, n: DVec3, by: &[&Field]) -> (f64, f64) {
-    let (_, incident, direct) = incident_at(model, field, p, n, by);
-    let direct = PI * direct.iter().sum::<f64>();
-    (PI * incident.iter().sum::<f64>() + direct, direct)
+    illuminance_and_direct_each(model, &[Lit::own(model, field)], p, n, by)[0]
+}
+
+/// [`illuminance_and_direct_at`] for each field of `lits` under its own light, the gather's
+/// rays and factors shared (`lit.rs`), cut by the rules of `by` (of all of `lits` when it
+/// names none).
+pub fn illuminance_and_direct_each(model: &Model, lits: &[Lit], p: DVec3, n: DVec3, by: &[&Field]) -> Vec<(f64, f64)> {
+    let at = Receiver::at(model, p, n);
+    let incident = per_cell_each(model, lits, p, &at.frame, at.ignore, &Cut { fraction: SHADOW_CUT, by });
+    let direct = |lit: &Lit| {
+        let cells =
+            arriving_at(lit.sources, &model.visibility, &model.kernel.directions, p, &at.frame, at.ignore, READING);
+        PI * cells.iter().sum::<f64>()
+    };
+    let each = lits.iter().zip(incident).map(|(lit, e)| (PI * e.iter().sum::<f64>(), direct(lit)));
+    each.map(|(gathered, direct)| (gathered + direct, direct)).collect()
 }
 
 /// A receiver at a point: the patch it lies on (if any), the frame its light is binned

@@ -7,7 +7,8 @@
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::readout::field::Field;
-use crate::readout::gather::illuminance_and_direct_at;
+use crate::readout::gather::illuminance_and_direct_each;
+use crate::readout::lit::Lit;
 use crate::readout::obstructed::{Obstruction, obstructions};
 use crate::scene::Grid;
 use glam::DVec3;
@@ -53,17 +54,22 @@ impl GridReading {
     /// [`GridReading::of`], each point's gather cut along shadow edges by the rules of the
     /// fields `by` (`cut.rs`: fields whose readings are summed; none: the field's own).
     pub fn cut_by(grid: &Grid, model: &Model, field: &Field, by: &[&Field], progress: &dyn Progress) -> GridReading {
-        let (illuminance, direct) = grid
-            .points()
-            .iter()
-            .take_while(|_| !crate::interrupt::asked())
-            .map(|&p| {
-                let reading = illuminance_and_direct_at(model, field, p, grid.normal, by);
-                progress.advance(1);
-                reading
-            })
-            .unzip();
-        GridReading::with(grid, model, illuminance, direct)
+        GridReading::each(grid, model, &[Lit::own(model, field)], by, progress).swap_remove(0)
+    }
+
+    /// [`GridReading::cut_by`] for each field of `lits` under its own light, every point's
+    /// gather shared among them (`lit.rs`).
+    pub fn each(grid: &Grid, model: &Model, lits: &[Lit], by: &[&Field], progress: &dyn Progress) -> Vec<GridReading> {
+        let mut read: Vec<(Vec<f64>, Vec<f64>)> = vec![(Vec::new(), Vec::new()); lits.len()];
+        for &p in grid.points().iter().take_while(|_| !crate::interrupt::asked()) {
+            let each = illuminance_and_direct_each(model, lits, p, grid.normal, by);
+            for ((illuminance, direct), (e, d)) in read.iter_mut().zip(each) {
+                illuminance.push(e);
+                direct.push(d);
+            }
+            progress.advance(1);
+        }
+        read.into_iter().map(|(illuminance, direct)| GridReading::with(grid, model, illuminance, direct)).collect()
     }
 
     /// The reading of `grid` whose points read `illuminance`, of it `direct` (lx): its
@@ -114,6 +120,24 @@ impl GridReading {
     }
 }
 
+/// [`read_grids_cut_by`] for each field of `lits` under its own light (`GridReading::each`):
+/// per field, its readings of every grid.
+pub fn read_grids_each(
+    grids: &[Grid],
+    model: &Model,
+    lits: &[Lit],
+    by: &[&Field],
+    progress: &dyn Progress,
+) -> Vec<Vec<GridReading>> {
+    progress.begin("grid points", grids.iter().map(|g| g.points().len() as u64).sum());
+    let mut readings: Vec<Vec<GridReading>> = vec![Vec::with_capacity(grids.len()); lits.len()];
+    for g in grids {
+        readings.iter_mut().zip(GridReading::each(g, model, lits, by, progress)).for_each(|(r, g)| r.push(g));
+    }
+    progress.end();
+    readings
+}
+
 /// Reads every grid of a scene from a solved field, telling `progress` of each point.
 pub fn read_grids(grids: &[Grid], model: &Model, field: &Field, progress: &dyn Progress) -> Vec<GridReading> {
     read_grids_cut_by(grids, model, field, &[], progress)
@@ -128,8 +152,5 @@ pub fn read_grids_cut_by(
     by: &[&Field],
     progress: &dyn Progress,
 ) -> Vec<GridReading> {
-    progress.begin("grid points", grids.iter().map(|g| g.points().len() as u64).sum());
-    let readings = grids.iter().map(|g| GridReading::cut_by(g, model, field, by, progress)).collect();
-    progress.end();
-    readings
+    read_grids_each(grids, model, &[Lit::own(model, field)], by, progress).swap_remove(0)
 }

@@ -19,7 +19,7 @@ use crate::model::{Model, SourceTerm};
 use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
-use crate::readout::grid::{GridReading, read_grids_cut_by};
+use crate::readout::grid::{read_grids_cut_by, read_grids_each};
 use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::illuminance::{arriving, patch_illuminance};
 use crate::readout::lit::Lit;
@@ -119,9 +119,9 @@ pub(super) fn read_light_scenes(
 /// its grids), its field `xs[g]` read on `model` relit by the group alone (its luminaires
 /// placed as in `base`, its source term `terms[g]`), every gather cut along shadow edges as
 /// any group's field asks (`readout::cut`), so that `Σ_g f_g` of them is the reading of
-/// `Σ_g f_g x_g` cut so. The samples of all the groups are gathered together, each under
-/// its own light (`readout::lit`), where the model allows it, else group by group; `model`
-/// is left relit by the last group.
+/// `Σ_g f_g x_g` cut so. All the groups are read together, each under its own light
+/// (`readout::lit`), where the model allows it, else group by group on `model` relit by
+/// each, which is then left relit by the last group.
 fn group_readouts(
     scene: &Scene,
     model: &mut Model,
@@ -139,23 +139,21 @@ fn group_readouts(
         factors: (0..terms.len()).map(|h| if h == g { 1.0 } else { 0.0 }).collect(),
     };
     let sources: Vec<Vec<Source>> = (0..terms.len()).map(|g| dimmed(scene, base, &alone(g))).collect();
-    let grids: Vec<Vec<GridReading>> = (0..terms.len())
-        .map(|g| {
-            model.relight(sources[g].clone(), terms[g].clone());
-            read_grids_cut_by(&scene.grids, model, &fields[g], &by, progress)
-        })
-        .collect();
     let apart: Option<Vec<Lit>> =
         fields.iter().zip(&sources).zip(terms).map(|((f, s), t)| Lit::apart(model, f, s, &t.emission)).collect();
-    let samples = match (apart, grids.first()) {
-        (Some(lits), Some(at)) => ResidualSamples::of_each(probes, at, model, &lits, &by, progress),
-        _ => (0..terms.len())
-            .map(|g| {
-                model.relight(sources[g].clone(), terms[g].clone());
-                ResidualSamples::of(probes, &grids[g], model, &fields[g], &by, progress)
-            })
-            .collect(),
-    };
+    if let Some(lits) = apart.filter(|l| !l.is_empty()) {
+        let grids = read_grids_each(&scene.grids, model, &lits, &by, progress);
+        let samples = ResidualSamples::of_each(probes, &grids[0], model, &lits, &by, progress);
+        return GroupReadouts { grids, samples };
+    }
+    let (grids, samples) = (0..terms.len())
+        .map(|g| {
+            model.relight(sources[g].clone(), terms[g].clone());
+            let grids = read_grids_cut_by(&scene.grids, model, &fields[g], &by, progress);
+            let samples = ResidualSamples::of(probes, &grids, model, &fields[g], &by, progress);
+            (grids, samples)
+        })
+        .unzip();
     GroupReadouts { grids, samples }
 }
 

@@ -19,7 +19,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use ugo::progress::{Progress, Silent};
 use ugo::readout::error_bar::{estimate_errors, samples};
 use ugo::readout::field::Field;
-use ugo::readout::grid::read_grids;
+use ugo::readout::grid::{read_grids, read_grids_cut_by, read_grids_each};
 use ugo::readout::grid_error::grid_errors;
 use ugo::readout::lit::Lit;
 use ugo::readout::probe::{ProbeReading, read_probes};
@@ -159,7 +159,8 @@ fn the_grids_error_bars_tell_their_progress_point_by_point() {
 }
 
 /// Two fields gathered at once (`readout/lit.rs`: one landing and one gather a direction,
-/// each piece weighed by both) give each the samples it gets alone, to round-off; and a
+/// each piece weighed by both) give each the samples and grid readings it gets alone, to
+/// round-off; and a
 /// field under light other than the model's own is refused where a gather would read the
 /// model's own sources (a glossy surface).
 #[test]
@@ -182,6 +183,14 @@ fn fields_gathered_at_once_sample_as_each_alone() {
         }
     }
     assert!(together[0].iter().zip(&together[1]).any(|(a, b)| a.illuminance != b.illuminance), "two fields");
+    let grids = read_grids_each(&scene.grids, &model, &lits, &by, &Silent);
+    for (field, together) in [&solved, &emitted].into_iter().zip(&grids) {
+        let alone = read_grids_cut_by(&scene.grids, &model, field, &by, &Silent);
+        for (a, t) in alone.iter().zip(together) {
+            let close = |x: &[f64], y: &[f64]| x.iter().zip(y).all(|(x, y)| (x - y).abs() <= 1e-12 * x.abs().max(1.0));
+            assert!(close(&a.illuminance, &t.illuminance) && close(&a.direct, &t.direct), "{}", a.grid.name);
+        }
+    }
     assert!(Lit::apart(&model, &solved, &model.sources, &model.mesh.emission).is_some(), "a Lambertian room");
     let glossy = text_with_phong(&room(1.0, 0.6, 10.0));
     let scene = Scene::parse(Path::new("cases/test.toml"), glossy).unwrap_or_else(|e| panic!("{e}"));
