@@ -9,19 +9,24 @@
 use super::field::Field;
 
 /// The rule a gather cuts by: the fraction, and the fields it is applied to (none: the
-/// field read).
+/// field read); and below which light a patch is seen by one ray.
 #[derive(Debug, Clone, Copy)]
 pub struct Cut<'a> {
     /// The fraction of all the light the point would receive unoccluded.
     pub fraction: f64,
     /// The fields whose rules are united; empty for the field read alone.
     pub by: &'a [&'a Field],
+    /// A patch whose light unoccluded is below this fraction of all the point would receive
+    /// unoccluded, by every field, is seen by one ray to one of its stratified points
+    /// chosen at random (`transfer::occlusion::sample_one`): an unbiased estimate of what its
+    /// points see. 0: every patch by all its points.
+    pub sampled: f64,
 }
 
 impl Cut<'static> {
     /// The rule of the field read alone.
     pub fn own(fraction: f64) -> Cut<'static> {
-        Cut { fraction, by: &[] }
+        Cut { fraction, by: &[], sampled: 0.0 }
     }
 }
 
@@ -30,6 +35,7 @@ impl Cut<'static> {
 pub(super) struct Worth {
     unoccluded: Vec<Vec<f64>>,
     least: Vec<f64>,
+    sampled: Vec<f64>,
 }
 
 impl Worth {
@@ -48,13 +54,20 @@ impl Worth {
             geometric.iter().enumerate().map(|(k, g)| scale * (g * f.brightest(patch(k)))).collect()
         };
         let unoccluded: Vec<Vec<f64>> = fields.iter().map(light).collect();
-        let least = unoccluded.iter().map(|u| cut.fraction * u.iter().sum::<f64>()).collect();
-        Worth { unoccluded, least }
+        let all: Vec<f64> = unoccluded.iter().map(|u| u.iter().sum::<f64>()).collect();
+        let least = all.iter().map(|a| cut.fraction * a).collect();
+        let sampled = all.iter().map(|a| cut.sampled * a).collect();
+        Worth { unoccluded, least, sampled }
     }
 
     /// Whether candidate `k` sends light by any field.
     pub(super) fn lit(&self, k: usize) -> bool {
         self.unoccluded.iter().any(|u| u[k] > 0.0)
+    }
+
+    /// Whether candidate `k` is seen by one ray ([`Cut::sampled`]).
+    pub(super) fn sampled(&self, k: usize) -> bool {
+        self.unoccluded.iter().zip(&self.sampled).all(|(u, sampled)| u[k] < *sampled)
     }
 
     /// Whether a piece of area `piece` of candidate `k` (of area `area`) is cut further.

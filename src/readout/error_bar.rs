@@ -21,7 +21,8 @@
 //! It is a bar, not a correction: with 64 rays its noise (`2σ`, 1.3 % of the reading on
 //! average on the Cornell box's hard probes, 1.9 % on the open box's) exceeds the error it finds on most probes; added to the reading it would
 //! make the Cornell box's hard probes worse (`docs/accuracy.md`, "Error bars"). Each ray
-//! costs a gather, so a probe costs [`RAYS`] gathers. A cylindrical probe's reading is the
+//! costs a gather, so a probe costs [`RAYS`] gathers; in each, a patch of small light is
+//! seen by one ray ([`ONE_RAY`]), unbiased, its noise in `σ`. A cylindrical probe's reading is the
 //! mean over vertical planes (`cylindrical.rs`): its [`RAYS`] directions are shared among
 //! them and their samples pooled, the estimate of the mean (not corrected, `ΔI = 0`). A
 //! grid's points pool fewer directions each with their neighbours' (`grid_error.rs`).
@@ -30,12 +31,13 @@ use crate::geometry::cosine_direction;
 use crate::model::Model;
 use crate::progress::{Progress, Silent};
 use crate::random::Stratified;
+use crate::readout::cut::Cut;
 use crate::readout::cylindrical::planes;
 use crate::readout::field::Field;
 use crate::readout::gather::Receiver;
 use crate::readout::glossy::{ModelSurroundings, is_diffuse, stream};
 use crate::readout::lit::Lit;
-use crate::readout::luminance::gathered_each;
+use crate::readout::luminance::{RELIT_SHADOW_CUT, gathered_each};
 use crate::readout::probe::ProbeReading;
 use crate::scene::ProbeKind;
 use glam::DVec3;
@@ -44,6 +46,11 @@ use std::f64::consts::PI;
 
 /// Directions the residual is estimated over, a probe.
 pub const RAYS: usize = 64;
+
+/// A patch sends the residual's gather at a point seen less than this fraction of all the
+/// light the point would receive unoccluded is seen by one ray to one of its points at
+/// random (`Cut::sampled`): unbiased, and its noise is in the samples' spread, `σ`.
+pub const ONE_RAY: f64 = 1e-4;
 
 /// The largest mean albedo the gain `1/(1 − ρ̄)` is taken at (a gain of 10).
 pub const MOST_ALBEDO: f64 = 0.9;
@@ -214,7 +221,8 @@ fn seen(
         return none();
     }
     let albedo = model.kernel.blocks[model.kernel.patch_material[j] as usize].albedo(0, &model.kernel.directions).0;
-    let gathered = gathered_each(model, lits, j, y, -w, by);
+    let cut = Cut { fraction: RELIT_SHADOW_CUT, by, sampled: ONE_RAY };
+    let gathered = gathered_each(model, lits, j, y, -w, &cut);
     let light = gathered.iter().zip(stored);
     light.map(|(g, stored)| Sample { illuminance: PI * (g - stored.stored(j, w)), albedo }).collect()
 }

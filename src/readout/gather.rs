@@ -30,7 +30,7 @@ use crate::readout::mirrored::{on_mirrors, through_mirrors};
 use crate::sky::READING;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
-use crate::transfer::occlusion::cut_along_shadows;
+use crate::transfer::occlusion::{cut_along_shadows, sample_one};
 use crate::visibility::{NO_BLOCKER, NO_FACE, SightTo};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -56,7 +56,7 @@ pub fn illuminance_and_direct_at(model: &Model, field: &Field, p: DVec3, n: DVec
 /// names none).
 pub fn illuminance_and_direct_each(model: &Model, lits: &[Lit], p: DVec3, n: DVec3, by: &[&Field]) -> Vec<(f64, f64)> {
     let at = Receiver::at(model, p, n);
-    let incident = per_cell_each(model, lits, p, &at.frame, at.ignore, &Cut { fraction: SHADOW_CUT, by });
+    let incident = per_cell_each(model, lits, p, &at.frame, at.ignore, &Cut { fraction: SHADOW_CUT, by, sampled: 0.0 });
     let direct = |lit: &Lit| {
         let cells =
             arriving_at(lit.sources, &model.visibility, &model.kernel.directions, p, &at.frame, at.ignore, READING);
@@ -97,7 +97,7 @@ pub(super) fn incident_at(
     let at = Receiver::at(model, p, n);
     let direct =
         arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &at.frame, at.ignore, READING);
-    let incident = per_cell(model, field, p, &at.frame, at.ignore, &Cut { fraction: SHADOW_CUT, by });
+    let incident = per_cell(model, field, p, &at.frame, at.ignore, &Cut { fraction: SHADOW_CUT, by, sampled: 0.0 });
     (at, incident, direct)
 }
 
@@ -150,6 +150,14 @@ fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, 
     per_cell_each(model, &[Lit::own(model, field)], p, frame, ignore, cut).swap_remove(0)
 }
 
+/// A number for the gather at `p` and its patch `j`, spread over all of `u64`: which of
+/// the patch's points its one ray goes to ([`Cut::sampled`]), the same for every run.
+fn pick(p: DVec3, j: usize) -> u64 {
+    let mut h = p.to_array().iter().fold(j as u64, |h, x| (h ^ x.to_bits()).wrapping_mul(0x9E37_79B9_7F4A_7C15));
+    h ^= h >> 31;
+    h.wrapping_mul(0xBF58_476D_1CE4_E5B9) >> 29
+}
+
 /// `I_d(p)` of each field of `lits`, every piece's rays and factors found once and its light
 /// weighed by each field; cut by the rule of `cut` (of all the fields of `lits` when it
 /// names none).
@@ -167,7 +175,7 @@ fn per_cell_each(model: &Model, lits: &[Lit], p: DVec3, frame: &Frame, ignore: u
         })
         .collect();
     let fields: Vec<&Field> = lits.iter().map(|l| l.field).collect();
-    let rule = Cut { fraction: cut.fraction, by: if cut.by.is_empty() { &fields } else { cut.by } };
+    let rule = Cut { by: if cut.by.is_empty() { &fields } else { cut.by }, ..*cut };
     let worth = Worth::new(&rule, fields[0], &geometric, |j| j, 1.0);
     let surroundings: Vec<ModelSurroundings> = fields.iter().map(|f| ModelSurroundings::new(model, f)).collect();
     let surfaces = patches
@@ -178,9 +186,10 @@ fn per_cell_each(model: &Model, lits: &[Lit], p: DVec3, frame: &Frame, ignore: u
             || (vec![0.0; lits.len() * cells], Vec::new(), Cell::new(NO_BLOCKER)),
             |(mut sum, mut bins, blocker), (j, s)| {
                 let sight = SightTo::new(&model.visibility, p, [ignore, s.face], &blocker);
+                let one_ray = worth.sampled(j);
                 let worth = |piece: &ConvexPolygon| worth.cuts(j, s.area, piece.area());
                 let lobe = model.materials[s.material as usize].lobe_width();
-                cut_along_shadows(&s.polygon, 0, &sight, &worth, &mut |piece, seen| {
+                let mut visit = |piece: &ConvexPolygon, seen: f64| {
                     let Some(width) = lobe else {
                         bins.clear();
                         binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);
@@ -198,7 +207,11 @@ fn per_cell_each(model: &Model, lits: &[Lit], p: DVec3, frame: &Frame, ignore: u
                             bins.iter().for_each(|&(d, _, f)| sum[d as usize] += f * seen * towards_p);
                         }
                     });
-                });
+                };
+                match one_ray {
+                    true => sample_one(&s.polygon, &sight, pick(p, j), &mut visit),
+                    false => cut_along_shadows(&s.polygon, 0, &sight, &worth, &mut visit),
+                };
                 (sum, bins, blocker)
             },
         )

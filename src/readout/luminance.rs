@@ -74,16 +74,17 @@ pub fn seen(model: &Model, field: &Field, p: DVec3, v: DVec3, relit_rays: usize)
 /// gathered at `y` (its pieces along shadow edges cut at [`RELIT_SHADOW_CUT`] by the
 /// field's rule, or by that of any field of `by`: `cut.rs`), cd/m².
 pub fn gathered(model: &Model, field: &Field, j: usize, y: DVec3, direction: DVec3, by: &[&Field]) -> f64 {
-    gathered_each(model, &[Lit::own(model, field)], j, y, direction, by)[0]
+    let cut = Cut { fraction: RELIT_SHADOW_CUT, by, sampled: 0.0 };
+    gathered_each(model, &[Lit::own(model, field)], j, y, direction, &cut)[0]
 }
 
 /// [`gathered`] for each field of `lits` under its own light, the gather's rays and
-/// factors shared (`lit.rs`), cut by the rules of `by` (of all the fields of `lits` when
+/// factors shared (`lit.rs`), cut by `cut` (by the rules of all the fields of `lits` when
 /// it names none).
-pub fn gathered_each(model: &Model, lits: &[Lit], j: usize, y: DVec3, direction: DVec3, by: &[&Field]) -> Vec<f64> {
+pub fn gathered_each(model: &Model, lits: &[Lit], j: usize, y: DVec3, direction: DVec3, cut: &Cut) -> Vec<f64> {
     let s = &model.mesh.patches[j];
-    let incident = arriving_each(model, lits, y, s, &Cut { fraction: RELIT_SHADOW_CUT, by });
-    lits.iter().zip(&incident).map(|(lit, e)| lambertian(model, lit, j, y, direction, e, by)).collect()
+    let incident = arriving_each(model, lits, y, s, cut);
+    lits.iter().zip(&incident).map(|(lit, e)| lambertian(model, lit, j, y, direction, e, cut.by)).collect()
 }
 
 /// The Lambertian outgoing luminance of patch `i` at `q` towards `direction` under `lit`,
@@ -97,7 +98,7 @@ fn lambertian(model: &Model, lit: &Lit, i: usize, q: DVec3, direction: DVec3, in
     let mut l = lit.emission[i] + incident.iter().enumerate().map(|(d, e)| block.at(k, d) * e).sum::<f64>();
     if block.transmits() && patch.twin != NO_TWIN {
         let twin = &model.mesh.patches[patch.twin as usize];
-        let cut = Cut { fraction: SHADOW_CUT, by };
+        let cut = Cut { fraction: SHADOW_CUT, by, sampled: 0.0 };
         let through = arriving_each(model, std::slice::from_ref(lit), q, twin, &cut).swap_remove(0);
         l += through.iter().enumerate().map(|(d, e)| block.transmit_at(k, d).unwrap_or(0.0) * e).sum::<f64>();
     }

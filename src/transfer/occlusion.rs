@@ -127,3 +127,19 @@ pub fn cut_along_shadows(
     }
     test.rays
 }
+
+/// Hands `piece` to `visit` seen whole when the one of its [`POINTS`] stratified points
+/// that `pick` names (modulo [`POINTS`]) is seen by `sight`, else not at all: with `pick`
+/// uniform, an unbiased estimate of the fraction of its points that see, for one ray.
+/// Returns the rays traced (one).
+pub fn sample_one(
+    piece: &ConvexPolygon,
+    sight: &dyn Sight,
+    pick: u64,
+    visit: &mut dyn FnMut(&ConvexPolygon, f64),
+) -> usize {
+    if sight.sees(polygon_points(piece)[(pick % POINTS as u64) as usize]) {
+        visit(piece, 1.0);
+    }
+    1
+}

@@ -3,3 +3,4 @@
 mod closure;
 mod exposure;
 mod far_field;
+mod one_ray;
