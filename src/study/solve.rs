@@ -123,9 +123,9 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     let field = Field::from_unknowns(&x, k);
     let illuminance = patch_illuminance(&arriving(&model, &x), k);
     let energy = EnergyBalance::of(&model, &x, scene.surfaces.len());
-    let Readings { probes, grids, grid_errors, observers } = read_field(scene, &model, &field, progress);
+    let Readings { probes, grids, grid_errors, observers, glare_grids } = read_field(scene, &model, &field, progress);
     crate::interrupt::check(|| {
-        "the readouts (probes, error bars, observers, grid points and their error bars)".to_string()
+        "the readouts (probes, error bars, observers, glare grids, grid points and their error bars)".to_string()
     })?;
     let mut solved = Solution {
         model,
@@ -141,6 +141,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         energy,
         probes,
         observers,
+        glare_grids,
         grids,
         grid_errors,
         daylight: None,
