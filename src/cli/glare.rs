@@ -7,7 +7,7 @@ use ugo::readout::grid::GridReading;
 use ugo::readout::ugr::{UgrReading, VALID_SOLID_ANGLE, grid_ugr};
 
 /// Whether `ugr` meets `limit`, in words.
-fn against(ugr: f64, limit: Option<f64>) -> String {
+pub(super) fn against(ugr: f64, limit: Option<f64>) -> String {
     match limit {
         Some(l) if ugr <= l => format!("≤ {l}: met"),
         Some(l) => format!("> {l}: NOT MET"),
@@ -15,8 +15,16 @@ fn against(ugr: f64, limit: Option<f64>) -> String {
     }
 }
 
+/// Warns on stderr that at `subject`, `what` a solid angle where CIE 117's formula does not hold.
+pub(super) fn warn_outside(subject: &str, what: &str) {
+    let [low, high] = VALID_SOLID_ANGLE;
+    eprintln!(
+        "ugo: warning: {subject}: {what} a solid angle outside {low}–{high} sr, where CIE 117's UGR does not hold"
+    );
+}
+
 /// A UGR as printed.
-fn shown(ugr: f64) -> String {
+pub(super) fn shown(ugr: f64) -> String {
     if ugr.is_finite() { format!("{ugr:.2}") } else { "no source".to_string() }
 }
 
@@ -35,12 +43,8 @@ pub fn report(readings: &[UgrReading], grids: &[GridReading], indent: &str) {
         );
         let outside = r.outside_validity();
         if outside > 0 {
-            let [low, high] = VALID_SOLID_ANGLE;
-            eprintln!(
-                "ugo: warning: observer \"{}\": {outside} of its {} luminaires subtend a solid angle outside {low}–{high} sr, where CIE 117's UGR does not hold",
-                o.name,
-                r.sources.len()
-            );
+            let what = format!("{outside} of its {} luminaires subtend", r.sources.len());
+            warn_outside(&format!("observer \"{}\"", o.name), &what);
         }
     }
     grid_lines(readings, grids, indent);

@@ -6,6 +6,7 @@ pub mod bench;
 pub mod daylight;
 pub mod export;
 pub mod glare;
+pub mod glare_grid;
 pub mod glare_table;
 pub mod info;
 pub mod kernel;

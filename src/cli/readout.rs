@@ -41,7 +41,7 @@ pub fn run(file: &Path, case: Option<&Path>, d: &Discretize, output: Option<Path
     let files = GridFiles { sources: &r.model.sources, mesh: &r.model.mesh, surfaces: &names };
     match &r.readings {
         Some(readings) => own_readings(readings, &output, &files)?,
-        None => println!("  probes, grids, observers as stored (unchanged)"),
+        None => println!("  probes, grids, glare grids and observers as stored (unchanged)"),
     }
     let lit = |grids: &[GridReading], errors: &[GridErrorBars], stem: &str, light_scene: &LightScene| {
         let dimmed = study::dimmed(&scene, &r.model.sources, light_scene);
@@ -70,7 +70,7 @@ fn own_readings(readings: &Readings, output: &Path, files: &GridFiles) -> Result
         write_probes_csv(&csv, &readings.probes, None)?;
         println!("  probes             {}", csv.display());
     }
-    Ok(())
+    super::glare_grid::report(&readings.glare_grids, output)
 }
 
 /// The case stored in the solution file, with the command line's discretization flags.

@@ -27,6 +27,7 @@
 
 use super::dataset::{dataset, strings, text_attr};
 use super::daylight_group::write_daylight;
+use super::glare_grid_group::write_glare_grids;
 use super::observer_group::write_observers;
 use super::readout_group::{write_grids, write_probes};
 use super::solution::Solution;
@@ -98,6 +99,7 @@ fn write_to(path: &Path, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
 
     write_probes(&file.create_group("probes")?, &s.probes)?;
     write_observers(&file.create_group("observers")?, &s.observers)?;
+    write_glare_grids(&file.create_group("glare_grids")?, &s.glare_grids)?;
     s.daylight.as_ref().map(|d| write_daylight(&file.create_group("daylight")?, d, &s.probes, &s.grids)).transpose()?;
     write_grids(&file.create_group("grids")?, &s.grids, &s.grid_errors, &s.observers)?;
     write_luminaires(&file.create_group("luminaires")?, scene, s)?;

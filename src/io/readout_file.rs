@@ -1,7 +1,7 @@
 //! The file `ugo readout` writes (issue 38, point 2; `docs/light-scenes.md`, "After the
 //! solve"): a copy of a solution file whose case, readouts and light scenes are those of
 //! the edited case — `/case_files` and the root attributes of the case, `/probes`, `/grids`,
-//! `/observers` (when read again), `/light_groups/{scene_names,factors}` and
+//! `/observers` and `/glare_grids` (when read again), `/light_groups/{scene_names,factors}` and
 //! `/light_scenes/<name>` of every new or changed light scene (those no longer in the case
 //! dropped, the unchanged ones kept), `/light_groups/{grid_readings,bar_samples}` when light scenes were read
 //! (dropped when the readout tables changed and none was) — laid out as `hdf5_file.rs` and `light_scene_group.rs`
@@ -11,6 +11,7 @@
 //! complete (`atomic.rs`), so the input is never changed on error, even when it is also
 //! the output.
 
+use super::glare_grid_group::write_glare_grids;
 use super::hdf5_file::{CASE_ATTRIBUTES, write_case};
 use super::light_scene_group::{write_factors, write_group_readouts, write_scenes};
 use super::observer_group::write_observers;
@@ -58,9 +59,10 @@ fn rewrite(path: &Path, scene: &Scene, r: &Readout) -> hdf5::Result<()> {
     unlink(&file, "case_files")?;
     write_case(&file, scene)?;
     if let Some(readings) = &r.readings {
-        ["probes", "observers", "grids"].into_iter().try_for_each(|name| unlink(&file, name))?;
+        ["probes", "observers", "glare_grids", "grids"].into_iter().try_for_each(|name| unlink(&file, name))?;
         write_probes(&file.create_group("probes")?, &readings.probes)?;
         write_observers(&file.create_group("observers")?, &readings.observers)?;
+        write_glare_grids(&file.create_group("glare_grids")?, &readings.glare_grids)?;
         write_grids(&file.create_group("grids")?, &readings.grids, &readings.grid_errors, &readings.observers)?;
     }
     if !file.link_exists("light_groups") {

@@ -7,6 +7,7 @@ use crate::model::{Change, Fingerprint, Model};
 use crate::readout::daylight::DaylightReadings;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
+use crate::readout::glare_grid::GlareGridReading;
 use crate::readout::grid::GridReading;
 use crate::readout::grid_error::GridErrorBars;
 use crate::readout::probe::ProbeReading;
@@ -45,6 +46,8 @@ pub struct Solution {
     pub probes: Vec<ProbeReading>,
     /// The UGR at the `[[observer]]`s.
     pub observers: Vec<UgrReading>,
+    /// The UGR on the `[[glare_grid]]`s.
+    pub glare_grids: Vec<GlareGridReading>,
     /// The `[[grid]]` readings.
     pub grids: Vec<GridReading>,
     /// Their error bars, one per grid.

@@ -13,6 +13,7 @@ pub mod error_bar;
 pub mod field;
 pub mod final_gather;
 pub mod gather;
+pub mod glare_grid;
 pub mod glossy;
 pub mod grid;
 pub mod grid_error;

@@ -3,6 +3,7 @@
 use super::discretization::{Asked, Discretization};
 use super::discretization_keys::OldSpelling;
 use super::files::CaseFile;
+use super::glare_grid::GlareGrid;
 use super::grid::Grid;
 use super::light_scene::Lighting;
 use super::observer::Observer;
@@ -47,6 +48,8 @@ pub struct Scene {
     pub probes: Vec<Probe>,
     /// The `[[observer]]` tables, in file order: where the UGR is read.
     pub observers: Vec<Observer>,
+    /// The `[[glare_grid]]` tables, in file order: the UGR on grids of eye positions.
+    pub glare_grids: Vec<GlareGrid>,
     /// The `[[camera]]` tables, in file order.
     pub cameras: Vec<Camera>,
     /// The `[[grid]]` tables, in file order.

@@ -107,13 +107,18 @@ pub struct Grid {
 impl Grid {
     /// The calculation points, row by row along `edge_u`, rows stepping along `edge_v`.
     pub fn points(&self) -> Vec<DVec3> {
-        let [nu, nv] = self.resolution;
-        let at = |a: usize, n: usize| (a as f64 + 0.5) / n as f64;
-        (0..nv)
-            .flat_map(|b| (0..nu).map(move |a| (a, b)))
-            .map(|(a, b)| self.origin + self.edge_u * at(a, nu) + self.edge_v * at(b, nv))
-            .collect()
+        cell_centres(self.origin, [self.edge_u, self.edge_v], self.resolution)
     }
+}
+
+/// The centres of the `resolution = [nu, nv]` equal cells of the parallelogram
+/// `origin + s·edges[0] + t·edges[1]`, row by row along `edges[0]`, rows stepping along `edges[1]`.
+pub fn cell_centres(origin: DVec3, [edge_u, edge_v]: [DVec3; 2], [nu, nv]: [usize; 2]) -> Vec<DVec3> {
+    let at = |a: usize, n: usize| (a as f64 + 0.5) / n as f64;
+    (0..nv)
+        .flat_map(|b| (0..nu).map(move |a| (a, b)))
+        .map(|(a, b)| origin + edge_u * at(a, nu) + edge_v * at(b, nv))
+        .collect()
 }
 
 pub(super) fn grids(path: &Path, source: &str, raw: &[RawGrid], surfaces: &[Surface]) -> Result<Vec<Grid>, SceneError> {
@@ -151,13 +156,8 @@ fn grid(at: &Context, source: &str, g: &RawGrid, bounds: (DVec3, DVec3)) -> Resu
         })
     };
     let origin = at.place("origin", needed("origin", g.origin)?)?;
-    let edge_u = at.place("edge_u", needed("edge_u", g.edge_u)?)?;
-    let edge_v = at.place("edge_v", needed("edge_v", g.edge_v)?)?;
-    let across = edge_u.cross(edge_v);
-    if across.length() <= REL_TOL * edge_u.length() * edge_v.length() || across == DVec3::ZERO {
-        return Err(at.error("edge_v", "must be non-zero and not parallel to a non-zero `edge_u`"));
-    }
-    let front = across.normalize();
+    let [edge_u, edge_v] = edges(at, [needed("edge_u", g.edge_u)?, needed("edge_v", g.edge_v)?])?;
+    let front = edge_u.cross(edge_v).normalize();
     let normal = match g.normal {
         None => front,
         Some(n) => {
@@ -169,14 +169,30 @@ fn grid(at: &Context, source: &str, g: &RawGrid, bounds: (DVec3, DVec3)) -> Resu
             n
         }
     };
-    let Some([nu, nv]) = g.resolution else {
+    let Some(resolution) = g.resolution else {
         return Err(at.error("resolution", "is missing: give it as [nu, nv] or use `work_plane = { height }`"));
     };
-    let points = |n: i64| usize::try_from(n).ok().filter(|&n| (1..=1000).contains(&n));
-    let (Some(nu), Some(nv)) = (points(nu), points(nv)) else {
-        return Err(at.error("resolution", format!("must be two point counts from 1 to 1000, got [{nu}, {nv}]")));
-    };
-    Ok(Grid { name: g.name.clone(), origin, edge_u, edge_v, normal, resolution: [nu, nv], map: g.map, target })
+    let resolution = point_counts(at, resolution, 1000)?;
+    Ok(Grid { name: g.name.clone(), origin, edge_u, edge_v, normal, resolution, map: g.map, target })
+}
+
+/// `edge_u` and `edge_v` of a parallelogram: lengths, non-zero and not parallel.
+pub(super) fn edges(at: &Context, [u, v]: [[f64; 3]; 2]) -> Result<[DVec3; 2], SceneError> {
+    let (edge_u, edge_v) = (at.place("edge_u", u)?, at.place("edge_v", v)?);
+    let across = edge_u.cross(edge_v);
+    if across.length() <= REL_TOL * edge_u.length() * edge_v.length() || across == DVec3::ZERO {
+        return Err(at.error("edge_v", "must be non-zero and not parallel to a non-zero `edge_u`"));
+    }
+    Ok([edge_u, edge_v])
+}
+
+/// `resolution = [nu, nv]`: two point counts from 1 to `most`.
+pub(super) fn point_counts(at: &Context, [nu, nv]: [i64; 2], most: usize) -> Result<[usize; 2], SceneError> {
+    let points = |n: i64| usize::try_from(n).ok().filter(|&n| (1..=most).contains(&n));
+    match (points(nu), points(nv)) {
+        (Some(nu), Some(nv)) => Ok([nu, nv]),
+        _ => Err(at.error("resolution", format!("must be two point counts from 1 to {most}, got [{nu}, {nv}]"))),
+    }
 }
 
 /// `target`: `em` finite and > 0 lx, `u0` within (0, 1], `ugr` within 0 and 40.

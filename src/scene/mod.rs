@@ -13,6 +13,7 @@ mod discretization;
 mod discretization_keys;
 mod error;
 mod files;
+mod glare_grid;
 mod gltf;
 mod gltf_texture;
 mod gltf_topology;
@@ -48,6 +49,7 @@ pub use discretization::{
 pub use discretization_keys::OldSpelling;
 pub use error::SceneError;
 pub use files::{CaseFile, CaseFiles, regular_file};
+pub use glare_grid::{GlareGrid, View};
 pub use grid::{Grid, MapScale, MapStyle, Target};
 pub use light_scene::{DEFAULT_GROUP, LightGroup, LightScene, Lighting};
 pub use observer::Observer;

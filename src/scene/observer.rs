@@ -74,15 +74,8 @@ pub(super) fn observers(
 
 fn observer(at: &Context, source: &str, o: &RawObserver, grids: &[Grid]) -> Result<Observer, SceneError> {
     let position = at.place("position", o.position)?;
-    let look = at.direction("look", o.look)?;
-    if look.y.abs() > FROM_VERTICAL_DEG.to_radians().cos() {
-        let message = format!("must be at least {FROM_VERTICAL_DEG}° from the vertical (the line of sight of CIE 117)");
-        return Err(at.error("look", message));
-    }
-    let ugr_limit = o.ugr_limit.map(|u| at.finite("ugr_limit", u)).transpose()?;
-    if let Some(u) = ugr_limit.filter(|u| !(0.0..=40.0).contains(u)) {
-        return Err(at.error("ugr_limit", format!("must be within 0 and 40, got {}", number(u))));
-    }
+    let look = line_of_sight(at, o.look)?;
+    let ugr_limit = ugr_limit(at, o.ugr_limit)?;
     let grid = match &o.grid {
         Some(g) if !grids.iter().any(|grid| &grid.name == g.get_ref()) => {
             let message = format!("{}names no [[grid]] of the case: \"{}\"", line(source, g), g.get_ref());
@@ -91,4 +84,23 @@ fn observer(at: &Context, source: &str, o: &RawObserver, grids: &[Grid]) -> Resu
         g => g.as_ref().map(|g| g.get_ref().clone()),
     };
     Ok(Observer { name: o.name.clone(), position, look, ugr_limit, grid })
+}
+
+/// `look`: a unit line of sight at least [`FROM_VERTICAL_DEG`] from the vertical.
+pub(super) fn line_of_sight(at: &Context, look: [f64; 3]) -> Result<DVec3, SceneError> {
+    let look = at.direction("look", look)?;
+    if look.y.abs() > FROM_VERTICAL_DEG.to_radians().cos() {
+        let message = format!("must be at least {FROM_VERTICAL_DEG}° from the vertical (the line of sight of CIE 117)");
+        return Err(at.error("look", message));
+    }
+    Ok(look)
+}
+
+/// `ugr_limit`: EN 12464-1's `UGR_L`, within 0 and 40.
+pub(super) fn ugr_limit(at: &Context, limit: Option<f64>) -> Result<Option<f64>, SceneError> {
+    let limit = limit.map(|u| at.finite("ugr_limit", u)).transpose()?;
+    if let Some(u) = limit.filter(|u| !(0.0..=40.0).contains(u)) {
+        return Err(at.error("ugr_limit", format!("must be within 0 and 40, got {}", number(u))));
+    }
+    Ok(limit)
 }

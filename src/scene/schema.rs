@@ -24,6 +24,8 @@ pub struct RawScene {
     #[serde(default)]
     pub observer: Vec<super::observer::RawObserver>,
     #[serde(default)]
+    pub glare_grid: Vec<super::glare_grid::RawGlareGrid>,
+    #[serde(default)]
     pub camera: Vec<RawCamera>,
     #[serde(default)]
     pub grid: Vec<super::grid::RawGrid>,

@@ -3,7 +3,7 @@
 //! Owns every rule of `docs/design.md` §7 that serde cannot express for the scene as a whole
 //! and its small tables (`[scene]`, `[discretization]`, `[solver]`, cameras); the
 //! large tables have their own files (`material.rs`, `surface.rs`, `grid.rs`,
-//! `luminaire.rs`, `probe.rs`, `observer.rs`). Each failure is a [`SceneError`] naming the table
+//! `luminaire.rs`, `probe.rs`, `observer.rs`, `glare_grid.rs`). Each failure is a [`SceneError`] naming the table
 //! (`[[surface]] "floor" (#3)`) and the key.
 
 use super::automatic::by_size;
@@ -12,6 +12,7 @@ use super::description::{Camera, Scene, SolverSettings};
 use super::discretization_keys;
 use super::error::SceneError;
 use super::files::CaseFiles;
+use super::glare_grid::glare_grids;
 use super::grid::grids;
 use super::light_scene::{Sources, lighting};
 use super::luminaire::luminaires;
@@ -41,6 +42,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &source, &raw.grid, &surfaces)?;
     let observers = observers(path, &source, &raw.observer, (&grids, &raw.grid))?;
+    let glare_grids = glare_grids(path, &source, &raw.glare_grid)?;
     let (mut luminaires, groups) = luminaires(path, &source, &raw.luminaire, &files)?;
     let (sky, openings, glass) = daylight(path, raw.sky.as_ref(), &raw.window, &placed)?;
     glaze(&mut luminaires, &glass);
@@ -82,6 +84,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         surfaces,
         probes,
         observers,
+        glare_grids,
         cameras,
         grids,
         luminaires,

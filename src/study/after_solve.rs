@@ -4,7 +4,7 @@
 //! solved one in everything the field depends on: its geometry and discretization (the
 //! kernel file's fingerprint), its reflectances and luminaires, its surfaces' emission and
 //! its groups of sources. Then, with no solve, only what the edit changed is read: the
-//! stored field `x` at the case's probes, grids and observers when they are not the stored
+//! stored field `x` at the case's probes, grids, observers and glare grids when they are not the stored
 //! ones, and every new or changed light scene as `x_s = Σ_g f_{s,g} x_g`
 //! (`docs/design.md` §1: the field is linear in its sources) of the stored groups' fields,
 //! read out as the solve reads it (`super::light_scenes::read_light_scenes`) with each
@@ -45,7 +45,8 @@ pub fn read_out_solved(file: &Path, scene: &Scene, progress: &dyn Progress) -> R
         let (case, file) = paths();
         return Err(ReadoutError::Daylight { case, file }.into());
     }
-    let same_tables = probes && grids && scene.observers == stored.scene.observers;
+    let same_tables =
+        probes && grids && scene.observers == stored.scene.observers && scene.glare_grids == stored.scene.glare_grids;
     let x = stored.luminance;
     let k = model.kernel.cells();
     let readings = (!same_tables).then(|| read_field(scene, &model, &Field::from_unknowns(&x, k), progress));

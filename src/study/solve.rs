@@ -127,9 +127,9 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
     // are the groups' residual samples summed (set below), not gathered a third time.
     let scenes = !scene.lighting.scenes.is_empty();
     let read = if scenes { read_unbarred } else { read_field };
-    let Readings { probes, grids, grid_errors, observers } = read(scene, &model, &field, progress);
+    let Readings { probes, grids, grid_errors, observers, glare_grids } = read(scene, &model, &field, progress);
     crate::interrupt::check(|| {
-        "the readouts (probes, error bars, observers, grid points and their error bars)".to_string()
+        "the readouts (probes, error bars, observers, glare grids, grid points and their error bars)".to_string()
     })?;
     let mut solved = Solution {
         model,
@@ -145,6 +145,7 @@ pub fn solve_case(scene: &Scene, job: &Job, progress: &dyn Progress) -> Result<S
         energy,
         probes,
         observers,
+        glare_grids,
         grids,
         grid_errors,
         daylight: None,

@@ -2,7 +2,7 @@
 //! grid target, an observer and a light scene, solved; its case file removed; the page
 //! checked by `report_check.py` (a strict HTML parse, every table row as long as its
 //! header, every plan a PNG data: URI, no outside reference, the grid, luminaire,
-//! daylight, glare, light-scene and surface figures equal to the HDF5 file's as shown);
+//! daylight, glare, glare-grid, light-scene and surface figures equal to the HDF5 file's as shown);
 //! `-o` and the default name; a file that is not a solution refused naming it; the furnace
 //! box, which has none of the optional parts, reads 5π lx on every side of its room.
 
@@ -10,7 +10,7 @@ use crate::support::{scratch, ugo};
 use std::path::Path;
 
 /// `cases/daylit-office.toml` with a downlight in a group, the work plane's targets, an
-/// observer with a limit and a light scene.
+/// observer with a limit, a glare grid and a light scene.
 fn case(dir: &Path) -> std::path::PathBuf {
     let office = std::fs::read_to_string("cases/daylit-office.toml").unwrap();
     let extra = r#"
@@ -25,6 +25,16 @@ group = "room"
 name = "at the door"
 position = [0.5, 1.2, 2.0]
 look = [1, 0, 0]
+ugr_limit = 19
+
+[[glare_grid]]
+name = "seats"
+origin = [1.0, 1.2, 1.0]
+edge_u = [3, 0, 0]
+edge_v = [0, 0, 2]
+resolution = [3, 2]
+look = [1, 0, 0]
+view_step_deg = 90
 ugr_limit = 19
 
 [[light_scene]]
@@ -59,7 +69,8 @@ fn the_report_of_a_daylit_office_parses_and_shows_the_files_figures() {
         .expect("/usr/bin/python3 runs (make deps installs python3-h5py)");
     let said = format!("{}{}", String::from_utf8_lossy(&python.stdout), String::from_utf8_lossy(&python.stderr));
     assert!(python.status.success(), "tests/io/report_check.py: {said}");
-    for table in ["grids", "luminaires", "observers", "light-scenes", "daylight-grids", "daylight-probes", "surfaces"] {
+    let tables = ["grids", "luminaires", "observers", "glare-grids", "glare-grid-1", "light-scenes", "daylight-grids"];
+    for table in tables.into_iter().chain(["daylight-probes", "surfaces"]) {
         assert!(said.contains(table), "no table {table}: {said}");
     }
     let html = std::fs::read_to_string(&page).unwrap();
@@ -92,7 +103,7 @@ fn the_furnace_box_has_no_optional_part_and_every_side_reads_five_pi_lux() {
     let report = ugo(&["report", s(&out), "-o", s(&page)]);
     assert!(report.status.success(), "{}", String::from_utf8_lossy(&report.stderr));
     let html = std::fs::read_to_string(&page).unwrap();
-    for absent in ["luminaires", "grids", "glare", "light-scenes", "daylight", "warnings"] {
+    for absent in ["luminaires", "grids", "glare", "glare-grids", "light-scenes", "daylight", "warnings"] {
         assert!(!html.contains(&format!("id=\"{absent}\"")), "a section {absent} in {html}");
     }
     assert!(!html.contains("<img"), "a plan without a grid");

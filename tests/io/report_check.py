@@ -7,7 +7,8 @@ The page is parsed strictly with the standard library's html.parser: every tag c
 order, every table row as long as its header, every image a data: URI whose base64 decodes
 to a whole PNG, no reference outside the file. The numbers of the tables are read back and
 compared with the HDF5 file (h5py) as the page rounds them; the surfaces' mean illuminance
-is derived here again from /field/illuminance and /mesh. Prints "report_check: ok".
+is derived here again from /field/illuminance and /mesh, and each glare grid's largest UGR
+per position from /glare_grids/<name>/ugr. Prints "report_check: ok".
 """
 
 import base64
@@ -204,6 +205,43 @@ def check_observers(table, h5):
         fail("the observers' table has not one row per observer")
 
 
+def ugr_shown(value):
+    return f"{value:.1f}" if np.isfinite(value) else "no source"
+
+
+def check_glare_grids(tables, h5):
+    """Each glare grid's row against /glare_grids/<name>, its positions' table against the
+    largest UGR over the views at each position, derived here from the dataset."""
+    for k, row in enumerate(tables["glare-grids"]["rows"]):
+        name = row[0]
+        g = h5[f"glare_grids/{name}"]
+        ugr = np.asarray(g["ugr"])
+        nv, nu, views = ugr.shape
+        if row[1] != f"{nu} × {nv} × {views}":
+            fail(f"glare grid {name}: shows {row[1]}, the file holds {ugr.shape}")
+        largest = g.attrs["UGR_max"]
+        if row[4] != ugr_shown(largest) or largest != ugr.max():
+            fail(f"glare grid {name}: UGR_max shows {row[4]}, the file holds {largest}, its largest {ugr.max()}")
+        u, v = (int(x) for x in g.attrs["UGR_max_position"])
+        if not row[5].startswith(f"({u}, {v}, ") or ugr[v, u].max() != largest:
+            fail(f"glare grid {name}: the largest at {row[5]}, the file at ({u}, {v})")
+        limit = g.attrs.get("ugr_limit")
+        same(row[6], limit if limit is not None else np.nan, 0, f"glare grid {name} UGR_L")
+        per_position = ugr.max(axis=2)
+        if limit is not None:
+            expected = "yes" if largest <= limit else "no"
+            above = f"{int((per_position > limit).sum())} of {nu * nv}"
+            if row[7] != expected or row[8] != above:
+                fail(f"glare grid {name}: within UGR_L {row[7]}, above {row[8]}; expected {expected}, {above}")
+        positions = tables.get(f"glare-grid-{k + 1}")
+        if positions is None:
+            fail(f"glare grid {name}: no table of its positions")
+        got = [r[1:] for r in positions["rows"]]
+        expected = [[ugr_shown(x) for x in per_position[b]] for b in range(nv)]
+        if got != expected:
+            fail(f"glare grid {name}: its positions' table differs from the file: {got} against {expected}")
+
+
 def check_light_scenes(table, h5):
     grid = table["head"].index("grid")
     for row in table["rows"]:
@@ -242,6 +280,8 @@ def main():
         for name, check in checks.items():
             if name in page.tables:
                 check(page.tables[name], h5)
+        if "glare-grids" in page.tables:
+            check_glare_grids(page.tables, h5)
         missing = [n for n in ("grids", "luminaires", "surfaces") if n not in page.tables]
         if missing:
             fail(f"no table {missing}")

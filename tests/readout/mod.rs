@@ -5,6 +5,7 @@
 mod correction;
 mod cylindrical;
 mod error_bar;
+mod glare_grid;
 mod glossy;
 mod meter;
 mod ugr;

@@ -11,12 +11,12 @@ use ugo::scene::Scene;
 
 /// A 0.6 × 0.6 m panel (metres, units type 2), axially symmetric: 1000 cd at the nadir,
 /// 600 cd at 45°, none at 90°.
-const PANEL: &str = "IESNA:LM-63-2002\n[TEST] panel\nTILT=NONE\n1 -1 1 3 1 1 2 0.6 0.6 0\n1 1 0\n\
+pub(super) const PANEL: &str = "IESNA:LM-63-2002\n[TEST] panel\nTILT=NONE\n1 -1 1 3 1 1 2 0.6 0.6 0\n1 1 0\n\
                      0 45 90\n0\n1000 600 0\n";
 
 /// The walls' luminance, cd/m².
-const WALLS: f64 = 10.0;
-const EYE: [f64; 3] = [0.8, 1.2, 2.0];
+pub(super) const WALLS: f64 = 10.0;
+pub(super) const EYE: [f64; 3] = [0.8, 1.2, 2.0];
 const AHEAD: [f64; 3] = [3.0, 3.0, 2.5];
 
 /// The observer's reading in the black box of walls at `walls` cd/m² with panels at
@@ -41,7 +41,7 @@ fn reading(walls: f64, panels: &[[f64; 3]], multiplier: f64, more: &str) -> UgrR
 }
 
 /// UGR by hand for the panel at `at` seen from [`EYE`] looking along `+x`.
-fn by_hand(at: [f64; 3], background: f64) -> f64 {
+pub(super) fn by_hand(at: [f64; 3], background: f64) -> f64 {
     let [dx, dy, dz] = [at[0] - EYE[0], at[1] - EYE[1], at[2] - EYE[2]];
     let r2 = dx * dx + dy * dy + dz * dz;
     let r = r2.sqrt();
@@ -140,7 +140,7 @@ fn a_panel_close_to_the_eye_is_outside_the_formulas_solid_angles() {
 }
 
 /// `ugo solve` of the case `text` in `dir` (`case.toml` → `res.h5`): the file and the summary.
-fn solved_file(dir: &std::path::Path, text: &str) -> (hdf5::File, String) {
+pub(super) fn solved_file(dir: &std::path::Path, text: &str) -> (hdf5::File, String) {
     let case = dir.join("case.toml");
     std::fs::write(&case, text).expect("writable");
     let out = dir.join("res.h5");

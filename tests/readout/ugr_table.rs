@@ -1,7 +1,8 @@
 //! The UGR table of CIE 190 (`ugo::readout::ugr_table`, `docs/photometry.md`, "The UGR
 //! table", issue 38 point 1): its transfer factors against CIE 190's Table 5, one cell of a
 //! Lambertian panel against a calculation by hand from first principles, its background
-//! against ugo's own radiosity solve of the standard room, and `ugo glare --table`.
+//! and its UGR against ugo's own radiosity solve of the standard room and the UGR read
+//! there by an `[[observer]]`, and `ugo glare --table`.
 
 use crate::support::{arriving, build, corner_factor, mean_over, scratch, solve};
 use glam::DVec3;
@@ -11,6 +12,7 @@ use ugo::geometry::ConvexPolygon;
 use ugo::photometry::{Distribution, parse_ies};
 use ugo::readout::cavity::{Cavity, Reflectances};
 use ugo::readout::standard_room::Viewing;
+use ugo::readout::ugr::unified_glare_rating;
 use ugo::readout::ugr_table::{HEIGHT, REFLECTANCES, ROOMS, UgrTable, ugr_table};
 use ugo::scene::Scene;
 use ugo::transfer::contour::point_to_polygon;
@@ -212,6 +214,28 @@ fn the_tables_background_is_the_solved_rooms_mean_indirect_wall_illuminance() {
         cell.background / eye.background - 1.0
     );
     assert!((tabular / solved - 1.0).abs() < 0.01, "{tabular} lx against {solved} lx");
+    // The cell from first principles: the luminaires the solved room's eye sees (ugo's
+    // observer: luminous openings, Guth index, obstruction), those within Guth's table
+    // (T/R ≤ 3) as CIE 190 counts them, with the table's L_b: 0.03 apart, the eye being 1 cm
+    // off the reference plane and the wall and the panels 1 mm under the ceiling; then all
+    // of them with the eye's own L_b (14 % lower than E_WID/π: a point, not the walls' mean).
+    let within_table = |name: &str| {
+        let [i, j] = [1, 2].map(|k| name.split(' ').nth(k).unwrap().parse::<f64>().unwrap());
+        let (t, r) = (((i + 0.5) * 0.5 - 2.0).abs(), (j + 0.5) * 0.5 - 0.01);
+        t / r <= 3.0
+    };
+    let counted: Vec<_> = eye.sources.iter().filter(|s| within_table(&s.name)).cloned().collect();
+    let by_eye = unified_glare_rating(&counted, cell.background);
+    eprintln!(
+        "UGR {:.3} (table) against {by_eye:.3} (the solved room's eye, {} of its {} luminaires within T/R ≤ 3, the \
+         table's L_b), {:.3} (all, its own L_b)",
+        cell.ugr,
+        counted.len(),
+        eye.sources.len(),
+        eye.ugr()
+    );
+    assert!((by_eye - cell.ugr).abs() < 0.05, "UGR {} (table) against {by_eye} (the eye)", cell.ugr);
+    assert!((eye.ugr() - cell.ugr).abs() < 0.6, "UGR {} (table) against {} (the eye, all)", cell.ugr, eye.ugr());
 }
 
 #[test]

@@ -375,6 +375,7 @@ fn a_light_scenes_shared_grids_and_error_bars_equal_those_of_its_field_alone() {
             grids: ours.grids.clone(),
             grid_errors: ours.grid_errors.clone(),
             observers: Vec::new(),
+            glare_grids: Vec::new(),
         };
         let name = &light_scene.name;
         let grid = |r: &Readings| r.grids[0].illuminance.clone();

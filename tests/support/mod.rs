@@ -37,6 +37,7 @@ pub fn scene(materials: Vec<Material>, surfaces: Vec<Surface>, patch_size: f64) 
         surfaces,
         probes: Vec::new(),
         observers: Vec::new(),
+        glare_grids: Vec::new(),
         cameras: Vec::new(),
         grids: Vec::new(),
         luminaires: Vec::new(),

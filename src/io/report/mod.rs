@@ -1,14 +1,16 @@
 //! `ugo report OUT.h5` (`docs/report.md`): one self-contained HTML page of a solved case,
 //! read from its solution file alone (the stored scene, `/grids`, `/luminaires`,
-//! `/observers`, `/light_scenes`, `/daylight`, `/field`, `/warnings`; `docs/design.md`
+//! `/observers`, `/glare_grids`, `/light_scenes`, `/daylight`, `/field`, `/warnings`; `docs/design.md`
 //! §8): materials, luminaires, every grid against its EN 12464-1 targets with its plan
-//! (drawn by `grid_map.rs`, embedded as a `data:` URI), glare, light scenes, daylight,
+//! (drawn by `grid_map.rs`, embedded as a `data:` URI), glare at the observers and on the
+//! glare grids, light scenes, daylight,
 //! the surfaces' illuminance, probes and warnings, in lx, cd/m², lm and %. A part the file
 //! does not hold is left out. The page is written through `io::atomic`.
 
 mod base64;
 mod daylight;
 mod glare;
+mod glare_grids;
 mod grids;
 mod h5;
 mod html;

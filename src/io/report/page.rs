@@ -1,6 +1,6 @@
 //! The report's page (`docs/report.md`): the head with its style, the case and its solve,
 //! then every section the file has the figures for, in a lighting engineer's order:
-//! materials, luminaires, grids and plans, glare, light scenes, daylight, surfaces, probes,
+//! materials, luminaires, grids and plans, glare, glare grids, light scenes, daylight, surfaces, probes,
 //! warnings.
 
 use super::super::read::Result;
@@ -29,6 +29,7 @@ pub(super) fn page(h: &H5, stored: &StoredSolution, file: &str) -> Result<String
         super::luminaires::luminaires(h)?,
         super::grids::grids(h, stored)?,
         super::glare::observers(h)?,
+        super::glare_grids::glare_grids(h, stored)?,
         super::light_scenes::light_scenes(h, stored)?,
         super::daylight::daylight(h, stored)?,
         Some(super::surfaces::surfaces(h, stored)?),
