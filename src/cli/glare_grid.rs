@@ -10,12 +10,13 @@ use std::path::Path;
 use ugo::io::write_glare_grid_csv;
 use ugo::readout::glare_grid::GlareGridReading;
 
-/// Prints a block per glare grid and writes its CSV beside `output`.
-pub fn report(readings: &[GlareGridReading], output: &Path) -> Result<()> {
+/// Prints a block per glare grid, each line after `indent` (a light scene's block is
+/// indented further), and writes its CSV beside `output`.
+pub fn report(readings: &[GlareGridReading], output: &Path, indent: &str) -> Result<()> {
     if readings.is_empty() {
         return Ok(());
     }
-    println!("  glare grids              positions × views   UGR_max   at (u, v, turn)   above UGR_L   UGR_L");
+    println!("{indent}glare grids              positions × views   UGR_max   at (u, v, turn)   above UGR_L   UGR_L");
     for r in readings {
         let (grid, largest) = (&r.grid, r.largest());
         let [nu, nv] = grid.resolution;
@@ -26,10 +27,10 @@ pub fn report(readings: &[GlareGridReading], output: &Path) -> Result<()> {
         });
         let size = format!("{nu} × {nv} × {}", grid.views.len());
         let limit = against(largest.ugr, grid.ugr_limit);
-        println!("    {:<22} {size:>18} {:>9} {at:>17} {above:>13}   {limit}", grid.name, shown(largest.ugr));
+        println!("{indent}  {:<22} {size:>18} {:>9} {at:>17} {above:>13}   {limit}", grid.name, shown(largest.ugr));
         let csv = super::beside(output, &format!("-glare-{}.csv", super::file_name(&grid.name)));
         write_glare_grid_csv(&csv, r)?;
-        println!("      {}", csv.display());
+        println!("{indent}    {}", csv.display());
         let outside = r.outside_validity();
         if outside > 0 {
             let what = format!("at {outside} of its {} positions and views a luminaire subtends", r.readings.len());

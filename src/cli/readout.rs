@@ -70,7 +70,7 @@ fn own_readings(readings: &Readings, output: &Path, files: &GridFiles) -> Result
         write_probes_csv(&csv, &readings.probes, None)?;
         println!("  probes             {}", csv.display());
     }
-    super::glare_grid::report(&readings.glare_grids, output)
+    super::glare_grid::report(&readings.glare_grids, output, "  ")
 }
 
 /// The case stored in the solution file, with the command line's discretization flags.

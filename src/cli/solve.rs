@@ -100,7 +100,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
         write_probes_csv(&csv, &s.probes, s.daylight.as_ref())?;
         println!("  probes             {}", csv.display());
     }
-    super::glare_grid::report(&s.glare_grids, &output)?;
+    super::glare_grid::report(&s.glare_grids, &output, "  ")?;
     if let Some(light) = &s.light_scenes {
         let lit = |grids: &[GridReading], errors: &[GridErrorBars], stem: &str, light_scene: &LightScene| {
             let dimmed = study::dimmed(&scene, &s.model.sources, light_scene);

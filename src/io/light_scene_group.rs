@@ -22,6 +22,7 @@
 
 use super::IoError;
 use super::dataset::{dataset, strings};
+use super::glare_grid_group::write_glare_grids;
 use super::observer_group::write_observers;
 use super::read::StoredSolution;
 use super::readout_group::{write_grids, write_probes};
@@ -30,6 +31,7 @@ use crate::model::Model;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::error_bar::Sample;
 use crate::readout::field::Field;
+use crate::readout::glare_grid::GlareGridReading;
 use crate::readout::grid::GridReading;
 use crate::readout::grid_error::GridErrorBars;
 use crate::readout::group_readouts::GroupReadouts;
@@ -91,6 +93,8 @@ pub struct LightSceneField {
     pub grid_errors: Vec<GridErrorBars>,
     /// The UGR at every `[[observer]]` under its dimmed luminaires and its background.
     pub observers: Vec<UgrReading>,
+    /// The UGR at every position and view of every `[[glare_grid]]`, likewise.
+    pub glare_grids: Vec<GlareGridReading>,
 }
 
 /// `/light_groups` and `/light_scenes` of `file`, on the patches and cells of `model`.
@@ -257,6 +261,7 @@ fn write_scene(g: &hdf5::Group, s: &LightSceneField, n: usize, k: usize) -> hdf5
     dataset(&field, "direct_illuminance", &Array1::from(s.direct_illuminance.clone()))?;
     write_probes(&g.create_group("probes")?, &s.probes)?;
     write_observers(&g.create_group("observers")?, &s.observers)?;
+    write_glare_grids(&g.create_group("glare_grids")?, &s.glare_grids)?;
     write_grids(&g.create_group("grids")?, &s.grids, &s.grid_errors, &s.observers)?;
     g.new_attr::<f64>().shape(s.factors.len()).create("factors")?.write_raw(&s.factors)?;
     let e = &s.energy;

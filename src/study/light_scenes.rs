@@ -19,6 +19,7 @@ use crate::model::{Model, SourceTerm};
 use crate::progress::Progress;
 use crate::readout::energy::EnergyBalance;
 use crate::readout::field::Field;
+use crate::readout::glare_grid::read_glare_grids;
 use crate::readout::grid::{read_grids_cut_by, read_grids_each};
 use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::illuminance::{arriving, patch_illuminance};
@@ -223,8 +224,9 @@ pub fn dimmed(scene: &Scene, base: &[Source], light_scene: &LightScene) -> Vec<S
 }
 
 /// The light scene's field `Σ_g f_g x_g` (`xs` the groups' fields) and its readouts on
-/// `model`, relit by it (the observers' UGR from its dimmed luminaires and its own
-/// background), without its grids and error bars (`read_light_scenes` sets them).
+/// `model`, relit by it (the observers' and glare grids' UGR from its dimmed luminaires
+/// and its own background), without its grids and error bars (`read_light_scenes` sets
+/// them).
 fn read_out(
     scene: &Scene,
     model: &Model,
@@ -240,6 +242,7 @@ fn read_out(
     let field = Field::from_unknowns(&x, k);
     let probes = read_probes(&scene.probes, model, &field, progress);
     let observers = read_observers(&scene.observers, model, &field);
+    let glare_grids = read_glare_grids(&scene.glare_grids, model, &field);
     LightSceneField {
         name: light_scene.name.clone(),
         factors: light_scene.factors.clone(),
@@ -252,6 +255,7 @@ fn read_out(
         grids: Vec::new(),
         grid_errors: Vec::new(),
         observers,
+        glare_grids,
         field,
     }
 }

@@ -166,3 +166,35 @@ fn ugo_solve_reports_writes_the_csv_and_the_hdf5_group() {
         assert!((a - b).abs() < 1e-5 || (a.is_infinite() && a == b), "{a} against {b}");
     }
 }
+
+/// Under light scenes every glare grid is read again with the scene's dimmed luminaires and
+/// its own background (as the observers are): the scene that lights every group at 1 reads
+/// what the case reads, to the solves' tolerance; one that dims a panel and turns the other
+/// off reads otherwise, and has its own CSV and `/light_scenes/NAME/glare_grids`.
+#[test]
+fn light_scenes_read_their_own_glare_grids() {
+    let dir = scratch("glare-grid-scenes");
+    std::fs::write(dir.as_ref().join("panel.ies"), PANEL).expect("writable");
+    let grouped = panels(&[[2.0, 3.5, 1.0], [3.0, 3.5, 3.0]])
+        .replacen("position = [2, 3.5, 1]\n", "position = [2, 3.5, 1]\ngroup = \"a\"\n", 1)
+        .replacen("position = [3, 3.5, 3]\n", "position = [3, 3.5, 3]\ngroup = \"b\"\n", 1);
+    assert_eq!(grouped.matches("group = ").count(), 2, "{grouped}");
+    let scenes = "[[light_scene]]\nname = \"all\"\ngroups = { a = 1, b = 1 }\n\
+                  [[light_scene]]\nname = \"half\"\ngroups = { a = 0.5, b = false }\n";
+    let text = room(4.0, 0.5, 0.0) + &grouped + GRID + scenes;
+    let (file, stdout) = solved_file(dir.as_ref(), &text);
+    let ugr = |path: &str| file.dataset(path).unwrap().read_raw::<f64>().unwrap();
+    let (own, all, half) = (
+        ugr("glare_grids/desks/ugr"),
+        ugr("light_scenes/all/glare_grids/desks/ugr"),
+        ugr("light_scenes/half/glare_grids/desks/ugr"),
+    );
+    assert_eq!((own.len(), all.len(), half.len()), (24, 24, 24));
+    for (a, b) in own.iter().zip(&all) {
+        assert!((a - b).abs() < 1e-6 || (a.is_infinite() && a == b), "all-on {b} against the case's {a}");
+    }
+    assert!(own.iter().zip(&half).any(|(a, b)| (a - b).abs() > 0.1), "the dimmed scene reads otherwise");
+    let csv = std::fs::read_to_string(dir.as_ref().join("res-half-glare-desks.csv")).expect("the scene's CSV");
+    assert_eq!(csv.lines().filter(|l| !l.starts_with('#')).count(), 1 + 24);
+    assert_eq!(stdout.matches("glare grids ").count(), 3, "the case's block and each scene's: {stdout}");
+}
