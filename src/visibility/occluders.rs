@@ -18,7 +18,7 @@
 //! occluder meets ([`Occluders::clear`], `hull.rs`) holds no face: every segment from the
 //! point to the polygon is clear, without a ray (`between.rs`, a gather's pieces of a patch).
 //! Only the occluders whose boxes meet the hull's box are tested (a binary BVH over the
-//! boxes): a furnished office has some 3,000 occluders, and testing each against every
+//! boxes): a furnished office has 1,044 occluders, and testing each against every
 //! piece of every gather cost three times the rays it saved (`docs/performance.md`,
 //! "Readouts of many probes").
 

@@ -1,6 +1,6 @@
 //! Hulls the occluders know clear (`Visibility::hull_is_clear`, a gather's pieces seen
 //! without rays: `visibility/between.rs`): in the Cornell box, the open box and the
-//! furnished office (some 3,000 occluders, of which a hull's box meets few), from points
+//! furnished office (1,044 occluders, of which a hull's box meets few), from points
 //! on the surfaces (exactly on them, as an error bar's landing points, and 1 mm in front, as
 //! the probes) to every patch and each of its quarters, every segment a gather would trace
 //! into a hull known clear is visible to the rays, or found blocked only by a face it
