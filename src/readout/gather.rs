@@ -55,15 +55,9 @@ pub fn illuminance_and_direct_at(model: &Model, field: &Field, p: DVec3, n: DVec
 /// rays and factors shared (`lit.rs`), cut by the rules of `by` (of all of `lits` when it
 /// names none).
 pub fn illuminance_and_direct_each(model: &Model, lits: &[Lit], p: DVec3, n: DVec3, by: &[&Field]) -> Vec<(f64, f64)> {
-    let at = Receiver::at(model, p, n);
-    let incident = per_cell_each(model, lits, p, &at.frame, at.ignore, &Cut { fraction: SHADOW_CUT, by, sampled: 0.0 });
-    let direct = |lit: &Lit| {
-        let cells =
-            arriving_at(lit.sources, &model.visibility, &model.kernel.directions, p, &at.frame, at.ignore, READING);
-        PI * cells.iter().sum::<f64>()
-    };
-    let each = lits.iter().zip(incident).map(|(lit, e)| (PI * e.iter().sum::<f64>(), direct(lit)));
-    each.map(|(gathered, direct)| (gathered + direct, direct)).collect()
+    let (_, each) = incident_each(model, lits, p, n, by);
+    let total = |cells: &[f64]| PI * cells.iter().sum::<f64>();
+    each.iter().map(|(incident, direct)| (total(incident) + total(direct), total(direct))).collect()
 }
 
 /// A receiver at a point: the patch it lies on (if any), the frame its light is binned
@@ -94,11 +88,28 @@ pub(super) fn incident_at(
     n: DVec3,
     by: &[&Field],
 ) -> (Receiver, Vec<f64>, Vec<f64>) {
-    let at = Receiver::at(model, p, n);
-    let direct =
-        arriving_at(&model.sources, &model.visibility, &model.kernel.directions, p, &at.frame, at.ignore, READING);
-    let incident = per_cell(model, field, p, &at.frame, at.ignore, &Cut { fraction: SHADOW_CUT, by, sampled: 0.0 });
+    let (at, mut each) = incident_each(model, &[Lit::own(model, field)], p, n, by);
+    let (incident, direct) = each.swap_remove(0);
     (at, incident, direct)
+}
+
+/// [`incident_at`] for each field of `lits` under its own light, the gather's rays and
+/// factors shared (`lit.rs`): per field, what arrives from the surfaces and directly, per cell.
+#[allow(clippy::type_complexity)]
+fn incident_each(
+    model: &Model,
+    lits: &[Lit],
+    p: DVec3,
+    n: DVec3,
+    by: &[&Field],
+) -> (Receiver, Vec<(Vec<f64>, Vec<f64>)>) {
+    let at = Receiver::at(model, p, n);
+    let incident = per_cell_each(model, lits, p, &at.frame, at.ignore, &Cut { fraction: SHADOW_CUT, by, sampled: 0.0 });
+    let direct = |lit: &Lit| {
+        arriving_at(lit.sources, &model.visibility, &model.kernel.directions, p, &at.frame, at.ignore, READING)
+    };
+    let each = lits.iter().zip(incident).map(|(lit, e)| (e, direct(lit))).collect();
+    (at, each)
 }
 
 /// All the light arriving at point `q` of patch `s` per cell of its frame: gathered from
