@@ -10,6 +10,7 @@
 //! one. Each pass's record is made here, from the work the hierarchy counts.
 
 use super::hierarchy::{Hierarchy, Pass, Stopped, Work};
+use super::importance::importance;
 use super::operator::{Factored, Kernel};
 use crate::geometry::Mesh;
 use crate::progress::Progress;
@@ -22,6 +23,11 @@ pub type Solver<'a, E> = dyn FnMut(&Kernel, &[f64], f64) -> Result<Vec<f64>, E> 
 /// The caller's source term: `L0` on the leaves of the hierarchy (`x[leaf·K + k]`), after
 /// any splits of leaves it makes.
 pub type SourceTerm<'a, E> = dyn FnMut(&mut Hierarchy) -> Result<Vec<f64>, E> + 'a;
+
+/// The caller's readings: for the field `x` on the current leaves of the hierarchy, each
+/// unknown's direct share of the readings, `max_k (∂R_k/∂x)/R_k` (none: no readings steer
+/// the refinement).
+pub type Readings<'a, E> = dyn FnMut(&Hierarchy, &[f64]) -> Result<Option<Vec<f64>>, E> + 'a;
 
 /// The field on the final leaves, the kernel there, its source term, and the passes.
 pub struct Refined {
@@ -38,11 +44,13 @@ pub struct Refined {
 }
 
 /// Solves, refines and solves again until a pass refines nothing or `options.passes`
-/// passes ran; `progress` hears of each pass's linking.
+/// passes ran, each pass steered by the `readings`' importance (3b.3b); `progress` hears
+/// of each pass's linking.
 pub fn refine_with_solves<E: From<Stopped>>(
     hierarchy: &mut Hierarchy,
     source: &mut SourceTerm<E>,
     solve: &mut Solver<E>,
+    readings: &mut Readings<E>,
     progress: &dyn Progress,
 ) -> Result<Refined, E> {
     let mut before = Work::default();
@@ -53,7 +61,8 @@ pub fn refine_with_solves<E: From<Stopped>>(
     let mut history = vec![record(hierarchy, &kernel, 0, 1, &mut before, start)];
     while history.len() < hierarchy.options().passes {
         let solved_on = hierarchy.tree().leaves();
-        let refined = hierarchy.refine(&x, progress)?;
+        let importance = readings(hierarchy, &x)?.map(|v| importance(&kernel, &v));
+        let refined = hierarchy.refine(&x, importance.as_deref(), progress)?;
         if refined == 0 {
             break;
         }

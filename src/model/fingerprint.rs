@@ -226,8 +226,8 @@ fn discretization(d: &Discretization, h: &mut Fnv) -> String {
         KernelKind::Hierarchical(h) => {
             let o = Options::default();
             let text = format!(
-                "hierarchical, root_size {:?} m, link_tolerance {:?}, dim_floor {:?}, passes {}, balanced {}",
-                h.root_size, h.link_tolerance, o.dim_floor, o.passes, o.balance
+                "hierarchical, root_size {:?} m, link_tolerance {:?}, dim_floor {:?}, reading_weight {:?}, passes {}, balanced {}",
+                h.root_size, h.link_tolerance, o.dim_floor, o.reading_weight, o.passes, o.balance
             );
             (text, o.quadrature)
         }

@@ -10,6 +10,7 @@
 //! case's method and stopping rule, on the final leaves.
 
 use super::range::{check_blocks, check_source, check_transport};
+use super::readers::{direct_importance, readers};
 use super::source::source_term;
 use super::system::{AssemblyStats, HierarchyRecord, Model, ModelError};
 use crate::directions::DirectionSet;
@@ -114,6 +115,7 @@ pub fn build(
     crate::interrupt::check(|| "the roots' exposed areas".into())?;
     let root_light = seed_light(&sources, &roots, &root_visibility, &directions, progress);
     crate::interrupt::check(|| "the direct light on the roots".into())?;
+    let readers = readers(scene, &sources, &root_visibility, &directions);
     let root_l0 = source_term(&blocks, &roots, &root_light, k);
     check_source(scene, &roots, &root_light, &root_l0, k)?;
     let root_light_seconds = t.elapsed().as_secs_f64();
@@ -167,8 +169,12 @@ pub fn build(
         progress.at(solves, "refinement: passes solved");
         Ok(x)
     };
+    let steered = !readers.is_empty() && hierarchy_options.reading_weight > 0.0;
+    let mut readings = |h: &Hierarchy, x: &[f64]| -> Result<Option<Vec<f64>>, ModelError> {
+        Ok(steered.then(|| direct_importance(&readers, &h.leaf_mesh(), h.visibility(), &directions, x)))
+    };
     let Refined { kernel, leaves: mesh, l0, history, .. } =
-        refine_with_solves(&mut h, &mut source, &mut solver, progress)?;
+        refine_with_solves(&mut h, &mut source, &mut solver, &mut readings, progress)?;
     progress.end();
     let kernel_seconds = t.elapsed().as_secs_f64() - light_seconds;
     let direct = cache.on_leaves(&h, &sources, &directions, progress);

@@ -14,6 +14,7 @@ mod fingerprint;
 mod group;
 mod hierarchical;
 mod range;
+mod readers;
 mod reuse;
 mod source;
 mod system;

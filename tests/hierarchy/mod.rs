@@ -7,6 +7,7 @@ mod clusters;
 mod coverage;
 mod explicit;
 mod growth;
+mod importance;
 mod memory;
 mod model;
 mod monte_carlo;
@@ -75,6 +76,7 @@ pub fn solved(h: &mut Hierarchy, method: Method) -> (Vec<f64>, Kernel) {
         h,
         &mut |h| Ok::<_, Failure>(h.emission()),
         &mut |k: &Kernel, b: &[f64], s: f64| solve(k, b, s).map_err(Failure::from),
+        &mut |_: &Hierarchy, _: &[f64]| Ok(None),
         &Silent,
     )
     .expect("the solve converges");

@@ -20,7 +20,7 @@ fn kept_push_weights_give_the_operator_built_afresh() {
     let mut h = hierarchy(&scene, 0.5, directions.clone(), Options { balance: false, ..options(3e-2, 0.05) });
     let first = kernel(&mut h);
     let x = solver(Method::Neumann)(&first, &h.emission(), 1.0).unwrap();
-    let refined = h.refine(&x, &Silent).expect("the pass fits in memory");
+    let refined = h.refine(&x, None, &Silent).expect("the pass fits in memory");
     assert!(refined > 0, "the solved field refines some links");
     let kept = h.operator();
     let fresh = Operator::new(h.tree(), h.visibility(), h.links(), &directions, &mut SeenCache::default());

@@ -1,6 +1,7 @@
 //! What the oracle weighs a link's factor bound by (`docs/design.md` §3b, "Oracle", (3b.3)
 //! and (3b.3a)): the brightest light under its source node, and its receiver's gain, how
-//! many times finer than the scene's allowance its own is where its reflected light is dim.
+//! many times finer than the scene's allowance its own is where its reflected light is dim
+//! (3b.3a) or where the readings depend on it (3b.3b).
 
 use super::node::NONE;
 use super::tree::Tree;
@@ -10,6 +11,16 @@ use super::tree::Tree;
 pub struct Brightness {
     source: Vec<f64>,
     gain: Vec<f64>,
+    /// The readings' importance under each node (`Σ W` over its leaves' unknowns), per
+    /// cd/m², and what turns it into a gain.
+    reading: Option<Reading>,
+}
+
+/// The readings' importance per node and the scale that turns it into a gain.
+#[derive(Debug, Clone)]
+struct Reading {
+    importance: Vec<f64>,
+    scale: f64,
 }
 
 impl Brightness {
@@ -17,7 +28,7 @@ impl Brightness {
     pub fn of(tree: &Tree, largest: Vec<f64>) -> Brightness {
         let source = up_the_tree(tree, largest, f64::max);
         let gain = vec![1.0; source.len()];
-        Brightness { source, gain }
+        Brightness { source, gain, reading: None }
     }
 
     /// The gains of the receivers, at least 1: `L̄ / max(min(L_p, L̄), floor · L̄)`, `L_p` the
@@ -30,17 +41,41 @@ impl Brightness {
         self
     }
 
-    /// The weight of a link from `q` to `p`: `q`'s brightness times `p`'s gain, cd/m².
-    pub fn weight(&self, p: u32, q: u32) -> f64 {
-        self.source[q as usize] * self.gain[p as usize]
+    /// The readings' gains (3b.3b): a receiver under which the readings' importance sums
+    /// to `c` (per cd/m², `importance` one per node, leaves set) gains `scale · c` where
+    /// that exceeds its gain from its dimness (`scale`: the readings' weight times `L̄`).
+    pub fn with_readings(mut self, tree: &Tree, importance: Vec<f64>, scale: f64) -> Brightness {
+        let importance = up_the_tree(tree, importance, |a, b| a + b);
+        self.reading = Some(Reading { importance, scale });
+        self
     }
 
-    /// New nodes of `tree` take their parent's values.
+    /// The weight of a link from `q` to `p`: `q`'s brightness times `p`'s gain, cd/m².
+    pub fn weight(&self, p: u32, q: u32) -> f64 {
+        self.source[q as usize] * self.gain(p as usize)
+    }
+
+    /// Receiver `p`'s gain: from its dimness, or from the readings where that is larger.
+    fn gain(&self, p: usize) -> f64 {
+        let dim = self.gain[p];
+        match &self.reading {
+            Some(r) => dim.max(r.scale * r.importance[p]),
+            None => dim,
+        }
+    }
+
+    /// New nodes of `tree` take their parent's values, the readings' importance by their
+    /// share of its area.
     pub fn grow(&mut self, tree: &Tree) {
         for id in self.source.len()..tree.len() {
-            let parent = tree.node(id as u32).parent as usize;
+            let node = tree.node(id as u32);
+            let parent = node.parent as usize;
             self.source.push(self.source[parent]);
             self.gain.push(self.gain[parent]);
+            if let Some(r) = &mut self.reading {
+                let share = node.area / tree.node(node.parent).area;
+                r.importance.push(r.importance[parent] * share);
+            }
         }
     }
 }

@@ -1,5 +1,5 @@
 //! How the hierarchical kernel refines (`docs/design.md` §3b, "Oracle"): the link tolerance
-//! and its floor for dim receivers, the finest patches, the element factors' quadrature,
+//! and its floor for dim receivers, the readings' weight, the finest patches, the element factors' quadrature,
 //! the most passes, whether the operator is balanced and the memory it may take; one
 //! default each.
 
@@ -19,6 +19,12 @@ pub struct Options {
     /// of the leaves under `p` (`brightness.rs`). 1 gives every receiver the scene's `ε`.
     /// Default [`DIM_FLOOR`].
     pub dim_floor: f64,
+    /// How strongly the readings steer the refinement (3b.3b, `brightness.rs`): with
+    /// readings, a link into `p` is refined while its error exceeds `ε` divided by the
+    /// larger of its dim gain and `reading_weight · L̄_r c_p`, `c_p` the readings'
+    /// importance under `p` (the relative change of the readings per cd/m² of error over
+    /// `p`). 0 lets no reading steer it. Default [`READING_WEIGHT`].
+    pub reading_weight: f64,
     /// The finest patches (the discretization's `patch_size`): elements whose longest edge
     /// is at most this do not split, m. Default 0.05 m.
     pub patch_size: f64,
@@ -46,6 +52,7 @@ impl Default for Options {
         Options {
             tolerance: DEFAULT_TOLERANCE,
             dim_floor: DIM_FLOOR,
+            reading_weight: READING_WEIGHT,
             patch_size: 0.05,
             quadrature: Quadrature { eta: 1.0, max_depth: 4 },
             passes: 4,
@@ -66,3 +73,9 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-2;
 /// box's hierarchy 15 with 0.3 and with 0.1; the lecture hall's links grow by 11 % with 0.3
 /// and by 50 % with 0.1.
 pub const DIM_FLOOR: f64 = 0.3;
+
+/// The default [`Options::reading_weight`], chosen on the Cornell box's hard probes under
+/// its hierarchy (15 of 240 beyond 1 % without, 5 with 10, 3 with 30 for 1.6 times the
+/// links, 3 with 100 for 2.9 times) and held out on the open box's (31 beyond 1 % → 14);
+/// `docs/hierarchy.md`, "The readings' importance".
+pub const READING_WEIGHT: f64 = 30.0;

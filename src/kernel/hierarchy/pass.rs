@@ -9,10 +9,11 @@ use std::time::Instant;
 
 impl Hierarchy {
     /// One more pass with the field `x` of the current leaves (the order of
-    /// [`Hierarchy::operator`]): every link the oracle now rejects is refined. Returns the
-    /// number of links refined (0: the hierarchy is final for this field), or why it stopped;
+    /// [`Hierarchy::operator`]): every link the oracle now rejects is refined, with the
+    /// readings' `importance` on the same unknowns if any (3b.3b). Returns the number of
+    /// links refined (0: the hierarchy is final for this field), or why it stopped;
     /// `progress` hears of the pairs settled.
-    pub fn refine(&mut self, x: &[f64], progress: &dyn Progress) -> Result<usize, Stopped> {
+    pub fn refine(&mut self, x: &[f64], importance: Option<&[f64]>, progress: &dyn Progress) -> Result<usize, Stopped> {
         let start = Instant::now();
         let leaves = self.tree.leaves();
         let reflected = self.reflected(&leaves, x);
@@ -20,6 +21,12 @@ impl Hierarchy {
         self.oracle.epsilon = self.options.tolerance * mean;
         let least = self.per_node(&leaves, reflected.iter().map(|r| r.max(0.0)), f64::INFINITY);
         let mut brightness = self.brightness(&leaves, x).with_gains(&self.tree, least, mean, self.options.dim_floor);
+        if let Some(w) = importance.filter(|_| self.options.reading_weight > 0.0) {
+            let k = self.directions.len();
+            let per_leaf = (0..leaves.len()).map(|l| w[l * k..(l + 1) * k].iter().sum());
+            let per_node = self.per_node(&leaves, per_leaf, 0.0);
+            brightness = brightness.with_readings(&self.tree, per_node, self.options.reading_weight * mean);
+        }
         let (mut redo, mut keep) = (Vec::new(), Vec::with_capacity(self.links.len()));
         for link in std::mem::take(&mut self.links) {
             let (p, q) = (link.receiver, link.source);
