@@ -1,10 +1,12 @@
 //! The UGR lines of `ugo solve`'s summary (`docs/photometry.md`, "UGR"): per observer the
 //! UGR, the background luminance, the luminaires counted, the check against its
 //! `ugr_limit`, and a warning on stderr for sources outside the formula's solid angles;
-//! per grid named by an observer its UGR (the largest of theirs) against its `UGR_L`.
+//! per grid named by an observer or a glare grid its UGR (the largest of their readings,
+//! `ugo::readout::grid_ugr`) against its `UGR_L`.
 
 use ugo::readout::grid::GridReading;
-use ugo::readout::ugr::{UgrReading, VALID_SOLID_ANGLE, grid_ugr};
+use ugo::readout::grid_ugr::{GlareReadings, GridUgr};
+use ugo::readout::ugr::{UgrReading, VALID_SOLID_ANGLE};
 
 /// Whether `ugr` meets `limit`, in words.
 pub(super) fn against(ugr: f64, limit: Option<f64>) -> String {
@@ -28,8 +30,16 @@ pub(super) fn shown(ugr: f64) -> String {
     if ugr.is_finite() { format!("{ugr:.2}") } else { "no source".to_string() }
 }
 
-/// Prints one line per observer, then per grid its observers name, indented by `indent`.
-pub fn report(readings: &[UgrReading], grids: &[GridReading], indent: &str) {
+/// Prints one line per observer (when there are any), then per grid its observers and glare
+/// grids name, indented by `indent`.
+pub fn report(glare: GlareReadings, grids: &[GridReading], indent: &str) {
+    if !glare.observers.is_empty() {
+        observer_lines(glare.observers, indent);
+    }
+    grid_lines(glare, grids, indent);
+}
+
+fn observer_lines(readings: &[UgrReading], indent: &str) {
     println!("{indent}observers                       UGR   L_b cd/m²   sources   limit");
     for r in readings {
         let limit = against(r.ugr(), r.observer.ugr_limit);
@@ -47,21 +57,31 @@ pub fn report(readings: &[UgrReading], grids: &[GridReading], indent: &str) {
             warn_outside(&format!("observer \"{}\"", o.name), &what);
         }
     }
-    grid_lines(readings, grids, indent);
 }
 
-/// One line per grid that an observer names: its UGR, the observers it is the largest of,
-/// and its `UGR_L`.
-fn grid_lines(readings: &[UgrReading], grids: &[GridReading], indent: &str) {
-    let named: Vec<(&GridReading, f64)> =
-        grids.iter().filter_map(|g| Some((g, grid_ugr(&g.grid.name, readings)?))).collect();
+/// One line per grid that an observer or a glare grid names: its UGR (the largest of
+/// theirs), what it is taken from, and its `UGR_L`.
+fn grid_lines(glare: GlareReadings, grids: &[GridReading], indent: &str) {
+    let named: Vec<(&GridReading, GridUgr)> =
+        grids.iter().filter_map(|g| Some((g, glare.grid_ugr(&g.grid.name)?))).collect();
     if named.is_empty() {
         return;
     }
-    println!("{indent}grids' UGR (largest of their observers)   observers   UGR_L");
-    for (g, ugr) in named {
-        let observers = readings.iter().filter(|r| r.observer.grid.as_deref() == Some(g.grid.name.as_str())).count();
-        let limit = against(ugr, g.grid.target.ugr);
-        println!("{indent}  {:<22} {:>9} {:>27}   {limit}", g.grid.name, shown(ugr), observers);
+    println!("{indent}grids' UGR                     UGR   from (largest of their readings)   UGR_L");
+    for (g, u) in named {
+        let from = taken_from(&u);
+        let limit = against(u.ugr, g.grid.target.ugr);
+        println!("{indent}  {:<22} {:>9}   {from:<32}   {limit}", g.grid.name, shown(u.ugr));
     }
+}
+
+/// What a grid's UGR is taken from, in words: "2 observers, glare grid \"desks\"".
+fn taken_from(u: &GridUgr) -> String {
+    let observers = match u.observers {
+        0 => None,
+        1 => Some("1 observer".to_string()),
+        n => Some(format!("{n} observers")),
+    };
+    let grids = u.glare_grids.iter().map(|g| format!("glare grid \"{g}\""));
+    observers.into_iter().chain(grids).collect::<Vec<_>>().join(", ")
 }

@@ -58,9 +58,7 @@ pub fn report_scenes(
             write_probes_csv(&csv, &scene.probes, None)?;
             println!("      {}", csv.display());
         }
-        if !scene.observers.is_empty() {
-            super::glare::report(&scene.observers, &scene.grids, "    ");
-        }
+        super::glare::report(scene.glare(), &scene.grids, "    ");
         super::glare_grid::report(&scene.glare_grids, &PathBuf::from(format!("{base}.h5")), "    ")?;
         write_grids(&scene.grids, &scene.grid_errors, &base, described)?;
     }

@@ -60,9 +60,7 @@ pub fn run(file: &Path, case: Option<&Path>, d: &Discretize, output: Option<Path
 /// Prints the case's own field's readings and writes their files beside `output`.
 fn own_readings(readings: &Readings, output: &Path, files: &GridFiles) -> Result<()> {
     print_probes(&readings.probes);
-    if !readings.observers.is_empty() {
-        super::glare::report(&readings.observers, &readings.grids, "  ");
-    }
+    super::glare::report(readings.glare(), &readings.grids, "  ");
     let stem = output.with_extension("").display().to_string();
     write_grids(&readings.grids, &readings.grid_errors, &stem, files, None)?;
     if !readings.probes.is_empty() {

@@ -222,9 +222,7 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
         println!("  warnings           {warnings:>12}   (on stderr and in /warnings)");
     }
     print_probes(&s.probes);
-    if !s.observers.is_empty() {
-        super::glare::report(&s.observers, &s.grids, "  ");
-    }
+    super::glare::report(s.glare(), &s.grids, "  ");
     if let Some(d) = s.daylight.as_ref() {
         super::daylight::report(d, &s.probes, &s.grids);
     }

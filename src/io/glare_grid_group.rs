@@ -4,9 +4,10 @@
 //! the UGR `ugr` and the background luminance `background_luminance` (cd/m²) per position
 //! and view (nv × nu × views; `−∞` where no luminaire is seen), the luminaires counted
 //! `sources` likewise, and the attributes `UGR_max` (the largest), `UGR_max_position`
-//! (`[u, v]`), `UGR_max_turn_deg` and `ugr_limit` (when the case gives one).
+//! (`[u, v]`), `UGR_max_turn_deg`, `ugr_limit` (when the case gives one) and `grid` (the
+//! `[[grid]]` whose UGR it counts towards, when it names one).
 
-use super::dataset::dataset;
+use super::dataset::{dataset, text_attr};
 use crate::readout::glare_grid::GlareGridReading;
 use crate::readout::ugr::UgrReading;
 use ndarray::{Array1, Array2, Array3};
@@ -37,5 +38,6 @@ fn write_glare_grid(g: &hdf5::Group, r: &GlareGridReading) -> hdf5::Result<()> {
     let at = [(largest.position % nu) as u64, (largest.position / nu) as u64];
     g.new_attr::<u64>().shape(2).create("UGR_max_position")?.write_raw(&at)?;
     grid.ugr_limit.map(|limit| scalar("ugr_limit", limit)).transpose()?;
+    grid.grid.as_ref().map(|name| text_attr(g, "grid", name)).transpose()?;
     Ok(())
 }

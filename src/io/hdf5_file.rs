@@ -10,7 +10,7 @@
 //! `/spectrum/…` (the leading eigenpairs of `K`, `spectrum_file.rs`),
 //! `/energy/{surface_emitted,surface_absorbed}`,
 //! `/probes/{name,kind,position,normal,luminance,illuminance}`,
-//! `/observers/{name,position,look,ugr,ugr_limit,background_luminance}` and
+//! `/observers/{name,position,look,ugr,ugr_limit,background_luminance,grid}` and
 //! `/observers/sources/{observer,name,luminance,solid_angle,position_index}` (the UGR,
 //! `observer_group.rs`), `/basis/{coefficients,psi,front,back}`
 //! (a solve in a factored angular basis),
@@ -101,7 +101,7 @@ fn write_to(path: &Path, scene: &Scene, s: &Solution) -> hdf5::Result<()> {
     write_observers(&file.create_group("observers")?, &s.observers)?;
     write_glare_grids(&file.create_group("glare_grids")?, &s.glare_grids)?;
     s.daylight.as_ref().map(|d| write_daylight(&file.create_group("daylight")?, d, &s.probes, &s.grids)).transpose()?;
-    write_grids(&file.create_group("grids")?, &s.grids, &s.grid_errors, &s.observers)?;
+    write_grids(&file.create_group("grids")?, &s.grids, &s.grid_errors, s.glare())?;
     write_luminaires(&file.create_group("luminaires")?, scene, s)?;
     if let Some(light) = &s.light_scenes {
         super::light_scene_group::write_light_scenes(&file, scene, &s.model, light)?;

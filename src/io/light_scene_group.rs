@@ -34,6 +34,7 @@ use crate::readout::field::Field;
 use crate::readout::glare_grid::GlareGridReading;
 use crate::readout::grid::GridReading;
 use crate::readout::grid_error::GridErrorBars;
+use crate::readout::grid_ugr::GlareReadings;
 use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::probe::ProbeReading;
 use crate::readout::residual_samples::ResidualSamples;
@@ -95,6 +96,13 @@ pub struct LightSceneField {
     pub observers: Vec<UgrReading>,
     /// The UGR at every position and view of every `[[glare_grid]]`, likewise.
     pub glare_grids: Vec<GlareGridReading>,
+}
+
+impl LightSceneField {
+    /// Its observers' and glare grids' readings, which its grids' UGR is taken from.
+    pub fn glare(&self) -> GlareReadings<'_> {
+        GlareReadings { observers: &self.observers, glare_grids: &self.glare_grids }
+    }
 }
 
 /// `/light_groups` and `/light_scenes` of `file`, on the patches and cells of `model`.
@@ -262,7 +270,7 @@ fn write_scene(g: &hdf5::Group, s: &LightSceneField, n: usize, k: usize) -> hdf5
     write_probes(&g.create_group("probes")?, &s.probes)?;
     write_observers(&g.create_group("observers")?, &s.observers)?;
     write_glare_grids(&g.create_group("glare_grids")?, &s.glare_grids)?;
-    write_grids(&g.create_group("grids")?, &s.grids, &s.grid_errors, &s.observers)?;
+    write_grids(&g.create_group("grids")?, &s.grids, &s.grid_errors, s.glare())?;
     g.new_attr::<f64>().shape(s.factors.len()).create("factors")?.write_raw(&s.factors)?;
     let e = &s.energy;
     for (name, value) in [

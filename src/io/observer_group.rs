@@ -1,6 +1,6 @@
 //! `/observers` (`docs/design.md` §8, `docs/photometry.md` "UGR"): the UGR at every
-//! `[[observer]]`, one row each, and every luminaire counted in it, one row each in
-//! `/observers/sources`.
+//! `[[observer]]`, one row each (with `grid`, the `[[grid]]` it names, empty for none), and
+//! every luminaire counted in it, one row each in `/observers/sources`.
 
 use super::dataset::{dataset, strings};
 use crate::readout::ugr::{GlareSource, UgrReading};
@@ -14,6 +14,7 @@ pub(super) fn write_observers(g: &hdf5::Group, readings: &[UgrReading]) -> hdf5:
     dataset(g, "look", &Array2::from_shape_fn((n, 3), |(i, c)| readings[i].observer.look[c]))?;
     dataset(g, "ugr", &column(&|r| r.ugr()))?;
     dataset(g, "ugr_limit", &column(&|r| r.observer.ugr_limit.unwrap_or(f64::NAN)))?;
+    strings(g, "grid", readings.iter().map(|r| r.observer.grid.as_deref().unwrap_or("")))?;
     dataset(g, "background_luminance", &column(&|r| r.background))?;
     let sources = g.create_group("sources")?;
     let counted: Vec<_> =

@@ -63,7 +63,7 @@ fn rewrite(path: &Path, scene: &Scene, r: &Readout) -> hdf5::Result<()> {
         write_probes(&file.create_group("probes")?, &readings.probes)?;
         write_observers(&file.create_group("observers")?, &readings.observers)?;
         write_glare_grids(&file.create_group("glare_grids")?, &readings.glare_grids)?;
-        write_grids(&file.create_group("grids")?, &readings.grids, &readings.grid_errors, &readings.observers)?;
+        write_grids(&file.create_group("grids")?, &readings.grids, &readings.grid_errors, readings.glare())?;
     }
     if !file.link_exists("light_groups") {
         unlink(&file, "light_scenes")?;

@@ -4,8 +4,8 @@
 use super::dataset::{dataset, strings};
 use crate::readout::grid::GridReading;
 use crate::readout::grid_error::GridErrorBars;
+use crate::readout::grid_ugr::GlareReadings;
 use crate::readout::probe::ProbeReading;
-use crate::readout::ugr::{UgrReading, grid_ugr};
 use ndarray::{Array1, Array2, Array3};
 
 pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Result<()> {
@@ -22,17 +22,17 @@ pub(super) fn write_probes(g: &hdf5::Group, probes: &[ProbeReading]) -> hdf5::Re
 }
 
 /// `/grids/<name>` for every grid of `grids` in `g`, each with its error bars of `errors`
-/// and its UGR from the `observers` that name it.
+/// and its UGR from the observers and glare grids of `glare` that name it.
 pub(super) fn write_grids(
     g: &hdf5::Group,
     grids: &[GridReading],
     errors: &[GridErrorBars],
-    observers: &[UgrReading],
+    glare: GlareReadings,
 ) -> hdf5::Result<()> {
     grids
         .iter()
         .zip(errors)
-        .try_for_each(|(grid, errors)| write_grid(&g.create_group(&grid.grid.name)?, grid, errors, observers))
+        .try_for_each(|(grid, errors)| write_grid(&g.create_group(&grid.grid.name)?, grid, errors, glare))
 }
 
 /// Points, illuminance, its `direct` part and `counted` (1 for a point in the statistics, 0
@@ -41,15 +41,10 @@ pub(super) fn write_grids(
 /// for a point that counts), `obstruction_inside` (1 inside a solid), `obstruction_distance`
 /// (m, NaN for a point that counts), and `error`, the illuminance's error bar (lx, NaN for a
 /// point left out; `readout::grid_error`). Attributes: the statistics, their error bars
-/// `E_avg_error`, `E_min_error` (lx) and `U0_error`, `UGR` (the largest of the `observers`
-/// that name the grid, `readout::ugr::grid_ugr`) when one does, and the `target`'s
+/// `E_avg_error`, `E_min_error` (lx) and `U0_error`, `UGR` (the largest of the observers
+/// and glare grids of `glare` that name the grid, `readout::grid_ugr`) when one does, and the `target`'s
 /// `Em_target` (lx), `U0_target` and `UGR_target` when the case gives them.
-fn write_grid(
-    g: &hdf5::Group,
-    grid: &GridReading,
-    errors: &GridErrorBars,
-    observers: &[UgrReading],
-) -> hdf5::Result<()> {
+fn write_grid(g: &hdf5::Group, grid: &GridReading, errors: &GridErrorBars, glare: GlareReadings) -> hdf5::Result<()> {
     let [nu, nv] = grid.grid.resolution;
     let map = |f: &dyn Fn(usize) -> f64| Array2::from_shape_fn((nv, nu), |(b, a)| f(b * nu + a));
     dataset(g, "points", &Array3::from_shape_fn((nv, nu, 3), |(b, a, c)| grid.points[b * nu + a][c]))?;
@@ -67,7 +62,7 @@ fn write_grid(
     let n = grid.grid.normal;
     g.new_attr::<f64>().shape(3).create("normal")?.write_raw(&[n.x, n.y, n.z])?;
     let target = grid.grid.target;
-    let ugr = grid_ugr(&grid.grid.name, observers);
+    let ugr = glare.grid_ugr(&grid.grid.name).map(|u| u.ugr);
     let targets = [("Em_target", target.em), ("U0_target", target.u0), ("UGR_target", target.ugr), ("UGR", ugr)];
     let stats = [
         ("E_avg", st.average),

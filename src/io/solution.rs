@@ -10,6 +10,7 @@ use crate::readout::field::Field;
 use crate::readout::glare_grid::GlareGridReading;
 use crate::readout::grid::GridReading;
 use crate::readout::grid_error::GridErrorBars;
+use crate::readout::grid_ugr::GlareReadings;
 use crate::readout::probe::ProbeReading;
 use crate::readout::ugr::UgrReading;
 use crate::solve::norms::Norms;
@@ -74,6 +75,11 @@ impl Solution {
     /// What the reference run's solve did.
     pub fn info(&self) -> &SolveInfo {
         &self.runs[self.reference].info
+    }
+
+    /// Its observers' and glare grids' readings, which its grids' UGR is taken from.
+    pub fn glare(&self) -> GlareReadings<'_> {
+        GlareReadings { observers: &self.observers, glare_grids: &self.glare_grids }
     }
 }
 

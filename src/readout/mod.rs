@@ -1,7 +1,7 @@
 //! Readouts of a solved field (`docs/design.md` §5, §7): the field as an `N × K × C` array, the
 //! illuminance of patches and points, probes (point sensors, luminance meters, cylindrical
-//! illuminance), the UGR at observers and the UGR table of a luminaire, grids, the readings'
-//! error bars and the energy balance in lumens.
+//! illuminance), the UGR at observers and on glare grids, a grid's UGR from them and the UGR
+//! table of a luminaire, grids, the readings' error bars and the energy balance in lumens.
 
 pub mod cavity;
 pub mod correction;
@@ -17,6 +17,7 @@ pub mod glare_grid;
 pub mod glossy;
 pub mod grid;
 pub mod grid_error;
+pub mod grid_ugr;
 pub mod group_readouts;
 pub mod guth;
 pub mod illuminance;

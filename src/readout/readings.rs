@@ -7,6 +7,7 @@ use super::field::Field;
 use super::glare_grid::{GlareGridReading, read_glare_grids};
 use super::grid::{GridReading, read_grids};
 use super::grid_error::GridErrorBars;
+use super::grid_ugr::GlareReadings;
 use super::probe::{ProbeReading, read_probes};
 use super::residual_samples::ResidualSamples;
 use super::ugr::{UgrReading, read_observers};
@@ -51,5 +52,10 @@ impl Readings {
     /// the field read at them.
     pub fn set_bars(&mut self, samples: &ResidualSamples) {
         self.grid_errors = samples.bars(&mut self.probes, &self.grids);
+    }
+
+    /// Its observers' and glare grids' readings, which its grids' UGR is taken from.
+    pub fn glare(&self) -> GlareReadings<'_> {
+        GlareReadings { observers: &self.observers, glare_grids: &self.glare_grids }
     }
 }

@@ -89,14 +89,6 @@ pub fn glare_source(source: &Source, eye: DVec3, look: DVec3) -> Option<GlareSou
     })
 }
 
-/// The UGR of the `[[grid]]` named `grid`: the largest of the observers' in `readings`
-/// that name it (`−∞` when none sees a luminaire); `None` when no observer names it.
-pub fn grid_ugr(grid: &str, readings: &[UgrReading]) -> Option<f64> {
-    let mut named = readings.iter().filter(|r| r.observer.grid.as_deref() == Some(grid)).peekable();
-    named.peek()?;
-    Some(named.map(UgrReading::ugr).fold(f64::NEG_INFINITY, f64::max))
-}
-
 /// Reads every observer from a solved field.
 pub fn read_observers(observers: &[Observer], model: &Model, field: &Field) -> Vec<UgrReading> {
     observers.iter().map(|o| read(o, model, field)).collect()

@@ -1,13 +1,14 @@
 //! `[[glare_grid]]` tables: observers on a grid of eye positions, each looking along one or
 //! more lines of sight turned about the vertical at a fixed angular step, where the solve
 //! reports the UGR of CIE 117 per position and view and the largest against `ugr_limit`
-//! (EN 12464-1's practice; `docs/photometry.md`, "UGR on a grid of observers"). What it
-//! reads is `crate::readout::glare_grid`.
+//! (EN 12464-1's practice; `docs/photometry.md`, "UGR on a grid of observers"), and the
+//! `[[grid]]` whose UGR its readings count towards. What it reads is
+//! `crate::readout::glare_grid`.
 
 use super::check::{Context, line, number, unique_names};
 use super::error::SceneError;
-use super::grid::{cell_centres, edges, point_counts};
-use super::observer::{Observer, line_of_sight, ugr_limit};
+use super::grid::{Grid, cell_centres, edges, point_counts};
+use super::observer::{Observer, line_of_sight, named_grid, ugr_limit};
 use glam::{DQuat, DVec3};
 use serde::Deserialize;
 use serde_spanned::Spanned;
@@ -30,6 +31,7 @@ pub struct RawGlareGrid {
     pub look: [f64; 3],
     pub view_step_deg: Option<Spanned<f64>>,
     pub ugr_limit: Option<f64>,
+    pub grid: Option<Spanned<String>>,
 }
 
 /// The most eye positions along each edge of a glare grid.
@@ -63,6 +65,8 @@ pub struct GlareGrid {
     pub views: Vec<View>,
     /// The UGR every reading is checked against (EN 12464-1's `UGR_L`), if given.
     pub ugr_limit: Option<f64>,
+    /// The `[[grid]]` whose UGR every reading counts towards (`crate::readout::grid_ugr`), if given.
+    pub grid: Option<String>,
 }
 
 impl GlareGrid {
@@ -80,23 +84,28 @@ impl GlareGrid {
                 position,
                 look: view.look,
                 ugr_limit: self.ugr_limit,
-                grid: None,
+                grid: self.grid.clone(),
             })
         };
         self.positions().into_iter().enumerate().flat_map(one).collect()
     }
 }
 
-/// The glare grids, each checked key by key.
-pub(super) fn glare_grids(path: &Path, source: &str, raw: &[RawGlareGrid]) -> Result<Vec<GlareGrid>, SceneError> {
+/// The glare grids, each checked key by key, each naming an existing grid if any.
+pub(super) fn glare_grids(
+    path: &Path,
+    source: &str,
+    raw: &[RawGlareGrid],
+    grids: &[Grid],
+) -> Result<Vec<GlareGrid>, SceneError> {
     unique_names(path, "glare_grid", raw.iter().map(|g| g.name.as_str()))?;
     raw.iter()
         .enumerate()
-        .map(|(index, g)| glare_grid(&Context::item(path, "glare_grid", &g.name, index), source, g))
+        .map(|(index, g)| glare_grid(&Context::item(path, "glare_grid", &g.name, index), source, g, grids))
         .collect()
 }
 
-fn glare_grid(at: &Context, source: &str, g: &RawGlareGrid) -> Result<GlareGrid, SceneError> {
+fn glare_grid(at: &Context, source: &str, g: &RawGlareGrid, grids: &[Grid]) -> Result<GlareGrid, SceneError> {
     let origin = at.place("origin", g.origin)?;
     let [edge_u, edge_v] = edges(at, [g.edge_u, g.edge_v])?;
     let resolution = point_counts(at, g.resolution, MOST_POSITIONS)?;
@@ -110,7 +119,8 @@ fn glare_grid(at: &Context, source: &str, g: &RawGlareGrid) -> Result<GlareGrid,
             .collect(),
     };
     let ugr_limit = ugr_limit(at, g.ugr_limit)?;
-    Ok(GlareGrid { name: g.name.clone(), origin, edge_u, edge_v, resolution, views, ugr_limit })
+    let grid = named_grid(at, source, g.grid.as_ref(), grids)?;
+    Ok(GlareGrid { name: g.name.clone(), origin, edge_u, edge_v, resolution, views, ugr_limit, grid })
 }
 
 /// `view_step_deg`: a whole fraction of the full turn, 360°/n for n from 1 to 360.

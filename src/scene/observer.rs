@@ -1,10 +1,10 @@
 //! `[[observer]]` tables: an eye at a point looking along a direction, where the solve
 //! reports the Unified Glare Rating of CIE 117:1995 (`docs/photometry.md`, "UGR"). What
-//! it reads is `crate::readout::ugr`.
+//! it reads is `crate::readout::ugr`. Also the `grid` key it shares with `[[glare_grid]]`.
 
 use super::check::{Context, line, number, unique_names};
 use super::error::SceneError;
-use super::grid::{Grid, RawGrid};
+use super::grid::Grid;
 use glam::DVec3;
 use serde::Deserialize;
 use serde_spanned::Spanned;
@@ -34,7 +34,8 @@ pub struct Observer {
     pub look: DVec3,
     /// The UGR the reading is checked against (EN 12464-1's `UGR_L`), if given.
     pub ugr_limit: Option<f64>,
-    /// The `[[grid]]` whose UGR it reads: a grid's UGR is the largest of its observers'.
+    /// The `[[grid]]` whose UGR it reads: a grid's UGR is the largest of its observers' and
+    /// its glare grids' (`crate::readout::grid_ugr`).
     pub grid: Option<String>,
 }
 
@@ -42,48 +43,42 @@ pub struct Observer {
 /// position index needs the vertical plane through the line of sight.
 const FROM_VERTICAL_DEG: f64 = 1.0;
 
-/// The observers, each naming an existing grid if any; every grid with a `ugr` target
-/// named by one at least (`raw_grids` for the line of that target).
+/// The observers, each naming an existing grid if any.
 pub(super) fn observers(
     path: &Path,
     source: &str,
     raw: &[RawObserver],
-    (grids, raw_grids): (&[Grid], &[RawGrid]),
+    grids: &[Grid],
 ) -> Result<Vec<Observer>, SceneError> {
     unique_names(path, "observer", raw.iter().map(|o| o.name.as_str()))?;
-    let observers = raw
-        .iter()
+    raw.iter()
         .enumerate()
         .map(|(index, o)| observer(&Context::item(path, "observer", &o.name, index), source, o, grids))
-        .collect::<Result<Vec<_>, _>>()?;
-    for (index, (grid, raw)) in grids.iter().zip(raw_grids).enumerate() {
-        let (Some(limit), false) = (&raw.target.ugr, observers.iter().any(|o| o.grid.as_ref() == Some(&grid.name)))
-        else {
-            continue;
-        };
-        let message = format!(
-            "{}`ugr` (UGR_L) needs an [[observer]] with `grid = \"{}\"`: a grid's UGR is the largest of the \
-             observers that name it",
-            line(source, limit),
-            grid.name
-        );
-        return Err(Context::item(path, "grid", &grid.name, index).error("target", message));
-    }
-    Ok(observers)
+        .collect()
 }
 
 fn observer(at: &Context, source: &str, o: &RawObserver, grids: &[Grid]) -> Result<Observer, SceneError> {
     let position = at.place("position", o.position)?;
     let look = line_of_sight(at, o.look)?;
     let ugr_limit = ugr_limit(at, o.ugr_limit)?;
-    let grid = match &o.grid {
+    let grid = named_grid(at, source, o.grid.as_ref(), grids)?;
+    Ok(Observer { name: o.name.clone(), position, look, ugr_limit, grid })
+}
+
+/// `grid`: the name of a `[[grid]]` of the case, whose UGR the table's readings count towards.
+pub(super) fn named_grid(
+    at: &Context,
+    source: &str,
+    grid: Option<&Spanned<String>>,
+    grids: &[Grid],
+) -> Result<Option<String>, SceneError> {
+    match grid {
         Some(g) if !grids.iter().any(|grid| &grid.name == g.get_ref()) => {
             let message = format!("{}names no [[grid]] of the case: \"{}\"", line(source, g), g.get_ref());
-            return Err(at.error("grid", message));
+            Err(at.error("grid", message))
         }
-        g => g.as_ref().map(|g| g.get_ref().clone()),
-    };
-    Ok(Observer { name: o.name.clone(), position, look, ugr_limit, grid })
+        g => Ok(g.map(|g| g.get_ref().clone())),
+    }
 }
 
 /// `look`: a unit line of sight at least [`FROM_VERTICAL_DEG`] from the vertical.

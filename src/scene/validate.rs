@@ -1,23 +1,24 @@
 //! Checks the raw tables of a case file and builds the runtime [`Scene`].
 //!
 //! Owns every rule of `docs/design.md` §7 that serde cannot express for the scene as a whole
-//! and its small tables (`[scene]`, `[discretization]`, `[solver]`, cameras); the
-//! large tables have their own files (`material.rs`, `surface.rs`, `grid.rs`,
+//! (among them, across tables: a `[[grid]]`'s `ugr` target needs an observer or a glare
+//! grid naming it) and its small tables (`[scene]`, `[discretization]`, `[solver]`,
+//! cameras); the large tables have their own files (`material.rs`, `surface.rs`, `grid.rs`,
 //! `luminaire.rs`, `probe.rs`, `observer.rs`, `glare_grid.rs`). Each failure is a [`SceneError`] naming the table
 //! (`[[surface]] "floor" (#3)`) and the key.
 
 use super::automatic::by_size;
-use super::check::{Context, REL_TOL, number, show, unique_names};
+use super::check::{Context, REL_TOL, line, number, show, unique_names};
 use super::description::{Camera, Scene, SolverSettings};
 use super::discretization_keys;
 use super::error::SceneError;
 use super::files::CaseFiles;
-use super::glare_grid::glare_grids;
-use super::grid::grids;
+use super::glare_grid::{GlareGrid, glare_grids};
+use super::grid::{Grid, RawGrid, grids};
 use super::light_scene::{Sources, lighting};
 use super::luminaire::luminaires;
 use super::material::materials;
-use super::observer::observers;
+use super::observer::{Observer, observers};
 use super::probe::probes;
 use super::schema::{RawCamera, RawScene, RawSceneInfo, RawSolver};
 use super::sky::{daylight, glaze};
@@ -41,8 +42,9 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
     let probes = probes(path, &raw.probe)?;
     let cameras = cameras(path, &raw.camera)?;
     let grids = grids(path, &source, &raw.grid, &surfaces)?;
-    let observers = observers(path, &source, &raw.observer, (&grids, &raw.grid))?;
-    let glare_grids = glare_grids(path, &source, &raw.glare_grid)?;
+    let observers = observers(path, &source, &raw.observer, &grids)?;
+    let glare_grids = glare_grids(path, &source, &raw.glare_grid, &grids)?;
+    ugr_targets_read(path, &source, (&grids, &raw.grid), (&observers, &glare_grids))?;
     let (mut luminaires, groups) = luminaires(path, &source, &raw.luminaire, &files)?;
     let (sky, openings, glass) = daylight(path, raw.sky.as_ref(), &raw.window, &placed)?;
     glaze(&mut luminaires, &glass);
@@ -164,4 +166,34 @@ fn camera(at: &Context, c: &RawCamera) -> Result<Camera, SceneError> {
             .ok_or_else(|| at.error("samples", format!("must be from 1 to 4096, got {n}")))?,
     };
     Ok(Camera { name: c.name.clone(), position, look_at, up, fov_deg, resolution: [w, h], samples })
+}
+
+/// Refuses a grid with a `ugr` target (`raw_grids` for its line) that no observer and no
+/// glare grid names: a grid's UGR is the largest of the observers and glare grids that
+/// name it.
+fn ugr_targets_read(
+    path: &Path,
+    source: &str,
+    (grids, raw_grids): (&[Grid], &[RawGrid]),
+    (observers, glare_grids): (&[Observer], &[GlareGrid]),
+) -> Result<(), SceneError> {
+    let named: Vec<&str> = observers
+        .iter()
+        .filter_map(|o| o.grid.as_deref())
+        .chain(glare_grids.iter().filter_map(|g| g.grid.as_deref()))
+        .collect();
+    let unread = grids.iter().zip(raw_grids).enumerate().find_map(|(index, (grid, raw))| {
+        let limit = raw.target.ugr.as_ref().filter(|_| !named.contains(&grid.name.as_str()))?;
+        Some((index, grid, limit))
+    });
+    let Some((index, grid, limit)) = unread else {
+        return Ok(());
+    };
+    let message = format!(
+        "{}`ugr` (UGR_L) needs an [[observer]] or a [[glare_grid]] with `grid = \"{}\"`: a grid's UGR is the \
+         largest of the observers and glare grids that name it",
+        line(source, limit),
+        grid.name
+    );
+    Err(Context::item(path, "grid", &grid.name, index).error("target", message))
 }

@@ -1,5 +1,5 @@
 //! `ugo report` (docs/report.md): the daylit office, made small and given a luminaire, a
-//! grid target, an observer and a light scene, solved; its case file removed; the page
+//! grid target, an observer, a glare grid feeding the grid's UGR and a light scene, solved; its case file removed; the page
 //! checked by `report_check.py` (a strict HTML parse, every table row as long as its
 //! header, every plan a PNG data: URI, no outside reference, the grid, luminaire,
 //! daylight, glare, glare-grid, light-scene and surface figures equal to the HDF5 file's as shown);
@@ -9,8 +9,9 @@
 use crate::support::{scratch, ugo};
 use std::path::Path;
 
-/// `cases/daylit-office.toml` with a downlight in a group, the work plane's targets, an
-/// observer with a limit, a glare grid and a light scene.
+/// `cases/daylit-office.toml` with a downlight in a group, the work plane's targets (its
+/// `UGR_L` read by the glare grid that names it), an observer with a limit, a glare grid
+/// and a light scene.
 fn case(dir: &Path) -> std::path::PathBuf {
     let office = std::fs::read_to_string("cases/daylit-office.toml").unwrap();
     let extra = r#"
@@ -36,12 +37,14 @@ resolution = [3, 2]
 look = [1, 0, 0]
 view_step_deg = 90
 ugr_limit = 19
+grid = "work_plane"
 
 [[light_scene]]
 name = "dimmed"
 groups = { room = 0.5 }
 "#;
-    let office = office.replace("resolution = [24, 16]", "resolution = [24, 16]\ntarget = { em = 500, u0 = 0.4 }");
+    let office =
+        office.replace("resolution = [24, 16]", "resolution = [24, 16]\ntarget = { em = 500, u0 = 0.4, ugr = 19 }");
     let path = dir.join("office.toml");
     std::fs::write(&path, office + extra).unwrap();
     path
@@ -69,6 +72,10 @@ fn the_report_of_a_daylit_office_parses_and_shows_the_files_figures() {
         .expect("/usr/bin/python3 runs (make deps installs python3-h5py)");
     let said = format!("{}{}", String::from_utf8_lossy(&python.stdout), String::from_utf8_lossy(&python.stderr));
     assert!(python.status.success(), "tests/io/report_check.py: {said}");
+    // the work plane's UGR is the glare grid's largest (report_check.py derives it again)
+    let file = hdf5::File::open(&out).unwrap();
+    let attr = |g: &str, n: &str| file.group(g).unwrap().attr(n).unwrap().read_scalar::<f64>().unwrap();
+    assert_eq!(attr("grids/work_plane", "UGR"), attr("glare_grids/seats", "UGR_max"));
     let tables = ["grids", "luminaires", "observers", "glare-grids", "glare-grid-1", "light-scenes", "daylight-grids"];
     for table in tables.into_iter().chain(["daylight-probes", "surfaces"]) {
         assert!(said.contains(table), "no table {table}: {said}");

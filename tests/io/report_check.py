@@ -8,7 +8,10 @@ order, every table row as long as its header, every image a data: URI whose base
 to a whole PNG, no reference outside the file. The numbers of the tables are read back and
 compared with the HDF5 file (h5py) as the page rounds them; the surfaces' mean illuminance
 is derived here again from /field/illuminance and /mesh, and each glare grid's largest UGR
-per position from /glare_grids/<name>/ugr. Prints "report_check: ok".
+per position from /glare_grids/<name>/ugr; each grid's UGR (its attribute `UGR`, shown in
+the grids' and light scenes' tables) is derived again as the largest of the observers and
+the glare grids that name it (/observers/grid, /glare_grids/<name> attribute `grid`), for
+the case and each light scene. Prints "report_check: ok".
 """
 
 import base64
@@ -227,6 +230,9 @@ def check_glare_grids(tables, h5):
             fail(f"glare grid {name}: the largest at {row[5]}, the file at ({u}, {v})")
         limit = g.attrs.get("ugr_limit")
         same(row[6], limit if limit is not None else np.nan, 0, f"glare grid {name} UGR_L")
+        feeds = text(g.attrs.get("grid", "—"))
+        if row[9] != feeds:
+            fail(f"glare grid {name}: counts towards the grid {row[9]}, the file says {feeds}")
         per_position = ugr.max(axis=2)
         if limit is not None:
             expected = "yes" if largest <= limit else "no"
@@ -240,6 +246,29 @@ def check_glare_grids(tables, h5):
         expected = [[ugr_shown(x) for x in per_position[b]] for b in range(nv)]
         if got != expected:
             fail(f"glare grid {name}: its positions' table differs from the file: {got} against {expected}")
+
+
+def text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def check_grid_ugr(h5, prefix=""):
+    """Each grid's UGR under `prefix` the largest of its observers' and glare grids' readings."""
+    if f"{prefix}grids" not in h5:
+        return
+    names = [text(n) for n in h5[f"{prefix}observers/grid"][()]] if f"{prefix}observers/grid" in h5 else []
+    observed = np.asarray(h5[f"{prefix}observers/ugr"]) if names else np.zeros(0)
+    glare = h5.get(f"{prefix}glare_grids", {})
+    for grid, g in h5[f"{prefix}grids"].items():
+        readings = [observed[i] for i, n in enumerate(names) if n == grid]
+        readings += [x for k in glare if text(glare[k].attrs.get("grid", "")) == grid for x in np.ravel(glare[k]["ugr"])]
+        ugr = g.attrs.get("UGR")
+        if not readings:
+            if ugr is not None:
+                fail(f"/{prefix}grids/{grid}: UGR {ugr}, but no observer or glare grid names it")
+            continue
+        if ugr is None or ugr != max(readings):
+            fail(f"/{prefix}grids/{grid}: UGR {ugr}, the largest of its observers and glare grids {max(readings)}")
 
 
 def check_light_scenes(table, h5):
@@ -282,6 +311,9 @@ def main():
                 check(page.tables[name], h5)
         if "glare-grids" in page.tables:
             check_glare_grids(page.tables, h5)
+        check_grid_ugr(h5)
+        for scene in h5.get("light_scenes", {}):
+            check_grid_ugr(h5, f"light_scenes/{scene}/")
         missing = [n for n in ("grids", "luminaires", "surfaces") if n not in page.tables]
         if missing:
             fail(f"no table {missing}")

@@ -7,6 +7,7 @@ mod cylindrical;
 mod error_bar;
 mod glare_grid;
 mod glossy;
+mod grid_ugr;
 mod meter;
 mod ugr;
 mod ugr_table;

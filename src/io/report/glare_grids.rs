@@ -1,9 +1,9 @@
 //! The report's glare grids (`docs/report.md`, `docs/photometry.md` "UGR on a grid of
 //! observers"): per `[[glare_grid]]` of the stored case (`/glare_grids/<name>`) its
-//! positions and views, eye height, the largest UGR and where against its `UGR_L`, and the
-//! positions above it; then for each the largest UGR over the views at every eye position,
-//! a table laid out as the positions (a row per step along `edge_v`, a column per step
-//! along `edge_u`).
+//! positions and views, eye height, the largest UGR and where against its `UGR_L`, the
+//! positions above it, and the `[[grid]]` whose UGR it counts towards (`grid`); then for
+//! each the largest UGR over the views at every eye position, a table laid out as the
+//! positions (a row per step along `edge_v`, a column per step along `edge_u`).
 
 use super::super::read::Result;
 use super::glare::ugr;
@@ -42,6 +42,7 @@ pub(super) fn glare_grids(h: &H5, stored: &StoredSolution) -> Result<Option<Stri
         "UGR_L",
         "within UGR_L",
         "positions above UGR_L",
+        "UGR of grid",
     ]
     .map(str::to_string);
     let body = table("glare-grids", &head, &rows) + &maps;
@@ -81,6 +82,7 @@ fn summary_row(g: &GlareGrid, values: &[f64], per_position: &[f64]) -> Vec<Strin
         optional(g.ugr_limit, 0),
         verdict(met),
         above,
+        g.grid.as_deref().map_or("—".to_string(), escape),
     ]
 }
 

@@ -1,6 +1,6 @@
 //! The grids of the report (`docs/report.md`): each `[[grid]]` of the stored scene against
 //! the targets of EN 12464-1 its case gives it (`Ēm`, `U0`, `UGR_L` against the largest UGR
-//! of the `[[observer]]`s that name it), from the statistics
+//! of the `[[observer]]`s and `[[glare_grid]]`s that name it), from the statistics
 //! `/grids/<name>` holds, and its plan drawn again from the stored readings by
 //! `io::grid_map` (the same picture as `ugo solve`'s `OUT-<grid>.png`).
 
@@ -27,7 +27,7 @@ pub(super) fn target_head() -> Vec<String> {
 
 /// The cells of `head` for the grid `grid` whose statistics are the attributes of `group`
 /// (`E_avg`, `E_min` and `U0` with their error bars where the group holds them; its UGR the
-/// largest of the observers that name it, "-" where none does).
+/// largest of the observers and glare grids that name it, "-" where none does).
 pub(super) fn figures(h: &H5, group: &str, grid: &Grid) -> Vec<String> {
     let [avg, min, max, u0] = h.attrs(group, STATS);
     let t = grid.target;
