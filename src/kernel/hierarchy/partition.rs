@@ -25,16 +25,16 @@ pub struct Part {
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum BadPart {
     /// Not two whole numbers `i/n`.
-    #[error("--part {0:?}: expected i/n, two whole numbers such as 0/2 (part i of n, i from 0)")]
+    #[error("{0:?}: expected i/n, two whole numbers such as 0/2 (part i of n, i from 0)")]
     Malformed(String),
     /// `n = 0`.
-    #[error("--part {0}/0: the number of parts must be at least 1")]
+    #[error("{0}/0: the number of parts must be at least 1")]
     NoParts(u32),
     /// `i ≥ n`.
-    #[error("--part {0}/{1}: the part index must be below the number of parts (0 to {max})", max = .1 - 1)]
+    #[error("{0}/{1}: the part index must be below the number of parts (0 to {max})", max = .1 - 1)]
     Beyond(u32, u32),
     /// `n` beyond [`MOST_PARTS`].
-    #[error("--part {0}/{1}: at most {MOST_PARTS} parts")]
+    #[error("{0}/{1}: at most {MOST_PARTS} parts")]
     TooMany(u32, u32),
 }
 
