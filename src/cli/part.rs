@@ -35,7 +35,7 @@ pub fn run(case: &Path, d: &Discretize, part: Part, output: Option<PathBuf>) -> 
 /// One line of counts of `p` (`cells` direction cells a value).
 fn summary(p: &PartLinks, cells: usize) -> String {
     format!(
-        "{} of {} roots, {} links, {} bytes ({} links and {} tree nodes), {} cut links from {} remote sources ({} bytes of ghost values per application), {} rays, {:.3} s",
+        "{} of {} roots, {} links, {} bytes ({} links and {} tree nodes), {} cut links from {} remote sources ({} bytes of ghost values per application), {} links into clusters spanning other parts, {} rays, {:.3} s",
         p.own_roots.len(),
         p.roots,
         p.links.len(),
@@ -45,6 +45,7 @@ fn summary(p: &PartLinks, cells: usize) -> String {
         p.cut,
         p.remote_sources,
         p.remote_sources * cells * 8,
+        p.spanning,
         p.rays,
         p.seconds
     )
@@ -68,13 +69,14 @@ pub fn join_files(files: &[PathBuf]) -> Result<()> {
     for p in &parts {
         let l = p.links;
         println!(
-            "{:>5} {:>8} {:>12} {:>14} {:>12} {:>15} {:>10.3}",
+            "{:>5} {:>8} {:>12} {:>14} {:>12} {:>15} {:>10} {:>10.3}",
             l.part.to_string(),
             l.own_roots.len(),
             l.links.len(),
             l.bytes,
             l.cut,
             l.remote_sources,
+            l.spanning,
             l.seconds
         );
         links += l.links.len();

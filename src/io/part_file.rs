@@ -2,7 +2,7 @@
 //! owns (`model::link_part`), each end by its address, with the fingerprint of the case and
 //! the hash of the partition, so that parts of other cases or partitions are refused when
 //! joined. `/part` holds the attributes `part`, `parts`, `roots`, `partition` (hex),
-//! `format`, `cut_links`, `remote_sources`, `nodes`, `bytes`, `rays`, `seconds`; the
+//! `format`, `cut_links`, `remote_sources`, `spanning_links`, `nodes`, `bytes`, `rays`, `seconds`; the
 //! dataset `roots` (the part's roots, u32); `links/{receiver,source}/{top (u32), depth
 //! (u8), path (u64: the child positions, 2 bits each, the first step in the lowest bits)}`,
 //! `links/factor` (f64), `links/visible` (f32), `links/pieces/{indptr (u64), d, m (u16),
@@ -47,6 +47,7 @@ fn write_to(path: &Path, fingerprint: &Fingerprint, p: &PartLinks) -> hdf5::Resu
     attr("format", u64::from(PART_FORMAT))?;
     attr("cut_links", p.cut as u64)?;
     attr("remote_sources", p.remote_sources as u64)?;
+    attr("spanning_links", p.spanning as u64)?;
     attr("nodes", p.nodes as u64)?;
     attr("bytes", p.bytes as u64)?;
     attr("rays", p.rays as u64)?;
@@ -111,6 +112,7 @@ fn read_from(file: &File) -> Result<StoredPart, Why> {
         links,
         cut: attr("cut_links")? as usize,
         remote_sources: attr("remote_sources")? as usize,
+        spanning: attr("spanning_links")? as usize,
         nodes: attr("nodes")? as usize,
         bytes: attr("bytes")? as usize,
         rays: attr("rays")? as usize,

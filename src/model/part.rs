@@ -51,6 +51,9 @@ pub struct PartLinks {
     pub cut: usize,
     /// The distinct sources of the cut links.
     pub remote_sources: usize,
+    /// Links whose receiver (a cluster) spans other parts too: the light it gathers is
+    /// pushed to leaves of other parts at every application.
+    pub spanning: usize,
     /// The nodes this part's tree grew to (its own elements and the sources it split).
     pub nodes: usize,
     /// Bytes the links take in ugo (32 a link and the cell pieces), and the tree.
@@ -89,6 +92,7 @@ fn collect(h: &Hierarchy, partition: &Partition, roots: usize, seconds: f64) -> 
     let remote = |id: u32| partition.mask(tree, id) != 1 << part.index;
     let cut: Vec<u32> = own.iter().map(|l| l.source).filter(|&s| remote(s)).collect();
     let remote_sources = cut.iter().collect::<HashSet<_>>().len();
+    let spanning = own.iter().filter(|l| remote(l.receiver)).count();
     let pieces: usize = own.iter().map(|l| l.pieces.len()).sum();
     let bytes = own.len() * size_of::<Link>() + pieces * size_of::<Piece>() + tree.len() * size_of::<Node>();
     PartLinks {
@@ -99,6 +103,7 @@ fn collect(h: &Hierarchy, partition: &Partition, roots: usize, seconds: f64) -> 
         links: own.iter().map(|l| by_address(tree, l)).collect(),
         cut: cut.len(),
         remote_sources,
+        spanning,
         nodes: tree.len(),
         bytes,
         rays: h.work().rays,
