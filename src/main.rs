@@ -46,6 +46,18 @@ enum Command {
         basis: cli::basis::BasisOptions,
         #[command(flatten)]
         kernel: cli::kernel::KernelOptions,
+        /// Link only the hierarchy's receivers of part I of N (I from 0) and write them to
+        /// their own file (default `<case>-part-I-of-N.h5`), without solving: the initial
+        /// linking only (docs/petsc.md, "Parts").
+        #[arg(long, value_name = "I/N")]
+        part: Option<ugo::kernel::hierarchy::Part>,
+    },
+    /// Join part files (`solve --part I/N`): refused unless every part of one partition of
+    /// one case; prints each part's links, bytes and cut links.
+    Parts {
+        /// The part files, one per part.
+        #[arg(required = true)]
+        files: Vec<PathBuf>,
     },
     /// Norms of K, its spectral radius, cond(I − K) and the predicted Neumann iterations.
     Norms {
@@ -301,7 +313,16 @@ fn main() -> ExitCode {
 
 fn run(command: Command) -> anyhow::Result<()> {
     match command {
-        Command::Solve { case, output, discretize, stopping, method, orders, norms, basis, kernel } => {
+        Command::Solve { case, output, discretize, part: Some(part), method, orders, norms, kernel, .. } => {
+            if method.is_some() || orders.is_some() || norms || kernel.given() {
+                anyhow::bail!(
+                    "--part links one part's receivers and does not solve: --method, --orders, --norms, --save-kernel and --kernel-file do not apply"
+                );
+            }
+            cli::part::run(&case, &discretize, part, output)
+        }
+        Command::Parts { files } => cli::part::join_files(&files),
+        Command::Solve { case, output, discretize, stopping, method, orders, norms, basis, kernel, part: None } => {
             let methods = method.into_iter().collect();
             let run = study::Job { methods, orders, norms, basis: basis.choice()?, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, ..Job::new(run, stopping, "") })

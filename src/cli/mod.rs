@@ -12,6 +12,7 @@ pub mod info;
 pub mod kernel;
 pub mod light_scenes;
 pub mod options;
+pub mod part;
 pub mod probes;
 pub mod readout;
 pub mod render;

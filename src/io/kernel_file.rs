@@ -82,14 +82,19 @@ pub(super) fn write_kernel(g: &hdf5::Group, model: &Model, fingerprint: &Fingerp
     direct.new_attr::<u64>().create("rays")?.write_scalar(&(model.direct.rays as u64))?;
     dataset(g, "emission", &Array1::from(model.mesh.emission.clone()))?;
     dataset(g, "L0", &Array1::from(model.l0.clone()))?;
-    let f = g.create_group("fingerprint")?;
-    for s in &fingerprint.stamps {
-        text_attr(&f, s.part.name(), &format!("{:016x}", s.hash))?;
-        text_attr(&f, &format!("{}_summary", s.part.name()), &s.summary)?;
-    }
+    write_fingerprint(&g.create_group("fingerprint")?, fingerprint)?;
     g.new_attr::<u32>().create("format")?.write_scalar(&KERNEL_FORMAT)?;
     text_attr(g, "directions", kernel.directions.name())?;
     text_attr(g, "precision", kernel.g.precision().name())
+}
+
+/// Every part of `fingerprint` as two text attributes of `f`: the hash in hex and the summary.
+pub(super) fn write_fingerprint(f: &hdf5::Group, fingerprint: &Fingerprint) -> hdf5::Result<()> {
+    for s in &fingerprint.stamps {
+        text_attr(f, s.part.name(), &format!("{:016x}", s.hash))?;
+        text_attr(f, &format!("{}_summary", s.part.name()), &s.summary)?;
+    }
+    Ok(())
 }
 
 /// `data`, `indices` and `indptr` of `m` (indices as int32 when they fit) and its `shape`.
@@ -225,7 +230,7 @@ fn finite(mut values: impl Iterator<Item = f64>) -> Result<(), Why> {
 }
 
 /// The stamps of `/kernel/fingerprint` (parts this ugo does not know are skipped).
-fn fingerprint(g: &hdf5::Group) -> Result<Fingerprint, Why> {
+pub(super) fn fingerprint(g: &hdf5::Group) -> Result<Fingerprint, Why> {
     let mut stamps = Vec::new();
     for part in Part::ALL {
         let Ok(hex) = text(g, part.name()) else { continue };

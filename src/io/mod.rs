@@ -25,6 +25,7 @@ mod light_scene_group;
 mod lock;
 mod no_room;
 mod observer_group;
+mod part_file;
 mod plan;
 mod plan_marks;
 mod plot;
@@ -60,6 +61,7 @@ pub use light_scene_group::{
 };
 pub use lock::OutputLock;
 pub use no_room::survive_size_limit;
+pub use part_file::{StoredPart, read_part, write_part};
 pub use plan::{Axis, Frame, Layout};
 pub use plan_marks::Overlay;
 pub use plot::{convergence_plot, register_font};

@@ -245,7 +245,7 @@ fn discretization(d: &Discretization, h: &mut Fnv) -> String {
 }
 
 /// 64-bit FNV-1a over what is written into it.
-struct Fnv(u64);
+pub(super) struct Fnv(pub u64);
 
 impl Default for Fnv {
     fn default() -> Fnv {

@@ -99,34 +99,20 @@ pub fn build(
     progress: &dyn Progress,
     keep: bool,
 ) -> Result<Model, ModelError> {
-    let t = Instant::now();
     let d = &scene.discretization;
-    let mut roots = Mesh::build(&scene.surfaces, parameters.root_size);
     let directions = d.directions.set();
     let k = directions.len();
     let blocks: Vec<Block> = scene.materials.iter().map(|m| m.model.block(&directions)).collect();
     check_blocks(scene, &blocks, k)?;
     let sources: Vec<Source> = scene.luminaires.iter().map(Source::of).collect();
     let windows: Vec<(&Opening, &Sky)> = sources.iter().filter_map(window_of).collect();
-    let mesh_seconds = t.elapsed().as_secs_f64();
-    let t = Instant::now();
-    let root_visibility = Visibility::build_for(&scene.surfaces, &roots);
-    measure_exposure(&mut roots, &root_visibility, progress);
-    crate::interrupt::check(|| "the roots' exposed areas".into())?;
-    let root_light = seed_light(&sources, &roots, &root_visibility, &directions, progress);
-    crate::interrupt::check(|| "the direct light on the roots".into())?;
+    let Seed { roots, visibility: root_visibility, light: root_light, l0: root_l0, mesh_seconds, seconds } =
+        seed(scene, parameters, &sources, &blocks, progress)?;
+    let root_light_seconds = seconds;
     let readers = readers(scene, &sources, &root_visibility, &directions);
-    let root_l0 = source_term(&blocks, &roots, &root_light, k);
-    check_source(scene, &roots, &root_light, &root_l0, k)?;
-    let root_light_seconds = t.elapsed().as_secs_f64();
     let mut light_seconds = 0.0;
     let t = Instant::now();
-    let hierarchy_options = Options {
-        tolerance: parameters.link_tolerance,
-        patch_size: d.patch_size,
-        memory_limit: d.memory_limit,
-        ..Options::default()
-    };
+    let hierarchy_options = options(scene, parameters);
     // The passes grow in cost as the links multiply: counted, with no time left forecast;
     // the linking tells its rounds' pairs settled, a batch at a time, between the solves.
     progress.begin("refinement", 0);
@@ -210,6 +196,53 @@ pub fn build(
         stats,
         hierarchy: Some(record),
     })
+}
+
+/// The roots of a hierarchy, their ray caster, the seed of their direct light and their
+/// source term, and the seconds meshing and lighting them took.
+pub(super) struct Seed {
+    pub roots: Mesh,
+    pub visibility: Visibility,
+    pub light: DirectLight,
+    pub l0: Vec<f64>,
+    pub mesh_seconds: f64,
+    pub seconds: f64,
+}
+
+/// The roots of `scene` at `parameters.root_size` with their exposed areas, and their
+/// seed light and source term under `sources` with the materials' `blocks`.
+pub(super) fn seed(
+    scene: &Scene,
+    parameters: Hierarchical,
+    sources: &[Source],
+    blocks: &[Block],
+    progress: &dyn Progress,
+) -> Result<Seed, ModelError> {
+    let t = Instant::now();
+    let directions = scene.discretization.directions.set();
+    let mut roots = Mesh::build(&scene.surfaces, parameters.root_size);
+    let mesh_seconds = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let visibility = Visibility::build_for(&scene.surfaces, &roots);
+    measure_exposure(&mut roots, &visibility, progress);
+    crate::interrupt::check(|| "the roots' exposed areas".into())?;
+    let light = seed_light(sources, &roots, &visibility, &directions, progress);
+    crate::interrupt::check(|| "the direct light on the roots".into())?;
+    let l0 = source_term(blocks, &roots, &light, directions.len());
+    check_source(scene, &roots, &light, &l0, directions.len())?;
+    Ok(Seed { roots, visibility, light, l0, mesh_seconds, seconds: t.elapsed().as_secs_f64() })
+}
+
+/// The hierarchy's options from the case: its link tolerance, finest patches and memory
+/// limit, the rest default.
+pub(super) fn options(scene: &Scene, parameters: Hierarchical) -> Options {
+    let d = &scene.discretization;
+    Options {
+        tolerance: parameters.link_tolerance,
+        patch_size: d.patch_size,
+        memory_limit: d.memory_limit,
+        ..Options::default()
+    }
 }
 
 /// The luminaires' light on the roots, only to seed the oracle's first guess (each root's

@@ -13,6 +13,8 @@
 mod fingerprint;
 mod group;
 mod hierarchical;
+mod part;
+mod part_join;
 mod range;
 mod readers;
 mod reuse;
@@ -21,6 +23,8 @@ mod system;
 mod uniform;
 
 pub use fingerprint::{Change, Fingerprint, KERNEL_FORMAT, Part, Stamp};
+pub use part::{PartLink, PartLinks, link_part};
+pub use part_join::{NamedPart, Unjoinable, join};
 pub use range::{OutOfRange, check_transport, locate, place};
 pub use reuse::{NotThisMesh, StoredHierarchy, StoredParts};
 pub use source::SourceTerm;

@@ -7,6 +7,7 @@ mod hierarchical;
 mod light_scenes;
 mod messages;
 mod outputs;
+mod parts;
 mod readout;
 
 use crate::support::{scratch, ugo};

@@ -14,6 +14,7 @@ mod grid_map;
 mod hierarchy_file;
 mod isolines;
 mod kernel_file;
+mod part_file;
 mod plan_marks;
 mod report;
 mod stages;

@@ -13,6 +13,7 @@ use super::memo::Memo;
 use super::node::NONE;
 use super::options::Options;
 use super::oracle::Oracle;
+use super::partition::Partition;
 use super::refine::Stopped;
 use super::tree::Tree;
 use crate::directions::DirectionSet;
@@ -38,6 +39,8 @@ pub struct Hierarchy {
     pub(super) memo: Memo,
     /// Work spent so far.
     pub(super) work: Work,
+    /// The receivers linked, when only one part's (`options.part`).
+    pub(super) partition: Option<Partition>,
 }
 
 /// Reflectance assumed for the ambient estimate at most (the estimate grows as 1/(1 − ρ)).
@@ -79,7 +82,9 @@ impl Hierarchy {
             oracle,
             memo: Memo::default(),
             work: Work::default(),
+            partition: None,
         };
+        h.partition = options.part.map(|part| Partition::new(&h.tree, part));
         let roots: Vec<u32> = (0..roots.len() as u32).collect();
         let mut brightness = h.brightness(&roots, &guess);
         let top = h.tree.top();
@@ -122,6 +127,11 @@ impl Hierarchy {
     /// The ray caster of the roots (the scene's surfaces as meshed for the roots).
     pub fn visibility(&self) -> &Visibility {
         &self.visibility
+    }
+
+    /// The partition of the receivers, when only one part's were linked.
+    pub fn partition(&self) -> Option<&Partition> {
+        self.partition.as_ref()
     }
 
     /// The error allowed per link in the last pass, cd/m².

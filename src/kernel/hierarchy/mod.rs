@@ -12,6 +12,7 @@
 //! iterated with solves, are `crate::kernel::{Kernel, refine_with_solves}`: this module
 //! knows neither the material blocks' product nor the uniform kernel.
 
+mod address;
 mod balance;
 mod balanced;
 mod brightness;
@@ -29,6 +30,7 @@ mod node;
 mod operator;
 mod options;
 mod oracle;
+mod partition;
 mod parts;
 mod pass;
 mod pieces;
@@ -40,6 +42,7 @@ mod structure;
 mod transpose;
 mod tree;
 
+pub use address::Address;
 pub use census::Census;
 pub use factors::Factors;
 pub use history::{Pass, Work};
@@ -49,6 +52,7 @@ pub use node::{Kind, NONE, Node};
 pub use operator::Operator;
 pub use options::{DEFAULT_TOLERANCE, Options};
 pub use oracle::sample_points;
+pub use partition::{BadPart, MOST_PARTS, Part, Partition};
 pub use parts::{Entry, Parts};
 pub use pieces::{Piece, Pieces};
 pub use push::SeenCache;

@@ -1,8 +1,9 @@
 //! How the hierarchical kernel refines (`docs/design.md` §3b, "Oracle"): the link tolerance
-//! and its floor for dim receivers, the readings' weight, the finest patches, the element factors' quadrature,
-//! the most passes, whether the operator is balanced and the memory it may take; one
-//! default each.
+//! and its floor for dim receivers, the readings' weight, the finest patches, the element
+//! factors' quadrature, the most passes, whether the operator is balanced, the memory it
+//! may take and the part of the receivers it links; one default each.
 
+use super::partition::Part;
 use crate::transfer::form_factor::Quadrature;
 
 /// How the hierarchy refines.
@@ -45,6 +46,9 @@ pub struct Options {
     /// Bytes the links, the candidates and the tree may take: refinement stops with a
     /// refusal when a round would start beyond it. Default half the machine's memory.
     pub memory_limit: u64,
+    /// Link only the receivers of one part (`partition.rs`): the pairs whose receiver lies
+    /// wholly in other parts are dropped unevaluated. Default `None`: every receiver.
+    pub part: Option<Part>,
 }
 
 impl Default for Options {
@@ -58,6 +62,7 @@ impl Default for Options {
             passes: 4,
             balance: true,
             memory_limit: crate::kernel::memory::default_limit(),
+            part: None,
         }
     }
 }

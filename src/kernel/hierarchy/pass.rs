@@ -64,6 +64,7 @@ impl Hierarchy {
             directions: &self.directions,
             memory_limit: self.options.memory_limit,
             progress,
+            partition: self.partition.as_ref(),
         };
         self.work.rays += refine(&mut self.tree, brightness, &settings, candidates, &mut self.links)?;
         Ok(())

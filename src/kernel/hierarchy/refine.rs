@@ -11,6 +11,7 @@ use super::brightness::Brightness;
 use super::link::{Link, cluster_factor, element_factor};
 use super::node::Node;
 use super::oracle::{Oracle, cluster_bound, variation};
+use super::partition::Partition;
 use super::sight::{Sight, sight, stand_in_sight, stand_ins};
 use super::tree::{Exposure, Tree};
 use crate::directions::DirectionSet;
@@ -41,6 +42,9 @@ pub struct Settings<'a> {
     pub memory_limit: u64,
     /// Hears of the pairs settled, a batch at a time.
     pub progress: &'a dyn Progress,
+    /// When only one part's receivers are linked: a pair whose receiver lies wholly in
+    /// other parts is dropped before it is evaluated, with every pair it would refine into.
+    pub partition: Option<&'a Partition>,
 }
 
 /// Candidate pairs evaluated between two progress reports.
@@ -76,6 +80,9 @@ pub fn refine(
     let binning = (settings.directions.len() > 1).then(|| Binning::new(settings.directions));
     let (mut rays, mut round, mut settled) = (0, 0, 0);
     while !candidates.is_empty() {
+        if let Some(partition) = settings.partition {
+            candidates.retain(|&(p, _)| partition.overlaps(tree, p));
+        }
         let (held, pending) = (links.len(), candidates.len());
         let stop = || {
             crate::interrupt::check(|| {
