@@ -2,14 +2,11 @@
 //! of the solve: for a reading `R = vᵀ x` of the field `x = b + K x`, `R = Wᵀ b` with
 //! `W = v + Kᵀ W`, whatever `b`; with and without direction cells, on a refined hierarchy.
 
+use super::transpose::{dot, wavy};
 use super::{box_with_block, hierarchy, options, solved, solver};
 use ugo::directions::DirectionSet;
 use ugo::kernel::importance;
 use ugo::solve::Method;
-
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(a, b)| a * b).sum()
-}
 
 #[test]
 fn importance_is_the_adjoint_of_the_solve() {
@@ -20,7 +17,7 @@ fn importance_is_the_adjoint_of_the_solve() {
         let n = kernel.g.rows();
         // a reading that sees a few unknowns, and a source everywhere but uneven
         let v: Vec<f64> = (0..n).map(|i| if i % 17 == 3 { 1.0 + (i % 5) as f64 } else { 0.0 }).collect();
-        let b: Vec<f64> = (0..n).map(|i| 1.0 + 0.8 * (0.31 * i as f64).sin()).collect();
+        let b = wavy(n, 0.4);
         let x = solver(Method::Gmres { restart: 30 })(&kernel, &b, 1.0).expect("the solve converges");
         let w = importance(&kernel, &v);
         let (forward, adjoint) = (dot(&v, &x), dot(&w, &b));

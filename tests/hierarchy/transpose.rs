@@ -6,11 +6,13 @@ use super::{box_with_block, hierarchy, options, solved};
 use ugo::directions::DirectionSet;
 use ugo::solve::Method;
 
-fn wavy(n: usize, phase: f64) -> Vec<f64> {
+/// `n` values between 0.3 and 1.7 along a sine of `phase`.
+pub(super) fn wavy(n: usize, phase: f64) -> Vec<f64> {
     (0..n).map(|i| 1.0 + 0.7 * (i as f64 * 0.37 + phase).sin()).collect()
 }
 
-fn dot(a: &[f64], b: &[f64]) -> f64 {
+/// `aᵀb`.
+pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(a, b)| a * b).sum()
 }
 
