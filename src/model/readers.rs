@@ -50,8 +50,11 @@ pub fn direct_importance(
     x: &[f64],
 ) -> Vec<f64> {
     let lift = standoff(leaves);
+    // a few readers a task: each task folds into its own vector of every unknown
+    let per_task = readers.len().div_ceil(4 * rayon::current_num_threads()).max(1);
     readers
         .par_iter()
+        .with_min_len(per_task)
         .fold(
             || vec![0.0_f64; x.len()],
             |mut v, reader| {
