@@ -15,6 +15,12 @@ probes with `ugo trace` in about the case's own solve time, compared like a sett
     tools/accuracy/bench.py cornell-box open-box office            # all three steps
     tools/accuracy/bench.py --step solve office                       # the solves only
     tools/accuracy/bench.py --step trace cornell-box                  # ugo trace at equal time
+    tools/accuracy/bench.py --tuning open-box                         # a second probe set to tune on
+
+`--tuning` places a second, smaller set (`--count 10 --seed 2` unless given), drops every
+probe within TUNING_APART of a probe of the committed set, and writes its references to
+tests/data/accuracy/tuning/CASE.csv and its files to out/accuracy/tuning/: a parameter is
+chosen on that set and reported on the committed one (docs/accuracy.md).
 
 Only the Python standard library: the ugo binary does the work.
 """
@@ -62,6 +68,10 @@ SETTINGS = {
 }
 DEFAULT_SETTINGS = [("case", [])]
 
+# A tuning set's probes stand at least this far from the committed set's, m (the corner
+# classes repeat points, so the two sets would otherwise share some).
+TUNING_APART = 0.005
+
 # The tables a benchmark case drops: its own probes (replaced), and what costs time
 # without reading a probe.
 DROPPED = {"probe", "camera", "grid", "light_scene"}
@@ -102,16 +112,33 @@ def bench_case(case, probes):
     return "\n".join(kept) + "\n\n" + probes
 
 
-def place(name, count, seed):
-    """`ugo probes`, then the benchmark case; returns (its path, the probes' command)."""
+def place(name, count, seed, apart_from=None):
+    """`ugo probes`, then the benchmark case; returns (its path, the probes' command).
+    With `apart_from` (a reference file), the probes within TUNING_APART of one of its
+    probes are left out."""
     case = ROOT / "cases" / f"{name}.toml"
     probes = OUT / f"{name}-probes.toml"
     command = [UGO, "probes", case, "-o", probes, "--count", count, "--seed", seed]
     out, _, _ = run(command, OUT / f"{name}-probes.log")
     print(out, end="")
+    text = probes.read_text()
+    if apart_from is not None:
+        text = apart(text, apart_from)
     bench = OUT / f"{name}-bench.toml"
-    bench.write_text(bench_case(case, probes.read_text()))
+    bench.write_text(bench_case(case, text))
     return bench, command
+
+
+def apart(probes, reference):
+    """The `[[probe]]` tables of `probes` (a file's text) farther than TUNING_APART from
+    every probe of `reference` (a references file)."""
+    with open(reference) as f:
+        taken = [tuple(float(r[k]) for k in "xyz") for r in csv.DictReader(l for l in f if not l.startswith("#"))]
+    tables = probe_tables_of(probes)
+    kept = [t["text"] for t in tables.values()
+            if min(math.dist(tuple(map(float, t["position"])), p) for p in taken) > TUNING_APART]
+    print(f"  {len(kept)} of {len(tables)} probes farther than {TUNING_APART} m from those of {os.path.relpath(reference, ROOT)}")
+    return "".join(kept)
 
 
 def reading_lines(text):
@@ -154,6 +181,8 @@ def write_reference(name, placed, commands, readings, tables):
     with open(DATA / f"{name}.csv", "w", newline="") as f:
         f.write(f"# Hard-probe references of cases/{name}.toml (issue 34, docs/accuracy.md).\n")
         f.write(f"# probes: {shown(placed)}\n")
+        if DATA.name == "tuning":
+            f.write(f"# then every probe within {TUNING_APART} m of one of tests/data/accuracy/{name}.csv left out\n")
         f.write(f"# case: tools/accuracy/bench.py: cases/{name}.toml without its "
                 f"{', '.join(sorted(DROPPED))} tables, with the probes (out/accuracy/{name}-bench-PATHS.toml)\n")
         f.writelines(f"# {c}\n" for c in commands)
@@ -170,9 +199,14 @@ def write_reference(name, placed, commands, readings, tables):
 def probe_tables(bench):
     """name → the `[[probe]]` table of a benchmark case as `ugo probes` writes it (its text,
     position and normal), in the file's order."""
+    return probe_tables_of(bench.read_text())
+
+
+def probe_tables_of(text):
+    """`probe_tables` of a file's text."""
     pattern = r'\[\[probe\]\]\nname = "([^"]+)"\nposition = \[([^\]]+)\]\nnormal = \[([^\]]+)\]\n'
     return {m[1]: {"text": "\n" + m[0], "position": m[2].split(", "), "normal": m[3].split(", ")}
-            for m in re.finditer(pattern, bench.read_text())}
+            for m in re.finditer(pattern, text)}
 
 
 def read_reference(name):
@@ -239,22 +273,30 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("cases", nargs="+", help="names of cases/NAME.toml")
     parser.add_argument("--step", choices=["all", "reference", "solve", "compare", "trace"], default="all")
-    parser.add_argument("--count", type=int, default=20, help="probes per class")
-    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--count", type=int, help="probes per class (20; 10 with --tuning)")
+    parser.add_argument("--seed", type=int, help="the probes' seed (1; 2 with --tuning)")
+    parser.add_argument("--tuning", action="store_true",
+                        help="a second probe set, apart from the committed one, to choose parameters on")
     args = parser.parse_args()
+    global OUT, DATA
+    committed = DATA
+    if args.tuning:
+        OUT, DATA = OUT / "tuning", DATA / "tuning"
+    count = args.count or (10 if args.tuning else 20)
+    seed = args.seed or (2 if args.tuning else 1)
     OUT.mkdir(parents=True, exist_ok=True)
     for name in args.cases:
         print(f"{name}:")
-        bench, placed = place(name, args.count, args.seed)
+        bench, placed = place(name, count, seed, committed / f"{name}.csv" if args.tuning else None)
         if args.step in ("all", "reference"):
-            reference(name, bench, placed, args.seed)
+            reference(name, bench, placed, seed)
         for setting, flags in SETTINGS.get(name, DEFAULT_SETTINGS):
             if args.step in ("all", "solve"):
                 solve(name, bench, setting, flags)
             if args.step in ("all", "solve", "compare"):
                 compare(name, setting)
         if args.step in ("all", "trace"):
-            trace_equal(name, bench, args.seed)
+            trace_equal(name, bench, seed)
 
 
 if __name__ == "__main__":
