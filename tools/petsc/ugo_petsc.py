@@ -31,6 +31,8 @@ import json
 import sys
 import time
 
+import numpy as np
+
 import petsc4py
 import slepc4py
 
@@ -50,6 +52,8 @@ def arguments(argv):
     p.add_argument("--mode", type=int, metavar="J", help="also write eigenvector J (1 = the dominant) as the field of a solution file, for ugo render")
     p.add_argument("--mode-output", metavar="FILE", help="that file (default: OUTPUT without .h5, then -mode-J.h5)")
     p.add_argument("--singular", action="store_true", help="the largest and smallest singular values of I - K")
+    p.add_argument("--parts", metavar="LIST", help="instead of --methods, FGMRES preconditioned by block Jacobi by part, for each comma-separated number of parts (a hierarchical file; each a multiple of the ranks); the first is written to OUTPUT, each other N to OUTPUT-parts-N.h5")
+    p.add_argument("--inner-tolerance", type=float, metavar="T", help="the relative residual of each block's inner GMRES (default: the square root of --tolerance)")
     p.add_argument("--report", help="write the figures as JSON to this file")
     return p.parse_known_args(argv)
 
@@ -76,16 +80,21 @@ def main():
         raise SystemExit(f"ugo_petsc: --mode {args.mode} needs --eigenvalues N with N ≥ {args.mode}")
     tolerance, max_iterations = file_settings(args)
     start = time.perf_counter()
-    if args.export:
+    if args.parts:
+        kernel, runs, crossings = by_parts(args, tolerance, max_iterations, comm, say)
+    elif args.export:
         kernel = kernel_read.from_export(args.export, cells(args.solution), comm)
     elif hierarchy.is_hierarchical(args.solution):
         kernel = hierarchy.from_solution(args.solution, comm)
     else:
         kernel = kernel_read.from_solution(args.solution, comm)
     read_seconds = time.perf_counter() - start
+    if args.parts:
+        methods, read_seconds = [], float("nan")
     n = kernel.K.getSize()[0]
     package = args.direct or ("mumps" if PETSc.Sys.hasExternalPackage("mumps") else "superlu_dist")
-    say(f"ugo_petsc: {args.solution}: {n} unknowns, {stored(kernel)}, {comm.getSize()} ranks; read in {read_seconds:.3f} s")
+    if not args.parts:
+        say(f"ugo_petsc: {args.solution}: {n} unknowns, {stored(kernel)}, {comm.getSize()} ranks; read in {read_seconds:.3f} s")
     if kernel.factors is not None and any(solvers.parse(m)[0] == "direct" for m in methods):
         limit = args.memory_limit * 2**30 if args.memory_limit else hierarchy.memory_limit()
         bound = hierarchy.check_expansion(kernel, args.solution, limit)
@@ -101,7 +110,7 @@ def main():
             assembled = system.assembled(kernel)
         return assembled
 
-    runs = []
+    runs = runs if args.parts else []
     for m in methods:
         run = solvers.solve(m, operator(solvers.parse(m)[0]), kernel.L0, tolerance, max_iterations, package)
         runs.append(run)
@@ -132,8 +141,64 @@ def main():
             solution_file.write_mode(output, mode_output, vectors[args.mode - 1], eig.values[args.mode - 1], args.mode, kernel.cells)
             say(f"  wrote {mode_output} (eigenvector {args.mode} as the field)")
         if args.report:
-            report(args, n, comm.getSize(), read_seconds, runs, eig, sing, package)
+            report(args, n, comm.getSize(), read_seconds, runs, eig, sing, package, crossings if args.parts else None)
+    if args.parts:
+        write_by_parts(args.solution, output, runs[1:], kernel.cells, comm, say)
     comm.barrier()
+
+
+def write_by_parts(solution, output, runs, cells, comm, say):
+    """Each of `runs` (block Jacobi by another number of parts than the first) as its own
+    solution file, `OUTPUT-parts-N.h5`, without the illuminance."""
+    import solution_file
+    from petsc4py import PETSc
+
+    for run in runs:
+        x = solution_file.gather(run.x)
+        if comm.getRank() == 0:
+            path = f"{output.removesuffix('.h5')}-parts-{run.method.split(':')[1]}.h5"
+            backend = f"PETSc {'.'.join(map(str, PETSc.Sys.getVersion()))} over {comm.getSize()} MPI ranks: {run.solver}"
+            solution_file.write(solution, path, run, x, cells, None, [run], backend=backend)
+            say(f"  wrote {path} ({run.method})")
+
+
+def by_parts(args, tolerance, max_iterations, comm, say):
+    """FGMRES with block Jacobi by part for each number of parts of `--parts`: the first's
+    kernel (its leaves laid out by its parts), the runs and, per run, the inner iterations,
+    the seconds spent reading and the light crossing parts."""
+    import block_jacobi
+    import hierarchy
+    import part_blocks
+    import parts
+    import system
+    from crossing import crossing
+
+    if not hierarchy.is_hierarchical(args.solution):
+        raise SystemExit(f"ugo_petsc: {args.solution}: --parts needs a hierarchical kernel (ugo solve CASE --kernel hierarchical --save-kernel)")
+    counts = [int(c) for c in args.parts.split(",") if c]
+    inner = args.inner_tolerance or tolerance**0.5
+    first, runs, crossings = None, [], []
+    for count in counts:
+        mine = parts.parts_of_rank(count, comm)
+        start = time.perf_counter()
+        bounds = parts.bounds(parts.leaf_parts(args.solution, count), count)
+        leaves = (int(bounds[mine.start]), int(bounds[mine.stop]))
+        kernel = hierarchy.from_solution(args.solution, comm, leaves)
+        blocks = part_blocks.part_blocks(args.solution, bounds, mine)
+        read = time.perf_counter() - start
+        if first is None:
+            first = kernel
+            say(f"ugo_petsc: {args.solution}: {kernel.K.getSize()[0]} unknowns, {stored(kernel)}, {comm.getSize()} ranks")
+        run, inner_total = block_jacobi.solve(count, system.shell(kernel.K), kernel.L0, blocks, leaves[0], kernel.cells, tolerance, inner, max_iterations)
+        norm, light = crossing(kernel.K, blocks, leaves[0], kernel.cells, run.x)
+        sizes = np.diff(bounds)
+        say(f"  {count:>3} parts ({sizes.min()}–{sizes.max()} leaves)  {run.iterations:>4} outer  {inner_total:>6.0f} inner iterations  "
+            f"residual {run.residual:.3e}  {run.seconds:8.3f} s (read {read:.3f} s)  crossing ‖K_off x‖/‖K x‖ {norm:.4f}, light {light:.4f}  (reason {run.reason})")
+        if run.reason <= 0:
+            raise SystemExit(1 if comm.getRank() else f"ugo_petsc: {args.solution}: block Jacobi by {count} parts did not converge (reason {run.reason})")
+        runs.append(run)
+        crossings.append({"parts": count, "inner_iterations": inner_total, "read_seconds": read, "crossing_norm": norm, "crossing_light": light})
+    return first, runs, crossings
 
 
 def stored(kernel):
@@ -181,7 +246,7 @@ def illuminance_per_patch(arriving, cells):
     return np.pi * arriving.reshape(-1, cells).sum(axis=1)
 
 
-def report(args, n, ranks, read_seconds, runs, eig, sing, package):
+def report(args, n, ranks, read_seconds, runs, eig, sing, package, crossings=None):
     figures = {
         "solution": args.solution,
         "unknowns": n,
@@ -200,6 +265,8 @@ def report(args, n, ranks, read_seconds, runs, eig, sing, package):
             for r in runs
         },
     }
+    if crossings is not None:
+        figures["parts"] = crossings
     if eig is not None:
         figures["eigenvalues"] = [[v.real, v.imag] for v in eig.values]
         figures["eigen_errors"] = list(eig.errors)
