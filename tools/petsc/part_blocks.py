@@ -10,8 +10,10 @@ the chain of hierarchy.py restricted to the part's rows and columns, never multi
 * `P_p`, the push's rows of the part's leaves, and only the bundles they take light from;
 * `Λ_p`, the links of those bundles from those nodes: a link whose source holds no leaf
   of the part contributes nothing to the block (it is `K`'s off-diagonal part);
-* `B_pp`, the material blocks of the part's leaves, without the transmission from a twin
-  in another part.
+* `B_pp`, the material blocks of the part's leaves: their reflection, and the
+  transmission from their twins behind two-sided transmitting surfaces, whose light the
+  push brings to them as to the part's leaves even when the twin lies in another part
+  (`K_pp = Σ_q B_pq G_qp`).
 
 Each factor is a sequential AIJ matrix (`COMM_SELF`) on the rank that owns the part, so a
 block's product needs no communication. Every rank reads the pull, links and push of the
@@ -28,7 +30,7 @@ from petsc4py import PETSc
 
 import system
 from hierarchy import _links, _pull, _push, chain
-from kernel_read import _mat, blocks
+from kernel_read import NO_TWIN, _mat, blocks
 
 
 @dataclass
@@ -54,6 +56,7 @@ def part_blocks(path, bounds, mine):
         nodes, bundles = len(h["parent"]), len(h["gather/indptr"]) - 1
         pull = _pull(h, share, (0, nodes)).tocsc()
         links = _links(h, share, (0, bundles), nodes)
+        push = _push(h, cells, (0, leaves), bundles)
         send, receive = np.repeat(h["send"][:], cells), np.repeat(h["receive"][:], cells)
         material, twin = k["patch_material"][:], k["twin"][:]
         reflect, transmit, transmits = k["B/reflection"][:], k["B/transmission"][:], k["B/transmits"][:]
@@ -63,14 +66,27 @@ def part_blocks(path, bounds, mine):
             cols = slice(a * cells, b * cells)
             R = (pull[:, cols] @ sp.diags(send[cols])).tocsr()
             above = np.flatnonzero(R.getnnz(axis=1))
-            P = (sp.diags(receive[cols]) @ _push(h, cells, (a, b), bundles)).tocsc()
+            lit = _lit(a, b, material, twin, transmits)
+            rows = (lit[:, None] * cells + np.arange(cells)).ravel()
+            P = (sp.diags(receive[rows]) @ push[rows]).tocsc()
             taken = np.flatnonzero(P.getnnz(axis=0))
             Lam = links[taken][:, above]
-            B = blocks(reflect, transmit, transmits, material[a:b], twin[a:b], lambda j: (a + j) * cells, lambda t: t * cells, leaves * cells)
-            factors = [_seq(R[above]), _seq(Lam), _seq(P[:, taken]), _seq(B.tocsc()[:, cols])]
+            at = {int(t): i for i, t in enumerate(lit)}
+            B = blocks(reflect, transmit, transmits, material[a:b], twin[a:b], lambda j: j * cells, lambda t: at[t] * cells, len(lit) * cells)
+            factors = [_seq(R[above]), _seq(Lam), _seq(P[:, taken]), _seq(B)]
             K = chain(factors)
             out.append(Block(part=p, first=a, last=b, K=K, A=system.shell(K)))
     return out
+
+
+def _lit(a, b, material, twin, transmits):
+    """The leaves whose gathered light `B` gives the leaves `[a, b)`: themselves, then the
+    twins outside `[a, b)` that transmit to them."""
+    mine = np.arange(a, b)
+    t, m = twin[a:b], material[a:b]
+    behind = t[(t != NO_TWIN) & (transmits[m] != 0)].astype(np.int64)
+    outside = np.unique(behind[(behind < a) | (behind >= b)])
+    return np.concatenate([mine, outside])
 
 
 def _seq(m):
