@@ -87,6 +87,12 @@ fn a_saved_hierarchy_gives_every_leaf_the_part_of_its_root() {
     let o = ugo(&args);
     assert!(o.status.success(), "{}", stderr(&o));
     let (leaf_node, position, parent, level) = saved_leaves(&saved);
+    let again = dir.join("again.h5");
+    let mut args =
+        vec!["solve", case, "--kernel-file", saved.to_str().unwrap(), "--save-kernel", "-o", again.to_str().unwrap()];
+    args.extend(COARSE);
+    assert!(ugo(&args).status.success(), "a reused hierarchy saved again");
+    assert_eq!(saved_leaves(&again).1, position, "the roots' positions read back and written again");
     let root = |mut id: u32| {
         while level[id as usize] != 0 {
             id = parent[id as usize];

@@ -5,7 +5,9 @@
 //! splits, part boundaries follow its top clusters. An element lies in its root's part;
 //! a cluster overlaps every part of its roots and belongs to the lowest. A part's linking
 //! keeps only the candidate pairs whose receiver overlaps it ([`Partition::overlaps`]),
-//! and its file only the links whose receiver belongs to it ([`Partition::owns`]).
+//! and its file only the links whose receiver belongs to it ([`Partition::owns`]). The rule
+//! itself is [`root_order`] and [`part_of`], which a kernel file's per-leaf roots' positions
+//! follow (`docs/kernel-file.md`), so that other programs find any leaf's part of any `n`.
 
 use super::node::Kind;
 use super::tree::Tree;
