@@ -76,9 +76,11 @@ petsc: deps
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing >/dev/null; \
 	fi
 
-# PETSc's and SLEPc's solutions, GMRES history and ρ(K) against ugo's, on 2 MPI ranks.
+# PETSc's and SLEPc's solutions, GMRES history and ρ(K) against ugo's, on 2 MPI ranks;
+# block Jacobi by part on 1 and 2.
 test-petsc: petsc build
 	/usr/bin/python3 tools/petsc/check.py target/release/ugo out/petsc-check
+	/usr/bin/python3 tools/petsc/check_parts.py target/release/ugo out/petsc-check
 
 # Checks that the committed cases are what the scripts write, then writes every file
 # (the OBJ included).

@@ -13,7 +13,9 @@
 //! bundle; `d` = 65535 for light that arrives from all cells alike, `μ_d/π` each),
 //! `operator/{receive, send}` (N) and the attributes `links`, `balance_correction`,
 //! `balance_sweeps`, `balance_row_error`; `leaves/frame` (N×3×3: each leaf's tangent,
-//! bitangent and normal, which it keeps from its root). The leaves' polygons, surfaces,
+//! bitangent and normal, which it keeps from its root) and `leaves/root_position` (N, u32:
+//! its root's position in the cluster tree's depth-first order, which decides its part,
+//! `partition.rs`; absent in files before it). The leaves' polygons, surfaces,
 //! faces, twins and exposed areas are `/mesh` of the same file.
 
 use super::dataset::dataset;
@@ -46,7 +48,11 @@ pub(super) fn write_hierarchy_kernel(
     write_operator(&g.create_group("operator")?, &operator.parts())?;
     let p = &mesh.patches;
     let frame = Array3::from_shape_fn((p.len(), 3, 3), |(i, a, c)| [p[i].tangent, p[i].bitangent, p[i].normal][a][c]);
-    dataset(&g.create_group("leaves")?, "frame", &frame)?;
+    let leaves = g.create_group("leaves")?;
+    dataset(&leaves, "frame", &frame)?;
+    if let Some(position) = structure.leaf_root_positions(operator.leaves()) {
+        dataset(&leaves, "root_position", &Array1::from(position))?;
+    }
     g.new_attr::<u64>().create("roots")?.write_scalar(&(roots as u64))
 }
 
@@ -204,5 +210,34 @@ fn structure(file: &File) -> Result<Structure, Why> {
             Link::new(receiver[i], source[i], factor[i], visible[i], 0.0, pieces)
         })
         .collect();
-    Ok(Structure { skeleton: Skeleton { parent, level }, links })
+    let skeleton = Skeleton { parent, level };
+    let root_position = root_positions(file, &skeleton)?;
+    Ok(Structure { skeleton, links, root_position })
+}
+
+/// By root element, its depth-first position from `/kernel/hierarchy/leaves/root_position`
+/// (each leaf's root's), or empty for a file written before it was stored.
+fn root_positions(file: &File, skeleton: &Skeleton) -> Result<Vec<u32>, Why> {
+    const AT: &str = "kernel/hierarchy/leaves/root_position";
+    if !file.h5.link_exists(AT) {
+        return Ok(Vec::new());
+    }
+    let (leaf_node, by_leaf) = (file.raw::<u32>("kernel/hierarchy/tree/leaf_node")?, file.raw::<u32>(AT)?);
+    let roots = skeleton.level.iter().filter(|&&l| l == Some(0)).count();
+    let mut position = vec![u32::MAX; roots];
+    for (&leaf, &p) in leaf_node.iter().zip(&by_leaf) {
+        let mut id = leaf;
+        while (id as usize) < skeleton.level.len() && skeleton.level[id as usize] != Some(0) {
+            id = skeleton.parent[id as usize];
+        }
+        match position.get_mut(id as usize) {
+            Some(slot) if (p as usize) < roots => *slot = p,
+            _ => {
+                return Err(Why(format!(
+                    "/{AT}: leaf node {leaf} has no root among the {roots} roots, or a position beyond them"
+                )));
+            }
+        }
+    }
+    Ok(position)
 }

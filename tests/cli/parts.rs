@@ -1,10 +1,12 @@
 //! `ugo solve --part i/n` and `ugo parts` (issue 36, point 4): the parts of one case join
 //! and count the one-process linking's links; bad parts, another case's part, a missing
-//! or doubled part and the uniform kernel are refused by name.
+//! or doubled part and the uniform kernel are refused by name; a saved hierarchy's
+//! `leaves/root_position` gives every leaf the part `--part i/n` puts its root in.
 
 use super::{assert_clean_failure, stderr};
 use crate::support::{scratch, ugo};
 use std::path::Path;
+use ugo::kernel::hierarchy::part_of;
 
 const COARSE: [&str; 6] = ["--kernel", "hierarchical", "--root-size", "0.4", "--patch-size", "0.1"];
 
@@ -65,4 +67,54 @@ fn bad_parts_and_the_uniform_kernel_are_refused() {
     args.extend(COARSE);
     let err = assert_clean_failure(&ugo(&args));
     assert!(err.contains("does not solve"), "{err}");
+}
+
+/// `(leaf_node, root_position, parent, level)` of a saved hierarchy's `/kernel/hierarchy`.
+fn saved_leaves(path: &Path) -> (Vec<u32>, Vec<u32>, Vec<u32>, Vec<u8>) {
+    let f = hdf5::File::open(path).unwrap();
+    let read = |name: &str| f.dataset(&format!("kernel/hierarchy/{name}")).unwrap();
+    let u32s = |name: &str| read(name).read_raw::<u32>().unwrap();
+    (u32s("tree/leaf_node"), u32s("leaves/root_position"), u32s("tree/parent"), read("tree/level").read_raw().unwrap())
+}
+
+#[test]
+fn a_saved_hierarchy_gives_every_leaf_the_part_of_its_root() {
+    let dir = scratch("parts-of-leaves");
+    let case = "cases/cornell-box.toml";
+    let saved = dir.join("saved.h5");
+    let mut args = vec!["solve", case, "--save-kernel", "-o", saved.to_str().unwrap()];
+    args.extend(COARSE);
+    let o = ugo(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (leaf_node, position, parent, level) = saved_leaves(&saved);
+    let again = dir.join("again.h5");
+    let mut args =
+        vec!["solve", case, "--kernel-file", saved.to_str().unwrap(), "--save-kernel", "-o", again.to_str().unwrap()];
+    args.extend(COARSE);
+    assert!(ugo(&args).status.success(), "a reused hierarchy saved again");
+    assert_eq!(saved_leaves(&again).1, position, "the roots' positions read back and written again");
+    let root = |mut id: u32| {
+        while level[id as usize] != 0 {
+            id = parent[id as usize];
+        }
+        id
+    };
+    let roots = level.iter().filter(|&&l| l == 0).count();
+    assert!(position.windows(2).all(|w| w[0] <= w[1]), "the leaves, depth first, run through the roots in order");
+    for count in [2u32, 3] {
+        let mut part_of_root = vec![u32::MAX; roots];
+        for index in 0..count {
+            let out = dir.join(format!("p{index}-{count}.h5"));
+            assert!(link(case, &format!("{index}/{count}"), &out).status.success());
+            let own: Vec<u32> = hdf5::File::open(&out).unwrap().dataset("part/roots").unwrap().read_raw().unwrap();
+            own.iter().for_each(|&r| part_of_root[r as usize] = index);
+        }
+        for (&leaf, &p) in leaf_node.iter().zip(&position) {
+            assert_eq!(
+                part_of(p, roots, count),
+                part_of_root[root(leaf) as usize],
+                "leaf node {leaf} of {count} parts"
+            );
+        }
+    }
 }

@@ -74,8 +74,9 @@ def chain(factors):
     return m
 
 
-def from_solution(path, comm=PETSc.COMM_WORLD):
-    """`K = B·G` and `G` as chains of distributed factors, `L0` and `D`, from `path`."""
+def from_solution(path, comm=PETSc.COMM_WORLD, leaf_rows=None):
+    """`K = B·G` and `G` as chains of distributed factors, `L0` and `D`, from `path`; this
+    rank owns the leaves `leaf_rows` (first, last), by default an even split."""
     with h5py.File(path, "r") as f:
         k = f["kernel"]
         if "hierarchy/operator" not in k:
@@ -87,7 +88,7 @@ def from_solution(path, comm=PETSc.COMM_WORLD):
         nodes, bundles = len(h["parent"]), len(h["gather/indptr"]) - 1
         if k["B/reflection"].shape[1] != cells or len(h["leaf_position"]) != leaves:
             raise SystemExit(f"ugo_petsc: {path}: /kernel/hierarchy has {len(h['leaf_position'])} leaves and /directions {cells} cells, /kernel {leaves} patches of {k['B/reflection'].shape[1]} cells")
-        first, last = patch_range(leaves, comm)
+        first, last = leaf_rows or patch_range(leaves, comm)
         node_rows, bundle_rows = patch_range(nodes, comm), patch_range(bundles, comm)
         n, own = leaves * cells, (last - first) * cells
         sizes = [(b - a) * cells for a, b in (node_rows, bundle_rows)]

@@ -50,6 +50,8 @@ def arguments(argv):
     p.add_argument("--mode", type=int, metavar="J", help="also write eigenvector J (1 = the dominant) as the field of a solution file, for ugo render")
     p.add_argument("--mode-output", metavar="FILE", help="that file (default: OUTPUT without .h5, then -mode-J.h5)")
     p.add_argument("--singular", action="store_true", help="the largest and smallest singular values of I - K")
+    p.add_argument("--parts", metavar="LIST", help="instead of --methods, FGMRES preconditioned by block Jacobi by part, for each comma-separated number of parts (a hierarchical file; each a multiple of the ranks); the first is written to OUTPUT, each other N to OUTPUT-parts-N.h5")
+    p.add_argument("--inner-tolerance", type=float, metavar="T", help="the relative residual of each block's inner GMRES (default: the square root of --tolerance)")
     p.add_argument("--report", help="write the figures as JSON to this file")
     return p.parse_known_args(argv)
 
@@ -60,6 +62,7 @@ def main():
     slepc4py.init([sys.argv[0]] + petsc_options)
     from petsc4py import PETSc
 
+    import by_parts
     import hierarchy
     import kernel_read
     import solution_file
@@ -76,16 +79,21 @@ def main():
         raise SystemExit(f"ugo_petsc: --mode {args.mode} needs --eigenvalues N with N ≥ {args.mode}")
     tolerance, max_iterations = file_settings(args)
     start = time.perf_counter()
-    if args.export:
+    if args.parts:
+        kernel, runs, crossings = by_parts.solve(args, tolerance, max_iterations, comm, say, stored)
+    elif args.export:
         kernel = kernel_read.from_export(args.export, cells(args.solution), comm)
     elif hierarchy.is_hierarchical(args.solution):
         kernel = hierarchy.from_solution(args.solution, comm)
     else:
         kernel = kernel_read.from_solution(args.solution, comm)
     read_seconds = time.perf_counter() - start
+    if args.parts:
+        methods, read_seconds = [], float("nan")
     n = kernel.K.getSize()[0]
     package = args.direct or ("mumps" if PETSc.Sys.hasExternalPackage("mumps") else "superlu_dist")
-    say(f"ugo_petsc: {args.solution}: {n} unknowns, {stored(kernel)}, {comm.getSize()} ranks; read in {read_seconds:.3f} s")
+    if not args.parts:
+        say(f"ugo_petsc: {args.solution}: {n} unknowns, {stored(kernel)}, {comm.getSize()} ranks; read in {read_seconds:.3f} s")
     if kernel.factors is not None and any(solvers.parse(m)[0] == "direct" for m in methods):
         limit = args.memory_limit * 2**30 if args.memory_limit else hierarchy.memory_limit()
         bound = hierarchy.check_expansion(kernel, args.solution, limit)
@@ -101,7 +109,7 @@ def main():
             assembled = system.assembled(kernel)
         return assembled
 
-    runs = []
+    runs = runs if args.parts else []
     for m in methods:
         run = solvers.solve(m, operator(solvers.parse(m)[0]), kernel.L0, tolerance, max_iterations, package)
         runs.append(run)
@@ -132,7 +140,9 @@ def main():
             solution_file.write_mode(output, mode_output, vectors[args.mode - 1], eig.values[args.mode - 1], args.mode, kernel.cells)
             say(f"  wrote {mode_output} (eigenvector {args.mode} as the field)")
         if args.report:
-            report(args, n, comm.getSize(), read_seconds, runs, eig, sing, package)
+            report(args, n, comm.getSize(), read_seconds, runs, eig, sing, package, crossings if args.parts else None)
+    if args.parts:
+        by_parts.write(args.solution, output, runs[1:], kernel.cells, comm, say)
     comm.barrier()
 
 
@@ -181,7 +191,7 @@ def illuminance_per_patch(arriving, cells):
     return np.pi * arriving.reshape(-1, cells).sum(axis=1)
 
 
-def report(args, n, ranks, read_seconds, runs, eig, sing, package):
+def report(args, n, ranks, read_seconds, runs, eig, sing, package, crossings=None):
     figures = {
         "solution": args.solution,
         "unknowns": n,
@@ -200,6 +210,8 @@ def report(args, n, ranks, read_seconds, runs, eig, sing, package):
             for r in runs
         },
     }
+    if crossings is not None:
+        figures["parts"] = crossings
     if eig is not None:
         figures["eigenvalues"] = [[v.real, v.imag] for v in eig.values]
         figures["eigen_errors"] = list(eig.errors)

@@ -52,7 +52,7 @@ pub use node::{Kind, NONE, Node};
 pub use operator::Operator;
 pub use options::{DEFAULT_TOLERANCE, Options};
 pub use oracle::sample_points;
-pub use partition::{BadPart, MOST_PARTS, Part, Partition};
+pub use partition::{BadPart, MOST_PARTS, Part, Partition, part_of, root_order};
 pub use parts::{Entry, Parts};
 pub use pieces::{Piece, Pieces};
 pub use push::SeenCache;

@@ -5,8 +5,11 @@
 //! splits, part boundaries follow its top clusters. An element lies in its root's part;
 //! a cluster overlaps every part of its roots and belongs to the lowest. A part's linking
 //! keeps only the candidate pairs whose receiver overlaps it ([`Partition::overlaps`]),
-//! and its file only the links whose receiver belongs to it ([`Partition::owns`]).
+//! and its file only the links whose receiver belongs to it ([`Partition::owns`]). The rule
+//! itself is [`root_order`] and [`part_of`], which a kernel file's per-leaf roots' positions
+//! follow (`docs/kernel-file.md`), so that other programs find any leaf's part of any `n`.
 
+use super::node::Kind;
 use super::tree::Tree;
 
 /// Most parts: a node's parts are a 64-bit mask.
@@ -62,6 +65,20 @@ impl std::fmt::Display for Part {
     }
 }
 
+/// The root elements of `tree` in the cluster tree's depth-first order: a root's place in
+/// it is what decides its part ([`part_of`]), and what a kernel file stores per leaf
+/// (`/kernel/hierarchy/leaves/root_position`, `docs/kernel-file.md`).
+pub fn root_order(tree: &Tree) -> Vec<u32> {
+    let is_root = |id: &u32| matches!(tree.node(*id).kind, Kind::Element { level: 0, .. });
+    tree.preorder().into_iter().filter(is_root).collect()
+}
+
+/// The part, of `count`, of the root at `position` in [`root_order`] of `roots` roots: the
+/// `i`-th of `count` equal runs, `⌊position · count / roots⌋`.
+pub fn part_of(position: u32, roots: usize, count: u32) -> u32 {
+    (u64::from(position) * u64::from(count) / roots.max(1) as u64) as u32
+}
+
 /// Which parts each node of a tree's roots and clusters overlaps.
 #[derive(Debug, Clone)]
 pub struct Partition {
@@ -73,11 +90,10 @@ pub struct Partition {
 impl Partition {
     /// The partition of the fresh `tree` (roots and clusters only, nothing split yet).
     pub fn new(tree: &Tree, part: Part) -> Partition {
-        let roots: Vec<u32> = tree.preorder().into_iter().filter(|&id| tree.node(id).patch().is_some()).collect();
+        let roots = root_order(tree);
         let mut mask = vec![0u64; tree.len()];
-        let n = roots.len().max(1) as u64;
         for (j, &id) in roots.iter().enumerate() {
-            mask[id as usize] = 1 << (j as u64 * u64::from(part.count) / n);
+            mask[id as usize] = 1 << part_of(j as u32, roots.len(), part.count);
         }
         for id in tree.preorder().into_iter().rev() {
             let below = tree.children(id).iter().fold(0, |m, &c| m | mask[c as usize]);

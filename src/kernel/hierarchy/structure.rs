@@ -18,13 +18,34 @@ pub struct Skeleton {
     pub level: Vec<Option<u8>>,
 }
 
-/// The tree's skeleton and the links between its nodes.
+/// The tree's skeleton, the links between its nodes and the roots' order.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Structure {
     /// The tree without geometry.
     pub skeleton: Skeleton,
     /// The links, by node id.
     pub links: Vec<Link>,
+    /// By root element (node ids from 0), its position in the cluster tree's depth-first
+    /// order ([`super::root_order`]), which decides its part (`partition.rs`); empty when
+    /// read from a kernel file written before it was stored.
+    pub root_position: Vec<u32>,
+}
+
+impl Structure {
+    /// The position of each of the `leaves`' (node ids) root in the roots' depth-first
+    /// order, or `None` when it is not known.
+    pub fn leaf_root_positions(&self, leaves: &[u32]) -> Option<Vec<u32>> {
+        if self.root_position.is_empty() {
+            return None;
+        }
+        let root = |mut id: u32| {
+            while self.skeleton.level[id as usize] != Some(0) {
+                id = self.skeleton.parent[id as usize];
+            }
+            id
+        };
+        Some(leaves.iter().map(|&l| self.root_position[root(l) as usize]).collect())
+    }
 }
 
 impl Tree {
@@ -47,6 +68,11 @@ impl Tree {
 impl Hierarchy {
     /// The tree's skeleton and the links, the hierarchy given up for them.
     pub fn into_structure(self) -> Structure {
-        Structure { skeleton: self.tree.skeleton(), links: self.links }
+        let order = super::root_order(&self.tree);
+        let mut root_position = vec![0; order.len()];
+        for (j, &id) in order.iter().enumerate() {
+            root_position[id as usize] = j as u32;
+        }
+        Structure { skeleton: self.tree.skeleton(), links: self.links, root_position }
     }
 }
