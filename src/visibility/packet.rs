@@ -198,11 +198,11 @@ fn node_hits(
         let scale = extent * ray.inv_direction;
         let shift = (p - ray.origin) * ray.inv_direction;
         let mut hit = 0;
-        for c in 0..8 {
+        for (c, &contribution) in contribution.iter().enumerate() {
             let near = max(max(x.0[c] * scale.x + shift.x, y.0[c] * scale.y + shift.y), z.0[c] * scale.z + shift.z);
             let far = min(min(x.1[c] * scale.x + shift.x, y.1[c] * scale.y + shift.y), z.1[c] * scale.z + shift.z);
             if max(near, NEAREST_BOX as f32) <= min(far, ray.tmax) {
-                hit |= contribution[c];
+                hit |= contribution;
             }
         }
         hits[i as usize] = hit;

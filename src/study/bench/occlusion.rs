@@ -2,17 +2,16 @@
 //! points of random facing patch pairs, timed through the default BVH.
 
 use super::error::BenchError;
-use crate::geometry::{Mesh, facing};
+use super::links::LinkRays;
+use crate::geometry::{Mesh, Patch, facing};
 use crate::random::Rng;
 use crate::scene::Scene;
 use crate::transfer::occlusion::sample_points;
 use crate::visibility::Visibility;
-use glam::DVec3;
 use rayon::prelude::*;
 use std::time::Instant;
 
-/// A segment between two faces, ignoring both.
-pub type Segment = (DVec3, DVec3, [u32; 2]);
+pub use crate::visibility::Segment;
 
 /// The uniform mesh of a case at one patch size, its BVH, the segments and their rate.
 pub struct Occlusion {
@@ -28,6 +27,8 @@ pub struct Occlusion {
     /// The same on one thread: the per-core figure that Embree's single-threaded batch in
     /// `docs/peers/peers.py` is compared with.
     pub one_thread_rays_per_second: f64,
+    /// Links' segments traced one by one and together, one thread.
+    pub links: LinkRays,
 }
 
 impl Occlusion {
@@ -42,7 +43,8 @@ impl Occlusion {
         let visibility = Visibility::build(&mesh);
         let rate = || rays_per_second(&visibility, &segments);
         let (all, one) = (rate().max(rate()), rayon::ThreadPoolBuilder::new().num_threads(1).build()?.install(rate));
-        Ok(Occlusion { mesh, visibility, segments, rays_per_second: all, one_thread_rays_per_second: one })
+        let links = LinkRays::measure(&mesh, &visibility, count / 8).expect("the segments' facing pairs");
+        Ok(Occlusion { mesh, visibility, segments, rays_per_second: all, one_thread_rays_per_second: one, links })
     }
 }
 
@@ -57,6 +59,20 @@ fn rays_per_second(visibility: &Visibility, segments: &[Segment]) -> f64 {
 /// `count` segments between interior points of random facing patch pairs (reproducible),
 /// or `None` when no facing pair turns up in `1000 · count` draws.
 fn segments(mesh: &Mesh, count: usize) -> Option<Vec<Segment>> {
+    facing_pairs(mesh, count, |a, b, rng| {
+        let pa = sample_points(a)[(rng.next_u64() % 4) as usize];
+        let pb = sample_points(b)[(rng.next_u64() % 4) as usize];
+        (pa, pb, [a.face, b.face])
+    })
+}
+
+/// `count` draws of `make` on random facing patch pairs (reproducible), or `None` when no
+/// facing pair turns up in `1000 · count` draws.
+pub(super) fn facing_pairs<T>(
+    mesh: &Mesh,
+    count: usize,
+    mut make: impl FnMut(&Patch, &Patch, &mut Rng) -> T,
+) -> Option<Vec<T>> {
     let n = mesh.len() as u64;
     if n < 2 {
         return None;
@@ -72,9 +88,7 @@ fn segments(mesh: &Mesh, count: usize) -> Option<Vec<Segment>> {
         if i == j || !facing(a, b) {
             continue;
         }
-        let pa = sample_points(a)[(rng.next_u64() % 4) as usize];
-        let pb = sample_points(b)[(rng.next_u64() % 4) as usize];
-        out.push((pa, pb, [a.face, b.face]));
+        out.push(make(a, b, &mut rng));
     }
     (!out.is_empty()).then_some(out)
 }
