@@ -13,7 +13,7 @@
 //! traced alone in the rare case the replay needs them.
 
 use super::{Blocker, Bvh, NEAREST_BOX, Visibility};
-use glam::{DVec3, Vec3A};
+use glam::{DVec3, Vec3A, Vec4};
 use obvhs::cwbvh::CwBvh;
 use obvhs::cwbvh::node::{CwBvhNode, extract_byte64};
 use obvhs::ray::Ray;
@@ -183,44 +183,42 @@ fn node_hits(
 ) -> u32 {
     let (child_bits, bit_index) = node.get_child_and_index_bits(octant);
     let contribution: [u32; 8] = std::array::from_fn(|c| extract_byte64(child_bits, c) << extract_byte64(bit_index, c));
-    // the octant says which plane of each child is entered first, the same for every lane
-    let near_far = |lo: &[u8; 8], hi: &[u8; 8], positive: bool| {
-        let (lo, hi) = (lo.map(f32::from), hi.map(f32::from));
-        if positive { (lo, hi) } else { (hi, lo) }
-    };
-    let x = near_far(&node.child_min_x, &node.child_max_x, octant & 4 != 0);
-    let y = near_far(&node.child_min_y, &node.child_max_y, octant & 2 != 0);
-    let z = near_far(&node.child_min_z, &node.child_max_z, octant & 1 != 0);
+    let x = planes(&node.child_min_x, &node.child_max_x, octant & 4 != 0);
+    let y = planes(&node.child_min_y, &node.child_max_y, octant & 2 != 0);
+    let z = planes(&node.child_min_z, &node.child_max_z, octant & 1 != 0);
     let (extent, p) = (node.compute_extent(), Vec3A::from(node.p));
+    let nearest = Vec4::splat(NEAREST_BOX as f32);
     let mut union = 0;
     for i in lanes_of(lanes) {
         let ray = rays[i as usize].as_ref().expect("a ray in every traced lane");
-        let scale = extent * ray.inv_direction;
-        let shift = (p - ray.origin) * ray.inv_direction;
-        let mut hit = 0;
-        for (c, &contribution) in contribution.iter().enumerate() {
-            let near = max(max(x.0[c] * scale.x + shift.x, y.0[c] * scale.y + shift.y), z.0[c] * scale.z + shift.z);
-            let far = min(min(x.1[c] * scale.x + shift.x, y.1[c] * scale.y + shift.y), z.1[c] * scale.z + shift.z);
-            if max(near, NEAREST_BOX as f32) <= min(far, ray.tmax) {
-                hit |= contribution;
-            }
+        let (scale, shift) = (extent * ray.inv_direction, (p - ray.origin) * ray.inv_direction);
+        let at = |planes: &Planes, end: usize, half: usize, axis: usize| {
+            planes[end][half] * Vec4::splat(scale[axis]) + Vec4::splat(shift[axis])
+        };
+        let mut entered = 0;
+        for half in 0..2 {
+            let near = at(&x, 0, half, 0).max(at(&y, 0, half, 1).max(at(&z, 0, half, 2))).max(nearest);
+            let far = at(&x, 1, half, 0).min(at(&y, 1, half, 1).min(at(&z, 1, half, 2))).min(Vec4::splat(ray.tmax));
+            entered |= near.cmple(far).bitmask() << (4 * half);
         }
+        let hit = (0..8).filter(|c| entered & 1 << c != 0).fold(0, |h, c| h | contribution[c]);
         hits[i as usize] = hit;
         union |= hit;
     }
     union
 }
 
-/// The larger of two finite numbers (`maxps`; no NaN reaches the box test).
-#[inline(always)]
-fn max(a: f32, b: f32) -> f32 {
-    if a > b { a } else { b }
-}
+/// A node's eight child planes across one axis, four children a vector: the planes a ray
+/// of the octant enters by (`[0]`) and leaves by (`[1]`).
+type Planes = [[Vec4; 2]; 2];
 
-/// The smaller of two finite numbers.
+/// The [`Planes`] of the quantized `lo` and `hi` sides, for a ray going up the axis when
+/// `positive` (obvhs's choice of `q_lo` and `q_hi`).
 #[inline(always)]
-fn min(a: f32, b: f32) -> f32 {
-    if a < b { a } else { b }
+fn planes(lo: &[u8; 8], hi: &[u8; 8], positive: bool) -> Planes {
+    let half = |q: &[u8; 8], h: usize| Vec4::new(q[4 * h].into(), q[4 * h + 1].into(), q[4 * h + 2].into(), q[4 * h + 3].into());
+    let (enter, leave) = if positive { (lo, hi) } else { (hi, lo) };
+    [[half(enter, 0), half(enter, 1)], [half(leave, 0), half(leave, 1)]]
 }
 
 /// obvhs's `firstbithigh`: the index of the highest set bit.
