@@ -216,7 +216,9 @@ type Planes = [[Vec4; 2]; 2];
 /// `positive` (obvhs's choice of `q_lo` and `q_hi`).
 #[inline(always)]
 fn planes(lo: &[u8; 8], hi: &[u8; 8], positive: bool) -> Planes {
-    let half = |q: &[u8; 8], h: usize| Vec4::new(q[4 * h].into(), q[4 * h + 1].into(), q[4 * h + 2].into(), q[4 * h + 3].into());
+    let half = |q: &[u8; 8], h: usize| {
+        Vec4::new(q[4 * h].into(), q[4 * h + 1].into(), q[4 * h + 2].into(), q[4 * h + 3].into())
+    };
     let (enter, leave) = if positive { (lo, hi) } else { (hi, lo) };
     [[half(enter, 0), half(enter, 1)], [half(leave, 0), half(leave, 1)]]
 }

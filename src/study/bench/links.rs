@@ -4,7 +4,7 @@
 //! known, traced on one thread one by one (`Visibility::visible_cached`) and together
 //! (`Visibility::visible_together`), the two alternating, the better of two runs each.
 
-use super::occlusion::facing_pairs;
+use super::pairs::facing_pairs;
 use crate::geometry::Mesh;
 use crate::transfer::occlusion::{POINTS, sample_points};
 use crate::visibility::{Blocker, Segment, Visibility};

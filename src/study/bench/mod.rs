@@ -16,6 +16,7 @@ mod hierarchy;
 mod layouts;
 mod links;
 mod occlusion;
+mod pairs;
 mod peak;
 mod scaling;
 
