@@ -56,12 +56,14 @@ impl Visibility {
         for (ray, &(a, b, _)) in rays.iter_mut().zip(segments) {
             *ray = self.segment(a, b);
         }
-        let ignore = |i: usize| segments[i].2;
-        let todo = lanes_where(segments.len(), |i| rays[i].is_some_and(|r| !self.blocks(*blocker, &r, ignore(i))));
+        let (ignore, known) = (|i: usize| segments[i].2, *blocker);
+        let met = lanes_where(segments.len(), |i| rays[i].is_some_and(|r| self.blocks(known, &r, ignore(i))));
+        let todo = lanes_where(segments.len(), |i| rays[i].is_some()) & !met;
         let firsts = self.traced(wide, &rays, &ignore, todo);
         lanes_where(segments.len(), |i| {
             let Some(ray) = &rays[i] else { return true };
-            if self.blocks(*blocker, ray, ignore(i)) {
+            let blocked = if *blocker == known { met & 1 << i != 0 } else { self.blocks(*blocker, ray, ignore(i)) };
+            if blocked {
                 return false;
             }
             let first = if todo & 1 << i != 0 { firsts[i] } else { self.first_blocker(ray, ignore(i)) };
