@@ -6,7 +6,7 @@
 //! first; only when they disagree (a penumbra) are all `POINTS²` segments traced.
 
 use crate::geometry::{ConvexPolygon, Patch};
-use crate::visibility::{Blocker, Sight, Visibility};
+use crate::visibility::{Blocker, Segment, Sight, Visibility};
 use glam::DVec3;
 
 /// Points per patch; a pair is tested with `POINTS²` segments.
@@ -38,22 +38,29 @@ pub fn visible_fraction(
     pb: &[DVec3; POINTS],
     blocker: &mut Blocker,
 ) -> VisibleFraction {
-    let ignore = [a.face, b.face];
-    let mut seen = [[None; POINTS]; POINTS];
-    for k in 0..POINTS {
-        seen[k][k] = Some(visibility.visible_cached(pa[k], pb[k], ignore, blocker));
-    }
-    let first = (0..POINTS).filter(|&k| seen[k][k] == Some(true)).count();
+    fraction_between(visibility, &pa.map(|x| (x, a.face)), &pb.map(|x| (x, b.face)), blocker)
+}
+
+/// Fraction of the `POINTS²` segments between the points `a` and `b`, each on the face it
+/// names, that no other face blocks: point `k` to point `k` first, traced together, and only
+/// when they disagree the other segments, row by row, traced together.
+pub fn fraction_between(
+    visibility: &Visibility,
+    a: &[(DVec3, u32); POINTS],
+    b: &[(DVec3, u32); POINTS],
+    blocker: &mut Blocker,
+) -> VisibleFraction {
+    let segment = |(k, m): (usize, usize)| (a[k].0, b[m].0, [a[k].1, b[m].1]);
+    let diagonal: [Segment; POINTS] = std::array::from_fn(|k| segment((k, k)));
+    let first = visibility.visible_together(&diagonal, blocker).count_ones() as usize;
     if first == 0 || first == POINTS {
         return VisibleFraction { fraction: (first / POINTS) as f64, rays: POINTS };
     }
-    let mut visible = 0;
-    for (k, row) in seen.iter_mut().enumerate() {
-        for (m, cell) in row.iter_mut().enumerate() {
-            visible += cell.unwrap_or_else(|| visibility.visible_cached(pa[k], pb[m], ignore, blocker)) as usize;
-        }
-    }
-    VisibleFraction { fraction: visible as f64 / (POINTS * POINTS) as f64, rays: POINTS * POINTS }
+    let mut rest = [diagonal[0]; POINTS * POINTS - POINTS];
+    let off_diagonal = (0..POINTS).flat_map(|k| (0..POINTS).map(move |m| (k, m))).filter(|(k, m)| k != m);
+    rest.iter_mut().zip(off_diagonal).for_each(|(s, km)| *s = segment(km));
+    let seen = first + visibility.visible_together(&rest, blocker).count_ones() as usize;
+    VisibleFraction { fraction: seen as f64 / (POINTS * POINTS) as f64, rays: POINTS * POINTS }
 }
 
 /// A visibility fraction and the rays it took.

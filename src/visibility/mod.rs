@@ -23,11 +23,13 @@ mod between;
 mod faces;
 mod hull;
 mod occluders;
+mod packet;
 mod shaft;
 
 pub use between::SightTo;
 pub use faces::{Faces, Landing, standoff};
 pub use occluders::Occluders;
+pub use packet::{PACKET, Segment};
 pub use shaft::{Sight, SightFrom};
 
 use crate::geometry::{ConvexPolygon, Mesh, Surface};
@@ -192,12 +194,15 @@ impl Visibility {
     /// previous query (`blocker`, updated): neighbouring segments are often blocked by
     /// the same triangle, and one test then replaces a traversal.
     pub fn visible_cached(&self, a: DVec3, b: DVec3, ignore: [u32; 2], blocker: &mut Blocker) -> bool {
+        self.segment(a, b).is_none_or(|ray| self.misses(&ray, ignore, blocker))
+    }
+
+    /// The ray of the segment from `a` to `b`, shortened at both ends by the scene's
+    /// epsilon; none when the segment is too short to be blocked.
+    fn segment(&self, a: DVec3, b: DVec3) -> Option<Ray> {
         let d = b - a;
         let length = d.length();
-        if length <= 2.0 * self.epsilon {
-            return true;
-        }
-        self.misses(&self.ray(a, d / length, self.epsilon, length - self.epsilon), ignore, blocker)
+        (length > 2.0 * self.epsilon).then(|| self.ray(a, d / length, self.epsilon, length - self.epsilon))
     }
 
     /// [`Visibility::visible_cached`] with the blocker in a cell, for the `Fn` closures of
@@ -225,32 +230,44 @@ impl Visibility {
 
     /// True when `ray` meets no face other than `ignore`, trying `blocker` first.
     fn misses(&self, ray: &Ray, ignore: [u32; 2], blocker: &mut Blocker) -> bool {
-        let skip = |id: usize| {
-            let face = self.face_of[id];
-            face == ignore[0] || face == ignore[1]
-        };
-        if let Some(id) = blocker.0
-            && !skip(id)
-            && intersect(&self.triangles[id], ray) < f32::INFINITY
-        {
+        if self.blocks(*blocker, ray, ignore) {
             return false;
         }
+        let first = self.first_blocker(ray, ignore);
+        if first.is_some() {
+            blocker.0 = first;
+        }
+        first.is_none()
+    }
+
+    /// True when the triangle of `blocker` meets `ray` and is not on a face of `ignore`.
+    fn blocks(&self, blocker: Blocker, ray: &Ray, ignore: [u32; 2]) -> bool {
+        blocker.0.is_some_and(|id| self.meets(id, ray, ignore) < f32::INFINITY)
+    }
+
+    /// The distance along `ray` to triangle `id`, infinite when it is missed or lies on a
+    /// face of `ignore`.
+    #[inline(always)]
+    fn meets(&self, id: usize, ray: &Ray, ignore: [u32; 2]) -> f32 {
+        let face = self.face_of[id];
+        if face == ignore[0] || face == ignore[1] { f32::INFINITY } else { intersect(&self.triangles[id], ray) }
+    }
+
+    /// The first triangle the traversal finds along `ray` that is not on a face of `ignore`.
+    fn first_blocker(&self, ray: &Ray, ignore: [u32; 2]) -> Option<usize> {
         let mut hit = None;
         let test = |ray: &Ray, id: usize| {
-            let t = if skip(id) { f32::INFINITY } else { intersect(&self.triangles[id], ray) };
+            let t = self.meets(id, ray, ignore);
             if t < f32::INFINITY {
                 hit = Some(id);
             }
             t
         };
-        let miss = match &self.bvh {
+        match &self.bvh {
             Bvh::Binary(binary) => binary.ray_traverse_miss(*ray, test),
             Bvh::Wide(wide) => wide.ray_traverse_miss(*ray, test),
         };
-        if hit.is_some() {
-            blocker.0 = hit;
-        }
-        miss
+        hit
     }
 
     /// The first face along `origin + t·direction`, `t > 0`, other than `ignore`.

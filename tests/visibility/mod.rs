@@ -2,6 +2,7 @@
 
 mod hulls;
 mod occluders;
+mod packets;
 
 use glam::DVec3;
 use std::cell::Cell;

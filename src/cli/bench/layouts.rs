@@ -20,6 +20,16 @@ pub fn occlusion_rays(o: &BenchOptions, scene: &Scene, size: f64) -> Result<Occl
         occlusion.segments.len(),
         occlusion.one_thread_rays_per_second
     );
+    let l = &occlusion.links;
+    println!(
+        "  link shadow rays      {:>12.3e} links/s  (their segments traced together; {:.3e} links/s one by one, {:.2}×; \
+         {} links, {} rays, one thread)",
+        l.together_links_per_second,
+        l.alone_links_per_second,
+        l.together_links_per_second / l.alone_links_per_second,
+        l.links,
+        l.rays
+    );
     if o.layouts {
         print_layouts(&occlusion);
     }

@@ -7,7 +7,7 @@
 
 use super::tree::Tree;
 use crate::geometry::Patch;
-use crate::transfer::occlusion::{POINTS, polygon_points, visible_fraction};
+use crate::transfer::occlusion::{POINTS, fraction_between, polygon_points, visible_fraction};
 use crate::visibility::{Blocker, Visibility};
 use glam::DVec3;
 
@@ -115,21 +115,6 @@ pub fn stand_in_sight(
     b: &[(DVec3, u32); POINTS],
     blocker: &mut Blocker,
 ) -> (Sight, f64, usize) {
-    let free = |k: usize, m: usize, blocker: &mut Blocker| {
-        visibility.visible_cached(a[k].0, b[m].0, [a[k].1, b[m].1], blocker) as usize
-    };
-    let first: usize = (0..POINTS).map(|k| free(k, k, blocker)).sum();
-    if first == 0 || first == POINTS {
-        let fraction = (first / POINTS) as f64;
-        return (Sight::of(fraction), fraction, POINTS);
-    }
-    let mut seen = first;
-    for k in 0..POINTS {
-        for m in (0..POINTS).filter(|&m| m != k) {
-            seen += free(k, m, blocker);
-        }
-    }
-    let all = POINTS * POINTS;
-    let fraction = seen as f64 / all as f64;
-    (Sight::of(fraction), fraction, all)
+    let v = fraction_between(visibility, a, b, blocker);
+    (Sight::of(v.fraction), v.fraction, v.rays)
 }

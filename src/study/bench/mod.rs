@@ -14,7 +14,9 @@ mod error;
 mod export;
 mod hierarchy;
 mod layouts;
+mod links;
 mod occlusion;
+mod pairs;
 mod peak;
 mod scaling;
 
@@ -24,5 +26,6 @@ pub use error::BenchError;
 pub use export::export;
 pub use hierarchy::{Curve, Level, curve, level};
 pub use layouts::{Layout, layouts};
+pub use links::LinkRays;
 pub use occlusion::{Occlusion, Segment};
 pub use scaling::{Scaling, Step, assembly_with_threads, scaling, step};

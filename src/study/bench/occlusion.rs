@@ -2,17 +2,16 @@
 //! points of random facing patch pairs, timed through the default BVH.
 
 use super::error::BenchError;
-use crate::geometry::{Mesh, facing};
-use crate::random::Rng;
+use super::links::LinkRays;
+use super::pairs::facing_pairs;
+use crate::geometry::Mesh;
 use crate::scene::Scene;
 use crate::transfer::occlusion::sample_points;
 use crate::visibility::Visibility;
-use glam::DVec3;
 use rayon::prelude::*;
 use std::time::Instant;
 
-/// A segment between two faces, ignoring both.
-pub type Segment = (DVec3, DVec3, [u32; 2]);
+pub use crate::visibility::Segment;
 
 /// The uniform mesh of a case at one patch size, its BVH, the segments and their rate.
 pub struct Occlusion {
@@ -28,6 +27,8 @@ pub struct Occlusion {
     /// The same on one thread: the per-core figure that Embree's single-threaded batch in
     /// `docs/peers/peers.py` is compared with.
     pub one_thread_rays_per_second: f64,
+    /// Links' segments traced one by one and together, one thread.
+    pub links: LinkRays,
 }
 
 impl Occlusion {
@@ -42,7 +43,8 @@ impl Occlusion {
         let visibility = Visibility::build(&mesh);
         let rate = || rays_per_second(&visibility, &segments);
         let (all, one) = (rate().max(rate()), rayon::ThreadPoolBuilder::new().num_threads(1).build()?.install(rate));
-        Ok(Occlusion { mesh, visibility, segments, rays_per_second: all, one_thread_rays_per_second: one })
+        let links = LinkRays::measure(&mesh, &visibility, count / 8).expect("the segments' facing pairs");
+        Ok(Occlusion { mesh, visibility, segments, rays_per_second: all, one_thread_rays_per_second: one, links })
     }
 }
 
@@ -57,24 +59,9 @@ fn rays_per_second(visibility: &Visibility, segments: &[Segment]) -> f64 {
 /// `count` segments between interior points of random facing patch pairs (reproducible),
 /// or `None` when no facing pair turns up in `1000 · count` draws.
 fn segments(mesh: &Mesh, count: usize) -> Option<Vec<Segment>> {
-    let n = mesh.len() as u64;
-    if n < 2 {
-        return None;
-    }
-    let mut rng = Rng::stream(0x2545_F491_4F6C_DD1D, 0);
-    let mut out = Vec::with_capacity(count);
-    for _ in 0..1000 * count.max(1) {
-        if out.len() == count {
-            break;
-        }
-        let (i, j) = ((rng.next_u64() % n) as usize, (rng.next_u64() % n) as usize);
-        let (a, b) = (&mesh.patches[i], &mesh.patches[j]);
-        if i == j || !facing(a, b) {
-            continue;
-        }
+    facing_pairs(mesh, count, |a, b, rng| {
         let pa = sample_points(a)[(rng.next_u64() % 4) as usize];
         let pb = sample_points(b)[(rng.next_u64() % 4) as usize];
-        out.push((pa, pb, [a.face, b.face]));
-    }
-    (!out.is_empty()).then_some(out)
+        (pa, pb, [a.face, b.face])
+    })
 }
