@@ -14,11 +14,9 @@ leaves about `inner · ‖r_0‖` and the second `inner² · ‖r_0‖ ≤ tol �
 As the other solvers (solvers.py): `x_0 = L0` and the stop at `‖r‖₂ ≤ tol·‖L0‖₂`.
 """
 
-import time
-
 from petsc4py import PETSc
 
-from solvers import Run
+from solvers import Run, timed_solve
 
 
 class ByPart:
@@ -72,15 +70,7 @@ def solve(count, A, L0, blocks, offset, cells, tolerance, inner, max_iterations,
     ksp.setTolerances(rtol=0.0, atol=tolerance * scale, divtol=1e10, max_it=max_iterations)
     ksp.setConvergenceHistory(length=max_iterations + 1, reset=True)
     ksp.setFromOptions()
-    x = L0.duplicate()
-    L0.copy(x)
-    start = time.perf_counter()
-    ksp.setUp()
-    ksp.solve(L0, x)
-    seconds = time.perf_counter() - start
-    r = L0.duplicate()
-    A.mult(x, r)
-    r.aypx(-1.0, L0)
+    x, seconds, r = timed_solve(ksp, A, L0)
     inner_total = summed(context.inner_iterations, comm)
     run = Run(
         method=f"bjacobi:{count}",

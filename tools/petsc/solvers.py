@@ -73,10 +73,8 @@ def _ksp(method, A, tolerance, scale, max_iterations, direct_package):
     return ksp
 
 
-def solve(method, A, L0, tolerance, max_iterations, direct_package):
-    """Solves `A x = L0` by `method` (see `parse`); `x_0 = L0` for the iterations."""
-    scale = L0.norm()
-    ksp = _ksp(method, A, tolerance, scale, max_iterations, direct_package)
+def timed_solve(ksp, A, L0):
+    """`ksp` set up and run on `A x = L0` from `x_0 = L0`: `(x, seconds, L0 − A x)`."""
     x = L0.duplicate()
     L0.copy(x)
     start = time.perf_counter()
@@ -86,6 +84,14 @@ def solve(method, A, L0, tolerance, max_iterations, direct_package):
     r = L0.duplicate()
     A.mult(x, r)
     r.aypx(-1.0, L0)
+    return x, seconds, r
+
+
+def solve(method, A, L0, tolerance, max_iterations, direct_package):
+    """Solves `A x = L0` by `method` (see `parse`); `x_0 = L0` for the iterations."""
+    scale = L0.norm()
+    ksp = _ksp(method, A, tolerance, scale, max_iterations, direct_package)
+    x, seconds, r = timed_solve(ksp, A, L0)
     pc = ksp.getPC()
     solver = f"{ksp.getType()}, pc {pc.getType()}"
     if pc.getType() == "lu":
