@@ -169,6 +169,13 @@ enum Command {
         /// solution's relative error off it (the leaf-by-leaf figures).
         #[arg(long, allow_negative_numbers = true, default_value_t = 5e-3)]
         precise: f64,
+        /// Also write the signed relative difference (solution − reference)/reference per pixel
+        /// as a PNG in false colour (against a traced image only).
+        #[arg(long, value_name = "PNG")]
+        difference: Option<PathBuf>,
+        /// Where the difference image's colours saturate, ± percent.
+        #[arg(long, value_name = "PERCENT", allow_negative_numbers = true, default_value_t = 5.0)]
+        difference_scale: f64,
     },
     /// Camera images (linear EXR, tone-mapped PNG) of a solution written by `solve`.
     Render {
@@ -404,9 +411,20 @@ fn run(command: Command) -> anyhow::Result<()> {
             let job = cli::trace::TraceJob { cameras, spp, probe_samples, photons, bins_of, options, output };
             cli::trace::run(&case, &discretize, &job)
         }
-        Command::Agree { solution, reference, camera, samples, shading, gather_rays, precise } => {
+        Command::Agree {
+            solution,
+            reference,
+            camera,
+            samples,
+            shading,
+            gather_rays,
+            precise,
+            difference,
+            difference_scale,
+        } => {
             let rendering = cli::agree::Rendering { camera: camera.as_deref(), samples, shading, gather_rays };
-            cli::agree::run(&solution, &reference, &rendering, precise)
+            let difference = difference.as_deref().map(|path| cli::agree::Difference { path, scale: difference_scale });
+            cli::agree::run(&solution, &reference, &rendering, precise, difference.as_ref())
         }
         Command::Report { solution, output } => cli::report::run(&solution, output),
         Command::Glare { table, csv, spacing } => cli::glare_table::run(&table, csv, spacing),

@@ -3,14 +3,15 @@
 //! HDF5 file of `ugo trace --forward` (compared per `(patch, cell)`, on the same mesh and
 //! direction set) or the mean image of `ugo trace --camera` (`X.exr`, its standard errors
 //! in `X-stderr.exr`; compared per pixel with the solution rendered through the same
-//! camera, flat, smooth or with a final gather).
+//! camera, flat, smooth or with a final gather), and on request the picture of their
+//! relative difference per pixel (`--difference`, `ugo::io::write_difference`).
 
 use super::options::ShadingArg;
 use super::render::{describe, shading_of};
 use super::sibling;
 use anyhow::{Result, bail};
 use std::path::Path;
-use ugo::io::{StoredSolution, read_exr, read_solution};
+use ugo::io::{StoredSolution, read_exr, read_solution, relative_difference, write_difference};
 use ugo::luminaire::Source;
 use ugo::model::{Fingerprint, Part};
 use ugo::placement::{Place, places};
@@ -28,13 +29,39 @@ pub struct Rendering<'a> {
     pub gather_rays: usize,
 }
 
-pub fn run(solution: &Path, reference: &Path, rendering: &Rendering, precise: f64) -> Result<()> {
+/// The picture of the relative difference per pixel (`--difference`).
+pub struct Difference<'a> {
+    /// The PNG written.
+    pub path: &'a Path,
+    /// Where its colours saturate, ± percent.
+    pub scale: f64,
+}
+
+pub fn run(
+    solution: &Path,
+    reference: &Path,
+    rendering: &Rendering,
+    precise: f64,
+    difference: Option<&Difference>,
+) -> Result<()> {
     if !(precise > 0.0 && precise < 1.0) {
         bail!("--precise must lie between 0 and 1 (a relative standard error), got {precise}");
     }
     let shading = shading_of(rendering.shading, rendering.gather_rays)?;
-    let stored = read_solution(solution)?;
     let is_image = reference.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"));
+    if let Some(d) = difference {
+        if !is_image {
+            bail!(
+                "--difference draws a traced image's pixels: give `ugo trace --camera`'s X.exr as the reference, not {}",
+                reference.display()
+            );
+        }
+        if !(d.scale.is_finite() && d.scale > 0.0) {
+            bail!("--difference-scale must be a positive percentage, got {}", d.scale);
+        }
+        super::check_writable(d.path)?;
+    }
+    let stored = read_solution(solution)?;
     if !is_image {
         return against_estimate(solution, reference, &stored, precise);
     }
@@ -81,6 +108,22 @@ pub fn run(solution: &Path, reference: &Path, rendering: &Rendering, precise: f6
     );
     println!("  per pixel: {} × {}", mean.width, mean.height);
     summary(&agreement(&image.luminance, &mean.luminance, &error.luminance));
+    if let Some(d) = difference {
+        write_difference(d.path, &image, &mean, &error, d.scale)?;
+        let beyond: Vec<f64> = (0..image.luminance.len())
+            .filter_map(|i| relative_difference(image.luminance[i], mean.luminance[i], error.luminance[i]))
+            .collect();
+        let share = |keep: fn(&f64) -> bool| {
+            100.0 * beyond.iter().filter(|r| keep(r)).count() as f64 / mean.luminance.len() as f64
+        };
+        println!(
+            "  difference image     {}   (±{} %; beyond 2σ: {:.1} % of the pixels above, {:.1} % below)",
+            d.path.display(),
+            d.scale,
+            share(|r| *r > 0.0),
+            share(|r| *r < 0.0)
+        );
+    }
     Ok(())
 }
 

@@ -51,8 +51,9 @@ pub fn colour(t: f64) -> RGBColor {
     interpolate(&STOPS, t)
 }
 
-/// The colour of a position `t ∈ [0, 1]` on `scale`'s colour map.
-fn paint(scale: Scale, t: f64) -> RGBColor {
+/// The colour of a position `t ∈ [0, 1]` on `scale`'s colour map; shared with the
+/// difference pictures (`super::difference_map`).
+pub(super) fn paint(scale: Scale, t: f64) -> RGBColor {
     match scale {
         Scale::Signed => interpolate(&DIVERGING, t),
         Scale::Linear | Scale::Log => colour(t),

@@ -1,13 +1,15 @@
 //! Files: the HDF5 dump of a solve (`docs/design.md` §8) written and read back,
 //! the HDF5 file of a forward Monte Carlo estimate, convergence plots, and rendered images
-//! (linear EXR, read back for comparisons; tone-mapped PNG; false colour), the grids'
-//! plans, the spectrum of `K` with its plot, and the HTML report of a solved case.
+//! (linear EXR, read back for comparisons; tone-mapped PNG; false colour; the difference
+//! from a traced reference), the grids' plans, the spectrum of `K` with its plot, and the
+//! HTML report of a solved case.
 
 mod atomic;
 mod basis_plot;
 mod bytes_file;
 mod dataset;
 mod daylight_group;
+mod difference_map;
 mod error;
 mod estimate_file;
 mod export;
@@ -46,6 +48,7 @@ mod warning_lines;
 
 pub use basis_plot::basis_plot;
 pub use bytes_file::write_bytes;
+pub use difference_map::{DIFFERENCE_SIDE, WITHIN_NOISE, magnification, relative_difference, write_difference};
 pub use error::IoError;
 pub use estimate_file::{EstimateFile, write_estimate};
 pub use export::{ExportError, Format, export};

@@ -5,6 +5,7 @@
 mod backward;
 mod cli;
 mod daylight;
+mod difference;
 mod forward;
 mod forward_daylight;
 mod furnace;
