@@ -2,7 +2,8 @@
 //! grid target, an observer, a glare grid feeding the grid's UGR and a light scene, solved; its case file removed; the page
 //! checked by `report_check.py` (a strict HTML parse, every table row as long as its
 //! header, every plan a PNG data: URI, no outside reference, the grid, luminaire,
-//! daylight, glare, glare-grid, light-scene and surface figures equal to the HDF5 file's as shown);
+//! daylight, glare, glare-grid, light-scene (their observers' UGR coloured against `UGR_L`), surface and
+//! probe figures (with their error bars, in every light scene) equal to the HDF5 file's as shown);
 //! `-o` and the default name; a file that is not a solution refused naming it; the furnace
 //! box, which has none of the optional parts, reads 5π lx on every side of its room.
 
@@ -77,7 +78,7 @@ fn the_report_of_a_daylit_office_parses_and_shows_the_files_figures() {
     let attr = |g: &str, n: &str| file.group(g).unwrap().attr(n).unwrap().read_scalar::<f64>().unwrap();
     assert_eq!(attr("grids/work_plane", "UGR"), attr("glare_grids/seats", "UGR_max"));
     let tables = ["grids", "luminaires", "observers", "glare-grids", "glare-grid-1", "light-scenes", "daylight-grids"];
-    for table in tables.into_iter().chain(["daylight-probes", "surfaces"]) {
+    for table in tables.into_iter().chain(["daylight-probes", "surfaces", "probes"]) {
         assert!(said.contains(table), "no table {table}: {said}");
     }
     let html = std::fs::read_to_string(&page).unwrap();

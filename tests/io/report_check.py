@@ -11,7 +11,10 @@ is derived here again from /field/illuminance and /mesh, and each glare grid's l
 per position from /glare_grids/<name>/ugr; each grid's UGR (its attribute `UGR`, shown in
 the grids' and light scenes' tables) is derived again as the largest of the observers and
 the glare grids that name it (/observers/grid, /glare_grids/<name> attribute `grid`), for
-the case and each light scene. Prints "report_check: ok".
+the case and each light scene; each light scene's observers' UGR is checked with its
+colour against /observers/ugr_limit, and the probes' table (illuminance ± bar, direct
+part, luminance, and the illuminance ± bar in each light scene) against /probes and
+/light_scenes/<name>/probes. Prints "report_check: ok".
 """
 
 import base64
@@ -35,7 +38,7 @@ class Page(HTMLParser):
     def __init__(self):
         super().__init__(convert_charrefs=True)
         self.stack, self.tables, self.images, self.doctype = [], {}, [], False
-        self.table, self.row, self.cell = None, None, None
+        self.table, self.row, self.cell, self.cell_class = None, None, None, None
 
     def handle_decl(self, decl):
         self.doctype = decl.lower() == "doctype html"
@@ -51,12 +54,14 @@ class Page(HTMLParser):
         if tag == "img":
             self.images.append(attrs.get("src", ""))
         if tag == "table":
-            self.table = {"head": [], "rows": []}
+            self.table = {"head": [], "rows": [], "classes": []}
             self.tables[attrs.get("id", f"table{len(self.tables)}")] = self.table
         elif tag == "tr":
             self.row = []
         elif tag in ("td", "th"):
-            self.cell = ""
+            self.cell, self.cell_class = "", None
+        elif tag == "span" and self.cell is not None:
+            self.cell_class = attrs.get("class")
         if tag not in VOID:
             self.stack.append(tag)
 
@@ -73,15 +78,16 @@ class Page(HTMLParser):
             fail(f"</{tag}> closes <{self.stack[-1] if self.stack else 'nothing'}> (line {self.getpos()[0]})")
         self.stack.pop()
         if tag in ("td", "th"):
-            self.row.append((tag, self.cell.strip()))
+            self.row.append((tag, self.cell.strip(), self.cell_class))
             self.cell = None
         elif tag == "tr":
-            kinds = {k for k, _ in self.row}
-            cells = [c for _, c in self.row]
+            kinds = {k for k, _, _ in self.row}
+            cells = [c for _, c, _ in self.row]
             if kinds == {"th"} and not self.table["head"]:
                 self.table["head"] = cells
             else:
                 self.table["rows"].append(cells)
+                self.table["classes"].append([c for _, _, c in self.row])
 
     def handle_data(self, data):
         if self.cell is not None:
@@ -273,9 +279,43 @@ def check_grid_ugr(h5, prefix=""):
 
 def check_light_scenes(table, h5):
     grid = table["head"].index("grid")
-    for row in table["rows"]:
+    observers = [text(n) for n in h5["observers/name"]] if "observers/name" in h5 else []
+    limits = np.asarray(h5["observers/ugr_limit"]) if observers else []
+    for row, classes in zip(table["rows"], table["classes"]):
         if row[grid] != "—":
             check_stats(row[grid + 1:grid + 10], h5[f"light_scenes/{row[0]}/grids/{row[grid]}"].attrs, f"light scene {row[0]}")
+        ugrs = np.asarray(h5[f"light_scenes/{row[0]}/observers/ugr"]) if observers else []
+        for k, (name, value, limit) in enumerate(zip(observers, ugrs, limits)):
+            column = table["head"].index(f"UGR {name}")
+            if row[column] != ugr_shown(value):
+                fail(f"light scene {row[0]}, observer {name}: UGR {row[column]}, the file holds {value}")
+            met = None if not np.isfinite(limit) else ("pass" if not np.isfinite(value) or value <= limit else "fail")
+            if classes[column] != met:
+                fail(f"light scene {row[0]}, observer {name}: UGR {value} against UGR_L {limit} shown as {classes[column]}")
+
+
+def check_probes(table, h5):
+    """Each probe's illuminance with its bar, direct part and luminance, and its illuminance
+    with its bar in each light scene, as /probes and /light_scenes/<name>/probes hold them."""
+    names = [text(n) for n in h5["probes/name"]]
+    if [row[0] for row in table["rows"]] != names:
+        fail(f"the probes' table lists {[row[0] for row in table['rows']]}, the file {names}")
+    scenes = [text(s) for s in h5["light_groups/scene_names"]] if "light_groups/scene_names" in h5 else []
+    head = ["probe", "kind", "illuminance (lx)", "of it direct (lx)", "luminance (cd/m²)"]
+    head += [f"illuminance in {s} (lx)" for s in scenes]
+    if table["head"] != head:
+        fail(f"the probes' table's header {table['head']}, expected {head}")
+
+    def with_bar(at, i):
+        value = shown(h5[f"{at}/illuminance"][i], 1)
+        bar = h5[f"{at}/error"][i] if f"{at}/error" in h5 else np.nan
+        return f"{value} ± {bar:.1f}" if np.isfinite(bar) and value != "—" else value
+
+    for i, row in enumerate(table["rows"]):
+        expected = [with_bar("probes", i), shown(h5["probes/direct"][i], 1), shown(h5["probes/luminance"][i], 2)]
+        expected += [with_bar(f"light_scenes/{s}/probes", i) for s in scenes]
+        if row[2:] != expected:
+            fail(f"probe {row[0]}: the page shows {row[2:]}, the file holds {expected}")
 
 
 def main():
@@ -305,6 +345,7 @@ def main():
             "daylight-grids": check_daylight,
             "observers": check_observers,
             "light-scenes": check_light_scenes,
+            "probes": check_probes,
         }
         for name, check in checks.items():
             if name in page.tables:

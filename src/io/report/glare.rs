@@ -11,6 +11,16 @@ pub(super) fn ugr(value: f64) -> String {
     if value.is_finite() { format!("{value:.1}") } else { "no source".to_string() }
 }
 
+/// A UGR as shown against its limit `limit` (`UGR_L`): coloured as met or not where the
+/// limit is finite, plain otherwise.
+pub(super) fn ugr_against(value: f64, limit: f64) -> String {
+    if !limit.is_finite() {
+        return ugr(value);
+    }
+    let class = if !value.is_finite() || value <= limit { "pass" } else { "fail" };
+    format!("<span class=\"{class}\">{}</span>", ugr(value))
+}
+
 /// The observers' table, or nothing for a case without observers.
 pub(super) fn observers(h: &H5) -> Result<Option<String>> {
     if !h.has("observers/name") {

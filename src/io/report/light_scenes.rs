@@ -1,11 +1,11 @@
 //! The report's light scenes (`docs/report.md`): for every `[[light_scene]]` of
 //! `/light_groups` its groups' levels, the flux it emits and, from
-//! `/light_scenes/<name>`, every grid against its targets and every observer's UGR; then
+//! `/light_scenes/<name>`, every grid against its targets and every observer's UGR (against its `UGR_L`, coloured); then
 //! each grid's plan in each light scene, its luminaires drawn full, dimmed or off.
 
 use super::super::grid_map::Shown;
 use super::super::read::{Result, Why};
-use super::glare::ugr;
+use super::glare::ugr_against;
 use super::grids::{figures, plan, reading, sources, target_head};
 use super::h5::H5;
 use super::html::{escape, image, number, section, table};
@@ -19,6 +19,7 @@ pub(super) fn light_scenes(h: &H5, stored: &StoredSolution) -> Result<Option<Str
     let (groups, scenes) = (h.strings("light_groups/name")?, h.strings("light_groups/scene_names")?);
     let factors = h.numbers_of("light_groups/factors", groups.len() * scenes.len())?;
     let observers = if h.has("observers/name") { h.strings("observers/name")? } else { Vec::new() };
+    let limits = if observers.is_empty() { Vec::new() } else { h.numbers_of("observers/ugr_limit", observers.len())? };
     let grids = &stored.scene.grids;
     let mut head =
         vec!["light scene".to_string(), "groups".to_string(), "flux emitted (lm)".to_string(), "grid".to_string()];
@@ -49,7 +50,7 @@ pub(super) fn light_scenes(h: &H5, stored: &StoredSolution) -> Result<Option<Str
                 }
                 None => row.extend(std::iter::repeat_n("—".to_string(), target_head().len() + 1)),
             }
-            row.extend(ugrs.iter().map(|&u| ugr(u)));
+            row.extend(ugrs.iter().zip(&limits).map(|(&u, &l)| ugr_against(u, l)));
             rows.push(row);
         }
     }

@@ -17,6 +17,7 @@ mod html;
 mod light_scenes;
 mod luminaires;
 mod page;
+mod probes;
 mod surfaces;
 
 use super::IoError;

@@ -33,7 +33,7 @@ pub(super) fn page(h: &H5, stored: &StoredSolution, file: &str) -> Result<String
         super::light_scenes::light_scenes(h, stored)?,
         super::daylight::daylight(h, stored)?,
         Some(super::surfaces::surfaces(h, stored)?),
-        probes(h)?,
+        super::probes::probes(h)?,
         warnings(h)?,
     ];
     body += &sections.into_iter().flatten().collect::<String>();
@@ -71,25 +71,6 @@ fn solve(h: &H5, stored: &StoredSolution, file: &str) -> String {
     ];
     let rows: Vec<Vec<String>> = rows.into_iter().map(|(k, v)| vec![k.to_string(), v]).collect();
     section("case", "Case and solve", &table("case", &["quantity".to_string(), "value".to_string()], &rows))
-}
-
-/// The probes' readings, or nothing for a case without probes.
-fn probes(h: &H5) -> Result<Option<String>> {
-    let names = if h.has("probes/name") { h.strings("probes/name")? } else { Vec::new() };
-    if names.is_empty() {
-        return Ok(None);
-    }
-    let n = names.len();
-    let kinds = h.strings("probes/kind")?;
-    let (e, l) = (h.numbers_of("probes/illuminance", n)?, h.numbers_of("probes/luminance", n)?);
-    let rows: Vec<Vec<String>> = (0..n)
-        .map(|i| {
-            let kind = kinds.get(i).map_or("—".to_string(), |k| escape(k));
-            vec![escape(&names[i]), kind, number(e[i], 1), number(l[i], 2)]
-        })
-        .collect();
-    let head = ["probe", "kind", "illuminance (lx)", "luminance (cd/m²)"].map(str::to_string);
-    Ok(Some(section("probes", "Probes", &table("probes", &head, &rows))))
 }
 
 /// The warnings the solve stored, or nothing when there are none.
