@@ -12,6 +12,7 @@ from petsc4py import PETSc
 
 import block_jacobi
 import hierarchy
+import hyperslabs
 import part_blocks
 import parts
 import solution_file
@@ -22,7 +23,8 @@ from crossing import crossing
 def solve(args, tolerance, max_iterations, comm, say, stored):
     """FGMRES with block Jacobi by part for each number of parts of `--parts`: the first's
     kernel (its leaves laid out by its parts), the runs and, per run, the inner iterations,
-    the seconds spent reading and the light crossing parts; `stored(kernel)` describes the
+    the seconds spent reading, what each rank read (`Record.summary`) and the light
+    crossing parts; `stored(kernel)` describes the
     kernel's factors for the first line."""
     if not hierarchy.is_hierarchical(args.solution):
         raise SystemExit(f"ugo_petsc: {args.solution}: --parts needs a hierarchical kernel (ugo solve CASE --kernel hierarchical --save-kernel)")
@@ -34,8 +36,9 @@ def solve(args, tolerance, max_iterations, comm, say, stored):
         start = time.perf_counter()
         bounds = parts.bounds(parts.leaf_parts(args.solution, count), count)
         leaves = (int(bounds[mine.start]), int(bounds[mine.stop]))
-        kernel = hierarchy.from_solution(args.solution, comm, leaves)
-        blocks = part_blocks.part_blocks(args.solution, bounds, mine)
+        record = hyperslabs.Record()
+        kernel = hierarchy.from_solution(args.solution, comm, leaves, record)
+        blocks = part_blocks.part_blocks(args.solution, bounds, mine, record)
         read = time.perf_counter() - start
         if first is None:
             first = kernel
@@ -48,7 +51,8 @@ def solve(args, tolerance, max_iterations, comm, say, stored):
         if run.reason <= 0:
             raise SystemExit(1 if comm.getRank() else f"ugo_petsc: {args.solution}: block Jacobi by {count} parts did not converge (reason {run.reason})")
         runs.append(run)
-        crossings.append({"parts": count, "inner_iterations": inner_total, "read_seconds": read, "crossing_norm": norm, "crossing_light": light})
+        crossings.append({"parts": count, "inner_iterations": inner_total, "read_seconds": read, "crossing_norm": norm, "crossing_light": light,
+                          "read": hyperslabs.per_rank(record.summary(), comm)})
     return first, runs, crossings
 
 
