@@ -151,18 +151,18 @@ def positions_in(ordered, ids):
     return index, found
 
 
-def pull(tree, share, found, node_rows, first, count):
-    """Rows `node_rows` (sorted node positions) of R over the leaves `[first, first +
-    count)`, from their `ancestry`: node ← each leaf under it by the product of the area
-    shares; a cluster's row is its cell 0, `μ_m/π` per cell."""
+def pull(tree, share, found, node_rows, first, count, send):
+    """Rows `node_rows` (sorted node positions) of R·diag(send) over the leaves `[first,
+    first + count)` (`send` theirs), from their `ancestry`: node ← each leaf under it by
+    the product of the area shares; a cluster's row is its cell 0, `μ_m/π` per cell."""
     leaf, at, omega = found
     cells = len(share)
     index, mine = positions_in(node_rows, at)
-    leaf, row, omega, spread = leaf[mine] - first, index[mine], omega[mine], tree.cluster[at[mine]]
+    leaf, row, omega, spread = leaf[mine] - first, index[mine], omega[mine], tree.cluster[at[mine], None]
     cell = np.arange(cells)
-    rows = np.concatenate([(row[~spread, None] * cells + cell).ravel(), np.repeat(row[spread] * cells, cells)])
-    cols = np.concatenate([(leaf[~spread, None] * cells + cell).ravel(), (leaf[spread, None] * cells + cell).ravel()])
-    vals = np.concatenate([np.repeat(omega[~spread], cells), (omega[spread, None] * share).ravel()])
+    rows = (row[:, None] * cells + np.where(spread, 0, cell)).ravel()
+    cols = (leaf[:, None] * cells + cell).ravel()
+    vals = (omega[:, None] * np.where(spread, share, 1.0) * send[leaf, None]).ravel()
     return sp.csr_matrix((vals, (rows, cols)), shape=(len(node_rows) * cells, count * cells))
 
 
@@ -175,9 +175,9 @@ def _node_pull(h, tree, share, node_rows, record):
     cells, leaves = len(share), len(tree.leaf_position)
     walked = np.flatnonzero(tree.leaf_position >= a)
     start = int(walked[0]) if len(walked) else leaves
-    send = np.repeat(span(h["send"], start, leaves, record), cells)
-    tail = pull(tree, share, ancestry(tree, walked), np.arange(a, b), start, leaves - start) @ sp.diags(send)
-    return sp.hstack([sp.csr_matrix(((b - a) * cells, start * cells)), tail], format="csr")
+    send = span(h["send"], start, leaves, record)
+    tail = pull(tree, share, ancestry(tree, walked), np.arange(a, b), start, leaves - start, send)
+    return sp.csr_matrix((tail.data, tail.indices + start * cells, tail.indptr), shape=(tail.shape[0], leaves * cells))
 
 
 # The entries of a gather row (a bundle's links) and of a push row (a leaf's shares).
@@ -188,15 +188,25 @@ PUSH_FIELDS = ("bundle", "share")
 def links(row, values, share, count, nodes):
     """`count` rows of Λ, from the gather entries `values` of rows `row` (`Csr.rows`):
     bundle `(b, d)` ← node `(q, m)` by `f`; `d = ALL_CELLS` spreads `f` over the bundle's
-    cells as `μ_d/π`."""
+    cells as `μ_d/π` (its cell 0 in place, the other cells after). Built in PETSc's index
+    type, in place where it can: this is the largest factor, and its temporaries set the
+    peak memory of a rank."""
     cells = len(share)
-    source, d, m = (values[name].astype(np.int64) for name in ("source", "d", "m"))
-    f = values["f"]
+    d, f = values["d"], values["f"]
     spread = d == ALL_CELLS
-    rows = [row[~spread] * cells + d[~spread]] + [row[spread] * cells + c for c in range(cells)]
-    cols = [source[~spread] * cells + m[~spread]] + [source[spread] * cells + m[spread]] * cells
-    vals = [f[~spread]] + [f[spread] * share[c] for c in range(cells)]
-    return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(count * cells, nodes * cells))
+    col = values["source"].astype(PETSc.IntType)
+    col *= cells
+    col += values["m"]
+    rows = row.astype(PETSc.IntType)
+    rows *= cells
+    rows += np.where(spread, 0, d)
+    vals = f.copy()
+    vals[spread] *= share[0]
+    if cells > 1 and spread.any():
+        rows = np.concatenate([rows] + [(row[spread] * cells + c).astype(PETSc.IntType) for c in range(1, cells)])
+        col = np.concatenate([col] + [col[spread]] * (cells - 1))
+        vals = np.concatenate([vals] + [f[spread] * share[c] for c in range(1, cells)])
+    return sp.csr_matrix((vals, (rows, col)), shape=(count * cells, nodes * cells))
 
 
 def pushed(row, values, cells, count, bundles):

@@ -76,18 +76,21 @@ class Csr:
     def rows(self, ids, fields):
         """Rows `ids` (distinct, any order): `(row, values)`, `row[e]` the index in `ids`
         of entry `e`'s row, `values[field]` the entries of `fields`, read run by run of
-        consecutive rows."""
+        consecutive rows straight into their place."""
         ids = np.asarray(ids, dtype=np.int64)
         order = np.argsort(ids, kind="stable")
         ordered = ids[order]
         self.record.add(self.name, ordered)
-        pieces = {field: [] for field in fields}
+        sizes = self.indptr[ordered + 1] - self.indptr[ordered]
+        values = {field: np.empty(int(sizes.sum()), dtype=self.csr[field].dtype) for field in fields}
+        at = 0
         for first, last in runs(ordered):
-            for field in fields:
-                pieces[field].append(span(self.csr[field], int(self.indptr[first]), int(self.indptr[last]), self.record))
-        row = np.repeat(order, self.indptr[ordered + 1] - self.indptr[ordered])
-        values = {field: np.concatenate(parts) if parts else self.csr[field][:0] for field, parts in pieces.items()}
-        return row, values
+            s, e = int(self.indptr[first]), int(self.indptr[last])
+            for field in fields if e > s else ():
+                self.csr[field].read_direct(values[field], np.s_[s:e], np.s_[at : at + e - s])
+                self.record.bytes += (e - s) * values[field].itemsize
+            at += e - s
+        return np.repeat(order, sizes), values
 
 
 def per_rank(values, comm):

@@ -137,29 +137,23 @@ def _local_kernel(own, twins, where, reflect, transmit, transmits, material, twi
     cells = reflect.shape[1]
     extra = own.shape[0]
     stacked = sp.vstack([own, twins], format="csr")
-    b = blocks(reflect, transmit, transmits, material, twin, lambda j: j * cells, lambda t: extra + where[t], stacked.shape[0])
+    b = blocks(reflect, transmit, transmits, material, twin, lambda j: j * cells, lambda t: extra + np.array([where[p] for p in t.tolist()], dtype=np.int64), stacked.shape[0])
     return (b @ stacked).tocsr()
 
 
 def blocks(reflect, transmit, transmits, material, twin, own_column, twin_column, columns):
     """This rank's rows of B (its patches `material`, `twin`), as scipy CSR with `columns`
     columns: patch j's row block `ρ̄_m(j)` at column `own_column(j)` and, behind a two-sided
-    transmitting surface, `τ̄_m(j)` at `twin_column(twin[j])`."""
+    transmitting surface, `τ̄_m(j)` at `twin_column(twin[j])` (both of arrays of patches)."""
     cells = reflect.shape[1]
-    rows, cols, vals = [], [], []
-    out, inc = np.meshgrid(np.arange(cells), np.arange(cells), indexing="ij")
-    for j, (m, t) in enumerate(zip(material, twin)):
-        rows.append((j * cells + out).ravel())
-        cols.append((own_column(j) + inc).ravel())
-        vals.append(reflect[m].ravel())
-        if t != NO_TWIN and transmits[m]:
-            rows.append((j * cells + out).ravel())
-            cols.append((twin_column(int(t)) + inc).ravel())
-            vals.append(transmit[m].ravel())
+    out, inc = (a.ravel() for a in np.meshgrid(np.arange(cells), np.arange(cells), indexing="ij"))
+    own = np.arange(len(material))
+    through = own[(twin != NO_TWIN) & (transmits[material] != 0)]
+    rows = [own[:, None] * cells + out, through[:, None] * cells + out]
+    cols = [own_column(own)[:, None] + inc, twin_column(twin[through].astype(np.int64))[:, None] + inc]
+    vals = [reflect[material].reshape(len(own), cells * cells), transmit[material[through]].reshape(len(through), cells * cells)]
     shape = (len(material) * cells, columns)
-    if not vals:
-        return sp.csr_matrix(shape)
-    return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=shape)
+    return sp.csr_matrix((np.concatenate(vals, axis=None), (np.concatenate(rows, axis=None), np.concatenate(cols, axis=None))), shape=shape)
 
 
 def from_export(folder, cells, comm=PETSc.COMM_WORLD):

@@ -71,7 +71,7 @@ def part_blocks(path, bounds, mine, record=None):
             factors = _factors(h, tree, gather, push, share, (a, b), lit, record)
             column = {int(t): i for i, t in enumerate(lit)}
             cells = len(share)
-            B = blocks(reflect, transmit, transmits, material[own], twin[own], lambda j: j * cells, lambda t: column[t] * cells, len(lit) * cells)
+            B = blocks(reflect, transmit, transmits, material[own], twin[own], lambda j: j * cells, lambda t: np.array([column[p] for p in t.tolist()], dtype=np.int64) * cells, len(lit) * cells)
             K = chain(factors + [_seq(B)])
             out.append(Block(part=p, first=a, last=b, K=K, A=system.shell(K)))
     return out
@@ -86,17 +86,23 @@ def _factors(h, tree, gather, push, share, leaves, lit, record):
     a, b = leaves
     found = ancestry(tree, np.arange(a, b))
     nodes = np.unique(found[1])
-    R = pull(tree, share, found, nodes, a, b - a) @ sp.diags(np.repeat(span(h["send"], a, b, record), cells))
+    R = pull(tree, share, found, nodes, a, b - a, span(h["send"], a, b, record))
     above = np.flatnonzero(R.getnnz(axis=1))
     row, values = push.rows(lit, PUSH_FIELDS)
     taken = np.unique(values["bundle"]).astype(np.int64)
     receive = at(h["receive"], lit, record)
     P = sp.diags(np.repeat(receive, cells)) @ pushed(row, {**values, "bundle": np.searchsorted(taken, values["bundle"])}, cells, len(lit), len(taken))
+    Lam = links(*_reaching(gather, taken, nodes), share, len(taken), len(nodes))
+    return [_seq(R[above]), _seq(Lam[:, above]), _seq(P)]
+
+
+def _reaching(gather, taken, nodes):
+    """Of the links of the bundles `taken` (their gather rows), those whose source is one of
+    `nodes` (sorted): the others read no leaf of the part. Their rows (indices in `taken`)
+    and entries, the sources as indices in `nodes`."""
     row, values = gather.rows(taken, LINK_FIELDS)
     source, reached = positions_in(nodes, values["source"])
-    kept = {name: v[reached] for name, v in values.items()} | {"source": source[reached]}
-    Lam = links(row[reached], kept, share, len(taken), len(nodes))
-    return [_seq(R[above]), _seq(Lam[:, above]), _seq(P)]
+    return row[reached], {name: v[reached] for name, v in values.items()} | {"source": source[reached]}
 
 
 def _lit(a, b, material, twin, transmits):
