@@ -63,6 +63,12 @@ class Chain:
             f.mult(x, out)
             x = out
 
+    def destroy(self, mat):
+        """Frees the vectors between the factors with the shell (petsc4py calls it); the
+        factors are their owner's."""
+        for v in self.between:
+            v.destroy()
+
     def multTranspose(self, mat, x, y):
         ins = [x] + self.between[::-1]
         outs = self.between[::-1] + [y]

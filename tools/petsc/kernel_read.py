@@ -52,6 +52,13 @@ class Kernel:
     # is a shell over them (the hierarchy, hierarchy.py).
     factors: list = None
 
+    def destroy(self):
+        """Frees its PETSc objects now (petsc4py 3.18 frees a dropped one only at a
+        collective `garbage_cleanup`): by_parts.py reads one kernel per number of parts."""
+        for obj in [self.K, self.L0, self.G, self.D, self.one_minus] + (self.factors or []):
+            if obj is not None:
+                obj.destroy()
+
 
 def patch_range(patches, comm):
     """The patches [first, last) rank `comm.rank` owns: an even split of whole patches."""

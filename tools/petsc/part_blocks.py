@@ -48,6 +48,11 @@ class Block:
     K: PETSc.Mat
     A: PETSc.Mat
 
+    def destroy(self):
+        """Frees its PETSc objects now (as `kernel_read.Kernel.destroy`)."""
+        for obj in [self.A, self.K] + self.K.getPythonContext().factors:
+            obj.destroy()
+
 
 def part_blocks(path, bounds, mine, record=None):
     """The blocks of the parts `mine` (consecutive), part `p` holding the leaves
