@@ -160,7 +160,8 @@ def positions_in(ordered, ids):
 def pull(tree, share, found, node_rows, first, count, send):
     """Rows `node_rows` (sorted node positions) of R·diag(send) over the leaves `[first,
     first + count)` (`send` theirs), from their `ancestry`: node ← each leaf under it by
-    the product of the area shares; a cluster's row is its cell 0, `μ_m/π` per cell."""
+    the product of the area shares; a cluster's row is its cell 0, `μ_m/π` per cell. The
+    leaves that send nothing (`send = 0`) are left out."""
     leaf, at, omega = found
     cells = len(share)
     index, mine = positions_in(node_rows, at)
@@ -169,7 +170,9 @@ def pull(tree, share, found, node_rows, first, count, send):
     rows = (row[:, None] * cells + np.where(spread, 0, cell)).ravel()
     cols = (leaf[:, None] * cells + cell).ravel()
     vals = (omega[:, None] * np.where(spread, share, 1.0) * send[leaf, None]).ravel()
-    return sp.csr_matrix((vals, (rows, cols)), shape=(len(node_rows) * cells, count * cells))
+    R = sp.csr_matrix((vals, (rows, cols)), shape=(len(node_rows) * cells, count * cells))
+    R.eliminate_zeros()
+    return R
 
 
 def _node_pull(h, tree, share, node_rows, record):
