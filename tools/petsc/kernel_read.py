@@ -29,6 +29,8 @@ import numpy as np
 import scipy.sparse as sp
 from petsc4py import PETSc
 
+import hyperslabs
+
 NO_TWIN = 0xFFFFFFFF
 
 
@@ -66,17 +68,6 @@ def patch_range(patches, comm):
     base, extra = divmod(patches, size)
     first = rank * base + min(rank, extra)
     return first, first + base + (1 if rank < extra else 0)
-
-
-def _runs(patches):
-    """Sorted patch ids as contiguous runs [(first, last), ...)."""
-    runs = []
-    for p in sorted(set(patches)):
-        if runs and runs[-1][1] == p:
-            runs[-1][1] = p + 1
-        else:
-            runs.append([p, p + 1])
-    return runs
 
 
 def _rows(g, indptr, runs, cells, n):
@@ -123,7 +114,7 @@ def from_solution(path, comm=PETSc.COMM_WORLD):
         indptr = k["G/indptr"][:].astype(np.int64)
         own = _rows(k["G"], indptr, [[first, last]], cells, n)
         behind = [int(twin[i]) for i in range(first, last) if twin[i] != NO_TWIN and transmits[material[i]]]
-        runs = _runs(behind)
+        runs = [(int(a), int(b)) for a, b in hyperslabs.runs(np.unique(np.asarray(behind, dtype=np.int64)))]
         twins = _rows(k["G"], indptr, runs, cells, n)
         where = {}
         offset = 0
