@@ -33,9 +33,9 @@ import h5py
 import numpy as np
 
 from check import HERE, HIERARCHY, HIERARCHY_SOLUTION, OPAL, ROOT, check, failures, field, relative, run
+from kernel_check import NO_TWIN
 
 ROOT_POSITION = "kernel/hierarchy/leaves/root_position"
-NO_TWIN = 0xFFFFFFFF
 
 
 def by_parts(mine, work, ranks, counts, name="parts"):

@@ -9,9 +9,11 @@ hyperslab, so HDF5 reads those entries alone. `span` reads a run of a per-row ar
 (`receive`, `L0`, …) the same way, `at` some rows of one run by run, and `whole` an
 array every rank needs whole (the tree).
 
-Every read goes through a `Record`: the bytes read, and the distinct rows of each CSR,
-which the report gives per rank (`--report`: `parts[i].read`) and check_parts.py compares
-with the rows the rank's parts and factors need.
+Every read of the operator and of the per-leaf arrays goes through a `Record` (the
+material blocks, the directions and parts.py's root positions, a few kB, do not): the
+bytes read, and the distinct rows of each CSR, which the report gives per rank with its
+peak resident memory (`per_rank`, `peak_resident`; `--report`: `parts[i].read`) and
+check_parts.py compares with the rows the rank's parts and factors need.
 """
 
 import numpy as np
