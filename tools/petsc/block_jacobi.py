@@ -38,6 +38,11 @@ class ByPart:
             self.inner_iterations += ksp.getIterationNumber()
             ys[rows] = z.getArray(readonly=True)
 
+    def destroy(self, pc):
+        """Frees the inner solvers and their vectors with the PC (petsc4py calls it)."""
+        for obj in self.ksps + self.rhs + self.out:
+            obj.destroy()
+
 
 def _inner(A, inner, max_iterations):
     ksp = PETSc.KSP().create(comm=PETSc.COMM_SELF)
@@ -82,6 +87,8 @@ def solve(count, A, L0, blocks, offset, cells, tolerance, inner, max_iterations,
         residual=r.norm() / scale,
         solver=f"fgmres({restart}), pc block Jacobi by {count} parts (inner gmres to {inner:.0e})",
     )
+    for obj in (ksp, r):
+        obj.destroy()
     return run, inner_total
 
 

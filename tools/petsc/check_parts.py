@@ -13,6 +13,9 @@ file `hierarchy.h5` when check.py made it with this ugo), solved by ugo's `direc
   parts), each part's `K_pp` equals scipy's `K` (tests/io/kernel_check.py) restricted to
   the part to 1e-12 for 2, 4 and 8 parts, and 2 parts on 2 ranks give ugo's direct
   solution to 1e-10;
+* every rank reads, of the hierarchy's links (`gather`) and push, exactly the rows its
+  factors and its parts' blocks need (the report's rows read per rank against those
+  derived from the file's whole arrays), on the box and the opal diffuser;
 * parts that are not a multiple of the ranks, and a file without
   `/kernel/hierarchy/leaves/root_position`, are refused by name.
 
@@ -27,8 +30,10 @@ import sys
 import tempfile
 
 import h5py
+import numpy as np
 
 from check import HERE, HIERARCHY, HIERARCHY_SOLUTION, OPAL, ROOT, check, failures, field, relative, run
+from kernel_check import NO_TWIN
 
 ROOT_POSITION = "kernel/hierarchy/leaves/root_position"
 
@@ -42,6 +47,42 @@ def by_parts(mine, work, ranks, counts, name="parts"):
     figures = json.load(open(report))
     files = [out] + [f"{out.removesuffix('.h5')}-parts-{c}.h5" for c in counts[1:]]
     return [(f, figures["runs"][f"bjacobi:{c}"], p) for f, c, p in zip(files, counts, figures["parts"])]
+
+
+def needed_rows(path, count, ranks):
+    """Per rank, the distinct rows of `gather` and `push` that its factors of the
+    distributed operator and its parts' blocks need with `count` parts on `ranks` ranks,
+    from the file's whole arrays (not through hyperslabs.py): the push rows of the rank's
+    leaves and of their transmitting twins; the gather rows of its even share of the
+    bundles (its rows of Λ) and of every bundle those push rows take."""
+    with h5py.File(path, "r") as f:
+        k, h = f["kernel"], f["kernel/hierarchy/operator"]
+        part = f[ROOT_POSITION][:].astype(np.int64) * count // int(f["kernel/hierarchy"].attrs["roots"])
+        twin, material, transmits = k["twin"][:], k["patch_material"][:], k["B/transmits"][:]
+        indptr, bundle, bundles = h["push/indptr"][:], h["push/bundle"][:], len(h["gather/indptr"]) - 1
+    need = []
+    for rank in range(ranks):
+        own = np.flatnonzero(part // (count // ranks) == rank)
+        behind = twin[own][(twin[own] != NO_TWIN) & (transmits[material[own]] != 0)]
+        lit = np.union1d(own, behind)
+        taken = np.concatenate([bundle[indptr[leaf] : indptr[leaf + 1]] for leaf in lit])
+        base, extra = divmod(bundles, ranks)
+        first = rank * base + min(rank, extra)
+        share = np.arange(first, first + base + (rank < extra))
+        need.append([len(np.union1d(taken, share)), len(lit)])
+    return need
+
+
+def read_only_needed(path, out, ranks, count, part):
+    """The rows each rank read (the report's `read`: bytes, gather rows, push rows) are
+    exactly the rows it needs (`needed_rows`): a rank reading another's rows, or missing
+    one of its own, fails."""
+    read = [[int(r[1]), int(r[2])] for r in part["read"]]
+    want = needed_rows(path, count, ranks)
+    ok = read == want
+    print(f"check_parts: {os.path.basename(out)}, {count} parts, {ranks} rank(s): gather and push rows read per rank {read}, needed {want}{'' if ok else '  FAILED'}")
+    if not ok:
+        failures.append(f"rows read by {count} parts on {ranks} ranks")
 
 
 def hierarchy_file(ugo, work):
@@ -104,8 +145,9 @@ def twins(ugo, work):
     if said.returncode != 0:
         sys.exit(f"check_parts: the blocks against scipy failed:\n{said.stderr}")
     check("opal diffuser's hierarchy: K_pp against scipy's K restricted to the part (2, 4, 8 parts; twins across parts)", float(said.stdout), 1e-12)
-    for out, _, _ in by_parts(mine, work, 2, [2], "opal-parts"):
+    for out, _, part in by_parts(mine, work, 2, [2], "opal-parts"):
         check("opal diffuser's hierarchy, 2 parts, 2 ranks: against ugo's direct solution", relative(field(out), field(mine)), HIERARCHY_SOLUTION)
+        read_only_needed(mine, out, 2, 2, part)
 
 
 def main():
@@ -121,6 +163,7 @@ def main():
         for count, (out, figures, part) in zip(counts, by_parts(mine, work, ranks, counts)):
             what = f"block Jacobi by {count} parts, {ranks} rank(s)"
             check(f"{what}: against ugo's direct solution", relative(field(out), x), HIERARCHY_SOLUTION)
+            read_only_needed(mine, out, ranks, count, part)
             if count == 1:
                 check(f"{what}: outer iterations, the block being the whole operator", figures["iterations"], 2)
                 check(f"{what}: light crossing parts", part["crossing_norm"], 0.0)

@@ -21,7 +21,11 @@ def crossing(K, blocks, offset, cells, x):
         part.getArray()[:] = xs[rows]
         b.K.mult(part, out)
         ds[rows] = out.getArray(readonly=True)
+        part.destroy(), out.destroy()
     off = kx.duplicate()
     kx.copy(off)
     off.axpy(-1.0, diagonal)
-    return off.norm() / kx.norm(), off.sum() / kx.sum()
+    shares = off.norm() / kx.norm(), off.sum() / kx.sum()
+    for v in (kx, diagonal, off):
+        v.destroy()
+    return shares

@@ -19,7 +19,8 @@ factor is an AIJ matrix whose rows are split over the ranks and whose column spl
 row split of the factor applied before it, so the chain multiplies without redistribution:
 leaves by whole leaves (`kernel_read.patch_range`, as patches), nodes and bundles evenly.
 Every rank reads the tree whole (parents, weights, clusters, the leaves' positions: O(T))
-and only its own rows of the links' pieces and of the push.
+and, by hyperslabs (hyperslabs.py), only its own rows of the links' pieces, of the push and
+of the per-leaf vectors, and the `send` of the leaves its rows of the pull reach.
 
 `K` and `G = diag(receive)·P·Λ·R·diag(send)` (for the illuminance) are shell matrices
 applying the chain (`Chain`), with the transpose for SLEPc's SVD. `direct` needs `K` on the
@@ -27,11 +28,14 @@ leaves: `check_expansion` refuses it, naming the figures, when an upper bound on
 non-zeros does not fit the memory limit; `system.assembled` then multiplies the factors.
 """
 
+from dataclasses import dataclass
+
 import h5py
 import numpy as np
 import scipy.sparse as sp
 from petsc4py import PETSc
 
+from hyperslabs import Csr, Record, span, whole
 from kernel_read import NO_TWIN, Kernel, _mat, _vec, blocks, patch_range
 
 # `gather/d` of a link whose light arrives in all cells alike (`link.rs`'s ALL_CELLS).
@@ -59,6 +63,12 @@ class Chain:
             f.mult(x, out)
             x = out
 
+    def destroy(self, mat):
+        """Frees the vectors between the factors with the shell (petsc4py calls it); the
+        factors are their owner's."""
+        for v in self.between:
+            v.destroy()
+
     def multTranspose(self, mat, x, y):
         ins = [x] + self.between[::-1]
         outs = self.between[::-1] + [y]
@@ -74,87 +84,148 @@ def chain(factors):
     return m
 
 
-def from_solution(path, comm=PETSc.COMM_WORLD, leaf_rows=None):
+def from_solution(path, comm=PETSc.COMM_WORLD, leaf_rows=None, record=None):
     """`K = B·G` and `G` as chains of distributed factors, `L0` and `D`, from `path`; this
-    rank owns the leaves `leaf_rows` (first, last), by default an even split."""
+    rank owns the leaves `leaf_rows` (first, last), by default an even split, and reads
+    only its rows of each factor (hyperslabs.py; what it read is added to `record`)."""
+    record = record or Record()
     with h5py.File(path, "r") as f:
         k = f["kernel"]
         if "hierarchy/operator" not in k:
             raise SystemExit(f"ugo_petsc: {path}: /kernel says kernel = \"hierarchical\" but has no /kernel/hierarchy/operator; save it again with `ugo solve CASE --save-kernel`")
         share = f["directions/projected"][:] / np.pi
         h = k["hierarchy/operator"]
-        material, twin = k["patch_material"][:], k["twin"][:]
-        cells, leaves = len(share), len(material)
-        nodes, bundles = len(h["parent"]), len(h["gather/indptr"]) - 1
-        if k["B/reflection"].shape[1] != cells or len(h["leaf_position"]) != leaves:
-            raise SystemExit(f"ugo_petsc: {path}: /kernel/hierarchy has {len(h['leaf_position'])} leaves and /directions {cells} cells, /kernel {leaves} patches of {k['B/reflection'].shape[1]} cells")
+        tree = read_tree(h, record)
+        gather, push = Csr(h, "gather", record), Csr(h, "push", record)
+        cells, leaves, nodes = len(share), len(tree.leaf_position), len(tree.parent)
+        if k["B/reflection"].shape[1] != cells or len(k["patch_material"]) != leaves:
+            raise SystemExit(f"ugo_petsc: {path}: /kernel/hierarchy has {leaves} leaves and /directions {cells} cells, /kernel {len(k['patch_material'])} patches of {k['B/reflection'].shape[1]} cells")
         first, last = leaf_rows or patch_range(leaves, comm)
-        node_rows, bundle_rows = patch_range(nodes, comm), patch_range(bundles, comm)
+        node_rows, bundle_rows = patch_range(nodes, comm), patch_range(gather.count, comm)
         n, own = leaves * cells, (last - first) * cells
         sizes = [(b - a) * cells for a, b in (node_rows, bundle_rows)]
-        send, receive = np.repeat(h["send"][:], cells), np.repeat(h["receive"][first:last], cells)
-        R = _mat(_pull(h, share, node_rows) @ sp.diags(send), n, comm, columns=own)
-        Lam = _mat(_links(h, share, bundle_rows, nodes), nodes * cells, comm, columns=sizes[0])
-        P = _mat(sp.diags(receive) @ _push(h, cells, (first, last), bundles), bundles * cells, comm, columns=sizes[1])
+        R = _mat(_node_pull(h, tree, share, node_rows, record), n, comm, columns=own)
+        row, values = gather.rows(np.arange(*bundle_rows), LINK_FIELDS)
+        Lam = _mat(links(row, values, share, bundle_rows[1] - bundle_rows[0], nodes), nodes * cells, comm, columns=sizes[0])
+        receive = np.repeat(span(h["receive"], first, last, record), cells)
+        row, values = push.rows(np.arange(first, last), PUSH_FIELDS)
+        P = _mat(sp.diags(receive) @ pushed(row, values, cells, last - first, gather.count), gather.count * cells, comm, columns=sizes[1])
+        material, twin = span(k["patch_material"], first, last, record), span(k["twin"], first, last, record)
         reflect, transmit, transmits = k["B/reflection"][:], k["B/transmission"][:], k["B/transmits"][:]
-        B = _mat(blocks(reflect, transmit, transmits, material[first:last], twin[first:last], lambda j: (first + j) * cells, lambda t: t * cells, n), n, comm)
-        rows = slice(first * cells, last * cells)
-        l0, arriving = k["L0"][rows], k["direct/arriving"][rows]
+        B = _mat(blocks(reflect, transmit, transmits, material, twin, lambda j: (first + j) * cells, lambda t: t * cells, n), n, comm)
+        l0, arriving = (span(k[name], first * cells, last * cells, record) for name in ("L0", "direct/arriving"))
     factors = [R, Lam, P, B]
     return Kernel(K=chain(factors), L0=_vec(l0, n, comm), cells=cells, G=chain(factors[:3]), D=_vec(arriving, n, comm), factors=factors)
 
 
-def _pull(h, share, node_rows):
-    """Rows `node_rows` of R: node ← each leaf under it by the product of the area shares
-    from the leaf up (`operator/weight`); a cluster's row is its cell 0, `μ_m/π` per cell."""
-    parent, weight, cluster = h["parent"][:], h["weight"][:], h["cluster"][:].astype(bool)
-    at = h["leaf_position"][:].astype(np.int64)
-    cells, leaves = len(share), len(at)
-    leaf, omega = np.arange(leaves), np.ones(leaves)
-    found = []
+@dataclass
+class Tree:
+    """The operator's tree by depth-first position (`operator/{parent,weight,cluster}`) and
+    each leaf's position (`operator/leaf_position`), read whole by every rank: O(T)."""
+
+    parent: np.ndarray
+    weight: np.ndarray
+    cluster: np.ndarray
+    leaf_position: np.ndarray
+
+
+def read_tree(h, record):
+    """The tree of the operator group `h`."""
+    parent, weight, cluster, at = (whole(h[name], record) for name in ("parent", "weight", "cluster", "leaf_position"))
+    return Tree(parent, weight, cluster.astype(bool), at.astype(np.int64))
+
+
+def ancestry(tree, leaves):
+    """Every (leaf, node above it or itself, product of the area shares from the leaf up to
+    the node) for the leaves `leaves`, as three arrays."""
+    leaf = np.asarray(leaves, dtype=np.int64)
+    at, omega = tree.leaf_position[leaf], np.ones(len(leaf))
+    found = [(leaf, at, omega)]
     while len(at):
+        up = tree.parent[at] != NO_TWIN
+        leaf, omega, at = leaf[up], omega[up] * tree.weight[at[up]], tree.parent[at[up]].astype(np.int64)
         found.append((leaf, at, omega))
-        up = parent[at] != NO_TWIN
-        leaf, omega, at = leaf[up], omega[up] * weight[at[up]], parent[at[up]].astype(np.int64)
-    leaf, at, omega = (np.concatenate(a) for a in zip(*found))
-    a, b = node_rows
-    mine = (at >= a) & (at < b)
-    leaf, at, omega, spread = leaf[mine], at[mine] - a, omega[mine], cluster[at[mine]]
-    cell = np.arange(cells)
-    rows = np.concatenate([(at[~spread, None] * cells + cell).ravel(), np.repeat(at[spread] * cells, cells)])
-    cols = np.concatenate([(leaf[~spread, None] * cells + cell).ravel(), (leaf[spread, None] * cells + cell).ravel()])
-    vals = np.concatenate([np.repeat(omega[~spread], cells), (omega[spread, None] * share).ravel()])
-    return sp.csr_matrix((vals, (rows, cols)), shape=((b - a) * cells, leaves * cells))
+    return tuple(np.concatenate(a) for a in zip(*found))
 
 
-def _links(h, share, bundle_rows, nodes):
-    """Rows `bundle_rows` of Λ: bundle `(b, d)` ← node `(q, m)` by `f`; `d = ALL_CELLS`
-    spreads `f` over the bundle's cells as `μ_d/π`."""
-    a, b = bundle_rows
+def positions_in(ordered, ids):
+    """For each of `ids`, its index in the sorted distinct `ordered`, and whether it is
+    there at all."""
+    index = np.searchsorted(ordered, ids)
+    found = index < len(ordered)
+    found[found] = ordered[index[found]] == ids[found]
+    return index, found
+
+
+def pull(tree, share, found, node_rows, first, count, send):
+    """Rows `node_rows` (sorted node positions) of R·diag(send) over the leaves `[first,
+    first + count)` (`send` theirs), from their `ancestry`: node ← each leaf under it by
+    the product of the area shares; a cluster's row is its cell 0, `μ_m/π` per cell. The
+    leaves that send nothing (`send = 0`) are left out."""
+    leaf, at, omega = found
     cells = len(share)
-    indptr = h["gather/indptr"][a : b + 1].astype(np.int64)
-    s, e = int(indptr[0]), int(indptr[-1])
-    source, d = h["gather/source"][s:e].astype(np.int64), h["gather/d"][s:e].astype(np.int64)
-    m, f = h["gather/m"][s:e].astype(np.int64), h["gather/f"][s:e]
-    row = np.repeat(np.arange(b - a), np.diff(indptr))
-    spread = d == ALL_CELLS
-    rows = [row[~spread] * cells + d[~spread]] + [row[spread] * cells + c for c in range(cells)]
-    cols = [source[~spread] * cells + m[~spread]] + [source[spread] * cells + m[spread]] * cells
-    vals = [f[~spread]] + [f[spread] * share[c] for c in range(cells)]
-    return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=((b - a) * cells, nodes * cells))
-
-
-def _push(h, cells, leaf_rows, bundles):
-    """Rows `leaf_rows` of P: leaf `(l, d)` ← bundle `(b, d)` by the leaf's share."""
-    a, b = leaf_rows
-    indptr = h["push/indptr"][a : b + 1].astype(np.int64)
-    s, e = int(indptr[0]), int(indptr[-1])
-    bundle, w = h["push/bundle"][s:e].astype(np.int64), h["push/share"][s:e]
-    leaf = np.repeat(np.arange(b - a), np.diff(indptr))
+    index, mine = positions_in(node_rows, at)
+    leaf, row, omega, spread = leaf[mine] - first, index[mine], omega[mine], tree.cluster[at[mine], None]
     cell = np.arange(cells)
-    rows = (leaf[:, None] * cells + cell).ravel()
+    rows = (row[:, None] * cells + np.where(spread, 0, cell)).ravel()
+    cols = (leaf[:, None] * cells + cell).ravel()
+    vals = (omega[:, None] * np.where(spread, share, 1.0) * send[leaf, None]).ravel()
+    R = sp.csr_matrix((vals, (rows, cols)), shape=(len(node_rows) * cells, count * cells))
+    R.eliminate_zeros()
+    return R
+
+
+def _node_pull(h, tree, share, node_rows, record):
+    """This rank's rows `node_rows` (first, last) of R with `diag(send)` folded in, over all
+    the leaves: a node precedes its subtree, so only the leaves at or after the first
+    node's position can lie under the rank's nodes; only theirs are walked up and only
+    their run of `send` (from the first of them to the end) is read."""
+    a, b = node_rows
+    cells, leaves = len(share), len(tree.leaf_position)
+    walked = np.flatnonzero(tree.leaf_position >= a)
+    start = int(walked[0]) if len(walked) else leaves
+    send = span(h["send"], start, leaves, record)
+    tail = pull(tree, share, ancestry(tree, walked), np.arange(a, b), start, leaves - start, send)
+    return sp.csr_matrix((tail.data, tail.indices + start * cells, tail.indptr), shape=(tail.shape[0], leaves * cells))
+
+
+# The entries of a gather row (a bundle's links) and of a push row (a leaf's shares).
+LINK_FIELDS = ("source", "d", "m", "f")
+PUSH_FIELDS = ("bundle", "share")
+
+
+def links(row, values, share, count, nodes):
+    """`count` rows of Λ, from the gather entries `values` of rows `row` (`Csr.rows`):
+    bundle `(b, d)` ← node `(q, m)` by `f`; `d = ALL_CELLS` spreads `f` over the bundle's
+    cells as `μ_d/π` (its cell 0 in place, the other cells after). Built in PETSc's index
+    type, in place where it can: this is the largest factor, and its temporaries set the
+    peak memory of a rank."""
+    cells = len(share)
+    d, f = values["d"], values["f"]
+    spread = d == ALL_CELLS
+    col = values["source"].astype(PETSc.IntType)
+    col *= cells
+    col += values["m"]
+    rows = row.astype(PETSc.IntType)
+    rows *= cells
+    rows += np.where(spread, 0, d)
+    vals = f.copy()
+    vals[spread] *= share[0]
+    if cells > 1 and spread.any():
+        rows = np.concatenate([rows] + [(row[spread] * cells + c).astype(PETSc.IntType) for c in range(1, cells)])
+        col = np.concatenate([col] + [col[spread]] * (cells - 1))
+        vals = np.concatenate([vals] + [f[spread] * share[c] for c in range(1, cells)])
+    return sp.csr_matrix((vals, (rows, col)), shape=(count * cells, nodes * cells))
+
+
+def pushed(row, values, cells, count, bundles):
+    """`count` rows of P, from the push entries `values` of rows `row` (`Csr.rows`): leaf
+    `(l, d)` ← bundle `(b, d)` by the leaf's share."""
+    bundle, w = values["bundle"].astype(np.int64), values["share"]
+    cell = np.arange(cells)
+    rows = (row[:, None] * cells + cell).ravel()
     cols = (bundle[:, None] * cells + cell).ravel()
-    return sp.csr_matrix((np.repeat(w, cells), (rows, cols)), shape=((b - a) * cells, bundles * cells))
+    return sp.csr_matrix((np.repeat(w, cells), (rows, cols)), shape=(count * cells, bundles * cells))
 
 
 def expansion_bound(factors):

@@ -29,6 +29,8 @@ import numpy as np
 import scipy.sparse as sp
 from petsc4py import PETSc
 
+import hyperslabs
+
 NO_TWIN = 0xFFFFFFFF
 
 
@@ -52,6 +54,13 @@ class Kernel:
     # is a shell over them (the hierarchy, hierarchy.py).
     factors: list = None
 
+    def destroy(self):
+        """Frees its PETSc objects now (petsc4py 3.18 frees a dropped one only at a
+        collective `garbage_cleanup`): by_parts.py reads one kernel per number of parts."""
+        for obj in [self.K, self.L0, self.G, self.D, self.one_minus] + (self.factors or []):
+            if obj is not None:
+                obj.destroy()
+
 
 def patch_range(patches, comm):
     """The patches [first, last) rank `comm.rank` owns: an even split of whole patches."""
@@ -59,17 +68,6 @@ def patch_range(patches, comm):
     base, extra = divmod(patches, size)
     first = rank * base + min(rank, extra)
     return first, first + base + (1 if rank < extra else 0)
-
-
-def _runs(patches):
-    """Sorted patch ids as contiguous runs [(first, last), ...)."""
-    runs = []
-    for p in sorted(set(patches)):
-        if runs and runs[-1][1] == p:
-            runs[-1][1] = p + 1
-        else:
-            runs.append([p, p + 1])
-    return runs
 
 
 def _rows(g, indptr, runs, cells, n):
@@ -116,7 +114,7 @@ def from_solution(path, comm=PETSc.COMM_WORLD):
         indptr = k["G/indptr"][:].astype(np.int64)
         own = _rows(k["G"], indptr, [[first, last]], cells, n)
         behind = [int(twin[i]) for i in range(first, last) if twin[i] != NO_TWIN and transmits[material[i]]]
-        runs = _runs(behind)
+        runs = [(int(a), int(b)) for a, b in hyperslabs.runs(np.unique(np.asarray(behind, dtype=np.int64)))]
         twins = _rows(k["G"], indptr, runs, cells, n)
         where = {}
         offset = 0
@@ -137,29 +135,23 @@ def _local_kernel(own, twins, where, reflect, transmit, transmits, material, twi
     cells = reflect.shape[1]
     extra = own.shape[0]
     stacked = sp.vstack([own, twins], format="csr")
-    b = blocks(reflect, transmit, transmits, material, twin, lambda j: j * cells, lambda t: extra + where[t], stacked.shape[0])
+    b = blocks(reflect, transmit, transmits, material, twin, lambda j: j * cells, lambda t: extra + np.array([where[p] for p in t.tolist()], dtype=np.int64), stacked.shape[0])
     return (b @ stacked).tocsr()
 
 
 def blocks(reflect, transmit, transmits, material, twin, own_column, twin_column, columns):
     """This rank's rows of B (its patches `material`, `twin`), as scipy CSR with `columns`
     columns: patch j's row block `ρ̄_m(j)` at column `own_column(j)` and, behind a two-sided
-    transmitting surface, `τ̄_m(j)` at `twin_column(twin[j])`."""
+    transmitting surface, `τ̄_m(j)` at `twin_column(twin[j])` (both of arrays of patches)."""
     cells = reflect.shape[1]
-    rows, cols, vals = [], [], []
-    out, inc = np.meshgrid(np.arange(cells), np.arange(cells), indexing="ij")
-    for j, (m, t) in enumerate(zip(material, twin)):
-        rows.append((j * cells + out).ravel())
-        cols.append((own_column(j) + inc).ravel())
-        vals.append(reflect[m].ravel())
-        if t != NO_TWIN and transmits[m]:
-            rows.append((j * cells + out).ravel())
-            cols.append((twin_column(int(t)) + inc).ravel())
-            vals.append(transmit[m].ravel())
+    out, inc = (a.ravel() for a in np.meshgrid(np.arange(cells), np.arange(cells), indexing="ij"))
+    own = np.arange(len(material))
+    through = own[(twin != NO_TWIN) & (transmits[material] != 0)]
+    rows = [own[:, None] * cells + out, through[:, None] * cells + out]
+    cols = [own_column(own)[:, None] + inc, twin_column(twin[through].astype(np.int64))[:, None] + inc]
+    vals = [reflect[material].reshape(len(own), cells * cells), transmit[material[through]].reshape(len(through), cells * cells)]
     shape = (len(material) * cells, columns)
-    if not vals:
-        return sp.csr_matrix(shape)
-    return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=shape)
+    return sp.csr_matrix((np.concatenate(vals, axis=None), (np.concatenate(rows, axis=None), np.concatenate(cols, axis=None))), shape=shape)
 
 
 def from_export(folder, cells, comm=PETSc.COMM_WORLD):

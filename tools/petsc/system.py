@@ -26,6 +26,10 @@ class OneMinus:
         x.copy(y)
         y.axpy(-1.0, self.work)
 
+    def destroy(self, mat):
+        """Frees the work vector with the shell (petsc4py calls it); `K` is its owner's."""
+        self.work.destroy()
+
     def multTranspose(self, mat, x, y):
         self.K.multTranspose(x, self.work)
         x.copy(y)

@@ -64,6 +64,7 @@ def main():
 
     import by_parts
     import hierarchy
+    import hyperslabs
     import kernel_read
     import solution_file
     import solvers
@@ -130,7 +131,9 @@ def main():
     vectors = [solution_file.gather(v) for v in eig.vectors] if eig else []
     output = args.output or args.solution.removesuffix(".h5") + "-petsc.h5"
     backend = f"PETSc {'.'.join(map(str, PETSc.Sys.getVersion()))} over {comm.getSize()} MPI ranks: {first.solver}"
+    peaks = hyperslabs.per_rank([hyperslabs.peak_resident()], comm)
     if comm.getRank() == 0:
+        say(f"  peak resident per rank: {', '.join(f'{p / 1e6:.0f} MB' for p, in peaks)} (before writing)")
         if illuminance is not None:
             illuminance = illuminance_per_patch(illuminance, kernel.cells)
         solution_file.write(args.solution, output, first, x, kernel.cells, illuminance, runs, eig, vectors, sing, backend)
@@ -140,7 +143,7 @@ def main():
             solution_file.write_mode(output, mode_output, vectors[args.mode - 1], eig.values[args.mode - 1], args.mode, kernel.cells)
             say(f"  wrote {mode_output} (eigenvector {args.mode} as the field)")
         if args.report:
-            report(args, n, comm.getSize(), read_seconds, runs, eig, sing, package, crossings if args.parts else None)
+            report(args, n, comm.getSize(), read_seconds, runs, eig, sing, package, peaks, crossings if args.parts else None)
     if args.parts:
         by_parts.write(args.solution, output, runs[1:], kernel.cells, comm, say)
     comm.barrier()
@@ -191,12 +194,13 @@ def illuminance_per_patch(arriving, cells):
     return np.pi * arriving.reshape(-1, cells).sum(axis=1)
 
 
-def report(args, n, ranks, read_seconds, runs, eig, sing, package, crossings=None):
+def report(args, n, ranks, read_seconds, runs, eig, sing, package, peaks, crossings=None):
     figures = {
         "solution": args.solution,
         "unknowns": n,
         "ranks": ranks,
         "read_seconds": read_seconds,
+        "peak_resident_bytes": [p for p, in peaks],
         "direct_package": package,
         "runs": {
             r.method: {
