@@ -72,6 +72,14 @@ pub enum Warning {
     },
     /// A negative escaped flux, explained and bounded by the kernel's columns.
     NegativeEscape(NegativeEscape),
+    /// Light lost by the hierarchy's links themselves, whose columns carry less than the
+    /// leaves' closures (`study`'s `openings.rs`).
+    KernelLoss {
+        /// Flux lost, lm.
+        lost: f64,
+        /// Flux emitted, lm.
+        emitted: f64,
+    },
     /// Light escaping through an opening small against the surfaces (`study`'s
     /// `openings.rs`).
     SmallOpening {
@@ -235,6 +243,15 @@ impl fmt::Display for Warning {
                 write!(f, "{count} more probes lie closer than {near} of a patch's size to a patch they see")
             }
             Warning::NegativeEscape(escape) => escape.fmt(f),
+            Warning::KernelLoss { lost, emitted } => write!(
+                f,
+                "{lost:.4} lm ({:.1} % of the flux emitted) is lost by the hierarchy's links, not through an \
+                 opening: light the solve delivers to no surface, so the surfaces read that much too dark between them. \
+                 Their columns carry less light than the leaves' closures (a leaf's sending factor is held \
+                 within a few link tolerances of 1, docs/hierarchy.md \"Sending factors held to the links' error\"); \
+                 a smaller link_tolerance loses less",
+                100.0 * lost / emitted
+            ),
             Warning::SmallOpening { escaping, emitted, opening, surfaces, seen_by } => {
                 let named: Vec<String> = seen_by.iter().map(|name| format!("\"{name}\"")).collect();
                 write!(

@@ -10,6 +10,7 @@
 
 mod balance_report;
 mod blocks;
+mod closure_shares;
 mod forecast;
 pub mod hierarchy;
 mod importance;
@@ -23,6 +24,7 @@ mod uniform;
 
 pub use balance_report::BalanceReport;
 pub use blocks::apply_blocks;
+pub use closure_shares::closure_shares;
 pub use forecast::Forecast;
 pub use importance::importance;
 pub use memory::Footprint;

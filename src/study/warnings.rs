@@ -37,7 +37,7 @@
 use crate::geometry::Frame;
 use crate::geometry::cosine_direction;
 use crate::io::{NegativeEscape, SensorFault, Warning};
-use crate::kernel::sent_shares;
+use crate::kernel::{closure_shares, sent_shares};
 use crate::luminaire::Light;
 use crate::model::{Model, place};
 use crate::random::Rng;
@@ -82,8 +82,11 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
     };
     if energy.escaped < -1e-9 * energy.emitted.abs() {
         out.push(Warning::NegativeEscape(negative_escape(scene, model, x, energy, &shares())));
-    } else if energy.escaped > super::openings::ESCAPING * energy.emitted {
-        out.extend(super::openings::small_opening(scene, model, x, energy, &shares()));
+    } else if energy.escaped > super::openings::LOST * energy.emitted {
+        let sent = shares();
+        let closures = closure_shares(&model.kernel, &sent, !model.mirrors.is_empty());
+        out.extend(super::openings::small_opening(scene, model, x, energy, &closures));
+        out.extend(super::openings::kernel_loss(model, x, energy, &sent, &closures));
     }
     out
 }
