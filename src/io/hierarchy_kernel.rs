@@ -226,11 +226,7 @@ fn root_positions(file: &File, skeleton: &Skeleton) -> Result<Vec<u32>, Why> {
     let roots = skeleton.level.iter().filter(|&&l| l == Some(0)).count();
     let mut position = vec![u32::MAX; roots];
     for (&leaf, &p) in leaf_node.iter().zip(&by_leaf) {
-        let mut id = leaf;
-        while (id as usize) < skeleton.level.len() && skeleton.level[id as usize] != Some(0) {
-            id = skeleton.parent[id as usize];
-        }
-        match position.get_mut(id as usize) {
+        match skeleton.root_of(leaf).and_then(|id| position.get_mut(id as usize)) {
             Some(slot) if (p as usize) < roots => *slot = p,
             _ => {
                 return Err(Why(format!(

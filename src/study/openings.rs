@@ -72,10 +72,14 @@ pub fn kernel_loss(
     sent: &[f64],
     closures: &[f64],
 ) -> Option<Warning> {
-    let (k, cells) = (model.kernel.cells(), model.kernel.directions.cells());
-    let lost: f64 = (0..sent.len())
-        .filter(|&c| x[c] > 0.0)
-        .map(|c| model.mesh.patches[c / k].exposed * cells[c % k].projected * (closures[c] - sent[c]) * x[c])
-        .sum();
+    let flux = outgoing(model, x);
+    let lost: f64 = (0..sent.len()).map(|c| flux(c) * (closures[c] - sent[c])).sum();
     (lost > LOST * energy.emitted).then_some(Warning::KernelLoss { lost, emitted: energy.emitted })
+}
+
+/// Each column's outgoing flux `Φ_c = A_j μ_m max(x_c, 0)`, lm (`c = j·K + m`, `A_j` the
+/// exposed area), as the escaped flux `Σ Φ (1 − s)` weighs it.
+pub fn outgoing<'a>(model: &'a Model, x: &'a [f64]) -> impl Fn(usize) -> f64 + 'a {
+    let (k, cells) = (model.kernel.cells(), model.kernel.directions.cells());
+    move |c| model.mesh.patches[c / k].exposed * cells[c % k].projected * x[c].max(0.0)
 }

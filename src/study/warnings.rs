@@ -97,9 +97,7 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
 /// the luminaires' light that lands nowhere).
 fn negative_escape(scene: &Scene, model: &Model, x: &[f64], energy: &EnergyBalance, shares: &[f64]) -> NegativeEscape {
     let (e, k) = (energy, model.kernel.cells());
-    let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
-    let cells = model.kernel.directions.cells();
-    let flux = |c: usize| areas[c / k] * cells[c % k].projected * x[c].max(0.0);
+    let flux = super::openings::outgoing(model, x);
     let over: f64 = (0..shares.len()).map(|c| flux(c) * (shares[c] - 1.0).max(0.0)).sum();
     let either: f64 = (0..shares.len()).map(|c| flux(c) * (shares[c] - 1.0).abs()).sum();
     let sending: Vec<usize> = (0..shares.len()).filter(|&c| flux(c) > 0.0).collect();

@@ -18,6 +18,20 @@ pub struct Skeleton {
     pub level: Vec<Option<u8>>,
 }
 
+impl Skeleton {
+    /// The root element above node `id` (or `id` itself), or `None` when the walk up leaves
+    /// the tree before meeting one (a cluster, or a skeleton read from a damaged file).
+    pub fn root_of(&self, mut id: u32) -> Option<u32> {
+        for _ in 0..=self.parent.len() {
+            match self.level.get(id as usize)? {
+                Some(0) => return Some(id),
+                _ => id = *self.parent.get(id as usize)?,
+            }
+        }
+        None
+    }
+}
+
 /// The tree's skeleton, the links between its nodes and the roots' order.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Structure {
@@ -35,16 +49,7 @@ impl Structure {
     /// The position of each of the `leaves`' (node ids) root in the roots' depth-first
     /// order, or `None` when it is not known.
     pub fn leaf_root_positions(&self, leaves: &[u32]) -> Option<Vec<u32>> {
-        if self.root_position.is_empty() {
-            return None;
-        }
-        let root = |mut id: u32| {
-            while self.skeleton.level[id as usize] != Some(0) {
-                id = self.skeleton.parent[id as usize];
-            }
-            id
-        };
-        Some(leaves.iter().map(|&l| self.root_position[root(l) as usize]).collect())
+        leaves.iter().map(|&l| self.root_position.get(self.skeleton.root_of(l)? as usize).copied()).collect()
     }
 }
 
