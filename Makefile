@@ -77,10 +77,11 @@ petsc: deps
 	fi
 
 # PETSc's and SLEPc's solutions, GMRES history and ρ(K) against ugo's, on 2 MPI ranks;
-# block Jacobi by part on 1 and 2.
+# block Jacobi by part on 1 and 2; the operator assembled from part files.
 test-petsc: petsc build
 	/usr/bin/python3 tools/petsc/check.py target/release/ugo out/petsc-check
 	/usr/bin/python3 tools/petsc/check_parts.py target/release/ugo out/petsc-check
+	/usr/bin/python3 tools/petsc/check_from_parts.py target/release/ugo out/petsc-check
 
 # Checks that the committed cases are what the scripts write, then writes every file
 # (the OBJ included).

@@ -51,6 +51,12 @@ enum Command {
         /// linking only (docs/petsc.md, "Parts").
         #[arg(long, value_name = "I/N")]
         part: Option<ugo::kernel::hierarchy::Part>,
+        /// With --part: the part files of every part (`solve --part` of each); instead of
+        /// linking, rebuild the tree from them and write part I's rows of the operator and
+        /// of the source term (default `<case>-rows-I-of-N.h5`) for `tools/petsc/run
+        /// --from-parts` (docs/petsc.md, "The operator from the part files").
+        #[arg(long, num_args = 1.., value_name = "PART_FILE", requires = "part")]
+        linked: Vec<PathBuf>,
     },
     /// Join part files (`solve --part I/N`): refused unless every part of one partition of
     /// one case; prints each part's links, bytes and cut links.
@@ -320,16 +326,23 @@ fn main() -> ExitCode {
 
 fn run(command: Command) -> anyhow::Result<()> {
     match command {
-        Command::Solve { case, output, discretize, part: Some(part), method, orders, norms, kernel, .. } => {
+        Command::Solve {
+            case, output, discretize, part: Some(part), method, orders, norms, kernel, linked, ..
+        } => {
             if method.is_some() || orders.is_some() || norms || kernel.given() {
                 anyhow::bail!(
                     "--part links one part's receivers and does not solve: --method, --orders, --norms, --save-kernel and --kernel-file do not apply"
                 );
             }
-            cli::part::run(&case, &discretize, part, output)
+            match linked.is_empty() {
+                true => cli::part::run(&case, &discretize, part, output),
+                false => cli::part::rows(&case, &discretize, part, &linked, output),
+            }
         }
         Command::Parts { files } => cli::part::join_files(&files),
-        Command::Solve { case, output, discretize, stopping, method, orders, norms, basis, kernel, part: None } => {
+        Command::Solve {
+            case, output, discretize, stopping, method, orders, norms, basis, kernel, part: None, ..
+        } => {
             let methods = method.into_iter().collect();
             let run = study::Job { methods, orders, norms, basis: basis.choice()?, ..kernel.job() };
             cli::solve::run(&case, &discretize, Job { output, ..Job::new(run, stopping, "") })

@@ -83,7 +83,11 @@ fn kernel_applications_and_ray_queries_do_not_allocate() {
     few(allocations(&pool, || reduced.apply(&c, &mut z)), "reduced Φᵀ G Ψ c");
 
     scene.discretization.patch_size = 0.05;
-    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 0.25, link_tolerance: 1e-2 });
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical {
+        root_size: 0.25,
+        link_tolerance: 1e-2,
+        passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+    });
     let tree = Model::build(&scene, &ugo::progress::Silent).unwrap();
     let Transport::Hierarchical(op) = &tree.kernel.g else { panic!("not hierarchical") };
     let hierarchical = Factored::new(&tree.kernel);

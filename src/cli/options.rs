@@ -42,6 +42,10 @@ pub struct Discretize {
     /// luminance (default: the case's `link_tolerance`, else 1e-2).
     #[arg(long, allow_negative_numbers = true)]
     pub link_tolerance: Option<f64>,
+    /// Most refinement passes of the hierarchical kernel, the initial linking included
+    /// (default 4; 1 solves on the initial linking alone, as the partitioned solve does).
+    #[arg(long)]
+    pub passes: Option<usize>,
 }
 
 impl Discretize {
@@ -51,6 +55,7 @@ impl Discretize {
             patch_size: self.patch_size.map(Given::flag("--patch-size")),
             root_size: self.root_size.map(Given::flag("--root-size")),
             link_tolerance: self.link_tolerance.map(Given::flag("--link-tolerance")),
+            passes: self.passes.map(Given::flag("--passes")),
             kernel: self.kernel.map(Given::flag("--kernel")),
             directions: self.directions,
             precision: self.precision.map(Precision::from),

@@ -66,13 +66,7 @@ pub(super) fn write_kernel(g: &hdf5::Group, model: &Model, fingerprint: &Fingerp
         }
         (Transport::Hierarchical(_), _) => return Err("the hierarchy was built without its links kept".into()),
     }
-    let blocks = &kernel.blocks;
-    let k = kernel.cells();
-    let b = g.create_group("B")?;
-    dataset(&b, "reflection", &Array3::from_shape_fn((blocks.len(), k, k), |(m, a, d)| blocks[m].at(a, d)))?;
-    let transmit = |m: usize, a: usize, d: usize| blocks[m].transmit_at(a, d).unwrap_or(0.0);
-    dataset(&b, "transmission", &Array3::from_shape_fn((blocks.len(), k, k), |(m, a, d)| transmit(m, a, d)))?;
-    dataset(&b, "transmits", &Array1::from_iter(blocks.iter().map(|b| b.transmits() as u8)))?;
+    write_blocks(g, &kernel.blocks, kernel.cells())?;
     dataset(g, "patch_material", &Array1::from(kernel.patch_material.clone()))?;
     dataset(g, "twin", &Array1::from(kernel.twin.clone()))?;
     let direct = g.create_group("direct")?;
@@ -239,4 +233,14 @@ pub(super) fn fingerprint(g: &hdf5::Group) -> Result<Fingerprint, Why> {
         stamps.push(Stamp { part, hash, summary });
     }
     Ok(Fingerprint { stamps })
+}
+
+/// The material blocks `blocks` of `k` cells as `B/reflection`, `B/transmission` (M × K × K,
+/// zeros where a material does not transmit) and `B/transmits` (M, u8) in `g`.
+pub(super) fn write_blocks(g: &hdf5::Group, blocks: &[Block], k: usize) -> hdf5::Result<()> {
+    let b = g.create_group("B")?;
+    dataset(&b, "reflection", &Array3::from_shape_fn((blocks.len(), k, k), |(m, a, d)| blocks[m].at(a, d)))?;
+    let transmit = |m: usize, a: usize, d: usize| blocks[m].transmit_at(a, d).unwrap_or(0.0);
+    dataset(&b, "transmission", &Array3::from_shape_fn((blocks.len(), k, k), |(m, a, d)| transmit(m, a, d)))?;
+    dataset(&b, "transmits", &Array1::from_iter(blocks.iter().map(|b| b.transmits() as u8)))
 }

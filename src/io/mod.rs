@@ -28,6 +28,7 @@ mod lock;
 mod no_room;
 mod observer_group;
 mod part_file;
+mod part_rows_file;
 mod plan;
 mod plan_marks;
 mod plot;
@@ -65,6 +66,7 @@ pub use light_scene_group::{
 pub use lock::OutputLock;
 pub use no_room::survive_size_limit;
 pub use part_file::{StoredPart, read_part, write_part};
+pub use part_rows_file::write_part_rows;
 pub use plan::{Axis, Frame, Layout};
 pub use plan_marks::Overlay;
 pub use plot::{convergence_plot, register_font};

@@ -6,7 +6,8 @@
 //! dataset `roots` (the part's roots, u32); `links/{receiver,source}/{top (u32), depth
 //! (u8), path (u64: the child positions, 2 bits each, the first step in the lowest bits)}`,
 //! `links/factor` (f64), `links/visible` (f32), `links/pieces/{indptr (u64), d, m (u16),
-//! f (f64)}`; and `/part/fingerprint` as `/kernel/fingerprint`.
+//! f (f64)}`; `splits/{top, depth, path}` (the elements its linking split); and
+//! `/part/fingerprint` as `/kernel/fingerprint`.
 
 use super::IoError;
 use super::dataset::{dataset, text_attr};
@@ -18,7 +19,7 @@ use ndarray::Array1;
 use std::path::Path;
 
 /// The layout of `/part`.
-const PART_FORMAT: u32 = 1;
+const PART_FORMAT: u32 = 2;
 
 /// Deepest address a part file holds (2 bits a level in 64).
 const DEEPEST: usize = 32;
@@ -69,6 +70,7 @@ fn write_to(path: &Path, fingerprint: &Fingerprint, p: &PartLinks) -> hdf5::Resu
     dataset(&pieces, "d", &Array1::from_iter(all().map(|x| x.0)))?;
     dataset(&pieces, "m", &Array1::from_iter(all().map(|x| x.1)))?;
     dataset(&pieces, "f", &Array1::from_iter(all().map(|x| x.2)))?;
+    write_ends(&g.create_group("splits")?, p.splits.iter())?;
     write_fingerprint(&g.create_group("fingerprint")?, fingerprint)
 }
 
@@ -97,7 +99,8 @@ fn read_from(file: &File) -> Result<StoredPart, Why> {
     let g = file.h5.group("part")?;
     let attr = |name: &str| -> Result<u64, Why> { Ok(g.attr(name)?.read_scalar::<u64>()?) };
     if attr("format")? != u64::from(PART_FORMAT) {
-        return Err(Why(format!("/part is of format {}, this ugo reads {PART_FORMAT}", attr("format")?)));
+        let format = attr("format")?;
+        return Err(Why(format!("/part is of format {format}, this ugo reads {PART_FORMAT}: link the part again")));
     }
     let (index, count) = (attr("part")? as u32, attr("parts")? as u32);
     let part = format!("{index}/{count}").parse::<Part>().map_err(|e| Why(format!("/part: {e}")))?;
@@ -110,6 +113,7 @@ fn read_from(file: &File) -> Result<StoredPart, Why> {
         own_roots: file.raw::<u32>("part/roots")?,
         partition,
         links,
+        splits: read_ends(file, "part/splits")?,
         cut: attr("cut_links")? as usize,
         remote_sources: attr("remote_sources")? as usize,
         spanning: attr("spanning_links")? as usize,
@@ -122,8 +126,8 @@ fn read_from(file: &File) -> Result<StoredPart, Why> {
 }
 
 fn read_links(file: &File) -> Result<Vec<PartLink>, Why> {
-    let receivers = read_ends(file, "receiver")?;
-    let sources = read_ends(file, "source")?;
+    let receivers = read_ends(file, "part/links/receiver")?;
+    let sources = read_ends(file, "part/links/source")?;
     let factor = file.raw::<f64>("part/links/factor")?;
     let visible = file.raw::<f32>("part/links/visible")?;
     let indptr = file.raw::<u64>("part/links/pieces/indptr")?;
@@ -150,12 +154,13 @@ fn read_links(file: &File) -> Result<Vec<PartLink>, Why> {
     Ok(links.collect())
 }
 
-fn read_ends(file: &File, which: &str) -> Result<Vec<Address>, Why> {
-    let top = file.raw::<u32>(&format!("part/links/{which}/top"))?;
-    let depth = file.raw::<u8>(&format!("part/links/{which}/depth"))?;
-    let path = file.raw::<u64>(&format!("part/links/{which}/path"))?;
+/// The addresses in the group `group` (`top`, `depth`, `path`).
+fn read_ends(file: &File, group: &str) -> Result<Vec<Address>, Why> {
+    let top = file.raw::<u32>(&format!("{group}/top"))?;
+    let depth = file.raw::<u8>(&format!("{group}/depth"))?;
+    let path = file.raw::<u64>(&format!("{group}/path"))?;
     if depth.len() != top.len() || path.len() != top.len() || depth.iter().any(|&d| d as usize > DEEPEST) {
-        return Err(Why(format!("/part/links/{which}: datasets of disagreeing sizes or depths")));
+        return Err(Why(format!("/{group}: datasets of disagreeing sizes or depths")));
     }
     let unpack = |d: u8, p: u64| (0..d).map(|i| ((p >> (2 * i)) & 3) as u8).collect();
     Ok(top.iter().zip(depth.iter().zip(&path)).map(|(&top, (&d, &p))| Address { top, path: unpack(d, p) }).collect())

@@ -227,7 +227,7 @@ fn discretization(d: &Discretization, h: &mut Fnv) -> String {
             let o = Options::default();
             let text = format!(
                 "hierarchical, root_size {:?} m, link_tolerance {:?}, dim_floor {:?}, reading_weight {:?}, passes {}, balanced {}",
-                h.root_size, h.link_tolerance, o.dim_floor, o.reading_weight, o.passes, o.balance
+                h.root_size, h.link_tolerance, o.dim_floor, o.reading_weight, h.passes, o.balance
             );
             (text, o.quadrature)
         }

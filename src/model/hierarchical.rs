@@ -83,7 +83,7 @@ impl LightCache {
 /// The flux (lm) below which a shadowed piece of element `id` is not cut further: what
 /// would change its reflected luminance by the error the oracle allows a link,
 /// `ρ ΔΦ/(π A) = ε`.
-fn worth_cutting(h: &Hierarchy, id: u32) -> f64 {
+pub(super) fn worth_cutting(h: &Hierarchy, id: u32) -> f64 {
     let node = h.tree().node(id);
     match node.albedo > 0.0 {
         true => h.epsilon() * PI * node.area / node.albedo,
@@ -233,14 +233,15 @@ pub(super) fn seed(
     Ok(Seed { roots, visibility, light, l0, mesh_seconds, seconds: t.elapsed().as_secs_f64() })
 }
 
-/// The hierarchy's options from the case: its link tolerance, finest patches and memory
-/// limit, the rest default.
+/// The hierarchy's options from the case: its link tolerance, finest patches, passes and
+/// memory limit, the rest default.
 pub(super) fn options(scene: &Scene, parameters: Hierarchical) -> Options {
     let d = &scene.discretization;
     Options {
         tolerance: parameters.link_tolerance,
         patch_size: d.patch_size,
         memory_limit: d.memory_limit,
+        passes: parameters.passes,
         ..Options::default()
     }
 }
@@ -287,7 +288,7 @@ fn seed_light(
 /// with one shadow ray per point and source; the openings' with a glimpse
 /// (`sky::glimpse`, 16 rays per point and opening), only where their unshadowed light
 /// could make up the difference.
-fn varies(
+pub(super) fn varies(
     sources: &[Source],
     windows: &[(&Opening, &Sky)],
     visibility: &Visibility,
@@ -332,7 +333,7 @@ fn point_light(sources: &[Source], visibility: &Visibility, patch: &Patch, x: DV
 }
 
 /// The opening and sky of a window's source.
-fn window_of(source: &Source) -> Option<(&Opening, &Sky)> {
+pub(super) fn window_of(source: &Source) -> Option<(&Opening, &Sky)> {
     match &source.light {
         Light::Window { window, sky } => Some((window, sky)),
         _ => None,

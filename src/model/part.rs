@@ -46,6 +46,9 @@ pub struct PartLinks {
     pub partition: u64,
     /// The links whose receiver this part owns.
     pub links: Vec<PartLink>,
+    /// The elements its linking split (as receivers or sources): with every other part's,
+    /// they make the one-process tree (`model::part_rows`).
+    pub splits: Vec<Address>,
     /// Links whose source lies (partly) in other parts: their sources' values come from
     /// other ranks at every application.
     pub cut: usize,
@@ -101,6 +104,10 @@ fn collect(h: &Hierarchy, partition: &Partition, roots: usize, seconds: f64) -> 
         own_roots: (0..roots as u32).filter(|&r| partition.owns(tree, r)).collect(),
         partition: partition_hash(tree, partition, roots),
         links: own.iter().map(|l| by_address(tree, l)).collect(),
+        splits: (0..tree.len() as u32)
+            .filter(|&id| tree.node(id).patch().is_some() && !tree.node(id).is_leaf())
+            .map(|id| tree.address(id))
+            .collect(),
         cut: cut.len(),
         remote_sources,
         spanning,

@@ -31,6 +31,9 @@ pub enum ModelError {
     /// A solve between the hierarchy's refinement passes failed.
     #[error("refining the hierarchical kernel: {0}")]
     Refinement(#[from] SolveError),
+    /// Part files that do not make this case's tree (`part_rows`).
+    #[error("the part files: {0}")]
+    Parts(String),
 }
 
 impl From<Stopped> for ModelError {

@@ -52,6 +52,10 @@ pub struct Hierarchical {
     pub root_size: f64,
     /// Error allowed per link relative to the mean reflected luminance (dimensionless).
     pub link_tolerance: f64,
+    /// Most refinement passes, the initial linking included (`--passes`; default
+    /// [`Hierarchical::DEFAULT_PASSES`]): 1 solves on the initial linking alone, as the
+    /// partitioned solve's parts build it (`docs/petsc.md`, "Parts").
+    pub passes: usize,
 }
 
 /// Why the kernel was chosen by size (`automatic.rs`).
@@ -165,6 +169,8 @@ pub struct Asked {
     pub root_size: Option<Given<f64>>,
     /// The hierarchy's error allowed per link (dimensionless).
     pub link_tolerance: Option<Given<f64>>,
+    /// The hierarchy's most refinement passes.
+    pub passes: Option<Given<usize>>,
     /// The kernel, or the choice by size.
     pub kernel: Option<Given<KernelAsked>>,
     /// Direction cells of every patch.
@@ -182,6 +188,7 @@ impl Asked {
             patch_size: over.patch_size.or(self.patch_size),
             root_size: over.root_size.or(self.root_size),
             link_tolerance: over.link_tolerance.or(self.link_tolerance),
+            passes: over.passes.or(self.passes),
             kernel: over.kernel.or(self.kernel),
             directions: over.directions.or(self.directions),
             precision: over.precision.or(self.precision),
@@ -226,12 +233,33 @@ impl Asked {
                 (kernel, Some(chosen))
             }
         };
+        let kernel = match (kernel, self.passes) {
+            (KernelKind::Hierarchical(h), Some(_)) => {
+                KernelKind::Hierarchical(Hierarchical { passes: self.passes(&at)?, ..h })
+            }
+            (KernelKind::Uniform, Some(given)) => {
+                return Err(at.error(given.origin, "applies only to the hierarchical kernel (--kernel hierarchical)"));
+            }
+            (kernel, None) => kernel,
+        };
         let precision = self.precision.unwrap_or_default();
         Ok(Discretization { patch_size, directions, kernel, precision, memory_limit, chosen_by_size })
     }
 
-    /// `root_size` and `link_tolerance`, checked against `patch_size`.
+    /// The most refinement passes asked for (at least 1), else the default.
+    fn passes(&self, at: &Checker) -> Result<usize, SceneError> {
+        match self.passes {
+            Some(given) if given.value == 0 => {
+                Err(at.error(given.origin, "must be at least 1 (the initial linking is the first pass)"))
+            }
+            Some(given) => Ok(given.value),
+            None => Ok(Hierarchical::DEFAULT_PASSES),
+        }
+    }
+
+    /// `root_size`, `link_tolerance` and `passes`, checked against `patch_size`.
     fn hierarchical(&self, at: &Checker, patch_size: f64) -> Result<Hierarchical, SceneError> {
+        let passes = self.passes(at)?;
         let root_size = match self.root_size {
             Some(given) => at.positive(given, "a length in metres")?,
             None => ROOTS * patch_size,
@@ -242,7 +270,7 @@ impl Asked {
             return Err(at.error(given.origin, message));
         }
         let Some(given) = self.link_tolerance else {
-            return Ok(Hierarchical { root_size, link_tolerance: Hierarchical::DEFAULT_LINK_TOLERANCE });
+            return Ok(Hierarchical { root_size, link_tolerance: Hierarchical::DEFAULT_LINK_TOLERANCE, passes });
         };
         let link_tolerance = at.positive(given, "a number")?;
         if link_tolerance >= 1.0 {
@@ -252,17 +280,23 @@ impl Asked {
             );
             return Err(at.error(given.origin, message));
         }
-        Ok(Hierarchical { root_size, link_tolerance })
+        Ok(Hierarchical { root_size, link_tolerance, passes })
     }
 }
 
 impl Hierarchical {
     /// The link tolerance unless one is given (the hierarchy's own default).
     pub const DEFAULT_LINK_TOLERANCE: f64 = crate::kernel::hierarchy::DEFAULT_TOLERANCE;
+    /// The most refinement passes unless a number is given (the hierarchy's own default).
+    pub const DEFAULT_PASSES: usize = crate::kernel::hierarchy::DEFAULT_PASSES;
 
     /// The hierarchy with its default roots and tolerance over leaves of `patch_size`.
     pub fn over(patch_size: f64) -> Hierarchical {
-        Hierarchical { root_size: ROOTS * patch_size, link_tolerance: Hierarchical::DEFAULT_LINK_TOLERANCE }
+        Hierarchical {
+            root_size: ROOTS * patch_size,
+            link_tolerance: Hierarchical::DEFAULT_LINK_TOLERANCE,
+            passes: Hierarchical::DEFAULT_PASSES,
+        }
     }
 }
 

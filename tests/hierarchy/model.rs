@@ -17,7 +17,11 @@ use ugo::solve::{LinOp, Method, SolveParams, System, solve};
 /// `scene` with roots at its patch size and leaves down to `patch_size`.
 fn hierarchical(mut scene: Scene, link_tolerance: f64, patch_size: f64) -> (Scene, Model) {
     let root_size = scene.discretization.patch_size;
-    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size, link_tolerance });
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical {
+        root_size,
+        link_tolerance,
+        passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+    });
     scene.discretization.patch_size = patch_size;
     let model = Model::build(&scene, &Silent).expect("fits in memory");
     (scene, model)

@@ -29,7 +29,11 @@ fn agrees_with_monte_carlo(case: &str, allowed: impl Fn(&str) -> f64) {
     let mut scene = Scene::load(Path::new(case)).unwrap_or_else(|e| panic!("{e}"));
     // roots of 0.25 m, leaves down to 0.05 m, links to 1e-2
     scene.discretization.patch_size = 0.05;
-    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 0.25, link_tolerance: 1e-2 });
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical {
+        root_size: 0.25,
+        link_tolerance: 1e-2,
+        passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+    });
     let model = build(&scene);
     let x = solve(&model);
     let solved = read_probes(&scene.probes, &model, &Field::from_unknowns(&x, model.kernel.cells()), &Silent);

@@ -18,7 +18,8 @@ const SMALLEST: f64 = 0.25;
 #[test]
 fn the_window_light_splits_the_leaves_until_it_is_even_on_each() {
     let mut scene = Scene::load(Path::new("cases/daylit-office.toml")).unwrap();
-    let kernel = Hierarchical { root_size: 1.0, link_tolerance: 1e-1 };
+    let kernel =
+        Hierarchical { root_size: 1.0, link_tolerance: 1e-1, passes: ugo::scene::Hierarchical::DEFAULT_PASSES };
     scene.discretization.kernel = KernelKind::Hierarchical(kernel);
     scene.discretization.patch_size = SMALLEST;
     let model = Model::build(&scene, &Silent).expect("fits in memory");
@@ -80,7 +81,11 @@ fn the_sun_patch_edge_lies_within_one_smallest_leaf_of_its_exact_line() {
     let text =
         text.replace("horizontal_illuminance = 10000.0", "horizontal_illuminance = 1e-9\nsun_illuminance = 50000.0");
     let mut scene = Scene::parse(path, text).unwrap();
-    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 1.0, link_tolerance: 1e-1 });
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical {
+        root_size: 1.0,
+        link_tolerance: 1e-1,
+        passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+    });
     scene.discretization.patch_size = SMALLEST;
     let model = Model::build(&scene, &Silent).expect("fits in memory");
     let beam = model.sources.iter().find_map(|s| match &s.light {

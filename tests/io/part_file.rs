@@ -29,6 +29,8 @@ fn a_part_file_reads_back_as_linked() {
     let back = read_part(&path).expect("read");
     assert_eq!(back.fingerprint, Fingerprint::of(&scene));
     assert_eq!(back.links.links, links.links);
+    assert_eq!(back.links.splits, links.splits);
+    assert!(!links.splits.is_empty(), "the part's linking split elements");
     assert_eq!(
         (back.links.cut, back.links.own_roots, back.links.partition),
         (links.cut, links.own_roots, links.partition)

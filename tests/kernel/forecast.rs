@@ -94,12 +94,20 @@ fn the_material_blocks_count_in_the_forecast() {
 #[test]
 fn the_hierarchy_forecasts_its_roots_and_its_most_leaves() {
     let mut scene = furnace(1.0, 0.5, 1.0, 0.01);
-    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 0.25, link_tolerance: 0.1 });
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical {
+        root_size: 0.25,
+        link_tolerance: 0.1,
+        passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+    });
     let f = Model::forecast(&scene);
     assert_eq!(f.patches, 6.0 * 16.0);
     assert_eq!(f.leaves, Some(6.0 * 200.0 * 200.0), "the uniform mesh at patch_size / 2");
     assert_eq!(f.nonzeros, 0.0);
-    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 1e-9, link_tolerance: 0.1 });
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical {
+        root_size: 1e-9,
+        link_tolerance: 0.1,
+        passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+    });
     let Err(ModelError::TooLarge(e)) = Model::build(&scene, &ugo::progress::Silent) else {
         panic!("a hierarchy of 6e18 roots accepted")
     };

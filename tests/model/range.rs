@@ -27,7 +27,11 @@ fn refused(scene: &Scene) -> String {
 
 fn hierarchical(mut scene: Scene) -> Scene {
     let root_size = scene.discretization.patch_size;
-    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size, link_tolerance: 1e-2 });
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical {
+        root_size,
+        link_tolerance: 1e-2,
+        passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+    });
     scene.discretization.patch_size = 0.25;
     scene
 }

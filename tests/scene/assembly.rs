@@ -25,7 +25,11 @@ fn cube_pairs(h: f64) -> f64 {
 }
 
 fn hierarchical(root_size: f64, link_tolerance: f64) -> KernelKind {
-    KernelKind::Hierarchical(Hierarchical { root_size, link_tolerance })
+    KernelKind::Hierarchical(Hierarchical {
+        root_size,
+        link_tolerance,
+        passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+    })
 }
 
 #[test]

@@ -98,7 +98,11 @@ fn closed_around_luminaires(scene: &Scene) {
 fn the_office_is_furnished_closed_and_lit_from_inside() {
     let scene = furnished("cases/office.toml", 900..1200, 12);
     assert_eq!(scene.discretization.patch_size, 0.15);
-    let hierarchical = ugo::scene::Hierarchical { root_size: 1.0, link_tolerance: 1e-2 };
+    let hierarchical = ugo::scene::Hierarchical {
+        root_size: 1.0,
+        link_tolerance: 1e-2,
+        passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+    };
     assert_eq!(scene.discretization.kernel, ugo::scene::KernelKind::Hierarchical(hierarchical));
     let books = scene.surfaces.iter().filter(|s| s.name.starts_with("bookshelf, book")).count();
     assert!(books >= 24, "{books} books");
@@ -177,7 +181,11 @@ fn the_gltf_room_reads_its_strips_fans_and_texture_and_is_closed() {
 fn the_building_has_twenty_eight_rooms_lit_by_their_own_groups_doors_windows_and_sky() {
     let scene = load("cases/building.toml");
     assert_eq!(scene.discretization.patch_size, 0.15);
-    let hierarchical = ugo::scene::Hierarchical { root_size: 1.0, link_tolerance: 1e-2 };
+    let hierarchical = ugo::scene::Hierarchical {
+        root_size: 1.0,
+        link_tolerance: 1e-2,
+        passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+    };
     assert_eq!(scene.discretization.kernel, ugo::scene::KernelKind::Hierarchical(hierarchical));
     let points = scene.luminaires.iter().filter(|l| matches!(l.kind, LuminaireKind::Point(_))).count();
     let windows = scene.luminaires.iter().filter(|l| matches!(l.kind, LuminaireKind::Window { .. })).count();

@@ -80,7 +80,11 @@ fn opal_panel_and_probe_match_the_thin_transmitter_closed_form() {
 #[test]
 fn through_the_hierarchy_too() {
     let mut scene = opal();
-    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: 0.2, link_tolerance: 1e-3 });
+    scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical {
+        root_size: 0.2,
+        link_tolerance: 1e-3,
+        passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+    });
     scene.discretization.patch_size = 0.05;
     matches_the_closed_form(&scene, 1e-5);
 }

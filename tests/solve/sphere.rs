@@ -50,7 +50,14 @@ fn indirect_illuminance_on_the_wall_is_uniform_and_as_predicted() {
 
 #[test]
 fn through_the_hierarchy_too() {
-    let (f, worst) = sphere(KernelKind::Hierarchical(Hierarchical { root_size: 0.4, link_tolerance: 1e-2 }), 0.1);
+    let (f, worst) = sphere(
+        KernelKind::Hierarchical(Hierarchical {
+            root_size: 0.4,
+            link_tolerance: 1e-2,
+            passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+        }),
+        0.1,
+    );
     assert!((f / 0.0025 - 1.0).abs() < 0.2, "bulb form factor {f}");
     assert!(worst < 1e-2, "indirect illuminance varies by {worst}");
 }

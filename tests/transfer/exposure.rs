@@ -76,7 +76,11 @@ fn furnace_errors(scene: &Scene, model: &Model, x: &[f64]) -> (f64, f64) {
 fn furnace_with_block(lo: f64, link_tolerance: Option<f64>, patch: f64) -> (f64, f64) {
     let mut scene = with_block([0.0, lo, 0.0], [0.5, 0.25 + lo, 0.375], patch);
     if let Some(link_tolerance) = link_tolerance {
-        scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical { root_size: patch, link_tolerance });
+        scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical {
+            root_size: patch,
+            link_tolerance,
+            passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
+        });
         scene.discretization.patch_size = 0.125;
     }
     let model = build(&scene);

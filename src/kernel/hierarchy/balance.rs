@@ -39,6 +39,17 @@ const MAX_SWEEPS: usize = 100;
 /// Largest factor by which a leaf's received light may be scaled either way.
 const MOST: f64 = 4.0;
 
+/// The rules of the sweeps by name, for a program that balances the operator from a
+/// part's rows (`rows.rs`, `tools/petsc/from_parts.py`).
+pub const RULES: [(&str, f64); 6] = [
+    ("balanced", BALANCED),
+    ("rows_balanced", ROWS_BALANCED),
+    ("furnace", FURNACE),
+    ("stalled", STALLED),
+    ("max_sweeps", MAX_SWEEPS as f64),
+    ("most", MOST),
+];
+
 impl Operator {
     /// Balances the operator to the leaves' closures `targets` (in leaf order) with their
     /// exposed areas `areas`, m². A leaf with no target, no exposed area, or no light

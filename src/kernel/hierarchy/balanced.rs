@@ -9,7 +9,7 @@ use super::operator::Operator;
 /// off by more than a few tolerances is the spread of closure its ancestors' links carry as
 /// their mean, not their error (`balance.rs`). At 3 the integrating sphere's factors (within
 /// 2.3 %) stay free; the open box's (5th–95th percentile 0.86–1.11) are held.
-const SENDING: f64 = 3.0;
+pub(super) const SENDING: f64 = 3.0;
 
 impl Hierarchy {
     /// `G` on the current leaves, balanced to their closures unless `options.balance` is

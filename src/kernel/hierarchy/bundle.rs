@@ -51,14 +51,17 @@ pub struct Bundles {
 
 impl Bundles {
     /// Groups `links` by receiver and source kind; `position` is each node's depth-first
-    /// position, which orders the bundles.
+    /// position, which orders the bundles, and the links within a bundle by source.
     pub fn new(tree: &Tree, links: &[Link], position: &[u32]) -> Bundles {
         let key = |l: u32| {
             let link = &links[l as usize];
             (position[link.receiver as usize], SourceKind::of(tree, link))
         };
+        // within a bundle by source: the same order however the links were made (a part's
+        // links rebuilt from files, `rebuilt.rs`), so that the push's rays meet the same
+        // last blocker first and its sums add alike
         let mut order: Vec<u32> = (0..links.len() as u32).collect();
-        order.sort_unstable_by_key(|&l| key(l));
+        order.sort_unstable_by_key(|&l| (key(l), position[links[l as usize].source as usize]));
         let mut bundles = Bundles { row: vec![0], by_node: vec![(0, 0); tree.len()], ..Bundles::default() };
         for bundle in order.chunk_by(|&a, &b| key(a) == key(b)) {
             let receiver = links[bundle[0] as usize].receiver;

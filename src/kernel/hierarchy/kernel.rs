@@ -64,6 +64,27 @@ impl Hierarchy {
         progress: &dyn Progress,
     ) -> Result<Hierarchy, Stopped> {
         let start = Instant::now();
+        let (mut h, guess) = Hierarchy::unlinked(roots, visibility, directions, blocks, options, l0);
+        let roots: Vec<u32> = (0..roots.len() as u32).collect();
+        let mut brightness = h.brightness(&roots, &guess);
+        let top = h.tree.top();
+        let candidates = if top == NONE { Vec::new() } else { vec![(top, top)] };
+        h.refine_candidates(&mut brightness, candidates, progress)?;
+        h.work.seconds += start.elapsed().as_secs_f64();
+        Ok(h)
+    }
+
+    /// The roots and their clusters with no link yet, the oracle's allowance set from the
+    /// first guess of the field, which is returned with it (as [`Hierarchy::new`] takes its
+    /// arguments).
+    pub(super) fn unlinked(
+        roots: &Mesh,
+        visibility: Visibility,
+        directions: DirectionSet,
+        blocks: Vec<Block>,
+        options: Options,
+        l0: &[f64],
+    ) -> (Hierarchy, Vec<f64>) {
         let albedo: Vec<f64> = blocks.iter().map(|b| largest_albedo(b, &directions)).collect();
         let backs = Backs::of(roots);
         let exposed: Vec<f64> = roots.patches.iter().map(|p| p.exposed).collect();
@@ -85,13 +106,7 @@ impl Hierarchy {
             partition: None,
         };
         h.partition = options.part.map(|part| Partition::new(&h.tree, part));
-        let roots: Vec<u32> = (0..roots.len() as u32).collect();
-        let mut brightness = h.brightness(&roots, &guess);
-        let top = h.tree.top();
-        let candidates = if top == NONE { Vec::new() } else { vec![(top, top)] };
-        h.refine_candidates(&mut brightness, candidates, progress)?;
-        h.work.seconds += start.elapsed().as_secs_f64();
-        Ok(h)
+        (h, guess)
     }
 
     /// The element trees and the cluster tree above them.

@@ -277,7 +277,7 @@ impl Operator {
 }
 
 /// Parent position and area share in the parent of every depth-first position.
-fn parents(tree: &Tree, order: &[u32], position: &[u32]) -> (Vec<u32>, Vec<f64>) {
+pub(super) fn parents(tree: &Tree, order: &[u32], position: &[u32]) -> (Vec<u32>, Vec<f64>) {
     let mut parent = vec![NONE; order.len()];
     let mut weight = vec![0.0; order.len()];
     for (pos, &id) in order.iter().enumerate() {
@@ -303,7 +303,7 @@ fn subtree_ends(parent: &[u32]) -> Vec<u32> {
 }
 
 /// The links' pieces as CSR rows by bundle.
-fn gather_rows(links: &[Link], bundles: &Bundles, position: &[u32]) -> (Vec<usize>, Vec<Entry>) {
+pub(super) fn gather_rows(links: &[Link], bundles: &Bundles, position: &[u32]) -> (Vec<usize>, Vec<Entry>) {
     let pieces = |l: u32| links[l as usize].pieces.len().max(1);
     let mut row = Vec::with_capacity(bundles.len() + 1);
     row.push(0);

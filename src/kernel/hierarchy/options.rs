@@ -38,7 +38,8 @@ pub struct Options {
     /// within 0.07 % (`docs/hierarchy.md`, "Element factors"); its depth 7 changes the
     /// closure of a box's leaves by less than 1e-7 and costs 3.4 times the assembly.
     pub quadrature: Quadrature,
-    /// Most refinement passes of [`super::iterate`], the initial linking included. Default 4.
+    /// Most refinement passes of [`super::iterate`], the initial linking included. Default
+    /// [`DEFAULT_PASSES`].
     pub passes: usize,
     /// Balance the operator to the leaves' closures (`balance.rs`). Default true; off, the
     /// links' own row and column sums stand.
@@ -59,13 +60,16 @@ impl Default for Options {
             reading_weight: READING_WEIGHT,
             patch_size: 0.05,
             quadrature: Quadrature { eta: 1.0, max_depth: 4 },
-            passes: 4,
+            passes: DEFAULT_PASSES,
             balance: true,
             memory_limit: crate::kernel::memory::default_limit(),
             part: None,
         }
     }
 }
+
+/// The most refinement passes unless a number is given, the initial linking included.
+pub const DEFAULT_PASSES: usize = 4;
 
 /// The link tolerance unless one is given: the one default of `Options::tolerance` and of a
 /// case's `link_tolerance`.
