@@ -12,26 +12,37 @@ use std::path::{Path, PathBuf};
 use ugo::io::{StoredPart, read_part, write_part, write_part_rows};
 use ugo::kernel::hierarchy::Part;
 use ugo::model::{Fingerprint, NamedPart, PartLinks, join, link_part, part_rows};
-use ugo::scene::KernelKind;
+use ugo::scene::{Hierarchical, KernelKind, Scene};
 
 /// Links part `part` of `case` and writes it to `output` (default
 /// `<case>-part-<i>-of-<n>.h5`).
 pub fn run(case: &Path, d: &Discretize, part: Part, output: Option<PathBuf>) -> Result<()> {
-    let scene = load(case, d)?;
-    let KernelKind::Hierarchical(parameters) = scene.discretization.kernel else {
-        bail!(
-            "--part links the hierarchical kernel's receivers by part: the case's kernel is uniform (--kernel hierarchical)"
-        );
-    };
-    let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
-    let output = output.unwrap_or_else(|| PathBuf::from(format!("{stem}-part-{}-of-{}.h5", part.index, part.count)));
-    super::check_writable(&output)?;
+    let (scene, parameters, output) = prepare(case, d, part, "part", output)?;
     let links = link_part(&scene, parameters, part, &Bars::default())?;
     write_part(&output, &Fingerprint::of(&scene), &links)?;
     let cells = scene.discretization.directions.set().len();
     println!("part {part} of {}: {}", case.display(), summary(&links, cells));
     println!("wrote {}", output.display());
     Ok(())
+}
+
+/// The scene of `case`, its hierarchy's parameters (refused for the uniform kernel) and
+/// the writable output (default `<case>-<what>-<i>-of-<n>.h5`).
+fn prepare(
+    case: &Path,
+    d: &Discretize,
+    part: Part,
+    what: &str,
+    output: Option<PathBuf>,
+) -> Result<(Scene, Hierarchical, PathBuf)> {
+    let scene = load(case, d)?;
+    let KernelKind::Hierarchical(parameters) = scene.discretization.kernel else {
+        bail!("--part builds the hierarchical kernel by part: the case's kernel is uniform (--kernel hierarchical)");
+    };
+    let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+    let output = output.unwrap_or_else(|| PathBuf::from(format!("{stem}-{what}-{}-of-{}.h5", part.index, part.count)));
+    super::check_writable(&output)?;
+    Ok((scene, parameters, output))
 }
 
 /// One line of counts of `p` (`cells` direction cells a value).
@@ -57,15 +68,7 @@ fn summary(p: &PartLinks, cells: usize) -> String {
 /// part of one partition of this case) and writes them to `output` (default
 /// `<case>-rows-<i>-of-<n>.h5`).
 pub fn rows(case: &Path, d: &Discretize, part: Part, files: &[PathBuf], output: Option<PathBuf>) -> Result<()> {
-    let scene = load(case, d)?;
-    let KernelKind::Hierarchical(parameters) = scene.discretization.kernel else {
-        bail!(
-            "--linked rebuilds the hierarchical kernel from its parts: the case's kernel is uniform (--kernel hierarchical)"
-        );
-    };
-    let stem = case.file_stem().unwrap_or_default().to_string_lossy().into_owned();
-    let output = output.unwrap_or_else(|| PathBuf::from(format!("{stem}-rows-{}-of-{}.h5", part.index, part.count)));
-    super::check_writable(&output)?;
+    let (scene, parameters, output) = prepare(case, d, part, "rows", output)?;
     let stored = files.iter().map(|f| read_part(f)).collect::<Result<Vec<_>, _>>()?;
     let joined = joined(files, &stored)?;
     let fingerprint = Fingerprint::of(&scene);

@@ -84,12 +84,7 @@ fn write_operator(g: &hdf5::Group, parts: &Parts) -> hdf5::Result<()> {
     dataset(&push, "indptr", &Array1::from_iter(parts.push_row.iter().map(|&r| r as u64)))?;
     dataset(&push, "bundle", &Array1::from_iter(parts.push.iter().map(|p| p.0)))?;
     dataset(&push, "share", &Array1::from_iter(parts.push.iter().map(|p| p.1)))?;
-    let gather = g.create_group("gather")?;
-    dataset(&gather, "indptr", &Array1::from_iter(parts.row.iter().map(|&r| r as u64)))?;
-    dataset(&gather, "source", &Array1::from_iter(parts.entries.iter().map(|e| e.source)))?;
-    dataset(&gather, "d", &Array1::from_iter(parts.entries.iter().map(|e| e.d)))?;
-    dataset(&gather, "m", &Array1::from_iter(parts.entries.iter().map(|e| e.m)))?;
-    dataset(&gather, "f", &Array1::from_iter(parts.entries.iter().map(|e| e.f)))?;
+    write_gather(g, &parts.row, &parts.entries)?;
     dataset(g, "receive", &Array1::from(parts.receive.clone()))?;
     dataset(g, "send", &Array1::from(parts.send.clone()))?;
     g.new_attr::<u64>().create("links")?.write_scalar(&(parts.links as u64))?;
@@ -236,4 +231,15 @@ fn root_positions(file: &File, skeleton: &Skeleton) -> Result<Vec<u32>, Why> {
         }
     }
     Ok(position)
+}
+
+/// The gathered pieces `entries` by bundle (CSR rows `row`) as `gather/{indptr, source, d,
+/// m, f}` in `g`.
+pub(super) fn write_gather(g: &hdf5::Group, row: &[usize], entries: &[Entry]) -> hdf5::Result<()> {
+    let gather = g.create_group("gather")?;
+    dataset(&gather, "indptr", &Array1::from_iter(row.iter().map(|&r| r as u64)))?;
+    dataset(&gather, "source", &Array1::from_iter(entries.iter().map(|e| e.source)))?;
+    dataset(&gather, "d", &Array1::from_iter(entries.iter().map(|e| e.d)))?;
+    dataset(&gather, "m", &Array1::from_iter(entries.iter().map(|e| e.m)))?;
+    dataset(&gather, "f", &Array1::from_iter(entries.iter().map(|e| e.f)))
 }

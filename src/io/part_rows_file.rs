@@ -15,6 +15,7 @@
 
 use super::IoError;
 use super::dataset::dataset;
+use super::hierarchy_kernel::write_gather;
 use super::kernel_file::{write_blocks, write_fingerprint};
 use crate::kernel::hierarchy::BALANCING_RULES;
 use crate::model::{Fingerprint, PartRows};
@@ -60,12 +61,7 @@ fn write_to(path: &Path, fingerprint: &Fingerprint, projected: &[f64], p: &PartR
     let bundles = g.create_group("bundles")?;
     dataset(&bundles, "receiver", &Array1::from_iter(r.bundles.iter().map(|b| b.receiver)))?;
     dataset(&bundles, "kind", &Array1::from_iter(r.bundles.iter().map(|b| b.kind)))?;
-    let gather = g.create_group("gather")?;
-    dataset(&gather, "indptr", &Array1::from_iter(r.row.iter().map(|&i| i as u64)))?;
-    dataset(&gather, "source", &Array1::from_iter(r.entries.iter().map(|e| e.source)))?;
-    dataset(&gather, "d", &Array1::from_iter(r.entries.iter().map(|e| e.d)))?;
-    dataset(&gather, "m", &Array1::from_iter(r.entries.iter().map(|e| e.m)))?;
-    dataset(&gather, "f", &Array1::from_iter(r.entries.iter().map(|e| e.f)))?;
+    write_gather(&g, &r.row, &r.entries)?;
     let push = g.create_group("push")?;
     dataset(&push, "indptr", &Array1::from_iter(r.push_row.iter().map(|&i| i as u64)))?;
     dataset(&push, "receiver", &Array1::from_iter(r.push.iter().map(|(b, _)| b.receiver)))?;
