@@ -103,13 +103,17 @@ impl Tree {
     }
 
     /// Gives element `id` (and its twin) their four children, unless they have them;
-    /// `exposed` measures a child's exposed area (`transfer::exposure`).
+    /// `exposed` measures a child's exposed area (`transfer::exposure`). A pair of twins is
+    /// cut from the side under the lower root, whichever of them is asked, so that a
+    /// child's address names the same piece in every process (`address.rs`).
     pub fn split(&mut self, id: u32, exposed: &Exposure<'_>) {
         let node = self.nodes[id as usize];
-        let Kind::Element { patch, twin, .. } = node.kind else { return };
+        let Kind::Element { twin, .. } = node.kind else { return };
         if !node.is_leaf() {
             return;
         }
+        let (id, twin) = if twin != NONE && self.root(twin) < self.root(id) { (twin, id) } else { (id, twin) };
+        let Some(patch) = self.nodes[id as usize].patch().copied() else { return };
         let pieces = patch.polygon.split();
         let front = self.add_children(id, pieces, exposed);
         if twin == NONE {
@@ -120,6 +124,16 @@ impl Tree {
             self.set_twin(f, b);
             self.set_twin(b, f);
         }
+    }
+
+    /// The root element that element `id` is or descends from.
+    fn root(&self, mut id: u32) -> u32 {
+        while let Kind::Element { level, .. } = self.nodes[id as usize].kind
+            && level > 0
+        {
+            id = self.nodes[id as usize].parent;
+        }
+        id
     }
 
     /// Appends the elements of `polygons` as the children of element `id`; returns their ids.
