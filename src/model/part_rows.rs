@@ -91,10 +91,10 @@ pub fn part_rows(
         varies(&sources, &windows, visibility, patch, albedo, epsilon)
     });
     let rows = h.part_rows().map_err(ModelError::Parts)?;
-    let (l0, direct) = own_source(&h, &rows, &sources, &blocks);
+    let index = leaf_index(&h, &rows);
+    let (l0, direct) = own_source(&h, &rows, &index, &sources, &blocks);
     let own = &rows.leaves[rows.own_leaves.clone()];
     let node = |id: &u32| h.tree().node(*id);
-    let index = leaf_index(&h, &rows);
     Ok(PartRows {
         part,
         cells: k,
@@ -114,18 +114,31 @@ pub fn part_rows(
 
 /// `L0` and the direct light of the part's own leaves: integrated as `hierarchical.rs`
 /// integrates every leaf's, on the own leaves and their twins (whose light a transmitting
-/// material brings through); `L0` and `D` of the own leaves first.
-fn own_source(h: &Hierarchy, rows: &Rows, sources: &[Source], blocks: &[Block]) -> (Vec<f64>, DirectLight) {
+/// material brings through); `L0` and `D` of the own leaves first. `index` is each leaf's
+/// index among the unknowns, by node id.
+fn own_source(
+    h: &Hierarchy,
+    rows: &Rows,
+    index: &[u32],
+    sources: &[Source],
+    blocks: &[Block],
+) -> (Vec<f64>, DirectLight) {
     let k = h.directions().len();
-    let own = &rows.leaves[rows.own_leaves.clone()];
-    let mut nodes: Vec<u32> = own.to_vec();
-    nodes.extend(own.iter().filter_map(|&id| twin_of(h, id)).filter(|t| !own.contains(t)));
-    let mut at = std::collections::HashMap::new();
-    nodes.iter().enumerate().for_each(|(i, &id)| _ = at.insert(id, i as u32));
+    let own = rows.own_leaves.clone();
+    let twin_leaf = |id: u32| twin_of(h, id).map(|t| index[t as usize] as usize);
+    let mut behind: Vec<usize> =
+        rows.leaves[own.clone()].iter().filter_map(|&id| twin_leaf(id)).filter(|l| !own.contains(l)).collect();
+    behind.sort_unstable();
+    // where leaf `l` (an own leaf or the twin of one) stands among the patches lit here
+    let at = |l: usize| match own.contains(&l) {
+        true => Some(l - own.start),
+        false => behind.binary_search(&l).ok().map(|b| own.len() + b),
+    };
+    let nodes: Vec<u32> = own.clone().chain(behind.iter().copied()).map(|l| rows.leaves[l]).collect();
     let patches: Vec<Patch> = nodes
         .iter()
         .map(|&id| {
-            let twin = twin_of(h, id).and_then(|t| at.get(&t).copied()).unwrap_or(NO_TWIN);
+            let twin = twin_leaf(id).and_then(at).map_or(NO_TWIN, |i| i as u32);
             Patch { twin, ..*h.tree().node(id).patch().expect("a leaf is an element") }
         })
         .collect();

@@ -176,16 +176,21 @@ def pull(tree, share, found, node_rows, first, count, send):
 
 
 def _node_pull(h, tree, share, node_rows, record):
+    """This rank's rows `node_rows` of R with `diag(send)` folded in (`node_pull`), `send`
+    read from the operator group `h`."""
+    return node_pull(tree, share, node_rows, lambda start, end: span(h["send"], start, end, record))
+
+
+def node_pull(tree, share, node_rows, send):
     """This rank's rows `node_rows` (first, last) of R with `diag(send)` folded in, over all
     the leaves: a node precedes its subtree, so only the leaves at or after the first
     node's position can lie under the rank's nodes; only theirs are walked up and only
-    their run of `send` (from the first of them to the end) is read."""
+    their run of the sending factors, `send(first, end)`, is asked for."""
     a, b = node_rows
     cells, leaves = len(share), len(tree.leaf_position)
     walked = np.flatnonzero(tree.leaf_position >= a)
     start = int(walked[0]) if len(walked) else leaves
-    send = span(h["send"], start, leaves, record)
-    tail = pull(tree, share, ancestry(tree, walked), np.arange(a, b), start, leaves - start, send)
+    tail = pull(tree, share, ancestry(tree, walked), np.arange(a, b), start, leaves - start, send(start, leaves))
     return sp.csr_matrix((tail.data, tail.indices + start * cells, tail.indptr), shape=(tail.shape[0], leaves * cells))
 
 

@@ -101,10 +101,7 @@ class Operator:
         first, last = mine[0].leaves[0], mine[-1].leaves[1]
         a, b = mine[0].nodes[0], mine[-1].nodes[1]
         n, own = self.leaves * cells, (last - first) * cells
-        walked = np.flatnonzero(tree.leaf_position >= a)
-        start = int(walked[0]) if len(walked) else self.leaves
-        tail = hierarchy.pull(tree, share, hierarchy.ancestry(tree, walked), np.arange(a, b), start, self.leaves - start, np.ones(self.leaves - start))
-        R = _mat(hierarchy.sp.csr_matrix((tail.data, tail.indices + start * cells, tail.indptr), shape=(tail.shape[0], n)), n, comm, columns=own)
+        R = _mat(hierarchy.node_pull(tree, share, (a, b), lambda start, end: np.ones(end - start)), n, comm, columns=own)
         row, values = csr(files, "gather", hierarchy.LINK_FIELDS)
         Lam = _mat(hierarchy.links(row, values, share, b1 - b0, self.nodes), self.nodes * cells, comm, columns=(b - a) * cells)
         row, values = csr(files, "push", ("receiver", "kind", "share"))

@@ -46,7 +46,8 @@ pub struct Rows {
     /// The part's nodes: a run of depth-first positions (its roots' subtrees and the
     /// clusters it owns).
     pub own_nodes: Range<u32>,
-    /// The part's bundles (those of the links it owns), by key, ascending.
+    /// The part's bundles (those of the links it owns), by key, ascending: a run of the
+    /// bundles, as its nodes are a run of the positions.
     pub bundles: Vec<BundleKey>,
     /// The gathered pieces of each of its bundles, CSR (sources by depth-first position).
     pub row: Vec<usize>,
@@ -88,10 +89,14 @@ impl Hierarchy {
         let mine = &leaves[own_leaves.clone()];
         let (push_row, push) = push_rows(tree, &self.visibility, &self.links, &reaching, mine, &mut self.memo.seen);
         let push = push.into_iter().map(|(b, s)| (key(&self.links, &reaching, b as usize), s)).collect();
-        let owned: Vec<Link> = self.links.iter().filter(|l| own(&l.receiver)).cloned().collect();
-        let bundles = Bundles::new(tree, &owned, &position);
-        let (row, entries) = gather_rows(&owned, &bundles, &position);
-        let keys = (0..bundles.len()).map(|b| key(&owned, &bundles, b)).collect();
+        // the part's own bundles: the run of those reaching it whose receiver it owns
+        let Range { start: first, end } =
+            run(&reaching.receiver, own).ok_or("the part's bundles are not one run of the bundles")?;
+        let (all_rows, all_entries) = gather_rows(&self.links, &reaching, &position);
+        let row = all_rows[first..=end].iter().map(|r| r - all_rows[first]).collect();
+        let entries = all_entries[all_rows[first]..all_rows[end]].to_vec();
+        let keys = (first..end).map(|b| key(&self.links, &reaching, b)).collect();
+        let links = (first..end).map(|b| reaching.links_of(b).len()).sum();
         let rays = self.memo.measure_closure(&self.tree, &self.backs, &self.visibility, mine);
         self.work.rays += rays;
         let closure = mine.iter().map(|&id| self.memo.closure(id)).collect();
@@ -99,7 +104,7 @@ impl Hierarchy {
             parent,
             weight,
             cluster,
-            leaves: leaves.clone(),
+            leaves,
             leaf_position,
             own_leaves,
             own_nodes: nodes.start as u32..nodes.end as u32,
@@ -109,7 +114,7 @@ impl Hierarchy {
             push_row,
             push,
             closure,
-            links: owned.len(),
+            links,
             sending: SENDING * self.options.tolerance,
         })
     }
