@@ -1,6 +1,16 @@
 //! The `ugo` command line (`docs/design.md` §6): `solve`, `norms`, `compare`, `render`, `trace`,
 //! `agree`, `info`, `bench`, `export`, `probes`, `glare`.
 
+/// `println!` that outlives its reader: once whoever reads standard output has gone (`ugo
+/// solve … | head -1`), the lines are dropped and the command goes on to write its files,
+/// where `println!` would panic.
+macro_rules! say {
+    ($($line:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($line)*);
+    }};
+}
+
 mod cli;
 
 use clap::{Parser, Subcommand};

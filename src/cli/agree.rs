@@ -98,7 +98,7 @@ pub fn run(
     lit.set_shading(shading);
     let image = render(&lit, &camera);
     super::stop::after_stage(|| format!("the render of camera \"{}\"", camera.name), &[])?;
-    println!(
+    say!(
         "ugo agree: {} through camera \"{}\" ({} rays/pixel, {} shading) against the traced image {}",
         solution.display(),
         camera.name,
@@ -106,7 +106,7 @@ pub fn run(
         describe(shading),
         reference.display()
     );
-    println!("  per pixel: {} × {}", mean.width, mean.height);
+    say!("  per pixel: {} × {}", mean.width, mean.height);
     summary(&agreement(&image.luminance, &mean.luminance, &error.luminance));
     if let Some(d) = difference {
         write_difference(d.path, &image, &mean, &error, d.scale)?;
@@ -116,7 +116,7 @@ pub fn run(
         let share = |keep: fn(&f64) -> bool| {
             100.0 * beyond.iter().filter(|r| keep(r)).count() as f64 / mean.luminance.len() as f64
         };
-        println!(
+        say!(
             "  difference image     {}   (±{} %; beyond 2σ: {:.1} % of the pixels above, {:.1} % below)",
             d.path.display(),
             d.scale,
@@ -147,23 +147,23 @@ fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution, 
             mc.directions.name()
         );
     }
-    println!("ugo agree: {} against the forward estimate {}", solution.display(), reference.display());
-    println!("  per (patch, cell): {n} × {k}");
+    say!("ugo agree: {} against the forward estimate {}", solution.display(), reference.display());
+    say!("  per (patch, cell): {n} × {k}");
     summary(&agreement(&stored.luminance, &mc.luminance, error));
     let areas: Vec<f64> = stored.mesh.patches.iter().flat_map(|p| std::iter::repeat_n(p.area, k)).collect();
     match leaf_errors(&stored.luminance, &mc.luminance, error, &areas, precise) {
         Some(e) => {
             let worst = &stored.mesh.patches[e.largest.1 / k];
             let c = worst.centroid;
-            println!(
+            say!(
                 "  bins precise to {:.1} % {:>8}   ({:.1} % of the area); |x − m|/m over them, area-weighted:",
                 100.0 * precise,
                 e.bins,
                 100.0 * e.area_share
             );
-            println!("    mean               {:>11.3} %", 100.0 * e.mean);
-            println!("    95th percentile    {:>11.3} %", 100.0 * e.p95);
-            println!(
+            say!("    mean               {:>11.3} %", 100.0 * e.mean);
+            say!("    95th percentile    {:>11.3} %", 100.0 * e.p95);
+            say!(
                 "    largest            {:>11.3} %   (\"{}\", patch {} at [{:.3}, {:.3}, {:.3}], cell {})",
                 100.0 * e.largest.0,
                 names_of(stored)[worst.surface as usize],
@@ -174,11 +174,11 @@ fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution, 
                 e.largest.1 % k
             );
         }
-        None => println!("  no bin is precise to {:.1} %: trace more --photons", 100.0 * precise),
+        None => say!("  no bin is precise to {:.1} %: trace more --photons", 100.0 * precise),
     }
     by_place(stored, &mc.luminance, error, &areas, precise);
     let names = names_of(stored);
-    println!("  {:<26} {:>8} {:>10} {:>10}", "surface", "rms z", "rel. L1", "noise L2");
+    say!("  {:<26} {:>8} {:>10} {:>10}", "surface", "rms z", "rel. L1", "noise L2");
     for (s, name) in names.iter().enumerate() {
         let pick = |v: &[f64]| -> Vec<f64> {
             stored
@@ -191,7 +191,7 @@ fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution, 
                 .collect()
         };
         let a = agreement(&pick(&stored.luminance), &pick(&mc.luminance), &pick(error));
-        println!("  {:<26} {:>8.3} {:>10.3e} {:>10.3e}", name, a.rms_z, a.relative_l1, a.noise_l2);
+        say!("  {:<26} {:>8.3} {:>10.3e} {:>10.3e}", name, a.rms_z, a.relative_l1, a.noise_l2);
     }
     Ok(())
 }
@@ -224,14 +224,21 @@ fn by_place(stored: &StoredSolution, mean: &[f64], error: &[f64], areas: &[f64],
     let k = stored.directions.len();
     let sources: Vec<Source> = stored.scene.luminaires.iter().map(Source::of).collect();
     let places = places(&World::new(&stored.scene, stored.mesh.clone()), &sources);
-    println!(
+    say!(
         "  by place: the error beyond noise over all its leaves (L2, as above); the bins precise to {:.1} %, their \
          share of its area and their |x − m|/m",
         100.0 * precise
     );
-    println!(
+    say!(
         "    {:<10} {:>8} {:>10} {:>8} {:>8} {:>10} {:>10} {:>10}",
-        "place", "leaves", "beyond", "bins", "area %", "mean", "95th pct", "largest"
+        "place",
+        "leaves",
+        "beyond",
+        "bins",
+        "area %",
+        "mean",
+        "95th pct",
+        "largest"
     );
     for place in Place::ALL {
         let leaves = places.iter().filter(|p| **p == Some(place)).count();
@@ -239,7 +246,7 @@ fn by_place(stored: &StoredSolution, mean: &[f64], error: &[f64], areas: &[f64],
         let pick = |v: &[f64]| -> Vec<f64> { bins.iter().map(|&b| v[b]).collect() };
         let beyond = agreement(&pick(&stored.luminance), &pick(mean), &pick(error)).excess_l2;
         match leaf_errors(&pick(&stored.luminance), &pick(mean), &pick(error), &pick(areas), precise) {
-            Some(e) => println!(
+            Some(e) => say!(
                 "    {:<10} {:>8} {:>8.3} % {:>8} {:>8.1} {:>8.3} % {:>8.3} % {:>8.3} %",
                 place.name(),
                 leaves,
@@ -250,7 +257,7 @@ fn by_place(stored: &StoredSolution, mean: &[f64], error: &[f64], areas: &[f64],
                 100.0 * e.p95,
                 100.0 * e.largest.0
             ),
-            None => println!("    {:<10} {:>8} {:>8.3} % {:>8}", place.name(), leaves, 100.0 * beyond, 0),
+            None => say!("    {:<10} {:>8} {:>8.3} % {:>8}", place.name(), leaves, 100.0 * beyond, 0),
         }
     }
 }
@@ -261,19 +268,20 @@ fn names_of(stored: &StoredSolution) -> Vec<&str> {
 }
 
 fn summary(a: &Agreement) {
-    println!("  compared             {:>12}   (values with a standard error)", a.compared);
+    say!("  compared             {:>12}   (values with a standard error)", a.compared);
     if a.unsampled > 0 {
-        println!(
+        say!(
             "  no Monte Carlo sample {:>11}   ({} of them differ from the solution)",
-            a.unsampled, a.unsampled_different
+            a.unsampled,
+            a.unsampled_different
         );
     }
-    println!("  mean z               {:>12.4}", a.mean_z);
-    println!("  rms z                {:>12.4}   (1 if the solution were the reference's expectation)", a.rms_z);
-    println!("  max |z|              {:>12.4}", a.max_abs_z);
-    println!("  |z| > 3              {:>11.3} %   (0.27 % expected by chance alone)", 100.0 * a.beyond_3);
-    println!("  relative difference  {:>12.4e}   L1, Σ|x − m|/Σ|m|", a.relative_l1);
-    println!("                       {:>12.4e}   L2, ‖x − m‖/‖m‖", a.relative_l2);
-    println!("  reference noise      {:>12.4e}   L2, ‖σ‖/‖m‖", a.noise_l2);
-    println!("  error beyond noise   {:>12.4e}   L2, √(‖x − m‖² − ‖σ‖²)/‖m‖", a.excess_l2);
+    say!("  mean z               {:>12.4}", a.mean_z);
+    say!("  rms z                {:>12.4}   (1 if the solution were the reference's expectation)", a.rms_z);
+    say!("  max |z|              {:>12.4}", a.max_abs_z);
+    say!("  |z| > 3              {:>11.3} %   (0.27 % expected by chance alone)", 100.0 * a.beyond_3);
+    say!("  relative difference  {:>12.4e}   L1, Σ|x − m|/Σ|m|", a.relative_l1);
+    say!("                       {:>12.4e}   L2, ‖x − m‖/‖m‖", a.relative_l2);
+    say!("  reference noise      {:>12.4e}   L2, ‖σ‖/‖m‖", a.noise_l2);
+    say!("  error beyond noise   {:>12.4e}   L2, √(‖x − m‖² − ‖σ‖²)/‖m‖", a.excess_l2);
 }

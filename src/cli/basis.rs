@@ -60,7 +60,7 @@ pub fn study(
     super::check_writable(plot)?;
     let BasisStudy { model, rows } = compare_bases(&scene, &bases, method, params, &Bars::default())?;
     let n = model.mesh.len();
-    println!(
+    say!(
         "ugo: {} — {} patches, {} cells, {} by {}; errors against the full angular solution",
         scene.name,
         n,
@@ -68,12 +68,19 @@ pub fn study(
         method.name(),
         if params.tolerance > 0.0 { format!("tolerance {:.0e}", params.tolerance) } else { String::new() }
     );
-    println!(
+    say!(
         "  {:<8} {:>10} {:>12} {:>9} {:>6} {:>11} {:>11} {:>13}",
-        "basis", "unknowns", "assembled", "time s", "iter.", "rel. L² err", "max err", "full residual"
+        "basis",
+        "unknowns",
+        "assembled",
+        "time s",
+        "iter.",
+        "rel. L² err",
+        "max err",
+        "full residual"
     );
     for r in &rows {
-        println!(
+        say!(
             "  {:<8} {:>10} {:>12} {:>9.3} {:>6} {:>11.3e} {:>11.3e} {:>13.2e}",
             r.name,
             r.unknowns,
@@ -87,6 +94,6 @@ pub fn study(
     }
     let points: Vec<(String, usize, f64)> = rows.iter().map(|r| (r.name.clone(), r.unknowns, r.error)).collect();
     basis_plot(plot, &format!("{}: factored bases against the full angular solution", scene.name), &points)?;
-    println!("  plot     {}", plot.display());
+    say!("  plot     {}", plot.display());
     Ok(())
 }

@@ -56,9 +56,9 @@ pub fn run(o: &ExportOptions) -> Result<()> {
     let paths = export(&stored, o.format.into(), &o.output, limit)
         .with_context(|| format!("exporting the kernel of {}", o.solution.display()))?;
     let n = stored.kernel.g.rows();
-    println!("ugo: the kernel of {} ({n} unknowns)", o.solution.display());
+    say!("ugo: the kernel of {} ({n} unknowns)", o.solution.display());
     for path in &paths {
-        println!("  {:<40} {}", path.display(), size(path));
+        say!("  {:<40} {}", path.display(), size(path));
     }
     Ok(())
 }

@@ -40,17 +40,11 @@ pub fn report(glare: GlareReadings, grids: &[GridReading], indent: &str) {
 }
 
 fn observer_lines(readings: &[UgrReading], indent: &str) {
-    println!("{indent}observers                       UGR   L_b cd/m²   sources   limit");
+    say!("{indent}observers                       UGR   L_b cd/m²   sources   limit");
     for r in readings {
         let limit = against(r.ugr(), r.observer.ugr_limit);
         let o = &r.observer;
-        println!(
-            "{indent}  {:<22} {:>9} {:>11.4} {:>9}   {limit}",
-            o.name,
-            shown(r.ugr()),
-            r.background,
-            r.sources.len()
-        );
+        say!("{indent}  {:<22} {:>9} {:>11.4} {:>9}   {limit}", o.name, shown(r.ugr()), r.background, r.sources.len());
         let outside = r.outside_validity();
         if outside > 0 {
             let what = format!("{outside} of its {} luminaires subtend", r.sources.len());
@@ -67,11 +61,11 @@ fn grid_lines(glare: GlareReadings, grids: &[GridReading], indent: &str) {
     if named.is_empty() {
         return;
     }
-    println!("{indent}grids' UGR                     UGR   from (largest of their readings)   UGR_L");
+    say!("{indent}grids' UGR                     UGR   from (largest of their readings)   UGR_L");
     for (g, u) in named {
         let from = taken_from(&u);
         let limit = against(u.ugr, g.grid.target.ugr);
-        println!("{indent}  {:<22} {:>9}   {from:<32}   {limit}", g.grid.name, shown(u.ugr));
+        say!("{indent}  {:<22} {:>9}   {from:<32}   {limit}", g.grid.name, shown(u.ugr));
     }
 }
 

@@ -16,7 +16,7 @@ pub fn report(readings: &[GlareGridReading], output: &Path, indent: &str) -> Res
     if readings.is_empty() {
         return Ok(());
     }
-    println!("{indent}glare grids              positions × views   UGR_max   at (u, v, turn)   above UGR_L   UGR_L");
+    say!("{indent}glare grids              positions × views   UGR_max   at (u, v, turn)   above UGR_L   UGR_L");
     for r in readings {
         let (grid, largest) = (&r.grid, r.largest());
         let [nu, nv] = grid.resolution;
@@ -27,10 +27,10 @@ pub fn report(readings: &[GlareGridReading], output: &Path, indent: &str) -> Res
         });
         let size = format!("{nu} × {nv} × {}", grid.views.len());
         let limit = against(largest.ugr, grid.ugr_limit);
-        println!("{indent}  {:<22} {size:>18} {:>9} {at:>17} {above:>13}   {limit}", grid.name, shown(largest.ugr));
+        say!("{indent}  {:<22} {size:>18} {:>9} {at:>17} {above:>13}   {limit}", grid.name, shown(largest.ugr));
         let csv = super::beside(output, &format!("-glare-{}.csv", super::file_name(&grid.name)));
         write_glare_grid_csv(&csv, r)?;
-        println!("{indent}    {}", csv.display());
+        say!("{indent}    {}", csv.display());
         let outside = r.outside_validity();
         if outside > 0 {
             let what = format!("at {outside} of its {} positions and views a luminaire subtends", r.readings.len());

@@ -38,7 +38,7 @@ pub fn run(luminaire: &Path, csv: Option<PathBuf>, spacing: f64) -> Result<()> {
     print_validity(&table);
     if let Some(path) = csv {
         ugo::io::write_ugr_table_csv(&path, &table)?;
-        println!("written {}", path.display());
+        say!("written {}", path.display());
     }
     Ok(())
 }
@@ -54,15 +54,15 @@ fn read(path: &Path) -> Result<IntensityDistribution> {
 }
 
 fn print_conditions(luminaire: &Path, opening: &LuminousOpening, table: &UgrTable, whence: &str) {
-    println!("UGR table of {} (CIE 190:2010 tabular method, CIE 117:1995 formula)", luminaire.display());
-    println!("  luminous area: {}", shown(opening));
-    println!(
+    say!("UGR table of {} (CIE 190:2010 tabular method, CIE 117:1995 formula)", luminaire.display());
+    say!("  luminous area: {}", shown(opening));
+    say!(
         "  rooms X × Y in multiples of H, the luminaires' height above the eye (H = {HEIGHT} m; the UGR does \
          not depend on it); spacing-to-height ratio {}; the eye at the middle of a wall looking horizontally \
          across the room",
         table.spacing
     );
-    println!(
+    say!(
         "  table for {REFERENCE_FLUX} lm of lamp flux; the lamps give {:.1} lm ({whence}): add 8 log10(Φ/{REFERENCE_FLUX}) \
          = {:+.2}",
         table.flux,
@@ -73,17 +73,17 @@ fn print_conditions(luminaire: &Path, opening: &LuminousOpening, table: &UgrTabl
 fn print_table(table: &UgrTable) {
     let row = |what: &str, value: &dyn Fn(usize) -> f64| {
         let values: Vec<String> = (0..10).map(|k| format!("{:5.2}", value(k % 5))).collect();
-        println!("{what:<14}{}    {}", values[..5].join(" "), values[5..].join(" "));
+        say!("{what:<14}{}    {}", values[..5].join(" "), values[5..].join(" "));
     };
     row("ceiling", &|k| REFLECTANCES[k].ceiling);
     row("walls", &|k| REFLECTANCES[k].walls);
     row("floor", &|k| REFLECTANCES[k].floor);
     let [across, along] = Viewing::BOTH.map(Viewing::name);
-    println!("room X × Y     {:<33}viewed {along}", format!("viewed {across}"));
+    say!("room X × Y     {:<33}viewed {along}", format!("viewed {across}"));
     for (i, [x, y]) in ROOMS.iter().enumerate() {
         let cells = &table.cells[i * 10..(i + 1) * 10];
         let values: Vec<String> = cells.iter().map(|c| format!("{:5.1}", c.ugr - table.summand())).collect();
-        println!("{:<14}{}    {}", format!("{x}H {y}H"), values[..5].join(" "), values[5..].join(" "));
+        say!("{:<14}{}    {}", format!("{x}H {y}H"), values[..5].join(" "), values[5..].join(" "));
     }
 }
 
@@ -91,18 +91,13 @@ fn print_validity(table: &UgrTable) {
     let [low, high] = table.solid_angles;
     let [least, most] = VALID_SOLID_ANGLE;
     let holds = if low > least && high < most { "within" } else { "NOT all within" };
-    println!(
+    say!(
         "  the luminaires counted subtend {low:.2e} to {high:.2e} sr at H = {HEIGHT} m: {holds} the {least}–{most} sr \
          where CIE 117's formula holds"
     );
     let outside = table.cells.iter().filter(|c| !(SCALE[0]..=SCALE[1]).contains(&(c.ugr - table.summand()))).count();
     if outside > 0 {
-        println!(
-            "  {outside} of the {} values lie outside CIE 117's scale {}–{}",
-            table.cells.len(),
-            SCALE[0],
-            SCALE[1]
-        );
+        say!("  {outside} of the {} values lie outside CIE 117's scale {}–{}", table.cells.len(), SCALE[0], SCALE[1]);
     }
 }
 

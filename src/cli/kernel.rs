@@ -34,22 +34,22 @@ impl KernelOptions {
 /// Where the kernel came from, for the summary.
 pub fn print_record(record: &KernelRecord) {
     if let Some(loaded) = &record.loaded {
-        println!(
+        say!(
             "  kernel             {:>12.3} s   (G read from {}, not assembled)",
             loaded.seconds,
             loaded.path.display()
         );
         for change in &loaded.rebuilt {
             let rebuilt = change.part.rebuilt().unwrap_or_default();
-            println!("    {change} changed: G reused, {rebuilt}");
+            say!("    {change} changed: G reused, {rebuilt}");
         }
         if loaded.hierarchical && !loaded.rebuilt.is_empty() {
-            println!(
+            say!(
                 "    note: the hierarchy's leaves and links were refined under the file's reflectances and luminaires, not the case's: they are reused as they are (a fresh solve would refine them for the case)"
             );
         }
     }
     if record.save.is_some() {
-        println!("  kernel saved in    /kernel of the output (docs/kernel-file.md)");
+        say!("  kernel saved in    /kernel of the output (docs/kernel-file.md)");
     }
 }

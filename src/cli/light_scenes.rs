@@ -18,12 +18,16 @@ pub type WriteGrids<'a> = dyn Fn(&[GridReading], &[GridErrorBars], &str, &LightS
 /// `write_grids` (the solve's: grids, their error bars, the stem of their files and the light scene of
 /// `light_scenes`, the case's, whose dimmed luminaires the plans draw), its grids' files.
 pub fn report(light: &LightScenes, light_scenes: &[LightScene], output: &Path, write_grids: &WriteGrids) -> Result<()> {
-    println!("  light groups             applications   start residual   residual      time s");
+    say!("  light groups             applications   start residual   residual      time s");
     for g in &light.groups {
         let s = &g.solve;
-        println!(
+        say!(
             "    {:<22} {:>12} {:>16.2e} {:>10.2e} {:>11.3}",
-            g.name, s.applications, s.start, s.residual, s.info.seconds
+            g.name,
+            s.applications,
+            s.start,
+            s.residual,
+            s.info.seconds
         );
     }
     let groups: Vec<&str> = light.groups.iter().map(|g| g.name.as_str()).collect();
@@ -43,20 +47,23 @@ pub fn report_scenes(
     for (scene, described) in scenes.iter().zip(light_scenes) {
         let factors: Vec<String> = groups.iter().zip(&scene.factors).map(|(g, f)| format!("{g} {f}")).collect();
         let e = &scene.energy;
-        println!("  light scene \"{}\"   ({})", scene.name, factors.join(", "));
-        println!(
+        say!("  light scene \"{}\"   ({})", scene.name, factors.join(", "));
+        say!(
             "    flux emitted {:.4} lm, absorbed {:.4} lm, escaped {:.4} lm, imbalance {:.3e} lm",
-            e.emitted, e.absorbed, e.escaped, e.imbalance
+            e.emitted,
+            e.absorbed,
+            e.escaped,
+            e.imbalance
         );
         let base = format!("{stem}-{}", scene.name);
         if !scene.probes.is_empty() {
-            println!("    probes                 luminance cd/m²   illuminance lx   of it direct lx");
+            say!("    probes                 luminance cd/m²   illuminance lx   of it direct lx");
             for p in &scene.probes {
-                println!("      {:<20} {:>15.4} {:>16.4} {:>17.4}", p.name, p.luminance, p.illuminance, p.direct);
+                say!("      {:<20} {:>15.4} {:>16.4} {:>17.4}", p.name, p.luminance, p.illuminance, p.direct);
             }
             let csv = PathBuf::from(format!("{base}-probes.csv"));
             write_probes_csv(&csv, &scene.probes, None)?;
-            println!("      {}", csv.display());
+            say!("      {}", csv.display());
         }
         super::glare::report(scene.glare(), &scene.grids, "    ");
         super::glare_grid::report(&scene.glare_grids, &PathBuf::from(format!("{base}.h5")), "    ")?;

@@ -21,8 +21,8 @@ pub fn run(case: &Path, d: &Discretize, part: Part, output: Option<PathBuf>) -> 
     let links = link_part(&scene, parameters, part, &Bars::default())?;
     write_part(&output, &Fingerprint::of(&scene), &links)?;
     let cells = scene.discretization.directions.set().len();
-    println!("part {part} of {}: {}", case.display(), summary(&links, cells));
-    println!("wrote {}", output.display());
+    say!("part {part} of {}: {}", case.display(), summary(&links, cells));
+    say!("wrote {}", output.display());
     Ok(())
 }
 
@@ -90,7 +90,7 @@ pub fn rows(case: &Path, d: &Discretize, part: Part, files: &[PathBuf], output: 
     let projected: Vec<f64> = scene.discretization.directions.set().cells().iter().map(|c| c.projected).collect();
     write_part_rows(&output, &fingerprint, &projected, &rows)?;
     let r = &rows.rows;
-    println!(
+    say!(
         "part {part} of {}: leaves {}..{} of {}, {} bundles, {} gather pieces, {} push shares, {} links ({} reaching its leaves), {} rays, {:.3} s",
         case.display(),
         r.own_leaves.start,
@@ -104,7 +104,7 @@ pub fn rows(case: &Path, d: &Discretize, part: Part, files: &[PathBuf], output: 
         rows.rays,
         rows.seconds
     );
-    println!("wrote {}", output.display());
+    say!("wrote {}", output.display());
     Ok(())
 }
 
@@ -124,13 +124,19 @@ fn joined<'a>(files: &[PathBuf], stored: &'a [StoredPart]) -> Result<Vec<&'a Par
 pub fn join_files(files: &[PathBuf]) -> Result<()> {
     let stored = files.iter().map(|f| read_part(f)).collect::<Result<Vec<_>, _>>()?;
     let parts = joined(files, &stored)?;
-    println!(
+    say!(
         "{:>5} {:>8} {:>12} {:>14} {:>12} {:>15} {:>10}",
-        "part", "roots", "links", "bytes", "cut links", "remote sources", "seconds"
+        "part",
+        "roots",
+        "links",
+        "bytes",
+        "cut links",
+        "remote sources",
+        "seconds"
     );
     let (mut links, mut cut) = (0, 0);
     for l in &parts {
-        println!(
+        say!(
             "{:>5} {:>8} {:>12} {:>14} {:>12} {:>15} {:>10} {:>10.3}",
             l.part.to_string(),
             l.own_roots.len(),
@@ -144,6 +150,6 @@ pub fn join_files(files: &[PathBuf]) -> Result<()> {
         links += l.links.len();
         cut += l.cut;
     }
-    println!("{} parts of one case and partition: {links} links, {cut} of them cut", parts.len());
+    say!("{} parts of one case and partition: {links} links, {cut} of them cut", parts.len());
     Ok(())
 }

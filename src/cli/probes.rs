@@ -27,7 +27,7 @@ pub fn run(case: &Path, d: &Discretize, job: &ProbesJob) -> Result<()> {
     let start = std::time::Instant::now();
     let placement = place(&scene, &job.options);
     write_bytes(&job.output, tables(case, &job.options, &placement).as_bytes())?;
-    println!(
+    say!(
         "  {} probes from {} candidates ({:.1} s) → {}",
         placement.probes.len(),
         placement.drawn,
@@ -35,7 +35,7 @@ pub fn run(case: &Path, d: &Discretize, job: &ProbesJob) -> Result<()> {
         job.output.display()
     );
     for (class, count) in placement.counts() {
-        println!("    {:<14} {count:>5}", class.name());
+        say!("    {:<14} {count:>5}", class.name());
     }
     Ok(())
 }

@@ -32,16 +32,16 @@ pub fn run(file: &Path, case: Option<&Path>, d: &Discretize, output: Option<Path
         study::read_out_solved(file, &scene, &Bars::default()).map_err(|e| super::stop::not_written(e, &[&output]))?;
     let seconds = start.elapsed().as_secs_f64();
     write_readout(file, &output, &scene, &r).with_context(|| format!("writing {}", output.display()))?;
-    println!("ugo readout: {} read on the field of {} in {seconds:.3} s", scene.path.display(), file.display());
+    say!("ugo readout: {} read on the field of {} in {seconds:.3} s", scene.path.display(), file.display());
     if !r.traced.is_empty() {
         let groups = r.traced.join(", ");
-        println!("  note: {} holds no /light_groups/direct (an older solve): traced again {groups}", file.display());
+        say!("  note: {} holds no /light_groups/direct (an older solve): traced again {groups}", file.display());
     }
     let names: Vec<String> = scene.surfaces.iter().map(|s| s.name.clone()).collect();
     let files = GridFiles { sources: &r.model.sources, mesh: &r.model.mesh, surfaces: &names };
     match &r.readings {
         Some(readings) => own_readings(readings, &output, &files)?,
-        None => println!("  probes, grids, glare grids and observers as stored (unchanged)"),
+        None => say!("  probes, grids, glare grids and observers as stored (unchanged)"),
     }
     let lit = |grids: &[GridReading], errors: &[GridErrorBars], stem: &str, light_scene: &LightScene| {
         let dimmed = study::dimmed(&scene, &r.model.sources, light_scene);
@@ -51,9 +51,9 @@ pub fn run(file: &Path, case: Option<&Path>, d: &Discretize, output: Option<Path
     let read: Vec<LightScene> = scene.lighting.scenes.iter().filter(|s| !r.kept.contains(&s.name)).cloned().collect();
     super::light_scenes::report_scenes(&groups, &r.light_scenes, &read, &output, &lit)?;
     for name in &r.kept {
-        println!("  light scene \"{name}\" as stored (its factors and the readout tables unchanged)");
+        say!("  light scene \"{name}\" as stored (its factors and the readout tables unchanged)");
     }
-    println!("  written            {}", output.display());
+    say!("  written            {}", output.display());
     Ok(())
 }
 
@@ -66,7 +66,7 @@ fn own_readings(readings: &Readings, output: &Path, files: &GridFiles) -> Result
     if !readings.probes.is_empty() {
         let csv = super::beside(output, "-probes.csv");
         write_probes_csv(&csv, &readings.probes, None)?;
-        println!("  probes             {}", csv.display());
+        say!("  probes             {}", csv.display());
     }
     super::glare_grid::report(&readings.glare_grids, output, "  ")
 }

@@ -126,7 +126,7 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
             );
         }
         let mode = read_mode(file, j)?;
-        println!("ugo render: mode {j} of K, λ = {:.8} {:+.8}i (real part, max |x| = 1)", mode.re, mode.im);
+        say!("ugo render: mode {j} of K, λ = {:.8} {:+.8}i (real part, max |x| = 1)", mode.re, mode.im);
         stored.luminance = mode.vector;
         scale = Some(scale.unwrap_or(Scale::Signed));
         unit = format!("mode {j}");
@@ -161,7 +161,7 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
         let white = exposure.unwrap_or_else(|| auto_exposure(&surfaces_seen(&lit, camera, &image)));
         write_png(&png, &image, white)?;
         let (lo, hi) = image.range();
-        println!(
+        say!(
             "ugo render: camera \"{}\" {}×{}, {} samples/pixel, {} shading, {seconds:.2} s",
             camera.name,
             image.width,
@@ -169,12 +169,12 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
             camera.samples,
             describe(shading)
         );
-        println!("  luminance {lo:.4e} .. {hi:.4e} cd/m², white at {white:.4e} cd/m²");
-        println!("  {}\n  {}", exr.display(), png.display());
+        say!("  luminance {lo:.4e} .. {hi:.4e} cd/m², white at {white:.4e} cd/m²");
+        say!("  {}\n  {}", exr.display(), png.display());
         if let Some(scale) = scale {
             let map = sibling(&stem, "-false.png");
             write_false_colour(&map, &image, scale, &unit)?;
-            println!("  {}", map.display());
+            say!("  {}", map.display());
         }
         if !orders.is_empty() {
             // A gather from the sum of n orders would show n + 1: the panels are drawn smooth.
@@ -196,7 +196,7 @@ pub fn run(file: &Path, names: &[String], dir: &Path, look: &Look) -> Result<()>
             lit.set_shading(shading);
             let path = sibling(&stem, "-orders.png");
             write_triptych(&path, &panels, white)?;
-            println!("  {}", path.display());
+            say!("  {}", path.display());
         }
     }
     Ok(())

@@ -9,6 +9,6 @@ pub fn run(solution: &Path, output: Option<PathBuf>) -> Result<()> {
     let output = output.unwrap_or_else(|| solution.with_extension("html"));
     check_writable(&output)?;
     ugo::io::write_report(solution, &output)?;
-    println!("written {}", output.display());
+    say!("written {}", output.display());
     Ok(())
 }

@@ -98,7 +98,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     if !s.probes.is_empty() {
         let csv = super::beside(&output, "-probes.csv");
         write_probes_csv(&csv, &s.probes, s.daylight.as_ref())?;
-        println!("  probes             {}", csv.display());
+        say!("  probes             {}", csv.display());
     }
     super::glare_grid::report(&s.glare_grids, &output, "  ")?;
     if let Some(light) = &s.light_scenes {
@@ -122,7 +122,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
     }
     if let Some(plot) = &job.plot {
         convergence_plot(plot, &format!("{}: convergence of every method", scene.name), &s.runs)?;
-        println!("  plot               {}", plot.display());
+        say!("  plot               {}", plot.display());
     }
     if strict && !warnings.is_empty() {
         bail!(
@@ -139,7 +139,7 @@ pub fn run(case: &Path, d: &Discretize, job: Job) -> Result<()> {
 fn print_hierarchy(assembly: f64, rays: usize, h: &HierarchyRecord) {
     let leaves = h.census.leaf_level.len();
     let links: usize = h.census.element_links.iter().sum::<usize>() + h.census.cluster_links;
-    println!(
+    say!(
         "  assembly           {assembly:>12.3} s   (hierarchical, link tolerance {:.0e}, roots {} m, leaves down to {} m: {} roots → {leaves} leaves, {links} links ({} with clusters, {} partly visible), {rays} occlusion rays)",
         h.parameters.link_tolerance,
         h.parameters.root_size,
@@ -155,9 +155,16 @@ fn print_hierarchy(assembly: f64, rays: usize, h: &HierarchyRecord) {
                 b.max_correction, b.iterations, b.residual
             )
         });
-        println!(
+        say!(
             "    pass {}            {:>12.3} s   ({} links refined, {} leaves split along the direct light; {} links, {} leaves, ε {:.2e} cd/m²; solve {:.3} s{balanced})",
-            p.pass, p.seconds, p.refined, p.source_splits, p.links, p.leaves, p.epsilon, p.solve_seconds
+            p.pass,
+            p.seconds,
+            p.refined,
+            p.source_splits,
+            p.links,
+            p.leaves,
+            p.epsilon,
+            p.solve_seconds
         );
     }
 }
@@ -166,14 +173,14 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
     let m = &s.model;
     let st = &m.stats;
     let g = &m.kernel.g;
-    println!("ugo: {} ({})", scene.name, scene.path.display());
-    println!("  patches N          {:>12}", m.mesh.len());
-    println!("  direction cells K  {:>12}   ({})", m.kernel.cells(), m.kernel.directions.name());
-    println!("  unknowns           {:>12}", g.rows());
-    println!("  non-zeros of G     {:>12}   ({}, {})", g.nnz(), bytes(g.bytes()), g.precision().name());
+    say!("ugo: {} ({})", scene.name, scene.path.display());
+    say!("  patches N          {:>12}", m.mesh.len());
+    say!("  direction cells K  {:>12}   ({})", m.kernel.cells(), m.kernel.directions.name());
+    say!("  unknowns           {:>12}", g.rows());
+    say!("  non-zeros of G     {:>12}   ({}, {})", g.nnz(), bytes(g.bytes()), g.precision().name());
     let assembly = st.mesh_seconds + st.bvh_seconds + st.kernel_seconds + st.light_seconds;
     match (&st.balance, &m.hierarchy) {
-        (Some(b), _) => println!(
+        (Some(b), _) => say!(
             "  assembly           {assembly:>12.3} s   ({} pairs, {} occlusion rays, balanced by {}: correction {:.1e}, {} sweeps, row error {:.0e})",
             st.pairs,
             st.rays,
@@ -183,11 +190,11 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
             b.residual
         ),
         (None, Some(h)) => print_hierarchy(assembly, st.rays, h),
-        (None, None) => println!("  assembly           {assembly:>12.3} s   ({} occlusion rays)", st.rays),
+        (None, None) => say!("  assembly           {assembly:>12.3} s   ({} occlusion rays)", st.rays),
     }
-    println!("    of it direct light {:>8.3} s   (the sources' light on the patches: L0)", st.light_seconds);
+    say!("    of it direct light {:>8.3} s   (the sources' light on the patches: L0)", st.light_seconds);
     let i = s.info();
-    println!(
+    say!(
         "  solve              {:>12.3} s   ({}, {} iterations, residual {:.2e})",
         i.seconds,
         i.method,
@@ -195,7 +202,7 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
         i.residual()
     );
     if let Some((factors, full_residual)) = &s.basis {
-        println!(
+        say!(
             "  basis              {:>12}   ({} coefficients per patch, rank {}; residual of the field in the full system {:.2e})",
             factors.basis.name(),
             factors.m,
@@ -205,37 +212,37 @@ fn summary(scene: &Scene, s: &Solution, output: &Path) {
     }
     let e = &s.energy;
     if !m.sources.is_empty() {
-        println!("  luminaires               emitted lm   on surfaces lm");
+        say!("  luminaires               emitted lm   on surfaces lm");
         for ((source, emitted), landed) in m.sources.iter().zip(&e.luminaire_emitted).zip(&m.direct.intercepted) {
-            println!("    {:<22} {emitted:>12.4} {landed:>16.4}   {}", source.name, describe(source));
+            say!("    {:<22} {emitted:>12.4} {landed:>16.4}   {}", source.name, describe(source));
         }
     }
-    println!("  flux emitted       {:>12.4} lm", e.emitted);
-    println!("  flux absorbed      {:>12.4} lm", e.absorbed);
-    println!("  flux escaped       {:>12.4} lm", e.escaped);
+    say!("  flux emitted       {:>12.4} lm", e.emitted);
+    say!("  flux absorbed      {:>12.4} lm", e.absorbed);
+    say!("  flux escaped       {:>12.4} lm", e.escaped);
     match e.emitted {
-        0.0 => println!("  imbalance          {:>12.3e} lm (nothing emitted)", e.imbalance),
-        emitted => println!("  imbalance          {:>12.3e} (relative to emitted)", e.imbalance / emitted),
+        0.0 => say!("  imbalance          {:>12.3e} lm (nothing emitted)", e.imbalance),
+        emitted => say!("  imbalance          {:>12.3e} (relative to emitted)", e.imbalance / emitted),
     }
     let warnings = s.warnings.iter().filter(|w| !w.is_note()).count();
     if warnings > 0 {
-        println!("  warnings           {warnings:>12}   (on stderr and in /warnings)");
+        say!("  warnings           {warnings:>12}   (on stderr and in /warnings)");
     }
     print_probes(&s.probes);
     super::glare::report(s.glare(), &s.grids, "  ");
     if let Some(d) = s.daylight.as_ref() {
         super::daylight::report(d, &s.probes, &s.grids);
     }
-    println!("  written            {}", output.display());
+    say!("  written            {}", output.display());
 }
 
 /// The probes' readings, a line each; shared with `ugo readout`.
 pub(super) fn print_probes(probes: &[ProbeReading]) {
     if !probes.is_empty() {
-        println!("  probes                   luminance cd/m²   illuminance lx   error bar lx   of it direct lx");
+        say!("  probes                   luminance cd/m²   illuminance lx   error bar lx   of it direct lx");
         for p in probes {
             let bar = p.error.map_or("-".to_string(), |e| format!("± {e:.3}"));
-            println!("    {:<22} {:>15.4} {:>16.4} {:>14} {:>17.4}", p.name, p.luminance, p.illuminance, bar, p.direct);
+            say!("    {:<22} {:>15.4} {:>16.4} {:>14} {:>17.4}", p.name, p.luminance, p.illuminance, bar, p.direct);
         }
     }
 }
@@ -264,19 +271,23 @@ pub(super) fn write_grids(
         return Ok(());
     }
     let head = ("grids", "E_avg lx", "± δ", "E_min lx", "± δ", "E_max lx", "U0 ± δ");
-    println!(
-        "  {:<24} {:>12}   {:<8} {:>12}   {:<8} {:>12} {:>7}",
-        head.0, head.1, head.2, head.3, head.4, head.5, head.6
-    );
+    say!("  {:<24} {:>12}   {:<8} {:>12}   {:<8} {:>12} {:>7}", head.0, head.1, head.2, head.3, head.4, head.5, head.6);
     for (i, (g, bars)) in grids.iter().zip(errors).enumerate() {
         let st = g.stats();
         let left_out = match g.left_out() {
             0 => String::new(),
             n => format!("   ({n} of {} points left out)", g.points.len()),
         };
-        println!(
+        say!(
             "    {:<22} {:>12.4} ± {:<8.3} {:>12.4} ± {:<8.3} {:>12.4} {:>7.4} ± {:.4}{left_out}",
-            g.grid.name, st.average, bars.average, st.min, bars.min, st.max, st.u0, bars.u0
+            g.grid.name,
+            st.average,
+            bars.average,
+            st.min,
+            bars.min,
+            st.max,
+            st.u0,
+            bars.u0
         );
         let base = format!("{stem}-{}", file_name(&g.grid.name));
         let (csv, png) = (PathBuf::from(format!("{base}.csv")), PathBuf::from(format!("{base}.png")));
@@ -286,11 +297,11 @@ pub(super) fn write_grids(
         let section = section(files.mesh, g.grid.origin, g.grid.normal);
         let overlay = Overlay { sources: files.sources, section: &section };
         write_grid_map(&png, g, &overlay)?;
-        println!("      {}\n      {}", csv.display(), png.display());
+        say!("      {}\n      {}", csv.display(), png.display());
         if let Some((symbol, values)) = df {
             let png = PathBuf::from(format!("{base}-{symbol}.png"));
             write_daylight_map(&png, g, values, symbol, &overlay)?;
-            println!("      {}", png.display());
+            say!("      {}", png.display());
         }
     }
     Ok(())
@@ -300,31 +311,31 @@ fn print_norms(n: &Norms, params: &SolveParams, runs: &[Run]) {
     let observed =
         runs.iter().find(|r| r.method == Method::Neumann).map_or("-".to_string(), |r| r.info.iterations.to_string());
     match &n.matrix_free {
-        None => println!("  norms of K"),
+        None => say!("  norms of K"),
         Some(refused) => {
-            println!("  norms of K, matrix-free (exact for K ≥ 0): {}", refused.figures());
-            println!("    ‖K‖₁ = max Kᵀ·1 and ‖K‖∞ = max K·1 on the factored operator");
+            say!("  norms of K, matrix-free (exact for K ≥ 0): {}", refused.figures());
+            say!("    ‖K‖₁ = max Kᵀ·1 and ‖K‖∞ = max K·1 on the factored operator");
         }
     }
-    println!("    ‖K‖₁             {:>12.6}", n.one);
-    println!("    ‖K‖∞             {:>12.6}", n.infinity);
+    say!("    ‖K‖₁             {:>12.6}", n.one);
+    say!("    ‖K‖∞             {:>12.6}", n.infinity);
     match (n.frobenius, n.two) {
         (Some(frobenius), Some(two)) => {
-            println!("    ‖K‖_F            {frobenius:>12.6}");
-            println!("    ‖K‖₂             {:>12.6}   ({})", two.value, iterations(&two));
+            say!("    ‖K‖_F            {frobenius:>12.6}");
+            say!("    ‖K‖₂             {:>12.6}   ({})", two.value, iterations(&two));
         }
         _ => {
-            println!("    ‖K‖_F            not computed (it needs every entry of K)");
-            println!(
+            say!("    ‖K‖_F            not computed (it needs every entry of K)");
+            say!(
                 "    ‖K‖₂             not computed (power iteration on KᵀK); ρ(K) ≤ ‖K‖₂ ≤ √(‖K‖₁‖K‖∞) = {:.6}",
                 n.two_bound()
             );
         }
     }
     let r = &n.spectral_radius;
-    println!("    ρ(K)             {:>12.6}   ({})", r.value, iterations(r));
-    println!("    cond∞(I − K)     {:>12.4}", n.condition_infinity);
-    println!(
+    say!("    ρ(K)             {:>12.6}   ({})", r.value, iterations(r));
+    say!("    cond∞(I − K)     {:>12.4}", n.condition_infinity);
+    say!(
         "    Neumann iterations to {:.0e}: predicted {:.1}, observed {observed}",
         params.tolerance,
         n.predicted_iterations(params.tolerance)
@@ -341,14 +352,12 @@ fn iterations(e: &Estimate) -> String {
 
 fn print_orders(orders: &OrderRecord, x: &[f64]) {
     let l0 = orders.term_norms[0];
-    println!(
-        "  reflection orders  ‖KⁿL0‖/‖L0‖, and the partial sum's distance from the solution ‖x − Σ_(m≤n) KᵐL0‖/‖x‖"
-    );
+    say!("  reflection orders  ‖KⁿL0‖/‖L0‖, and the partial sum's distance from the solution ‖x − Σ_(m≤n) KᵐL0‖/‖x‖");
     let norm = |v: &mut dyn Iterator<Item = f64>| v.map(|e| e * e).sum::<f64>().sqrt();
     let scale = norm(&mut x.iter().copied());
     for (n, sum) in &orders.partial_sums {
         let deficit = norm(&mut sum.iter().zip(x).map(|(s, x)| x - s)) / scale;
-        println!("    n = {n:<4} term {:>10.3e}   distance {:>10.3e}", orders.term_norms[*n] / l0, deficit);
+        say!("    n = {n:<4} term {:>10.3e}   distance {:>10.3e}", orders.term_norms[*n] / l0, deficit);
     }
 }
 
@@ -359,9 +368,14 @@ fn converged(ok: bool) -> &'static str {
 fn print_comparison(runs: &[Run], mc: Option<&MonteCarlo>) {
     let extra =
         if mc.is_some() { format!(" {:>8} {:>8} {:>11}", "rms z", "max |z|", "rel. L1") } else { String::new() };
-    println!(
+    say!(
         "  {:<14} {:>10} {:>13} {:>10} {:>12} {:>14}{extra}",
-        "method", "iterations", "applications", "time s", "residual", "max rel. diff"
+        "method",
+        "iterations",
+        "applications",
+        "time s",
+        "residual",
+        "max rel. diff"
     );
     for (n, r) in runs.iter().enumerate() {
         let i = &r.info;
@@ -369,7 +383,7 @@ fn print_comparison(runs: &[Run], mc: Option<&MonteCarlo>) {
             let a = &mc.agreements[n];
             format!(" {:>8.3} {:>8.2} {:>11.3e}", a.rms_z, a.max_abs_z, a.relative_l1)
         });
-        println!(
+        say!(
             "  {:<14} {:>10} {:>13} {:>10.3} {:>12.2e} {:>14.2e}{extra}",
             r.method.name(),
             i.iterations,
@@ -380,10 +394,14 @@ fn print_comparison(runs: &[Run], mc: Option<&MonteCarlo>) {
         );
     }
     if let Some(mc) = mc {
-        println!(
+        say!(
             "  {:<14} {:>10} {:>13} {:>10.3}   (z: each method against this forward Monte Carlo estimate, \
              {} photons)",
-            "forward MC", "-", "-", mc.seconds, mc.photons
+            "forward MC",
+            "-",
+            "-",
+            mc.seconds,
+            mc.photons
         );
     }
 }

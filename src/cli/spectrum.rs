@@ -10,7 +10,7 @@ use ugo::study::rates;
 
 pub fn report(spectrum: &Spectrum, runs: &[Run], output: &Path, name: &str) -> Result<()> {
     let state = if spectrum.converged { "converged" } else { "NOT converged" };
-    println!(
+    say!(
         "  spectrum of K      {} eigenvalues, {} restarts, {} products with K, {:.3} s ({state} to {:.0e} of |λ₁|)",
         spectrum.pairs.len(),
         spectrum.restarts,
@@ -22,27 +22,20 @@ pub fn report(spectrum: &Spectrum, runs: &[Run], output: &Path, name: &str) -> R
         eprintln!("ugo: warning: Arnoldi did not converge: the eigen-residuals below say how far each pair is");
     }
     let first = spectrum.pairs.first().map_or(f64::NAN, |p| p.magnitude());
-    println!("    {:>3} {:>16} {:>16} {:>12} {:>10} {:>12}", "j", "Re λ", "Im λ", "|λ|", "|λ/λ₁|", "‖Kx − λx‖");
+    say!("    {:>3} {:>16} {:>16} {:>12} {:>10} {:>12}", "j", "Re λ", "Im λ", "|λ|", "|λ/λ₁|", "‖Kx − λx‖");
     for (j, p) in spectrum.pairs.iter().enumerate() {
         let m = p.magnitude();
-        println!(
-            "    {:>3} {:>16.10} {:>16.10} {m:>12.8} {:>10.6} {:>12.2e}",
-            j + 1,
-            p.re,
-            p.im,
-            m / first,
-            p.residual
-        );
+        say!("    {:>3} {:>16.10} {:>16.10} {m:>12.8} {:>10.6} {:>12.2e}", j + 1, p.re, p.im, m / first, p.residual);
     }
     let rates = rates(spectrum, runs);
-    println!("    rate per product with K   measured    predicted");
+    say!("    rate per product with K   measured    predicted");
     for r in &rates {
         let basis = match r.method {
             ugo::solve::Method::Neumann => "|λ₁|".to_string(),
             ugo::solve::Method::Gmres { .. } => format!("|λ₂|; Chebyshev on [1 − λ₁, 1 − λ_min]: {:.5}", r.interval),
             _ => String::new(),
         };
-        println!("      {:<22} {:>9.5} {:>12.5} {basis}", r.method.name(), r.measured, r.predicted);
+        say!("      {:<22} {:>9.5} {:>12.5} {basis}", r.method.name(), r.measured, r.predicted);
     }
     let line = |run: usize, r: &ugo::study::Rate, rate: f64, what: &str| RateLine {
         run,
@@ -68,6 +61,6 @@ pub fn report(spectrum: &Spectrum, runs: &[Run], output: &Path, name: &str) -> R
         runs,
         &lines,
     )?;
-    println!("  spectrum plot      {}", plot.display());
+    say!("  spectrum plot      {}", plot.display());
     Ok(())
 }

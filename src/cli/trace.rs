@@ -139,14 +139,14 @@ fn forward(
         .filter(|(l, e)| **e > 0.0 && **l > 0.0)
         .map(|(l, e)| e / l)
         .collect();
-    println!("ugo trace --forward: {} ({}), seed {}, {order}", scene.name, case.display(), job.options.seed);
-    println!("  patches N × cells K  {} × {} ({})", world.mesh.len(), directions.len(), directions.name());
-    println!("  photons              {photons}");
+    say!("ugo trace --forward: {} ({}), seed {}, {order}", scene.name, case.display(), job.options.seed);
+    say!("  patches N × cells K  {} × {} ({})", world.mesh.len(), directions.len(), directions.name());
+    say!("  photons              {photons}");
     throughput(photons, estimate.rays, estimate.seconds, "photons");
-    println!("  emitted flux         {:.6e} lm", world.photon_flux());
-    println!("  scattered flux       {:.6e} ± {:.2e} lm", estimate.scattered.0, estimate.scattered.1);
-    println!("  relative std. error  median {:.2e} over {} lit (patch, cell) bins", median(lit.clone()), lit.len());
-    println!("  written              {}", output.display());
+    say!("  emitted flux         {:.6e} lm", world.photon_flux());
+    say!("  scattered flux       {:.6e} ± {:.2e} lm", estimate.scattered.0, estimate.scattered.1);
+    say!("  relative std. error  median {:.2e} over {} lit (patch, cell) bins", median(lit.clone()), lit.len());
+    say!("  written              {}", output.display());
     Ok(())
 }
 
@@ -191,14 +191,16 @@ fn camera_images(case: &Path, scene: &Scene, world: &World, job: &TraceJob) -> R
             .filter(|(m, _)| **m > 0.0)
             .map(|(m, e)| e / m)
             .collect();
-        println!(
+        say!(
             "ugo trace: {} camera \"{}\" {w}×{h}, {} paths/pixel, seed {seed}, {order}",
-            scene.name, camera.name, job.spp
+            scene.name,
+            camera.name,
+            job.spp
         );
         throughput(traced.paths, traced.rays, traced.seconds, "paths");
-        println!("  luminance            {lo:.4e} .. {hi:.4e} cd/m²");
-        println!("  relative std. error  median {:.2e} per pixel", median(relative));
-        println!("  {}\n  {}\n  {}", mean.display(), error.display(), png.display());
+        say!("  luminance            {lo:.4e} .. {hi:.4e} cd/m²");
+        say!("  relative std. error  median {:.2e} per pixel", median(relative));
+        say!("  {}\n  {}\n  {}", mean.display(), error.display(), png.display());
     }
     Ok(())
 }
@@ -214,22 +216,26 @@ fn probes(scene: &Scene, world: &World, job: &TraceJob) -> Result<()> {
     let readings = trace_probes(world, &scene.probes, job.probe_samples, &job.options, &|n| progress.inc(n));
     progress.finish_and_clear();
     super::stop::after_stage(|| "the trace of the probes".to_string(), &[])?;
-    println!(
+    say!(
         "  probes ({} paths each, {:.2} s)     luminance cd/m²            illuminance lx",
         job.probe_samples,
         start.elapsed().as_secs_f64()
     );
     for r in readings {
-        println!(
+        say!(
             "    {:<22} {:>12.4} ± {:<10.2e} {:>12.4} ± {:<10.2e}",
-            r.name, r.luminance.0, r.luminance.1, r.illuminance.0, r.illuminance.1
+            r.name,
+            r.luminance.0,
+            r.luminance.1,
+            r.illuminance.0,
+            r.illuminance.1
         );
     }
     Ok(())
 }
 
 fn throughput(samples: u64, rays: u64, seconds: f64, what: &str) {
-    println!(
+    say!(
         "  time                 {seconds:.3} s: {:.3e} {what}/s, {:.3e} rays/s",
         samples as f64 / seconds,
         rays as f64 / seconds

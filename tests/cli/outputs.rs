@@ -23,3 +23,20 @@ fn compare_writes_its_plot_beside_its_output_and_lists_every_file() {
     }
     assert!(!std::path::Path::new("furnace-box-compare.png").exists(), "a plot in the current folder");
 }
+
+#[test]
+fn a_reader_gone_from_standard_output_loses_no_file() {
+    // `ugo solve … | head -1`: the pipe is closed before the summary is printed.
+    let dir = scratch("closed-pipe");
+    let out = dir.join("furnace.h5");
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_ugo"))
+        .args(["solve", "cases/furnace-box.toml", "-o", out.to_str().unwrap()])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let o = child.wait_with_output().unwrap();
+    assert!(o.status.success() && !stderr(&o).contains("panicked"), "{}", stderr(&o));
+    assert!(out.exists() && !stderr(&o).contains("Broken pipe"));
+}

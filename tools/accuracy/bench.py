@@ -47,6 +47,12 @@ TARGET = 0.003
 PILOT = 1 << 14
 MOST = 1 << 22
 
+# The floor of a relative error: a reading is judged (and its reference traced) relative to
+# the larger of its own illuminance and this share of the mean illuminance of the room's
+# `open` probes. Without it a near-black probe (2 cm between two books) would need 2²² paths
+# for a standard error nobody reads, and a solve's 0.01 lx there would count as +300 %.
+FLOOR_SHARE = 0.05
+
 # The settings solved per case: a name and the flags of `ugo solve`. "case" is the case's own.
 SETTINGS = {
     "cornell-box": [
@@ -148,9 +154,15 @@ def reading_lines(text):
     return [(m[1], *map(float, m.groups()[1:])) for m in map(line.match, text.splitlines()) if m]
 
 
-def paths_needed(e, se):
-    """Paths for TARGET relative standard error from the pilot's σ, a power of two."""
-    wanted = PILOT * (se / (TARGET * e)) ** 2 * 1.2 if e > 0 else MOST
+def floor_of(readings):
+    """FLOOR_SHARE of the mean illuminance of the `open` probes in (name, E) pairs, lx."""
+    open_e = [e for probe, e in readings if probe.split("/")[0] == "open"]
+    return FLOOR_SHARE * sum(open_e) / len(open_e)
+
+
+def paths_needed(e, se, floor):
+    """Paths for a standard error of TARGET × max(e, floor) from the pilot's σ, a power of two."""
+    wanted = PILOT * (se / (TARGET * max(e, floor))) ** 2 * 1.2 if max(e, floor) > 0 else MOST
     return min(MOST, max(2 * PILOT, 1 << max(0, math.ceil(math.log2(wanted)))))
 
 
@@ -159,10 +171,17 @@ def reference(name, bench, placed, seed):
     pilot = [UGO, "trace", bench, "--probe-samples", PILOT, "--seed", seed]
     out, seconds, _ = run(pilot, OUT / f"{name}-pilot.log")
     tables = probe_tables(bench)
+    piloted = reading_lines(out)
+    floor = floor_of([(probe, e) for probe, _, _, e, _ in piloted])
     groups = {}
-    for probe, _, _, e, se in reading_lines(out):
-        groups.setdefault(paths_needed(e, se), []).append(probe)
-    commands, readings = [f"pilot: {shown(pilot)} ({seconds:.0f} s)"], []
+    for probe, _, _, e, se in piloted:
+        groups.setdefault(paths_needed(e, se, floor), []).append(probe)
+    planned = sum(paths * len(names) for paths, names in groups.items()) / (PILOT * len(piloted))
+    print(f"  floor {floor:.3g} lx; the references need {planned:.1f} times the pilot's paths")
+    commands = [f"pilot: {shown(pilot)} ({seconds:.0f} s)",
+                f"paths a probe for a standard error of {TARGET} × max(E, {floor:.4g} lx), the floor "
+                f"{FLOOR_SHARE} × the open probes' mean (the pilot's)"]
+    readings = []
     case = ROOT / "cases" / f"{name}.toml"
     for paths, names in sorted(groups.items()):
         group = OUT / f"{name}-bench-{paths}.toml"
@@ -228,18 +247,19 @@ def solve(name, bench, setting, flags):
 
 
 def compare(name, setting):
-    """Each probe's relative error against the reference and its error bar (docs/design.md
-    (5.5)) relative to the reference: out/accuracy/name-setting.csv."""
+    """Each probe's error against the reference and its error bar (docs/design.md (5.5)),
+    relative to the larger of the reference and the floor: out/accuracy/name-setting.csv."""
     with open(OUT / f"{name}-{setting}-probes.csv") as f:
         solved = {r["name"]: (float(r["E_lx"]), float(r.get("E_error_lx") or "nan")) for r in csv.DictReader(f)}
     ref = read_reference(name)
+    floor = floor_of([(probe, e) for probe, (_, e, _) in ref.items()])
     with open(OUT / f"{name}-{setting}.csv", "w", newline="") as f:
         f.write((OUT / f"{name}-{setting}.run").read_text())
         w = csv.writer(f, lineterminator="\n")
         w.writerow(["name", "class", "E_ref_lx", "E_se_lx", "E_lx", "error_pct", "bar_pct"])
         for probe, (cls, e, se) in ref.items():
             x, bar = solved[probe]
-            relative = (lambda v: f"{100 * v / e:.4f}") if e > 0 else (lambda v: "nan")
+            relative = (lambda v: f"{100 * v / max(e, floor):.4f}") if max(e, floor) > 0 else (lambda v: "nan")
             w.writerow([probe, cls, e, se, x, relative(x - e), relative(bar)])
 
 

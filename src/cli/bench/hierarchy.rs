@@ -21,12 +21,12 @@ pub fn run(o: &BenchOptions, scene: &Scene, h: Hierarchical) -> Result<()> {
         );
     }
     let threads = rayon::current_num_threads();
-    println!("ugo bench: {} ({} threads, hierarchical kernel, roots of {} m)", scene.name, threads, h.root_size);
+    say!("ugo bench: {} ({} threads, hierarchical kernel, roots of {} m)", scene.name, threads, h.root_size);
     let occlusion = occlusion_rays(o, scene, h.root_size)?;
     let (own, model) = bench::level(scene, scene.discretization.patch_size)?;
-    println!("  sparse product G x    skipped: the hierarchy stores no matrix (links applied by pull, gather, push)");
+    say!("  sparse product G x    skipped: the hierarchy stores no matrix (links applied by pull, gather, push)");
     let factored = bench::apply_seconds(&Factored::new(&model.kernel));
-    println!(
+    say!(
         "  factored K x = B(G x) {:>12.2} ms       ({:.3e} unknowns/s; {} links, {:.1} MiB)",
         factored * 1e3,
         model.l0.len() as f64 / factored,
@@ -58,11 +58,12 @@ pub fn run(o: &BenchOptions, scene: &Scene, h: Hierarchical) -> Result<()> {
 
 /// The curve as a table.
 fn print(c: &Curve, tolerance: f64) {
-    println!(
+    say!(
         "  hierarchy (link tolerance {tolerance:e}; refine + solve, Neumann to 1e-8): links ∝ N^{:.2}, time ∝ N^{:.2}",
-        c.links_exponent, c.time_exponent
+        c.links_exponent,
+        c.time_exponent
     );
-    println!(
+    say!(
         "    {:>10} {:>6} {:>8} {:>10} {:>9} {:>9} {:>11} {:>7} {:>8} {:>8} {:>8} {:>9}",
         "patch size",
         "roots",
@@ -80,7 +81,7 @@ fn print(c: &Curve, tolerance: f64) {
     let mib = |b: f64| b / (1u64 << 20) as f64;
     for l in &c.levels {
         let peak = l.peak_bytes.map_or("-".into(), |b| format!("{:.0}", mib(b)));
-        println!(
+        say!(
             "    {:>9.4} {:>6} {:>8} {:>10} {:>9.2e} {:>9} {:>11} {:>7} {:>8.2} {:>8.3} {:>8.1} {:>9}",
             l.patch_size,
             l.roots,

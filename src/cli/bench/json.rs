@@ -7,7 +7,7 @@ use anyhow::Result;
 pub fn write_json(o: &BenchOptions, report: &serde_json::Value) -> Result<()> {
     if let Some(path) = &o.json {
         ugo::io::write_bytes(path, serde_json::to_string_pretty(report)?.as_bytes())?;
-        println!("  json                  {}", path.display());
+        say!("  json                  {}", path.display());
     }
     Ok(())
 }

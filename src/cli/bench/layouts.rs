@@ -12,7 +12,7 @@ use ugo::study::bench::{self, DenseLu, Occlusion};
 /// `--layouts`); a case without facing patches is refused, named.
 pub fn occlusion_rays(o: &BenchOptions, scene: &Scene, size: f64) -> Result<Occlusion> {
     let occlusion = Occlusion::measure(scene, size, o.rays).with_context(|| o.case.display().to_string())?;
-    println!(
+    say!(
         "  occlusion rays        {:>12.3e} rays/s   ({} patches, {} rays, default BVH; {:.3e} rays/s on one thread, \
          the per-core figure docs/peers/peers.py sets against Embree's)",
         occlusion.rays_per_second,
@@ -21,7 +21,7 @@ pub fn occlusion_rays(o: &BenchOptions, scene: &Scene, size: f64) -> Result<Occl
         occlusion.one_thread_rays_per_second
     );
     let l = &occlusion.links;
-    println!(
+    say!(
         "  link shadow rays      {:>12.3e} links/s  (their segments traced together; {:.3e} links/s one by one, {:.2}×; \
          {} links, {} rays, one thread)",
         l.together_links_per_second,
@@ -38,22 +38,28 @@ pub fn occlusion_rays(o: &BenchOptions, scene: &Scene, size: f64) -> Result<Occl
 
 /// Every layout on the occlusion's segments, a row printed as each is measured.
 fn print_layouts(occlusion: &Occlusion) {
-    println!(
+    say!(
         "  {:<8} {:<7} {:<7} {:>10} {:>14} {:>9} {:>6}",
-        "bvh", "preset", "rotated", "build ms", "rays/s", "visible", "lost"
+        "bvh",
+        "preset",
+        "rotated",
+        "build ms",
+        "rays/s",
+        "visible",
+        "lost"
     );
     for l in bench::layouts(&occlusion.mesh, &occlusion.segments) {
         let name = if l.options.wide { "cwbvh" } else { "bvh2" };
         let (preset, rotate) = (format!("{:?}", l.options.preset), l.options.rotate);
         let (build, rate, visible, lost) = (l.build_seconds * 1e3, l.rays_per_second, l.visible, l.lost);
-        println!("  {name:<8} {preset:<7} {rotate:<7} {build:>10.1} {rate:>14.3e} {visible:>8.1}% {lost:>6}");
+        say!("  {name:<8} {preset:<7} {rotate:<7} {build:>10.1} {rate:>14.3e} {visible:>8.1}% {lost:>6}");
     }
 }
 
 /// One size of dense LU, a line.
 pub fn print_dense_lu(lu: &DenseLu) {
     let (n, faer_seconds, nalgebra_seconds, flops) = (lu.n, lu.faer_seconds, lu.nalgebra_seconds, lu.flops());
-    println!(
+    say!(
         "dense LU n = {n}: faer {faer_seconds:.3} s ({:.1} GFLOP/s, residual {:.1e}), nalgebra {nalgebra_seconds:.3} s ({:.1} GFLOP/s, residual {:.1e})",
         flops / faer_seconds / 1e9,
         lu.faer_residual,

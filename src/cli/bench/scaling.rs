@@ -6,16 +6,28 @@ use ugo::study::bench::Scaling;
 
 /// The curve as a table.
 pub fn print(curve: &Scaling) {
-    println!("  scaling (assemble + solve, Neumann to 1e-8), time ∝ N^{:.2}", curve.exponent);
-    println!(
+    say!("  scaling (assemble + solve, Neumann to 1e-8), time ∝ N^{:.2}", curve.exponent);
+    say!(
         "    {:>10} {:>9} {:>11} {:>11} {:>10} {:>9} {:>11}",
-        "patch m", "patches", "pairs", "non-zeros", "assembly s", "solve s", "+peak MiB"
+        "patch m",
+        "patches",
+        "pairs",
+        "non-zeros",
+        "assembly s",
+        "solve s",
+        "+peak MiB"
     );
     for s in &curve.steps {
         let peak = s.peak_bytes.map_or("-".into(), |b| format!("{:.0}", b / (1u64 << 20) as f64));
-        println!(
+        say!(
             "    {:>10.4} {:>9} {:>11} {:>11} {:>10.2} {:>9.3} {:>11}",
-            s.patch_size, s.patches, s.pairs, s.nonzeros, s.assembly_seconds, s.solve_seconds, peak
+            s.patch_size,
+            s.patches,
+            s.pairs,
+            s.nonzeros,
+            s.assembly_seconds,
+            s.solve_seconds,
+            peak
         );
     }
 }

@@ -17,15 +17,15 @@ use ugo::study::bench::{self, Occlusion};
 /// Measures `scene` on its uniform kernel.
 pub fn run(o: &BenchOptions, scene: &Scene) -> Result<()> {
     let threads = rayon::current_num_threads();
-    println!("ugo bench: {} ({} threads)", scene.name, threads);
+    say!("ugo bench: {} ({} threads)", scene.name, threads);
     let occlusion = occlusion_rays(o, scene, scene.discretization.patch_size)?;
 
     let triad = bench::triad();
-    println!("  memory bandwidth      {:>12.2} GB/s     (STREAM-like triad, 3 × 256 MiB)", triad / 1e9);
+    say!("  memory bandwidth      {:>12.2} GB/s     (STREAM-like triad, 3 × 256 MiB)", triad / 1e9);
 
     let (full, model) = bench::step(scene, scene.discretization.patch_size)?;
     let pairs_rate = full.pairs as f64 / model.stats.kernel_seconds;
-    println!(
+    say!(
         "  assembly              {:>12.3e} pairs/s  ({} facing pairs, {} occlusion rays in {:.2} s: {:.3e} rays/s)",
         pairs_rate,
         full.pairs,
@@ -38,7 +38,7 @@ pub fn run(o: &BenchOptions, scene: &Scene) -> Result<()> {
 
     let one = bench::assembly_with_threads(scene, 1)?;
     let all = full.assembly_seconds;
-    println!(
+    say!(
         "  assembly speed-up     {:>12.2}×        (1 → {threads} threads, the whole model build: {one:.2} s → {all:.2} s)",
         one / all
     );
@@ -90,7 +90,7 @@ fn export_peers(
         .as_double()
         .context("--export needs the uniform kernel (`--kernel uniform`) in double precision (--precision f64)")?;
     bench::export(dir, &occlusion.mesh, &occlusion.visibility, &occlusion.segments, g, meta)?;
-    println!("  exported              {} (run docs/peers/peers.py {})", dir.display(), dir.display());
+    say!("  exported              {} (run docs/peers/peers.py {})", dir.display(), dir.display());
     Ok(())
 }
 
@@ -100,7 +100,7 @@ fn product_figures(model: &Model, triad: f64) -> (bench::SparseProduct, f64) {
     let g = &model.kernel.g;
     let product = bench::sparse_product(g);
     let traffic = product.bytes_per_second;
-    println!(
+    say!(
         "  sparse product G x    {:>12.2} GB/s     ({:.0} % of the triad; {} non-zeros, {:.1} B each ({}), {:.2} ms)",
         traffic / 1e9,
         100.0 * traffic / triad,
@@ -110,7 +110,7 @@ fn product_figures(model: &Model, triad: f64) -> (bench::SparseProduct, f64) {
         product.seconds * 1e3
     );
     let factored = bench::apply_seconds(&Factored::new(&model.kernel));
-    println!(
+    say!(
         "  factored K x = B(G x) {:>12.2} ms       ({:.3e} unknowns/s)",
         factored * 1e3,
         model.l0.len() as f64 / factored
