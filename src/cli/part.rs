@@ -9,7 +9,7 @@ use super::options::Discretize;
 use super::{Bars, load};
 use anyhow::{Result, bail};
 use std::path::{Path, PathBuf};
-use ugo::io::{StoredPart, read_part, write_part, write_part_rows};
+use ugo::io::{StoredPart, read_part, read_part_for, write_part, write_part_rows};
 use ugo::kernel::hierarchy::Part;
 use ugo::model::{Fingerprint, NamedPart, PartLinks, join, link_part, part_rows};
 use ugo::scene::{Hierarchical, KernelKind, Scene};
@@ -69,7 +69,7 @@ fn summary(p: &PartLinks, cells: usize) -> String {
 /// `<case>-rows-<i>-of-<n>.h5`).
 pub fn rows(case: &Path, d: &Discretize, part: Part, files: &[PathBuf], output: Option<PathBuf>) -> Result<()> {
     let (scene, parameters, output) = prepare(case, d, part, "rows", output)?;
-    let stored = files.iter().map(|f| read_part(f)).collect::<Result<Vec<_>, _>>()?;
+    let stored = files.iter().map(|f| read_part_for(f, Some(part))).collect::<Result<Vec<_>, _>>()?;
     let joined = joined(files, &stored)?;
     let fingerprint = Fingerprint::of(&scene);
     let first = &stored[0];

@@ -65,7 +65,7 @@ pub use light_scene_group::{
 };
 pub use lock::OutputLock;
 pub use no_room::survive_size_limit;
-pub use part_file::{StoredPart, read_part, write_part};
+pub use part_file::{StoredPart, read_part, read_part_for, write_part};
 pub use part_rows_file::write_part_rows;
 pub use plan::{Axis, Frame, Layout};
 pub use plan_marks::Overlay;

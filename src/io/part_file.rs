@@ -85,17 +85,25 @@ fn write_ends<'a>(g: &hdf5::Group, ends: impl Iterator<Item = &'a Address> + Clo
     dataset(g, "path", &Array1::from_iter(ends.map(packed)))
 }
 
-/// Reads the part file `path`, checking its sizes.
+/// Reads the part file `path` whole, checking its sizes.
 pub fn read_part(path: &Path) -> Result<StoredPart, IoError> {
+    read_part_for(path, None)
+}
+
+/// Reads the part file `path` for part `reader`'s rows: whole if it is `reader`'s own file;
+/// of another part's, only the links into clusters. A part owns the links whose receivers
+/// are its own: elements under its roots, under which no other part's leaf lies, and
+/// clusters, which may span other parts (`model::part_rows`).
+pub fn read_part_for(path: &Path, reader: Option<Part>) -> Result<StoredPart, IoError> {
     let (h5, bytes) = open(path)?;
     let not_a_part = |why: String| IoError::Read { path: path.to_path_buf(), why };
     if h5.group("part").is_err() {
         return Err(not_a_part("no /part group: not a part file (`ugo solve CASE --part i/n` writes one)".into()));
     }
-    read_from(&File { h5: &h5, bytes }).map_err(|Why(why)| not_a_part(why))
+    read_from(&File { h5: &h5, bytes }, reader).map_err(|Why(why)| not_a_part(why))
 }
 
-fn read_from(file: &File) -> Result<StoredPart, Why> {
+fn read_from(file: &File, reader: Option<Part>) -> Result<StoredPart, Why> {
     let g = file.h5.group("part")?;
     let attr = |name: &str| -> Result<u64, Why> { Ok(g.attr(name)?.read_scalar::<u64>()?) };
     if attr("format")? != u64::from(PART_FORMAT) {
@@ -106,14 +114,16 @@ fn read_from(file: &File) -> Result<StoredPart, Why> {
     let part = format!("{index}/{count}").parse::<Part>().map_err(|e| Why(format!("/part: {e}")))?;
     let partition =
         u64::from_str_radix(&text(&g, "partition")?, 16).map_err(|e| Why(format!("/part partition: {e}")))?;
-    let links = read_links(file)?;
+    let roots = attr("roots")? as usize;
+    let whole = reader.is_none_or(|r| r.index == part.index);
+    let links = read_links(file, |receiver| whole || receiver.top as usize >= roots)?;
     let links = PartLinks {
         part,
-        roots: attr("roots")? as usize,
+        roots,
         own_roots: file.raw::<u32>("part/roots")?,
         partition,
         links,
-        splits: read_ends(file, "part/splits")?,
+        splits: Ends::read(file, "part/splits")?.all(),
         cut: attr("cut_links")? as usize,
         remote_sources: attr("remote_sources")? as usize,
         spanning: attr("spanning_links")? as usize,
@@ -125,9 +135,10 @@ fn read_from(file: &File) -> Result<StoredPart, Why> {
     Ok(StoredPart { fingerprint: fingerprint(&g.group("fingerprint")?)?, links })
 }
 
-fn read_links(file: &File) -> Result<Vec<PartLink>, Why> {
-    let receivers = read_ends(file, "part/links/receiver")?;
-    let sources = read_ends(file, "part/links/source")?;
+/// The links whose receiver `kept` accepts.
+fn read_links(file: &File, kept: impl Fn(&Address) -> bool) -> Result<Vec<PartLink>, Why> {
+    let receivers = Ends::read(file, "part/links/receiver")?;
+    let sources = Ends::read(file, "part/links/source")?;
     let factor = file.raw::<f64>("part/links/factor")?;
     let visible = file.raw::<f32>("part/links/visible")?;
     let indptr = file.raw::<u64>("part/links/pieces/indptr")?;
@@ -136,32 +147,51 @@ fn read_links(file: &File) -> Result<Vec<PartLink>, Why> {
         file.raw::<u16>("part/links/pieces/m")?,
         file.raw::<f64>("part/links/pieces/f")?,
     );
-    let n = receivers.len();
+    let n = receivers.top.len();
     let sizes_agree =
-        [sources.len(), factor.len(), visible.len(), indptr.len().saturating_sub(1)].iter().all(|&l| l == n);
+        [sources.top.len(), factor.len(), visible.len(), indptr.len().saturating_sub(1)].iter().all(|&l| l == n);
     let pieces_agree = indptr.windows(2).all(|w| w[0] <= w[1]) && [m.len(), f.len()].iter().all(|&l| l == d.len());
     if indptr.is_empty() || !sizes_agree || !pieces_agree || indptr[n] as usize != d.len() {
         return Err(Why("/part/links: datasets of disagreeing sizes".into()));
     }
     let piece = |i: usize| -> Piece { (d[i], m[i], f[i]) };
-    let links = receivers.into_iter().zip(sources).enumerate().map(|(l, (receiver, source))| PartLink {
+    let link = |(l, receiver): (usize, Address)| PartLink {
         receiver,
-        source,
+        source: sources.at(l),
         factor: factor[l],
         visible: visible[l],
         pieces: (indptr[l] as usize..indptr[l + 1] as usize).map(piece).collect(),
-    });
-    Ok(links.collect())
+    };
+    Ok((0..n).map(|l| (l, receivers.at(l))).filter(|(_, r)| kept(r)).map(link).collect())
 }
 
-/// The addresses in the group `group` (`top`, `depth`, `path`).
-fn read_ends(file: &File, group: &str) -> Result<Vec<Address>, Why> {
-    let top = file.raw::<u32>(&format!("{group}/top"))?;
-    let depth = file.raw::<u8>(&format!("{group}/depth"))?;
-    let path = file.raw::<u64>(&format!("{group}/path"))?;
-    if depth.len() != top.len() || path.len() != top.len() || depth.iter().any(|&d| d as usize > DEEPEST) {
-        return Err(Why(format!("/{group}: datasets of disagreeing sizes or depths")));
+/// The addresses in a group (`top`, `depth`, `path`), packed as stored.
+struct Ends {
+    top: Vec<u32>,
+    depth: Vec<u8>,
+    path: Vec<u64>,
+}
+
+impl Ends {
+    /// The addresses of the group `group`, checked.
+    fn read(file: &File, group: &str) -> Result<Ends, Why> {
+        let top = file.raw::<u32>(&format!("{group}/top"))?;
+        let depth = file.raw::<u8>(&format!("{group}/depth"))?;
+        let path = file.raw::<u64>(&format!("{group}/path"))?;
+        if depth.len() != top.len() || path.len() != top.len() || depth.iter().any(|&d| d as usize > DEEPEST) {
+            return Err(Why(format!("/{group}: datasets of disagreeing sizes or depths")));
+        }
+        Ok(Ends { top, depth, path })
     }
-    let unpack = |d: u8, p: u64| (0..d).map(|i| ((p >> (2 * i)) & 3) as u8).collect();
-    Ok(top.iter().zip(depth.iter().zip(&path)).map(|(&top, (&d, &p))| Address { top, path: unpack(d, p) }).collect())
+
+    /// The `i`-th address.
+    fn at(&self, i: usize) -> Address {
+        let (d, p) = (self.depth[i], self.path[i]);
+        Address { top: self.top[i], path: (0..d).map(|k| ((p >> (2 * k)) & 3) as u8).collect() }
+    }
+
+    /// Every address.
+    fn all(&self) -> Vec<Address> {
+        (0..self.top.len()).map(|i| self.at(i)).collect()
+    }
 }

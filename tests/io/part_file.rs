@@ -1,9 +1,10 @@
 //! A part file (issue 36, point 4) reads back as it was linked: every link, its ends'
-//! addresses, factor, visible fraction and cell pieces, and the counts.
+//! addresses, factor, visible fraction and cell pieces, and the counts; read for another
+//! part's rows, only its links into clusters.
 
 use crate::support::scratch;
 use ugo::directions::Scheme;
-use ugo::io::{read_part, write_part};
+use ugo::io::{read_part, read_part_for, write_part};
 use ugo::kernel::hierarchy::Part;
 use ugo::model::{Fingerprint, link_part};
 use ugo::progress::Silent;
@@ -35,4 +36,12 @@ fn a_part_file_reads_back_as_linked() {
         (back.links.cut, back.links.own_roots, back.links.partition),
         (links.cut, links.own_roots, links.partition)
     );
+    let own = read_part_for(&path, Some(Part { index: 1, count: 2 })).expect("read for its own rows");
+    assert_eq!(own.links.links, links.links);
+    let other = read_part_for(&path, Some(Part { index: 0, count: 2 })).expect("read for part 0's rows");
+    let into_clusters: Vec<_> =
+        links.links.iter().filter(|l| l.receiver.top as usize >= links.roots).cloned().collect();
+    assert!(into_clusters.len() < links.links.len(), "the links into elements are left out");
+    assert_eq!(other.links.links, into_clusters);
+    assert_eq!(other.links.splits, links.splits);
 }
