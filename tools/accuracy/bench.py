@@ -13,6 +13,7 @@ probes with `ugo trace` in about the case's own solve time, compared like a sett
 (`trace-equal`, `--step trace`). `report.py` turns those into the tables of docs/accuracy.md.
 
     tools/accuracy/bench.py cornell-box open-box office            # all three steps
+    tools/accuracy/bench.py --step pilot lecture-hall                 # what its references would cost
     tools/accuracy/bench.py --step solve office                       # the solves only
     tools/accuracy/bench.py --step trace cornell-box                  # ugo trace at equal time
     tools/accuracy/bench.py --tuning open-box                         # a second probe set to tune on
@@ -166,19 +167,27 @@ def paths_needed(e, se, floor):
     return min(MOST, max(2 * PILOT, 1 << max(0, math.ceil(math.log2(wanted)))))
 
 
-def reference(name, bench, placed, seed):
-    """Traces the references into DATA/name.csv with the commands in its header."""
-    pilot = [UGO, "trace", bench, "--probe-samples", PILOT, "--seed", seed]
-    out, seconds, _ = run(pilot, OUT / f"{name}-pilot.log")
-    tables = probe_tables(bench)
+def pilot(name, bench, seed):
+    """The pilot: (its command, seconds, the floor, {paths: probes}); prints what the
+    references will cost."""
+    command = [UGO, "trace", bench, "--probe-samples", PILOT, "--seed", seed]
+    out, seconds, _ = run(command, OUT / f"{name}-pilot.log")
     piloted = reading_lines(out)
     floor = floor_of([(probe, e) for probe, _, _, e, _ in piloted])
     groups = {}
     for probe, _, _, e, se in piloted:
         groups.setdefault(paths_needed(e, se, floor), []).append(probe)
     planned = sum(paths * len(names) for paths, names in groups.items()) / (PILOT * len(piloted))
-    print(f"  floor {floor:.3g} lx; the references need {planned:.1f} times the pilot's paths")
-    commands = [f"pilot: {shown(pilot)} ({seconds:.0f} s)",
+    print(f"  pilot {seconds:.0f} s; floor {floor:.3g} lx; the references need {planned:.1f} times "
+          f"the pilot's paths (about {planned * seconds / 60:.0f} minutes)")
+    return command, seconds, floor, groups
+
+
+def reference(name, bench, placed, seed):
+    """Traces the references into DATA/name.csv with the commands in its header."""
+    command, seconds, floor, groups = pilot(name, bench, seed)
+    tables = probe_tables(bench)
+    commands = [f"pilot: {shown(command)} ({seconds:.0f} s)",
                 f"paths a probe for a standard error of {TARGET} × max(E, {floor:.4g} lx), the floor "
                 f"{FLOOR_SHARE} × the open probes' mean (the pilot's)"]
     readings = []
@@ -292,7 +301,8 @@ def trace_equal(name, bench, seed):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("cases", nargs="+", help="names of cases/NAME.toml")
-    parser.add_argument("--step", choices=["all", "reference", "solve", "compare", "trace"], default="all")
+    parser.add_argument("--step", choices=["all", "pilot", "reference", "solve", "compare", "trace"], default="all",
+                        help="pilot: only what the references would cost")
     parser.add_argument("--count", type=int, help="probes per class (20; 10 with --tuning)")
     parser.add_argument("--seed", type=int, help="the probes' seed (1; 2 with --tuning)")
     parser.add_argument("--tuning", action="store_true",
@@ -308,6 +318,8 @@ def main():
     for name in args.cases:
         print(f"{name}:")
         bench, placed = place(name, count, seed, committed / f"{name}.csv" if args.tuning else None)
+        if args.step == "pilot":
+            pilot(name, bench, seed)
         if args.step in ("all", "reference"):
             reference(name, bench, placed, seed)
         for setting, flags in SETTINGS.get(name, DEFAULT_SETTINGS):
