@@ -116,7 +116,7 @@ fn read_from(file: &File, reader: Option<Part>) -> Result<StoredPart, Why> {
         u64::from_str_radix(&text(&g, "partition")?, 16).map_err(|e| Why(format!("/part partition: {e}")))?;
     let roots = attr("roots")? as usize;
     let whole = reader.is_none_or(|r| r.index == part.index);
-    let links = read_links(file, |receiver| whole || receiver.top as usize >= roots)?;
+    let links = read_links(file, |top| whole || top as usize >= roots)?;
     let links = PartLinks {
         part,
         roots,
@@ -135,8 +135,8 @@ fn read_from(file: &File, reader: Option<Part>) -> Result<StoredPart, Why> {
     Ok(StoredPart { fingerprint: fingerprint(&g.group("fingerprint")?)?, links })
 }
 
-/// The links whose receiver `kept` accepts.
-fn read_links(file: &File, kept: impl Fn(&Address) -> bool) -> Result<Vec<PartLink>, Why> {
+/// The links whose receiver's `top` `kept` accepts (the others' addresses are not unpacked).
+fn read_links(file: &File, kept: impl Fn(u32) -> bool) -> Result<Vec<PartLink>, Why> {
     let receivers = Ends::read(file, "part/links/receiver")?;
     let sources = Ends::read(file, "part/links/source")?;
     let factor = file.raw::<f64>("part/links/factor")?;
@@ -155,14 +155,14 @@ fn read_links(file: &File, kept: impl Fn(&Address) -> bool) -> Result<Vec<PartLi
         return Err(Why("/part/links: datasets of disagreeing sizes".into()));
     }
     let piece = |i: usize| -> Piece { (d[i], m[i], f[i]) };
-    let link = |(l, receiver): (usize, Address)| PartLink {
-        receiver,
+    let link = |l: usize| PartLink {
+        receiver: receivers.at(l),
         source: sources.at(l),
         factor: factor[l],
         visible: visible[l],
         pieces: (indptr[l] as usize..indptr[l + 1] as usize).map(piece).collect(),
     };
-    Ok((0..n).map(|l| (l, receivers.at(l))).filter(|(_, r)| kept(r)).map(link).collect())
+    Ok((0..n).filter(|&l| kept(receivers.top[l])).map(link).collect())
 }
 
 /// The addresses in a group (`top`, `depth`, `path`), packed as stored.
