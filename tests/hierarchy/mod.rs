@@ -13,6 +13,7 @@ mod model;
 mod monte_carlo;
 mod norms;
 mod open_box;
+mod overhang;
 mod partition;
 mod plates;
 mod progress;

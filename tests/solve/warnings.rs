@@ -265,14 +265,18 @@ fn strict_fails_before_the_solve_or_writes_the_solution_and_verbose_gives_the_wh
     assert!(ok && err.contains("two_sided"), "--verbose gives the whole text: {err}");
 }
 
-/// The closed lecture hall at its case's settings: of its escaped flux (1.2 %), the
-/// leaves' closures account for a tenth (its real gaps), and the rest is the hierarchy's
-/// links' own loss, warned about as such, with no opening named (which the columns alone
-/// would have blamed).
+/// The closed lecture hall at twice its case's link tolerance (6e-2): of its escaped flux,
+/// the leaves' closures account for a small part (its real gaps), and the rest is the
+/// hierarchy's links' own loss, warned about as such, with no opening named (which the
+/// columns alone would have blamed). At the case's 3e-2 the links lose 0.89 % since occluded
+/// cluster pairs are refined (`docs/hierarchy.md`), below the warning's 1 %.
 #[test]
 fn the_hierarchys_own_loss_of_light_is_told_apart_from_an_opening() {
     let path = Path::new("cases/lecture-hall.toml");
-    let scene = Scene::parse(path, std::fs::read_to_string(path).unwrap()).unwrap_or_else(|e| panic!("{e}"));
+    let text = std::fs::read_to_string(path).unwrap();
+    assert!(text.contains("link_tolerance = 0.03"), "the hall's case changed");
+    let text = text.replace("link_tolerance = 0.03", "link_tolerance = 0.06");
+    let scene = Scene::parse(path, text).unwrap_or_else(|e| panic!("{e}"));
     let s = solve_case(&scene, &Job::default(), &ugo::progress::Silent).unwrap();
     let (m, e) = (&s.model, &s.energy);
     let areas: Vec<f64> = m.mesh.patches.iter().map(|p| p.exposed).collect();
@@ -283,6 +287,10 @@ fn the_hierarchys_own_loss_of_light_is_told_apart_from_an_opening() {
     let geometry: f64 = (0..sent.len()).map(|c| flux(c) * (1.0 - closures[c])).sum();
     let links: f64 = (0..sent.len()).map(|c| flux(c) * (closures[c] - sent[c])).sum();
     assert!(geometry.abs() < 2e-3 * e.emitted, "a closed hall's gaps: {geometry} of {}", e.emitted);
+    eprintln!(
+        "the lecture hall at 6e-2: the links' loss {links:.1} lm, the gaps' {geometry:.1} lm, of {:.1} lm",
+        e.emitted
+    );
     assert!(links > 1e-2 * e.emitted && links > 5.0 * geometry, "the links' loss {links}, the gaps' {geometry}");
     let told = texts(&s.warnings);
     let w = told.iter().find(|w| w.contains("lost by the hierarchy's links")).unwrap_or_else(|| panic!("{told:?}"));

@@ -70,6 +70,7 @@ SETTINGS = {
     "office": [
         ("case", []),
         ("leaves-0.05", ["--patch-size", "0.05"]),
+        ("tolerance-3e-3", ["--link-tolerance", "3e-3"]),
         ("uniform-0.25", ["--kernel", "uniform", "--patch-size", "0.25"]),
     ],
 }

@@ -184,7 +184,12 @@ fn evaluate(
 }
 
 /// A pair with a cluster at one end (or both). The bound ignores visibility; the factor of
-/// an accepted link is multiplied by the visible fraction of the stand-ins' segments.
+/// an accepted link is multiplied by the visible fraction of the stand-ins' segments. A
+/// pair whose stand-ins see nothing of each other is refined, not dropped: four points do
+/// not stand for a cluster's view (a chair base's rim sees the ceiling past its seat, the
+/// centroid of its top, the one stand-in that faces up, does not), so its elements decide,
+/// which drop an occluded pair only once the oracle accepts it (`docs/hierarchy.md`,
+/// "Occluded cluster links").
 fn clusters(
     tree: &Tree,
     brightness: f64,
@@ -207,7 +212,8 @@ fn clusters(
     let (from, to) = (stand_ins(tree, p, b.centre()), stand_ins(tree, q, a.centre()));
     let (seen, visible, rays) = stand_in_sight(settings.visibility, &from, &to, blocker);
     if seen == Sight::Occluded {
-        return (Outcome::Drop, rays);
+        let split = settings.oracle.choose(tree, p, q);
+        return (split.map_or(Outcome::Drop, Outcome::Split), rays);
     }
     let (factor, mut pieces) = cluster_factor(a, b, settings.directions);
     pieces.iter_mut().for_each(|piece| piece.2 *= visible);

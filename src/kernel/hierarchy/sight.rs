@@ -3,7 +3,8 @@
 //! they disagree), classified as clear, partial or occluded. Blocked segments do not prove
 //! that nothing passes between two large elements, so the oracle refines occluded links
 //! like partial ones and drops them only once it accepts them. A cluster is represented by
-//! the centroids of four of its elements, one from each quarter of its median splits.
+//! the centroids of four of its elements, one from each quarter of its median splits; a
+//! pair whose stand-ins see nothing of each other is always refined (`refine.rs`).
 
 use super::tree::Tree;
 use crate::geometry::Patch;
