@@ -19,6 +19,7 @@ mod plates;
 mod progress;
 mod push;
 mod rebalance;
+mod slots;
 mod spectrum;
 mod transpose;
 mod window_splits;

@@ -15,6 +15,7 @@ use super::options::Options;
 use super::oracle::Oracle;
 use super::partition::Partition;
 use super::refine::Stopped;
+use super::slots::split_slots;
 use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
@@ -67,6 +68,10 @@ impl Hierarchy {
         let (mut h, guess) = Hierarchy::unlinked(roots, visibility, directions, blocks, options, l0);
         let roots: Vec<u32> = (0..roots.len() as u32).collect();
         let mut brightness = h.brightness(&roots, &guess);
+        let Hierarchy { tree, visibility, backs, options, .. } = &mut h;
+        let exposed = |p: &crate::geometry::Patch| backs.exposed_area(visibility, p);
+        let slots = split_slots(tree, &mut brightness, visibility, &exposed, options.patch_size);
+        h.work.rays += slots.rays;
         let top = h.tree.top();
         let candidates = if top == NONE { Vec::new() } else { vec![(top, top)] };
         h.refine_candidates(&mut brightness, candidates, progress)?;

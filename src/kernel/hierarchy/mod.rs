@@ -39,6 +39,7 @@ mod rebuilt;
 mod refine;
 mod rows;
 mod sight;
+mod slots;
 mod split;
 mod structure;
 mod transpose;

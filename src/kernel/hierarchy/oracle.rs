@@ -7,7 +7,8 @@
 //! largest of them where visibility is partial, and for a link of a cluster the
 //! conservative `A_q/(π d²)` with `d` the distance between the bounding boxes (infinite
 //! when they touch). The larger node is split (the receiver when equal), never an element
-//! whose longest edge is already the smallest element size.
+//! whose longest edge is already the smallest element size (unless the slots' splits before
+//! the linking gave it children, `slots.rs`: those it may refine into).
 //!
 //! Before any of that, an element that straddles a contact (partly inside a solid: its
 //! exposed area strictly between 0 and its area, `docs/design.md` §3 "Contacts") is split
@@ -106,6 +107,7 @@ impl Oracle {
     }
 }
 
-fn larger_first(p: u32, q: u32, size_p: f64, size_q: f64) -> [u32; 2] {
+/// `[p, q]` with the larger of the two sizes first (`p` when equal).
+pub(super) fn larger_first(p: u32, q: u32, size_p: f64, size_q: f64) -> [u32; 2] {
     if size_q > size_p * (1.0 + 1e-9) { [q, p] } else { [p, q] }
 }

@@ -1,0 +1,72 @@
+//! Issue 34: elements facing each other across a slot narrower than the smallest size are
+//! split toward each other before the linking (`kernel/hierarchy/slots.rs`,
+//! `docs/design.md` §3b, "Slots"). A 1 × 0.5 m panel, 2 cm thick, stands 3 cm before a wall
+//! of a closed 2 m room: the panel's back and the wall behind it are cut down to the slot's
+//! width (a quarter of the smallest size at most), the floor is not. Without the rule no
+//! leaf is finer than the smallest size, and the office's slots read 30–50 % bright (its
+//! hard probes: docs/accuracy.md, "Slots").
+
+use super::{hierarchy, options};
+use crate::support::{furnace, surface};
+use glam::DVec3;
+use ugo::directions::DirectionSet;
+use ugo::geometry::Shape;
+
+#[test]
+fn the_two_faces_of_a_slot_are_cut_to_its_width() {
+    let mut room = furnace(2.0, 0.5, 1.0, 10.0);
+    let panel = Shape::Box { min: DVec3::new(0.5, 0.5, 1.95), max: DVec3::new(1.5, 1.0, 1.97), rotate_y_deg: 0.0 };
+    room.surfaces.push(surface("panel", panel, 0, false, None));
+    let patch_size = 0.12;
+    let h = hierarchy(&room, 1.0, DirectionSet::single(), options(1e-2, patch_size));
+    let leaves = h.leaf_mesh();
+    let longest = |filter: &dyn Fn(DVec3, DVec3) -> bool| {
+        let edges: Vec<f64> = leaves
+            .patches
+            .iter()
+            .filter(|p| filter(p.centroid, p.normal))
+            .map(|p| p.polygon.vertices().windows(2).map(|w| w[0].distance(w[1])).fold(0.0, f64::max))
+            .collect();
+        (edges.iter().copied().fold(f64::INFINITY, f64::min), edges.len())
+    };
+    let behind = |c: DVec3| (0.5..1.5).contains(&c.x) && (0.5..1.0).contains(&c.y);
+    let (back, n_back) = longest(&|c, n| n.z > 0.9 && (c.z - 1.97).abs() < 1e-9);
+    let (wall, n_wall) = longest(&|c, n| n.z < -0.9 && (c.z - 2.0).abs() < 1e-9 && behind(c));
+    let (floor, _) = longest(&|c, n| n.y > 0.9 && c.y.abs() < 1e-9);
+    eprintln!(
+        "slot of 3 cm: the panel's back {n_back} leaves, finest {back:.4} m; the wall behind {n_wall}, finest {wall:.4} m; the floor's finest {floor:.4} m"
+    );
+    assert!(back < 0.5 * patch_size && wall < 0.5 * patch_size, "{back}, {wall}");
+    assert!(floor > 0.4 * patch_size, "the floor, far from any slot: {floor}");
+}
+
+#[test]
+fn a_slot_is_cut_near_its_mouth_and_not_in_its_depth() {
+    // a 1.5 m mat, 1 cm thick, lies 1 cm above the floor: the floor under it is cut near
+    // the mat's edges (within 5.7 gaps of the mouth, and the elements that reach there),
+    // not under its middle, where almost no light arrives: there its leaves are the
+    // smallest size's (0.0625 m from 1 m roots), and 0.0156 m when the depth is cut too
+    let mut room = furnace(2.0, 0.5, 1.0, 10.0);
+    let mat = Shape::Box { min: DVec3::new(0.25, 0.01, 0.25), max: DVec3::new(1.75, 0.02, 1.75), rotate_y_deg: 0.0 };
+    room.surfaces.push(surface("mat", mat, 0, false, None));
+    let patch_size = 0.12;
+    let h = hierarchy(&room, 1.0, DirectionSet::single(), options(1e-2, patch_size));
+    let floor: Vec<(f64, f64)> = h
+        .leaf_mesh()
+        .patches
+        .iter()
+        .filter(|p| p.normal.y > 0.9 && p.centroid.y.abs() < 1e-9)
+        .map(|p| {
+            let inside = [p.centroid.x - 0.25, 1.75 - p.centroid.x, p.centroid.z - 0.25, 1.75 - p.centroid.z];
+            let edge = p.polygon.vertices().windows(2).map(|w| w[0].distance(w[1])).fold(0.0, f64::max);
+            (inside.into_iter().fold(f64::INFINITY, f64::min), edge)
+        })
+        .collect();
+    let finest = |keep: &dyn Fn(f64) -> bool| {
+        floor.iter().filter(|(d, _)| keep(*d)).map(|(_, e)| *e).fold(f64::INFINITY, f64::min)
+    };
+    let (mouth, depth) = (finest(&|d| (0.0..0.05).contains(&d)), finest(&|d| d > 0.3));
+    eprintln!("a 1 cm slot: the floor's finest leaf by the mat's edge {mouth:.4} m, under its middle {depth:.4} m");
+    assert!(mouth < 0.3 * patch_size, "by the edge: {mouth}");
+    assert!(depth > 0.45 * patch_size, "under the middle, as far from any slot: {depth}");
+}
