@@ -10,7 +10,13 @@ use super::{hierarchy, options};
 use crate::support::{furnace, surface};
 use glam::DVec3;
 use ugo::directions::DirectionSet;
-use ugo::geometry::Shape;
+use ugo::geometry::{Patch, Shape};
+
+/// The longest edge of a leaf, m.
+fn longest_edge(p: &Patch) -> f64 {
+    let v = p.polygon.vertices();
+    (0..v.len()).map(|i| v[i].distance(v[(i + 1) % v.len()])).fold(0.0, f64::max)
+}
 
 #[test]
 fn the_two_faces_of_a_slot_are_cut_to_its_width() {
@@ -21,12 +27,8 @@ fn the_two_faces_of_a_slot_are_cut_to_its_width() {
     let h = hierarchy(&room, 1.0, DirectionSet::single(), options(1e-2, patch_size));
     let leaves = h.leaf_mesh();
     let longest = |filter: &dyn Fn(DVec3, DVec3) -> bool| {
-        let edges: Vec<f64> = leaves
-            .patches
-            .iter()
-            .filter(|p| filter(p.centroid, p.normal))
-            .map(|p| p.polygon.vertices().windows(2).map(|w| w[0].distance(w[1])).fold(0.0, f64::max))
-            .collect();
+        let edges: Vec<f64> =
+            leaves.patches.iter().filter(|p| filter(p.centroid, p.normal)).map(longest_edge).collect();
         (edges.iter().copied().fold(f64::INFINITY, f64::min), edges.len())
     };
     let behind = |c: DVec3| (0.5..1.5).contains(&c.x) && (0.5..1.0).contains(&c.y);
@@ -58,7 +60,7 @@ fn a_slot_is_cut_near_its_mouth_and_not_in_its_depth() {
         .filter(|p| p.normal.y > 0.9 && p.centroid.y.abs() < 1e-9)
         .map(|p| {
             let inside = [p.centroid.x - 0.25, 1.75 - p.centroid.x, p.centroid.z - 0.25, 1.75 - p.centroid.z];
-            let edge = p.polygon.vertices().windows(2).map(|w| w[0].distance(w[1])).fold(0.0, f64::max);
+            let edge = longest_edge(p);
             (inside.into_iter().fold(f64::INFINITY, f64::min), edge)
         })
         .collect();

@@ -70,8 +70,8 @@ impl Hierarchy {
         let mut brightness = h.brightness(&roots, &guess);
         let Hierarchy { tree, visibility, backs, options, .. } = &mut h;
         let exposed = |p: &crate::geometry::Patch| backs.exposed_area(visibility, p);
-        let slots = split_slots(tree, &mut brightness, visibility, &exposed, options.patch_size);
-        h.work.rays += slots.rays;
+        let rays = split_slots(tree, &mut brightness, visibility, &exposed, options.patch_size);
+        h.work.rays += rays;
         let top = h.tree.top();
         let candidates = if top == NONE { Vec::new() } else { vec![(top, top)] };
         h.refine_candidates(&mut brightness, candidates, progress)?;

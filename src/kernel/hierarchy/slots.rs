@@ -34,43 +34,31 @@ pub const SLOT_FINEST: f64 = 0.25;
 /// element and its back) rather than face each other across a slot.
 pub const TOUCHING: f64 = 1e-4;
 
-/// What splitting the slots of a tree did.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct SlotSplits {
-    /// Elements split.
-    pub elements: usize,
-    /// Occlusion rays traced between the slots' faces.
-    pub rays: usize,
-}
-
 /// Splits the elements of `tree` that face each other across a slot narrower than
 /// `patch_size` (m), new nodes taking their parent's `brightness`; `exposed` measures the
-/// exposed area of new elements.
+/// exposed area of new elements. Returns the occlusion rays traced.
 pub fn split_slots(
     tree: &mut Tree,
     brightness: &mut Brightness,
     visibility: &Visibility,
     exposed: &Exposure<'_>,
     patch_size: f64,
-) -> SlotSplits {
-    let mut done = SlotSplits::default();
+) -> usize {
+    let mut rays_traced = 0;
     let mut pairs = facing_pairs(tree, patch_size);
     while !pairs.is_empty() {
         let outcomes: Vec<(Option<u32>, usize)> =
             pairs.par_iter().map(|&(p, q)| to_split(tree, visibility, patch_size, p, q)).collect();
         let mut next = Vec::new();
         for (&(p, q), (split, rays)) in pairs.iter().zip(outcomes) {
-            done.rays += rays;
+            rays_traced += rays;
             let Some(n) = split else { continue };
-            if tree.node(n).is_leaf() {
-                done.elements += 1;
-            }
             split_node(tree, brightness, n, exposed);
             children_pairs(tree, p, q, n, &mut next);
         }
         pairs = next;
     }
-    done
+    rays_traced
 }
 
 /// The pairs of distinct elements whose bounding boxes are nearer than `patch_size` (m)
