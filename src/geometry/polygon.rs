@@ -11,6 +11,11 @@ use glam::DVec3;
 /// at every vertex, and each of its 4 edges then gives a vertex and a crossing.
 pub const MAX_CLIPPED: usize = 8;
 
+/// A quad is cut into strips ([`ConvexPolygon::split_even`]) when its edges one way are
+/// more than this many times as long as the other way's: its quarters would be as
+/// elongated as it, the strips nearer squares.
+pub const STRIPS: f64 = 2.0;
+
 /// A convex planar polygon of 3 or 4 vertices.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ConvexPolygon {
@@ -152,6 +157,32 @@ impl ConvexPolygon {
             Self::quad(c, bc, v[2], cd),
             Self::quad(da, c, cd, v[3]),
         ]
+    }
+
+    /// Four pieces of about a quarter each, as near squares as a cut in four allows: a quad
+    /// whose edges one way are more than [`STRIPS`] times as long as the other way's is cut
+    /// into four strips across its long way (a 2 cm × 1 m board's edge into four 2 × 25 cm
+    /// strips, not four 1 × 50 cm slivers); any other polygon as [`ConvexPolygon::split`].
+    /// The pieces cover it exactly, in its orientation.
+    pub fn split_even(&self) -> [ConvexPolygon; 4] {
+        let v = self.vertices();
+        if v.len() != 4 {
+            return self.split();
+        }
+        let (one_way, other_way) =
+            (v[0].distance(v[1]) + v[3].distance(v[2]), v[0].distance(v[3]) + v[1].distance(v[2]));
+        let strip = |a: [DVec3; 2], b: [DVec3; 2], k: usize| {
+            let at = |e: [DVec3; 2], t: f64| e[0].lerp(e[1], t);
+            let (t0, t1) = (k as f64 / 4.0, (k + 1) as f64 / 4.0);
+            Self::quad(at(a, t0), at(a, t1), at(b, t1), at(b, t0))
+        };
+        if one_way > STRIPS * other_way {
+            std::array::from_fn(|k| strip([v[0], v[1]], [v[3], v[2]], k))
+        } else if other_way > STRIPS * one_way {
+            std::array::from_fn(|k| strip([v[1], v[2]], [v[0], v[3]], k))
+        } else {
+            self.split()
+        }
     }
 
     /// Hands `visit` its pieces as seen from `x` within the angle `spread` (a piece's diameter

@@ -3,3 +3,4 @@
 mod clip;
 mod concave;
 mod holes;
+mod split;

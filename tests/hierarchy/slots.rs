@@ -4,19 +4,15 @@
 //! of a closed 2 m room: the panel's back and the wall behind it are cut down to the slot's
 //! width (a quarter of the smallest size at most), the floor is not. Without the rule no
 //! leaf is finer than the smallest size, and the office's slots read 30–50 % bright (its
-//! hard probes: docs/accuracy.md, "Slots").
+//! hard probes: docs/accuracy.md, "Slots"). The panel's 2 cm rims are cut into strips
+//! (`ConvexPolygon::split_even`); cut by their edges' midpoints they were slivers 50 times
+//! as long as wide.
 
-use super::{hierarchy, options};
+use super::{hierarchy, longest_edge, options};
 use crate::support::{furnace, surface};
 use glam::DVec3;
 use ugo::directions::DirectionSet;
 use ugo::geometry::{Patch, Shape};
-
-/// The longest edge of a leaf, m.
-fn longest_edge(p: &Patch) -> f64 {
-    let v = p.polygon.vertices();
-    (0..v.len()).map(|i| v[i].distance(v[(i + 1) % v.len()])).fold(0.0, f64::max)
-}
 
 #[test]
 fn the_two_faces_of_a_slot_are_cut_to_its_width() {
@@ -39,6 +35,12 @@ fn the_two_faces_of_a_slot_are_cut_to_its_width() {
         "slot of 3 cm: the panel's back {n_back} leaves, finest {back:.4} m; the wall behind {n_wall}, finest {wall:.4} m; the floor's finest {floor:.4} m"
     );
     assert!(back < 0.5 * patch_size && wall < 0.5 * patch_size, "{back}, {wall}");
+    // the panel's 2 cm rims, cut into strips (`ConvexPolygon::split_even`), not slivers
+    let elongation = |p: &Patch| longest_edge(p).powi(2) / p.area;
+    let most = leaves.patches.iter().map(elongation).fold(0.0, f64::max);
+    let rims = leaves.patches.iter().filter(|p| p.normal.z.abs() < 0.1 && (p.centroid.z - 1.96).abs() < 0.011).count();
+    eprintln!("{rims} leaves on the panel's rims; every leaf at most {most:.1} times as long as wide");
+    assert!(most < 8.0, "a sliver: {most}");
     assert!(floor > 0.4 * patch_size, "the floor, far from any slot: {floor}");
 }
 

@@ -265,17 +265,19 @@ fn strict_fails_before_the_solve_or_writes_the_solution_and_verbose_gives_the_wh
     assert!(ok && err.contains("two_sided"), "--verbose gives the whole text: {err}");
 }
 
-/// The closed lecture hall at twice its case's link tolerance (6e-2): of its escaped flux,
+/// The closed lecture hall at three times its case's link tolerance (9e-2): of its escaped flux,
 /// the leaves' closures account for a small part (its real gaps), and the rest is the
 /// hierarchy's links' own loss, warned about as such, with no opening named (which the
 /// columns alone would have blamed). At the case's 3e-2 the links lose 0.89 % since occluded
-/// cluster pairs are refined (`docs/hierarchy.md`), below the warning's 1 %.
+/// cluster pairs are refined (`docs/hierarchy.md`), below the warning's 1 %; since long
+/// elements are cut into strips, 0.98 % at 6e-2, 1.04 % at 9e-2, 0.91 % at 1.5e-1 (the
+/// loss is not monotonic in the tolerance: the refinement it stops differs).
 #[test]
 fn the_hierarchys_own_loss_of_light_is_told_apart_from_an_opening() {
     let path = Path::new("cases/lecture-hall.toml");
     let text = std::fs::read_to_string(path).unwrap();
     assert!(text.contains("link_tolerance = 0.03"), "the hall's case changed");
-    let text = text.replace("link_tolerance = 0.03", "link_tolerance = 0.06");
+    let text = text.replace("link_tolerance = 0.03", "link_tolerance = 0.09");
     let scene = Scene::parse(path, text).unwrap_or_else(|e| panic!("{e}"));
     let s = solve_case(&scene, &Job::default(), &ugo::progress::Silent).unwrap();
     let (m, e) = (&s.model, &s.energy);
@@ -288,7 +290,7 @@ fn the_hierarchys_own_loss_of_light_is_told_apart_from_an_opening() {
     let links: f64 = (0..sent.len()).map(|c| flux(c) * (closures[c] - sent[c])).sum();
     assert!(geometry.abs() < 2e-3 * e.emitted, "a closed hall's gaps: {geometry} of {}", e.emitted);
     eprintln!(
-        "the lecture hall at 6e-2: the links' loss {links:.1} lm, the gaps' {geometry:.1} lm, of {:.1} lm",
+        "the lecture hall at 9e-2: the links' loss {links:.1} lm, the gaps' {geometry:.1} lm, of {:.1} lm",
         e.emitted
     );
     assert!(links > 1e-2 * e.emitted && links > 5.0 * geometry, "the links' loss {links}, the gaps' {geometry}");

@@ -102,7 +102,8 @@ impl Tree {
         }
     }
 
-    /// Gives element `id` (and its twin) their four children, unless they have them;
+    /// Gives element `id` (and its twin) their four children (`ConvexPolygon::split_even`:
+    /// quarters, or strips across a long quad), unless they have them;
     /// `exposed` measures a child's exposed area (`transfer::exposure`). A pair of twins is
     /// cut from the side under the lower root, whichever of them is asked, so that a
     /// child's address names the same piece in every process (`address.rs`).
@@ -114,7 +115,7 @@ impl Tree {
         }
         let (id, twin) = if twin != NONE && self.root(twin) < self.root(id) { (twin, id) } else { (id, twin) };
         let Some(patch) = self.nodes[id as usize].patch().copied() else { return };
-        let pieces = patch.polygon.split();
+        let pieces = patch.polygon.split_even();
         let front = self.add_children(id, pieces, exposed);
         if twin == NONE {
             return;
