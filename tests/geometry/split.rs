@@ -1,6 +1,6 @@
 //! A polygon cut in four (`geometry/polygon.rs`): `split` by midpoints, `split_even` into
-//! strips across a long quad, so that the hierarchy's elements stay near squares (a board's
-//! 2 cm edge, split by midpoints, became slivers of a fraction of a millimetre).
+//! strips across a long quad, so that the hierarchy's elements stay near squares (the
+//! office's 2 cm whiteboard rims, split by midpoints, became leaves of 2.5 mm × 12.5 cm).
 
 use glam::DVec3;
 use ugo::geometry::ConvexPolygon;

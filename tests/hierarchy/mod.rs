@@ -26,8 +26,8 @@ mod window_splits;
 
 use glam::DVec3;
 use ugo::directions::DirectionSet;
+use ugo::geometry::Mesh;
 use ugo::geometry::{Emission, Shape};
-use ugo::geometry::{Mesh, Patch};
 use ugo::kernel::hierarchy::{Hierarchy, Options};
 use ugo::kernel::{Factored, Kernel, Refined, refine_with_solves};
 use ugo::progress::Silent;
@@ -54,12 +54,6 @@ pub fn measured_roots(scene: &Scene, root_size: f64) -> (Mesh, Visibility) {
     let visibility = Visibility::build(&roots);
     measure_exposure(&mut roots, &visibility, &Silent);
     (roots, visibility)
-}
-
-/// The longest edge of a leaf, m.
-pub fn longest_edge(p: &Patch) -> f64 {
-    let v = p.polygon.vertices();
-    (0..v.len()).map(|i| v[i].distance(v[(i + 1) % v.len()])).fold(0.0, f64::max)
 }
 
 /// Options with `tolerance` and `patch_size` (m, the finest leaves), the rest default.

@@ -8,19 +8,32 @@
 //! (`ConvexPolygon::split_even`); cut by their edges' midpoints they were slivers 50 times
 //! as long as wide.
 
-use super::{hierarchy, longest_edge, options};
+use super::{hierarchy, options};
 use crate::support::{furnace, surface};
 use glam::DVec3;
 use ugo::directions::DirectionSet;
 use ugo::geometry::{Patch, Shape};
+use ugo::kernel::hierarchy::Hierarchy;
+
+/// The smallest element size of the tests' rooms, m.
+const PATCH_SIZE: f64 = 0.12;
+
+/// The hierarchy (roots of 1 m, links to 1e-2) of a closed 2 m room holding a box from
+/// `min` to `max`, m.
+fn room_with(name: &str, min: DVec3, max: DVec3) -> Hierarchy {
+    let mut room = furnace(2.0, 0.5, 1.0, 10.0);
+    room.surfaces.push(surface(name, Shape::Box { min, max, rotate_y_deg: 0.0 }, 0, false, None));
+    hierarchy(&room, 1.0, DirectionSet::single(), options(1e-2, PATCH_SIZE))
+}
+
+/// The longest edge of a leaf, m.
+fn longest_edge(p: &Patch) -> f64 {
+    ugo::kernel::hierarchy::longest_edge(&p.polygon)
+}
 
 #[test]
 fn the_two_faces_of_a_slot_are_cut_to_its_width() {
-    let mut room = furnace(2.0, 0.5, 1.0, 10.0);
-    let panel = Shape::Box { min: DVec3::new(0.5, 0.5, 1.95), max: DVec3::new(1.5, 1.0, 1.97), rotate_y_deg: 0.0 };
-    room.surfaces.push(surface("panel", panel, 0, false, None));
-    let patch_size = 0.12;
-    let h = hierarchy(&room, 1.0, DirectionSet::single(), options(1e-2, patch_size));
+    let h = room_with("panel", DVec3::new(0.5, 0.5, 1.95), DVec3::new(1.5, 1.0, 1.97));
     let leaves = h.leaf_mesh();
     let longest = |filter: &dyn Fn(DVec3, DVec3) -> bool| {
         let edges: Vec<f64> =
@@ -34,14 +47,14 @@ fn the_two_faces_of_a_slot_are_cut_to_its_width() {
     eprintln!(
         "slot of 3 cm: the panel's back {n_back} leaves, finest {back:.4} m; the wall behind {n_wall}, finest {wall:.4} m; the floor's finest {floor:.4} m"
     );
-    assert!(back < 0.5 * patch_size && wall < 0.5 * patch_size, "{back}, {wall}");
+    assert!(back < 0.5 * PATCH_SIZE && wall < 0.5 * PATCH_SIZE, "{back}, {wall}");
     // the panel's 2 cm rims, cut into strips (`ConvexPolygon::split_even`), not slivers
     let elongation = |p: &Patch| longest_edge(p).powi(2) / p.area;
     let most = leaves.patches.iter().map(elongation).fold(0.0, f64::max);
     let rims = leaves.patches.iter().filter(|p| p.normal.z.abs() < 0.1 && (p.centroid.z - 1.96).abs() < 0.011).count();
     eprintln!("{rims} leaves on the panel's rims; every leaf at most {most:.1} times as long as wide");
     assert!(most < 8.0, "a sliver: {most}");
-    assert!(floor > 0.4 * patch_size, "the floor, far from any slot: {floor}");
+    assert!(floor > 0.4 * PATCH_SIZE, "the floor, far from any slot: {floor}");
 }
 
 #[test]
@@ -50,11 +63,7 @@ fn a_slot_is_cut_near_its_mouth_and_not_in_its_depth() {
     // the mat's edges (within 5.7 gaps of the mouth, and the elements that reach there),
     // not under its middle, where almost no light arrives: there its leaves are the
     // smallest size's (0.0625 m from 1 m roots), and 0.0156 m when the depth is cut too
-    let mut room = furnace(2.0, 0.5, 1.0, 10.0);
-    let mat = Shape::Box { min: DVec3::new(0.25, 0.01, 0.25), max: DVec3::new(1.75, 0.02, 1.75), rotate_y_deg: 0.0 };
-    room.surfaces.push(surface("mat", mat, 0, false, None));
-    let patch_size = 0.12;
-    let h = hierarchy(&room, 1.0, DirectionSet::single(), options(1e-2, patch_size));
+    let h = room_with("mat", DVec3::new(0.25, 0.01, 0.25), DVec3::new(1.75, 0.02, 1.75));
     let floor: Vec<(f64, f64)> = h
         .leaf_mesh()
         .patches
@@ -71,6 +80,6 @@ fn a_slot_is_cut_near_its_mouth_and_not_in_its_depth() {
     };
     let (mouth, depth) = (finest(&|d| (0.0..0.05).contains(&d)), finest(&|d| d > 0.3));
     eprintln!("a 1 cm slot: the floor's finest leaf by the mat's edge {mouth:.4} m, under its middle {depth:.4} m");
-    assert!(mouth < 0.3 * patch_size, "by the edge: {mouth}");
-    assert!(depth > 0.45 * patch_size, "under the middle, as far from any slot: {depth}");
+    assert!(mouth < 0.3 * PATCH_SIZE, "by the edge: {mouth}");
+    assert!(depth > 0.45 * PATCH_SIZE, "under the middle, as far from any slot: {depth}");
 }
