@@ -23,7 +23,7 @@ use ndarray::Array1;
 use std::path::Path;
 
 /// The layout of `/rows`.
-const ROWS_FORMAT: u64 = 1;
+const ROWS_FORMAT: u64 = 2;
 
 /// Writes `rows` with the case's `fingerprint` and the cells' projected solid angles
 /// `projected` to `path` (through a temporary file).

@@ -9,7 +9,8 @@
 //! partly visible sources, 49.2 % and 3.55 %. What is left is the links' own tolerance (the
 //! largest, +42 % on the floor by the tall block's corner, is a leaf's own links, pushed
 //! with weight 1). At leaves down to 0.05 m (4,473 leaves, 2.5 minutes: too slow here)
-//! 38 % and 4.6 %.
+//! 38 % and 4.6 %. Since the reflecting sources are bundled apart by the way they face
+//! (`bundle.rs`), 40.6 % and 2.66 % (46.9 % and 2.94 % with one bundle for every facing).
 
 use super::{hierarchy, options};
 use std::path::Path;
@@ -45,7 +46,7 @@ fn leaves_take_the_lamps_light_by_their_own_view_of_it() {
         "open box, {} leaves: hierarchy against the uniform kernel on its leaves, largest {largest:.3}, rms {rms:.4}",
         relative.len()
     );
-    assert!(largest < 0.55 && rms < 0.04, "largest {largest}, rms {rms}");
+    assert!(largest < 0.45 && rms < 0.03, "largest {largest}, rms {rms}");
 }
 
 fn solved(operator: &dyn LinOp, l0: &[f64]) -> Vec<f64> {

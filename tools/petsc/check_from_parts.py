@@ -16,14 +16,18 @@ same linking in one process (GMRES to 1e-13, its kernel saved with the balancing
 the field equals ugo's to 1e-10 of the largest luminance, and every balancing factor to
 1e-10. Refused by name: rows files missing a part, rows files of two cases, a
 comparison beyond `--within` (1e-30: the check can fail, and fails on 2 ranks without
-hanging the other), and part files of another case given to `--linked`.
+hanging the other), part files of another case given to `--linked`, and a rows file of
+an older format.
 
     /usr/bin/python3 tools/petsc/check_from_parts.py [UGO] [WORK_FOLDER]
 """
 
 import os
+import shutil
 import subprocess
 import sys
+
+import h5py
 
 from check import HERE, HIERARCHY, HIERARCHY_SOLUTION, OPAL, ROOT, check, failures, run
 
@@ -88,6 +92,11 @@ def main():
     cornell_one = os.path.join(work, "cornell-one.h5")
     refused([os.path.join(HERE, "run"), "-n", "2", "--from-parts", *cornell_rows, "-o", out, "--against", cornell_one, "--within", "1e-30"], "beyond 1e-30")
     refused([ugo, "solve", OPAL[0], "--part", "0/4", "--linked", *cornell_links, "-o", out, *OPAL[1:], "--kernel", "hierarchical"], "was linked for another case")
+    old = os.path.join(work, "cornell-rows-format-1.h5")
+    shutil.copyfile(cornell_rows[0], old)
+    with h5py.File(old, "r+") as f:
+        f["rows"].attrs["format"] = 1
+    refused([os.path.join(HERE, "run"), "--from-parts", old, *cornell_rows[1:], "-o", out], "rows format 1")
     if failures:
         sys.exit(f"check_from_parts: {len(failures)} failed: {', '.join(failures)}")
     print("check_from_parts: ok")

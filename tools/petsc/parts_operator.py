@@ -14,6 +14,14 @@ from petsc4py import PETSc
 import hierarchy
 from kernel_read import _mat, _vec, blocks
 
+# A bundle's key is its receiver's position times this plus its sources' class (a u8,
+# `SourceClass::code` in src/kernel/hierarchy/bundle.rs), so that keys order as bundles do.
+KINDS = 256
+
+# The rows files' `format` this program reads (ROWS_FORMAT in src/io/part_rows_file.rs):
+# 2 since bundles are keyed by their sources' facing.
+ROWS_FORMAT = 2
+
 
 @dataclass
 class Part:
@@ -41,7 +49,9 @@ def survey(paths):
             if "rows" not in f:
                 raise SystemExit(f"from_parts: {path}: no /rows group (ugo solve CASE --part i/n --linked … writes one)")
             g = f["rows"]
-            keys = g["bundles/receiver"][:].astype(np.int64) * 4 + g["bundles/kind"][:]
+            if int(g.attrs.get("format", 0)) != ROWS_FORMAT:
+                raise SystemExit(f"from_parts: {path}: rows format {int(g.attrs.get('format', 0))}, this program reads {ROWS_FORMAT}: form the parts again with this ugo")
+            keys = g["bundles/receiver"][:].astype(np.int64) * KINDS + g["bundles/kind"][:]
             fingerprint = {k: str(v) for k, v in g["fingerprint"].attrs.items()}
             parts.append(Part(path, int(g.attrs["part"]), int(g.attrs["parts"]), tuple(int(v) for v in g.attrs["leaves"]), tuple(int(v) for v in g.attrs["nodes"]), keys, fingerprint))
     parts.sort(key=lambda p: p.index)
@@ -105,8 +115,8 @@ class Operator:
         row, values = csr(files, "gather", hierarchy.LINK_FIELDS)
         Lam = _mat(hierarchy.links(row, values, share, b1 - b0, self.nodes), self.nodes * cells, comm, columns=(b - a) * cells)
         row, values = csr(files, "push", ("receiver", "kind", "share"))
-        bundle = np.searchsorted(keys, values["receiver"].astype(np.int64) * 4 + values["kind"])
-        if np.any(keys[np.minimum(bundle, len(keys) - 1)] != values["receiver"].astype(np.int64) * 4 + values["kind"]):
+        bundle = np.searchsorted(keys, values["receiver"].astype(np.int64) * KINDS + values["kind"])
+        if np.any(keys[np.minimum(bundle, len(keys) - 1)] != values["receiver"].astype(np.int64) * KINDS + values["kind"]):
             raise SystemExit("from_parts: a leaf's push names a bundle no part holds: parts of different linkings?")
         P = _mat(hierarchy.pushed(row, {"bundle": bundle, "share": values["share"]}, cells, last - first, self.bundles), self.bundles * cells, comm, columns=(b1 - b0) * cells)
         material, twin = concatenated(files, "material"), concatenated(files, "twin")

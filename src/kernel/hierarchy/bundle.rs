@@ -5,7 +5,13 @@
 //! of the emitters, not by its view of everything its ancestor links to: under a node by a
 //! wall and a block the leaves see the near faces very differently and the far lamp alike,
 //! and one share for both moved a lamp's light by one leaf (the open box's floor by the
-//! right wall read −15 … −19 % and the next column +11 … +34 %).
+//! right wall read −15 … −19 % and the next column +11 … +34 %). The reflecting sources
+//! are bundled apart by the way they face as well: the leaves of a node see the sources of
+//! one plane in one ratio, which differs from plane to plane (the lowest leaves of a
+//! block's side see the far floor in the ratio of their heights to their ancestor's, a
+//! quarter, and the wall beside them as well as their ancestor does; in one bundle the
+//! floor's light came at 0.8 of the ancestor's and they read 30 % bright,
+//! `docs/hierarchy.md`, "Bundles by facing").
 
 use super::link::Link;
 use super::tree::Tree;
@@ -37,6 +43,37 @@ impl SourceKind {
     }
 }
 
+/// What a bundle's links share besides their receiver: the sources' kind and the way they
+/// face.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub struct SourceClass {
+    /// Emitting, near or far.
+    pub kind: SourceKind,
+    /// The axis and sign of the largest component of an element source's normal (0–5:
+    /// +x, −x, +y, −y, +z, −z), 6 for a cluster.
+    pub facing: u8,
+}
+
+impl SourceClass {
+    /// The class of the link's source.
+    pub fn of(tree: &Tree, link: &Link) -> SourceClass {
+        let facing = match tree.node(link.source).patch() {
+            Some(q) => {
+                let n = q.normal.to_array();
+                let axis = (0..3).max_by(|&a, &b| n[a].abs().total_cmp(&n[b].abs())).unwrap_or(0);
+                2 * axis as u8 + u8::from(n[axis] < 0.0)
+            }
+            None => 6,
+        };
+        SourceClass { kind: SourceKind::of(tree, link), facing }
+    }
+
+    /// The class as one number, `8 × kind + facing` (emitting 0, near 1, far 2).
+    pub fn code(self) -> u8 {
+        8 * self.kind as u8 + self.facing
+    }
+}
+
 /// The links grouped into bundles, ordered by receiver (depth-first position) and kind.
 #[derive(Debug, Default)]
 pub struct Bundles {
@@ -50,12 +87,12 @@ pub struct Bundles {
 }
 
 impl Bundles {
-    /// Groups `links` by receiver and source kind; `position` is each node's depth-first
+    /// Groups `links` by receiver and source class; `position` is each node's depth-first
     /// position, which orders the bundles, and the links within a bundle by source.
     pub fn new(tree: &Tree, links: &[Link], position: &[u32]) -> Bundles {
         let key = |l: u32| {
             let link = &links[l as usize];
-            (position[link.receiver as usize], SourceKind::of(tree, link))
+            (position[link.receiver as usize], SourceClass::of(tree, link))
         };
         // within a bundle by source: the same order however the links were made (a part's
         // links rebuilt from files, `rebuilt.rs`), so that the push's rays meet the same

@@ -2,12 +2,12 @@
 //! operator from the part files"; `docs/design.md` §3b, "Apply K x"): the tree by
 //! depth-first position (the pull `R`, the same in every part), the gather rows `Λ` of the
 //! bundles its links make, and the push rows `P` of its own leaves, each bundle named by its
-//! key (receiver's position, source kind) so that the parts' bundles are numbered as the
+//! key (receiver's position, source class) so that the parts' bundles are numbered as the
 //! one-process operator numbers them, by key. With them each leaf's closure rays, what
 //! balancing needs (`balanced.rs`), which the part cannot do alone.
 
 use super::balanced::SENDING;
-use super::bundle::{Bundles, SourceKind};
+use super::bundle::{Bundles, SourceClass};
 use super::kernel::Hierarchy;
 use super::link::Link;
 use super::node::NONE;
@@ -18,12 +18,12 @@ use crate::transfer::closure::Closure;
 use std::ops::Range;
 
 /// A bundle by what orders it in the one-process operator: its receiver's depth-first
-/// position and its sources' kind (`bundle.rs`).
+/// position and its sources' class (`bundle.rs`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub struct BundleKey {
     /// Depth-first position of the receiver.
     pub receiver: u32,
-    /// [`SourceKind`] as a number: emitting 0, near 1, far 2.
+    /// [`SourceClass::code`]: the sources' kind and facing.
     pub kind: u8,
 }
 
@@ -83,7 +83,7 @@ impl Hierarchy {
         let nodes = run(&order, own).ok_or("the part's nodes are not one run of depth-first positions")?;
         let key = |links: &[Link], bundles: &Bundles, b: usize| BundleKey {
             receiver: position[bundles.receiver[b] as usize],
-            kind: SourceKind::of(tree, &links[bundles.links_of(b)[0] as usize]) as u8,
+            kind: SourceClass::of(tree, &links[bundles.links_of(b)[0] as usize]).code(),
         };
         let reaching = Bundles::new(tree, &self.links, &position);
         let mine = &leaves[own_leaves.clone()];
