@@ -74,7 +74,8 @@ impl SourceClass {
     }
 }
 
-/// The links grouped into bundles, ordered by receiver (depth-first position) and kind.
+/// The links grouped into bundles, ordered by receiver (depth-first position) and source
+/// class.
 #[derive(Debug, Default)]
 pub struct Bundles {
     /// Receiver node id of each bundle.
