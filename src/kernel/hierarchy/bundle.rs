@@ -59,9 +59,8 @@ impl SourceClass {
     pub fn of(tree: &Tree, link: &Link) -> SourceClass {
         let facing = match tree.node(link.source).patch() {
             Some(q) => {
-                let n = q.normal.to_array();
-                let axis = (0..3).max_by(|&a, &b| n[a].abs().total_cmp(&n[b].abs())).unwrap_or(0);
-                2 * axis as u8 + u8::from(n[axis] < 0.0)
+                let axis = q.normal.abs().max_position();
+                2 * axis as u8 + u8::from(q.normal[axis] < 0.0)
             }
             None => 6,
         };
