@@ -20,14 +20,18 @@
 //!
 //! Each piece costs a gather over every patch (about 9 ms on the Cornell box's 3,400
 //! leaves here before the clear hulls of `visibility/hull.rs`, growing with the patches): probes are corrected, grid points
-//! (`grid.rs`, hundreds a plane, often a few centimetres above desks) are not.
+//! (`grid.rs`, hundreds a plane, often a few centimetres above desks) are not. In a piece's
+//! gather a patch of small light ([`PIECE_SAMPLED`]) is seen by one ray instead of four to
+//! eight, as in the error bars' (`docs/accuracy.md`, "One ray in the pieces' gathers").
 
 use crate::geometry::{ConvexPolygon, Frame, Patch};
 use crate::model::Model;
+use crate::readout::cut::Cut;
 use crate::readout::field::Field;
 use crate::readout::gather::{incident_at, sum};
 use crate::readout::glossy::is_diffuse;
-use crate::readout::luminance::gathered;
+use crate::readout::lit::Lit;
+use crate::readout::luminance::{RELIT_SHADOW_CUT, gathered_each};
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
 use crate::transfer::occlusion::cut_along_shadows;
@@ -46,6 +50,16 @@ pub const SHADOW_PIECES: f64 = 16.0;
 
 /// Most levels of cutting a near piece into quarters.
 pub const NEAR_DEPTH: u32 = 4;
+
+/// How a piece's gather cuts the patches it sees along shadow edges
+/// ([`RELIT_SHADOW_CUT`]), and below which light a patch is seen by one ray to one of
+/// its points ([`PIECE_SAMPLED`]).
+pub const PIECE_CUT: Cut<'static> = Cut { fraction: RELIT_SHADOW_CUT, by: &[], sampled: PIECE_SAMPLED };
+
+/// In a piece's gather, a patch whose light unoccluded is below this fraction of all the
+/// piece's point would receive unoccluded is seen by one ray to one of its stratified
+/// points picked by a hash of the point and the patch (`Cut::sampled`): unbiased.
+pub const PIECE_SAMPLED: f64 = 1e-4;
 
 /// A near patch whose unoccluded light at the point is below this fraction of all the light
 /// the point receives is not corrected: its correction could move the reading by about as
@@ -75,23 +89,39 @@ impl Corrected {
 }
 
 /// The light arriving at a receiver at `p` facing the unit `n`, gathered (`gather.rs`) and
-/// corrected near geometry.
+/// corrected near geometry, the pieces' gathers cut by [`PIECE_CUT`].
 pub fn corrected(model: &Model, field: &Field, p: DVec3, n: DVec3) -> Corrected {
+    corrected_with(model, field, p, n, &PIECE_CUT)
+}
+
+/// [`corrected`], the pieces' gathers cut by `pieces` (`cut.rs`; only its fraction and
+/// `sampled` count: the field read is the one rule).
+pub fn corrected_with(model: &Model, field: &Field, p: DVec3, n: DVec3, pieces: &Cut) -> Corrected {
     let (at, mut incident, direct) = incident_at(model, field, p, n, &[]);
     let before = PI * incident.iter().sum::<f64>();
     let total = incident.iter().chain(&direct).sum::<f64>();
-    let delta = near_correction(model, field, p, &at.frame, at.ignore, total);
+    let delta = near_correction(model, field, p, &at.frame, at.ignore, total, pieces);
     incident.iter_mut().zip(&delta).for_each(|(i, d)| *i = (*i + d).max(0.0));
     let correction = PI * incident.iter().sum::<f64>() - before;
     Corrected { patch: at.patch, incident, direct, correction }
 }
 
 /// `ΔI_d(p)` per cell of `frame` at `p` (ignoring face `ignore`), in the units of `I_d`;
-/// `total` is all the light the point receives, `Σ_d (I_d + D_d)`.
-pub fn near_correction(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, total: f64) -> Vec<f64> {
+/// `total` is all the light the point receives, `Σ_d (I_d + D_d)`; the pieces' gathers cut
+/// by `pieces`.
+pub fn near_correction(
+    model: &Model,
+    field: &Field,
+    p: DVec3,
+    frame: &Frame,
+    ignore: u32,
+    total: f64,
+    pieces: &Cut,
+) -> Vec<f64> {
     let cells = model.kernel.directions.len();
     let binning = Binning::new(&model.kernel.directions);
     let patches = &model.mesh.patches;
+    let lit = [Lit::own(model, field)];
     let near: Vec<usize> = (0..patches.len())
         .filter(|&j| {
             let s = &patches[j];
@@ -113,7 +143,7 @@ pub fn near_correction(model: &Model, field: &Field, p: DVec3, frame: &Frame, ig
                         bins.clear();
                         binned_point(p, frame, &Patch { polygon: *a, ..*s }, &binning, &mut bins);
                         let c = a.centroid();
-                        let l = gathered(model, field, j, c, (p - c).normalize(), &[]);
+                        let l = gathered_each(model, &lit, j, c, (p - c).normalize(), &Cut { by: &[], ..*pieces })[0];
                         for &(d, m, f) in bins.iter() {
                             sum[d as usize] += f * seen * (l - field.at(j, m as usize));
                         }

@@ -8,6 +8,7 @@
 mod error_bars;
 mod glossy;
 mod grid_error_bars;
+mod one_ray_pieces;
 
 use crate::support::{build, solve};
 use glam::DVec3;
