@@ -121,7 +121,15 @@ pub fn form_factor(s: &Patch, t: &Patch, q: &Quadrature) -> f64 {
 
 /// Form factor from the point `x` (frame `at`, its normal facing `t`) to patch `t`,
 /// split by cells: pushes `(d at x, m at t, F piece)` onto `bins` and returns the total.
+/// With one cell, the whole patch's factor in one contour integral.
 pub fn binned_point(x: DVec3, at: &Frame, t: &Patch, binning: &Binning, bins: &mut Vec<(u16, u16, f64)>) -> f64 {
+    if binning.directions.len() == 1 {
+        let f = point_to_patch(x, at.normal, t);
+        if f > 0.0 {
+            bins.push((0, 0, f));
+        }
+        return f.max(0.0);
+    }
     t.polygon.triangles().map(|piece| split_piece(x, at, t, &piece, binning, 1.0, 0, bins)).sum()
 }
 
