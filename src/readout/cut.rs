@@ -65,6 +65,11 @@ impl Worth {
         self.unoccluded.iter().any(|u| u[k] > 0.0)
     }
 
+    /// The light candidate `k` would send unoccluded, summed over the fields.
+    pub(super) fn light(&self, k: usize) -> f64 {
+        self.unoccluded.iter().map(|u| u[k]).sum()
+    }
+
     /// Whether candidate `k` is seen by one ray ([`Cut::sampled`]).
     pub(super) fn sampled(&self, k: usize) -> bool {
         self.unoccluded.iter().zip(&self.sampled).all(|(u, sampled)| u[k] < *sampled)

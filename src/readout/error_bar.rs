@@ -22,7 +22,8 @@
 //! average on the Cornell box's hard probes, 1.9 % on the open box's) exceeds the error it finds on most probes; added to the reading it would
 //! make the Cornell box's hard probes worse (`docs/accuracy.md`, "Error bars"). Each ray
 //! costs a gather, so a probe costs [`RAYS`] gathers; in each, a patch of small light is
-//! seen by one ray ([`ONE_RAY`]), unbiased, its noise in `σ`. A cylindrical probe's reading is the
+//! seen by one ray ([`ONE_RAY`]), and a run of such patches by one ray together (`runs.rs`),
+//! unbiased, its noise in `σ`. A cylindrical probe's reading is the
 //! mean over vertical planes (`cylindrical.rs`): its [`RAYS`] directions are shared among
 //! them and their samples pooled, the estimate of the mean (not corrected, `ΔI = 0`). A
 //! grid's points pool fewer directions each with their neighbours' (`grid_error.rs`).

@@ -8,7 +8,8 @@
 //! stratified points of `P_j`; a patch whose points and corners disagree lies on a shadow
 //! edge and is cut into quarters (`transfer::occlusion::cut_along_shadows`), each piece
 //! weighed by its own rays, while the light the piece would send unoccluded exceeds
-//! [`SHADOW_CUT`] of all the point would receive unoccluded). A Phong or GGX patch's light
+//! [`SHADOW_CUT`] of all the point would receive unoccluded; where the cut allows it, patches
+//! of small light by one ray, alone or in runs: `runs.rs`). A Phong or GGX patch's light
 //! towards `p` is, piece by piece, its final gather at the piece's centroid towards `p`
 //! (`glossy.rs`, [`PIECE_RAYS`] directions) instead of its cell value `L_j(m)`, each shadow
 //! piece cut further while it spans more than [`LOBE_PIECE`] times the lobe's half width
@@ -27,6 +28,7 @@ use crate::readout::field::Field;
 use crate::readout::glossy::{ModelSurroundings, PIECE_RAYS};
 use crate::readout::lit::Lit;
 use crate::readout::mirrored::{on_mirrors, through_mirrors};
+use crate::readout::runs::{pick, runs};
 use crate::sky::READING;
 use crate::transfer::contour::point_to_patch;
 use crate::transfer::form_factor::{Binning, binned_point};
@@ -161,14 +163,6 @@ fn per_cell(model: &Model, field: &Field, p: DVec3, frame: &Frame, ignore: u32, 
     per_cell_each(model, &[Lit::own(model, field)], p, frame, ignore, cut).swap_remove(0)
 }
 
-/// A number for the gather at `p` and its patch `j`, spread over all of `u64`: which of
-/// the patch's points its one ray goes to ([`Cut::sampled`]), the same for every run.
-fn pick(p: DVec3, j: usize) -> u64 {
-    let mut h = p.to_array().iter().fold(j as u64, |h, x| (h ^ x.to_bits()).wrapping_mul(0x9E37_79B9_7F4A_7C15));
-    h ^= h >> 31;
-    h.wrapping_mul(0xBF58_476D_1CE4_E5B9) >> 29
-}
-
 /// `I_d(p)` of each field of `lits`, every piece's rays and factors found once and its light
 /// weighed by each field; cut by the rule of `cut` (of all the fields of `lits` when it
 /// names none).
@@ -189,18 +183,21 @@ fn per_cell_each(model: &Model, lits: &[Lit], p: DVec3, frame: &Frame, ignore: u
     let rule = Cut { by: if cut.by.is_empty() { &fields } else { cut.by }, ..*cut };
     let worth = Worth::new(&rule, fields[0], &geometric, |j| j, 1.0);
     let surroundings: Vec<ModelSurroundings> = fields.iter().map(|f| ModelSurroundings::new(model, f)).collect();
-    let surfaces = patches
+    let lobe = |j: usize| model.materials[patches[j].material as usize].lobe_width();
+    let runs = runs(patches, &worth, |j| lobe(j).is_some() || !worth.sampled(j));
+    let surfaces = runs
         .par_iter()
-        .enumerate()
-        .filter(|&(j, _)| worth.lit(j))
         .fold(
             || (vec![0.0; lits.len() * cells], Vec::new(), Cell::new(NO_BLOCKER)),
-            |(mut sum, mut bins, blocker), (j, s)| {
+            |(mut sum, mut bins, blocker), run| {
+                let (j, weight) = run.pick(&worth, pick(p, patches.len() + run.start));
+                let s = &patches[j];
                 let sight = SightTo::new(&model.visibility, p, [ignore, s.face], &blocker);
                 let one_ray = worth.sampled(j);
                 let worth = |piece: &ConvexPolygon| worth.cuts(j, s.area, piece.area());
-                let lobe = model.materials[s.material as usize].lobe_width();
+                let lobe = lobe(j);
                 let mut visit = |piece: &ConvexPolygon, seen: f64| {
+                    let seen = seen * weight;
                     let Some(width) = lobe else {
                         bins.clear();
                         binned_point(p, frame, &Patch { polygon: *piece, ..*s }, &binning, &mut bins);

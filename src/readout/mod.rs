@@ -30,6 +30,7 @@ pub mod openings;
 pub mod probe;
 pub mod readings;
 pub mod residual_samples;
+mod runs;
 pub mod standard_room;
 pub mod ugr;
 pub mod ugr_table;
