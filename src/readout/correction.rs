@@ -122,6 +122,7 @@ pub fn near_correction(
     let binning = Binning::new(&model.kernel.directions);
     let patches = &model.mesh.patches;
     let lit = [Lit::own(model, field)];
+    let piece_cut = Cut { by: &[], ..*pieces };
     let near: Vec<usize> = (0..patches.len())
         .filter(|&j| {
             let s = &patches[j];
@@ -143,7 +144,7 @@ pub fn near_correction(
                         bins.clear();
                         binned_point(p, frame, &Patch { polygon: *a, ..*s }, &binning, &mut bins);
                         let c = a.centroid();
-                        let l = gathered_each(model, &lit, j, c, (p - c).normalize(), &Cut { by: &[], ..*pieces })[0];
+                        let l = gathered_each(model, &lit, j, c, (p - c).normalize(), &piece_cut)[0];
                         for &(d, m, f) in bins.iter() {
                             sum[d as usize] += f * seen * (l - field.at(j, m as usize));
                         }

@@ -190,6 +190,7 @@ fn per_cell_each(model: &Model, lits: &[Lit], p: DVec3, frame: &Frame, ignore: u
         .fold(
             || (vec![0.0; lits.len() * cells], Vec::new(), Cell::new(NO_BLOCKER)),
             |(mut sum, mut bins, blocker), run| {
+                // A run's hash is apart from its leaves' (`pick(p, j)`, `j` below the leaf count).
                 let (j, weight) = run.pick(&worth, pick(p, patches.len() + run.start));
                 let s = &patches[j];
                 let sight = SightTo::new(&model.visibility, p, [ignore, s.face], &blocker);

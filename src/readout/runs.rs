@@ -61,11 +61,11 @@ impl Run {
         if self.end == self.start + 1 {
             return (self.start, 1.0);
         }
-        let all: f64 = (self.start..self.end).map(|k| worth.light(k)).sum();
+        let lit = || (self.start..self.end).map(|k| (k, worth.light(k))).filter(|&(_, u)| u > 0.0);
+        let all: f64 = lit().map(|(_, u)| u).sum();
         let mut left = all * (h as f64 / HASH_RANGE);
         let mut last = None;
-        for k in (self.start..self.end).filter(|&k| worth.light(k) > 0.0) {
-            let u = worth.light(k);
+        for (k, u) in lit() {
             if left < u {
                 return (k, all / u);
             }
