@@ -5,6 +5,7 @@ mod bundles;
 mod closure;
 mod clusters;
 mod coverage;
+mod edges;
 mod explicit;
 mod growth;
 mod importance;
@@ -37,6 +38,22 @@ use ugo::transfer::exposure::measure_exposure;
 use ugo::visibility::Visibility;
 
 use crate::support::{furnace, lambert, surface};
+
+/// The smallest element size of the slots' and edges' rooms, m.
+pub const PATCH_SIZE: f64 = 0.12;
+
+/// The hierarchy (roots of 1 m, links to 1e-2, leaves down to [`PATCH_SIZE`]) of a closed
+/// 2 m room holding a box from `min` to `max`, m.
+pub fn room_with(name: &str, min: DVec3, max: DVec3) -> Hierarchy {
+    let mut room = furnace(2.0, 0.5, 1.0, 10.0);
+    room.surfaces.push(surface(name, Shape::Box { min, max, rotate_y_deg: 0.0 }, 0, false, None));
+    hierarchy(&room, 1.0, DirectionSet::single(), options(1e-2, PATCH_SIZE))
+}
+
+/// The longest edge of a leaf, m.
+pub fn longest_edge(p: &ugo::geometry::Patch) -> f64 {
+    ugo::kernel::hierarchy::longest_edge(&p.polygon)
+}
 
 /// The hierarchy of `scene` over roots meshed at `root_size` (m).
 pub fn hierarchy(scene: &Scene, root_size: f64, directions: DirectionSet, options: Options) -> Hierarchy {

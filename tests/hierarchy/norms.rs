@@ -56,7 +56,7 @@ fn relative(a: f64, b: f64) -> f64 {
 fn matrix_free_norms_equal_those_of_the_expansion() {
     for directions in [DirectionSet::single(), DirectionSet::hemisphere(8)] {
         let cells = directions.len();
-        let mut h = hierarchy(&glossy_box_with_panel(), 0.5, directions, options(1e-2, 0.1));
+        let mut h = hierarchy(&glossy_box_with_panel(), 0.5, directions, options(1e-2, 0.15));
         let k = kernel(&mut h);
         assert!(k.twin.iter().any(|&t| t != ugo::geometry::NO_TWIN), "the panel has twins");
         let (free, explicit) = both(&k);

@@ -18,11 +18,12 @@ use ugo::scene::Scene;
 use ugo::solve::{Method, SolveParams, System, solve};
 
 /// `ROOM` (a glossy rug, a two-sided transmitting panel, K = 4, solved directly) on the
-/// hierarchy: roots of 1 m split down to 0.25 m, the rug lifted to 30 cm: 1 cm above the
-/// floor it is a slot, whose faces are split near its edges (1,504 leaves instead of 544,
-/// the direct solve 3.8 s instead of 0.5: `tests/hierarchy/slots.rs` tests slots).
+/// hierarchy: roots of 1 m split down to 0.5 m, and toward the room's concave edges and the
+/// rug's slot down to 0.125 m (`tests/hierarchy/edges.rs`, `slots.rs` test those), the rug
+/// lifted to 30 cm: 952 leaves, the dense direct solve 1.2 s (at 0.25 m, 2,128 leaves and a
+/// sparse LU of 20 s).
 fn hierarchical(text: &str) -> String {
-    text.replace("patch_size = 0.5", "patch_size = 0.25\nkernel = \"hierarchical\"\nroot_size = 1.0")
+    text.replace("patch_size = 0.5", "patch_size = 0.5\nkernel = \"hierarchical\"\nroot_size = 1.0")
         .replace("origin = [0.25, 0.01, 0.25]", "origin = [0.25, 0.3, 0.25]")
 }
 
@@ -177,8 +178,8 @@ fn a_changed_geometry_or_hierarchy_option_is_refused_naming_the_part() {
     assert!(err.contains("discretization (root_size 1.0 m in the file, root_size 0.5 m in the case)"), "{err}");
     let err = refused(&case, &["--link-tolerance", "0.03"]);
     assert!(err.contains("link_tolerance 0.01 in the file, link_tolerance 0.03 in the case"), "{err}");
-    let err = refused(&case, &["--patch-size", "0.5"]);
-    assert!(err.contains("patch_size 0.25 m in the file, patch_size 0.5 m in the case"), "{err}");
+    let err = refused(&case, &["--patch-size", "0.25"]);
+    assert!(err.contains("patch_size 0.5 m in the file, patch_size 0.25 m in the case"), "{err}");
     let moved =
         room(&dir, "moved.toml", |t| hierarchical(t).replace("origin = [0.5, 1.0, 0.5]", "origin = [0.5, 1.1, 0.5]"));
     let err = refused(&moved, &[]);

@@ -7,6 +7,7 @@
 //! `leaf_mesh`, `emission` and `prolong` on the leaves (`leaves.rs`). The kernel `K = B·G`
 //! over that `G`, and the passes iterated with solves, are `crate::kernel`'s.
 
+use super::grading::grade;
 use super::history::Work;
 use super::link::Link;
 use super::memo::Memo;
@@ -15,7 +16,6 @@ use super::options::Options;
 use super::oracle::Oracle;
 use super::partition::Partition;
 use super::refine::Stopped;
-use super::slots::split_slots;
 use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
@@ -70,7 +70,7 @@ impl Hierarchy {
         let mut brightness = h.brightness(&roots, &guess);
         let Hierarchy { tree, visibility, backs, options, .. } = &mut h;
         let exposed = |p: &crate::geometry::Patch| backs.exposed_area(visibility, p);
-        let rays = split_slots(tree, &mut brightness, visibility, &exposed, options.patch_size);
+        let rays = grade(tree, &mut brightness, visibility, &exposed, options.patch_size);
         h.work.rays += rays;
         let top = h.tree.top();
         let candidates = if top == NONE { Vec::new() } else { vec![(top, top)] };

@@ -81,6 +81,11 @@ impl Node {
         self.patch().is_some() && self.exposed > 0.0 && self.exposed < self.area * (1.0 - 1e-9)
     }
 
+    /// True for an element no part of which lies inside or against a solid.
+    pub fn wholly_exposed(&self) -> bool {
+        self.patch().is_some() && self.exposed >= self.area * (1.0 - 1e-9)
+    }
+
     /// Exposed area of the node's elements projected onto a plane across the unit direction
     /// `u`, counting the elements that face `u`: `A max(0, n·u)` for an element; for a cluster
     /// `Σ_axes |u_a| facing[a, sign u_a]`, exact when its elements are axis-aligned (walls,

@@ -111,3 +111,13 @@ impl Oracle {
 pub(super) fn larger_first(p: u32, q: u32, size_p: f64, size_q: f64) -> [u32; 2] {
     if size_q > size_p * (1.0 + 1e-9) { [q, p] } else { [p, q] }
 }
+
+/// The element of the pair `(p, q)` that grading splits toward the other down to `finest`
+/// (m), the larger first, with whether it is a leaf of the smallest size `patch_size` (m),
+/// which is split below it only if the pair sees something of each other; `None` when
+/// neither can split down to `finest`.
+pub(super) fn split_toward(tree: &Tree, p: u32, q: u32, finest: f64, patch_size: f64) -> Option<(u32, bool)> {
+    let order = larger_first(p, q, tree.node(p).area, tree.node(q).area);
+    let n = order.into_iter().find(|&n| tree.can_split(n, finest))?;
+    Some((n, tree.node(n).is_leaf() && !tree.can_split(n, patch_size)))
+}
