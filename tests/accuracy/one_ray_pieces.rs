@@ -53,11 +53,13 @@ fn check(case: &str, largest_bound: f64, mean_bound: f64) {
 }
 
 #[test]
+#[ignore = "40 s: make test-long"]
 fn one_ray_pieces_read_the_cornell_box_as_every_ray() {
     check("cornell-box", 0.1, 0.02);
 }
 
 #[test]
+#[ignore = "about a minute: make test-long"]
 fn one_ray_pieces_read_the_open_box_as_every_ray() {
     check("open-box", 0.1, 0.02);
 }

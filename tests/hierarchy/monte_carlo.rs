@@ -60,6 +60,7 @@ fn the_cornell_boxs_probes_agree_with_backward_monte_carlo() {
 }
 
 #[test]
+#[ignore = "about a minute: make test-long"]
 fn the_glossy_cornell_boxs_probes_agree_with_backward_monte_carlo() {
     agrees_with_monte_carlo("cases/glossy-cornell.toml", |_| 0.01);
 }

@@ -66,7 +66,10 @@ fn matrix_free_norms_equal_those_of_the_expansion() {
         assert!(free.one != free.infinity, "K is not symmetric: the two norms differ");
         let (r, e) = (free.spectral_radius, explicit.spectral_radius);
         assert!(r.converged && e.converged && r.by == Estimator::Arnoldi);
-        assert!(relative(r.value, e.value) < 1e-9, "ρ(K): Arnoldi {} against power {}", r.value, e.value);
+        // The power iteration stops at a change of 1e-12 per iteration, which bounds its
+        // error only by that over 1 − |λ₂/λ₁|: since narrow surfaces are not graded the
+        // two read 0.6051210354 and 0.6051210426 at K = 1 (1.2e-8 apart).
+        assert!(relative(r.value, e.value) < 1e-7, "ρ(K): Arnoldi {} against power {}", r.value, e.value);
         assert!(relative(free.condition_infinity, explicit.condition_infinity) < 1e-9, "cond∞(I − K)");
         assert!(free.frobenius.is_none() && free.two.is_none() && free.matrix_free.is_some());
         let two = explicit.two.unwrap().value;

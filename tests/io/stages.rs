@@ -109,9 +109,16 @@ fn solve_stops_promptly_during(name: &str, args: &[&str], stage: &str, during: &
     solve_stops_promptly(name, args, in_stage, Duration::from_secs(1), during);
 }
 
+/// A second into the office's linking (its first round comes a few seconds in, after the
+/// roots' exposed areas and the grading; waiting for the second pass cost a minute).
 #[test]
-fn sigterm_stops_a_hierarchical_refinement_promptly() {
-    solve_stops_promptly_during("stop-refinement", &["cases/office.toml"], "refinement", "the hierarchical kernel's");
+fn sigterm_stops_a_hierarchical_linking_promptly() {
+    solve_stops_promptly_during(
+        "stop-refinement",
+        &["cases/office.toml"],
+        "linking, round",
+        "the hierarchical kernel's linking",
+    );
 }
 
 /// The roots' exposed areas of 1.5·10⁶ roots (the furnace box at 2 mm roots) take about two

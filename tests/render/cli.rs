@@ -104,6 +104,7 @@ const CASES: [(&str, &str, &str); 11] = [
 const FURNISHED: [&str; 5] = ["building", "classroom", "hall-obj", "lecture-hall", "office"];
 
 #[test]
+#[ignore = "about a minute: make test-long"]
 fn every_case_has_a_camera_and_renders_finite_lit_pixels() {
     let dir = scratch("cases");
     let mut listed: Vec<String> = std::fs::read_dir("cases")

@@ -42,6 +42,7 @@ fn sphere(kernel: KernelKind, patch_size: f64) -> (f64, f64) {
 }
 
 #[test]
+#[ignore = "about a minute: make test-long"]
 fn indirect_illuminance_on_the_wall_is_uniform_and_as_predicted() {
     let (f, worst) = sphere(KernelKind::Uniform, 0.1);
     assert!((f / 0.0025 - 1.0).abs() < 0.2, "bulb form factor {f}");

@@ -17,6 +17,7 @@ probes with `ugo trace` in about the case's own solve time, compared like a sett
     tools/accuracy/bench.py --step solve office                       # the solves only
     tools/accuracy/bench.py --step trace cornell-box                  # ugo trace at equal time
     tools/accuracy/bench.py --tuning open-box                         # a second probe set to tune on
+    tools/accuracy/bench.py --step solve --ugo B --setting NAME office  # another build, as NAME
 
 `--tuning` places a second, smaller set (`--count 10 --seed 2` unless given), drops every
 probe within TUNING_APART of a probe of the committed set, and writes its references to
@@ -308,8 +309,12 @@ def main():
     parser.add_argument("--seed", type=int, help="the probes' seed (1; 2 with --tuning)")
     parser.add_argument("--tuning", action="store_true",
                         help="a second probe set, apart from the committed one, to choose parameters on")
+    parser.add_argument("--ugo", type=Path, help="the ugo binary to solve with (target/release/ugo)")
+    parser.add_argument("--setting", help="solve and compare only this setting; a name not in the case's "
+                                          "settings solves at the case's own (to compare builds)")
     args = parser.parse_args()
-    global OUT, DATA
+    global OUT, DATA, UGO
+    UGO = args.ugo or UGO
     committed = DATA
     if args.tuning:
         OUT, DATA = OUT / "tuning", DATA / "tuning"
@@ -323,7 +328,10 @@ def main():
             pilot(name, bench, seed)
         if args.step in ("all", "reference"):
             reference(name, bench, placed, seed)
-        for setting, flags in SETTINGS.get(name, DEFAULT_SETTINGS):
+        settings = SETTINGS.get(name, DEFAULT_SETTINGS)
+        if args.setting:
+            settings = [(s, f) for s, f in settings if s == args.setting] or [(args.setting, [])]
+        for setting, flags in settings:
             if args.step in ("all", "solve"):
                 solve(name, bench, setting, flags)
             if args.step in ("all", "solve", "compare"):

@@ -7,8 +7,10 @@
 //! exposed elements that meet at a concave edge, or nearly do, are split toward each
 //! other, down to their distance but not below [`EDGE_FINEST`] of the smallest size. An
 //! element any part of which lies inside or against a solid is left to the linking (§3b,
-//! "Contacts"): graded, its pieces under the solid had no light of their own to read.
+//! "Contacts"): graded, its pieces under the solid had no light of their own to read. Nor
+//! are the elements of narrow surfaces ([`EDGE_NARROWEST`]).
 
+use super::node::longest_edge;
 use super::oracle::split_toward;
 use super::sight::{Sight, sight};
 use super::tree::Tree;
@@ -24,7 +26,8 @@ pub const EDGE_FACING: f64 = 0.5;
 pub const EDGE_FINEST: f64 = 0.25;
 
 /// The element of the pair `(p, q)` to split, if they meet at a concave edge: both wholly
-/// exposed, in front of each other, nearer than `patch_size` (m); the larger first, down
+/// exposed, on wide surfaces ([`EDGE_NARROWEST`]), in front of each other, nearer than
+/// `patch_size` (m); the larger first, down
 /// to their distance (0 at a shared edge) but not below [`EDGE_FINEST`] of `patch_size`.
 /// An element of the smallest size is split below it only if the pair sees something of
 /// each other. With the rays it took.
@@ -32,7 +35,9 @@ pub fn to_split(tree: &Tree, visibility: &Visibility, patch_size: f64, p: u32, q
     let (a, b) = (tree.node(p), tree.node(q));
     let (Some(pa), Some(pb)) = (a.patch(), b.patch()) else { return (None, 0) };
     let distance = a.box_distance(b);
-    if distance >= patch_size || !a.wholly_exposed() || !b.wholly_exposed() || !facing(pa, pb) {
+    let exposed = a.wholly_exposed() && b.wholly_exposed();
+    if distance >= patch_size || !exposed || !facing(pa, pb) || !wide(tree, p, patch_size) || !wide(tree, q, patch_size)
+    {
         return (None, 0);
     }
     let finest = distance.max(EDGE_FINEST * patch_size);
@@ -42,4 +47,17 @@ pub fn to_split(tree: &Tree, visibility: &Visibility, patch_size: f64, p: u32, q
     }
     let (seen, _, rays) = sight(visibility, pa, pb, &mut Blocker::default());
     (if seen == Sight::Occluded { None } else { Some(n) }, rays)
+}
+
+/// Surfaces narrower than this many smallest sizes are not graded: the band graded on
+/// each side of an edge, a smallest size wide, would cover all of them (a seat's parts, a
+/// riser, a book). The lecture hall: 196,573 leaves graded on every surface, 109,477 so;
+/// the office's hard probes 27 and 28 beyond 1 % (`docs/hierarchy.md`, "Narrow surfaces").
+pub const EDGE_NARROWEST: f64 = 2.0;
+
+/// True when element `n` lies on a surface at least [`EDGE_NARROWEST`] smallest sizes
+/// `patch_size` (m) wide: its root element's area over its longest edge.
+fn wide(tree: &Tree, n: u32, patch_size: f64) -> bool {
+    let Some(root) = tree.node(tree.root(n)).patch() else { return false };
+    root.area / longest_edge(&root.polygon) >= EDGE_NARROWEST * patch_size
 }

@@ -128,7 +128,7 @@ impl Tree {
     }
 
     /// The root element that element `id` is or descends from.
-    fn root(&self, mut id: u32) -> u32 {
+    pub(super) fn root(&self, mut id: u32) -> u32 {
         while let Kind::Element { level, .. } = self.nodes[id as usize].kind
             && level > 0
         {
