@@ -114,7 +114,7 @@ fn solve_stops_promptly_during(name: &str, args: &[&str], stage: &str, during: &
 #[test]
 fn sigterm_stops_a_hierarchical_linking_promptly() {
     solve_stops_promptly_during(
-        "stop-refinement",
+        "stop-linking",
         &["cases/office.toml"],
         "linking, round",
         "the hierarchical kernel's linking",
