@@ -82,6 +82,7 @@ pub fn refine_with_solves<E: From<Stopped>>(
         (kernel, leaves) = (next, next_leaves);
         history.push(record(hierarchy, &kernel, history.len(), refined, &mut before, start));
     }
+    hierarchy.refined();
     Ok(Refined { x, kernel, leaves, l0, history })
 }
 

@@ -1,5 +1,6 @@
-//! The push's weights kept between operator builds (`push.rs`, `SeenCache`): after a
-//! refinement pass the operator (`G`) built with the kept weights is the one built afresh.
+//! The push's weights and the leaves' cast visible fractions kept between operator builds
+//! (`push.rs`, `SeenCache`): after a refinement pass the operator (`G`) built with what was
+//! kept is the one built afresh (a fraction read back wrong by 1 % fails it).
 
 use super::{box_with_block, hierarchy, kernel, options, relative_difference, solver};
 use ugo::directions::DirectionSet;

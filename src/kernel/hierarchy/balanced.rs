@@ -29,6 +29,12 @@ impl Hierarchy {
         operator
     }
 
+    /// Refinement is over: frees what only a later pass's operator would reuse (the push's
+    /// cast visible fractions, `push.rs`); a later operator casts them again.
+    pub fn refined(&mut self) {
+        self.memo.seen.forget_fractions();
+    }
+
     /// Each leaf's row sum to balance to. An emitting leaf's own estimate is its column,
     /// what the others receive from it per unit of its area (`Σ_i A_i G_ij / A_j`): its
     /// links as a source are refined against its brightness, while as a receiver a dark

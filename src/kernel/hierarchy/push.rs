@@ -23,7 +23,12 @@
 //! `S_iab` depends only on the leaf and on the bundle's links, and a refinement pass after
 //! the first changes a few thousand of a million links: each build keeps every leaf's
 //! `S_iab` with a fingerprint of the bundle's links ([`SeenCache`]) and reuses it while the
-//! fingerprint holds (the lecture hall's later builds: 3.1–3.5 s each before).
+//! fingerprint holds (the lecture hall's later builds: 3.1–3.5 s each before). A refinement
+//! pass changes a few links in most bundles of the large ancestors, so most bundles' `S_iab`
+//! are summed again: each leaf also keeps its own visible fraction of every source its rays
+//! found partly visible ([`Fraction`]; all 16 segments cast, where a clear or hidden source
+//! took 4), which depends on the two elements alone and is read back instead of cast again
+//! (the office's second build: 29–32 s before, 17 s with them; `docs/performance.md`).
 
 use super::bundle::Bundles;
 use super::link::{Link, axis};
@@ -33,15 +38,91 @@ use super::tree::Tree;
 use crate::geometry::Patch;
 use crate::random::mix;
 use crate::transfer::far_field::point_factor;
-use crate::transfer::occlusion::{polygon_points, visible_fraction};
+use crate::transfer::occlusion::{POINTS, polygon_points, visible_fraction};
 use crate::visibility::{NO_BLOCKER, Visibility};
 use rayon::prelude::*;
 
 /// Each leaf's `S_iab` of the last build, by leaf node id: `(a, fingerprint of the bundle's
-/// links, S_iab)`.
+/// links, S_iab)`; and its own visible fractions of the sources it cast rays to, sorted by
+/// source.
 #[derive(Debug, Default)]
 pub struct SeenCache {
     rows: Vec<Vec<(u32, u64, f64)>>,
+    fractions: Vec<Vec<Fraction>>,
+}
+
+/// A leaf's own visible fraction of one element source, as its rays found it: the source's
+/// node id and the free segments of the [`SEGMENTS`] in one word (ordered by source).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+struct Fraction(u32);
+
+/// The segments between two elements' stratified points: a fraction is a whole number of them.
+const SEGMENTS: u32 = (POINTS * POINTS) as u32;
+
+/// Bits of a [`Fraction`] that hold the free segments (0 to [`SEGMENTS`]).
+const FREE_BITS: u32 = 5;
+
+impl Fraction {
+    /// The fraction `fraction` of `source`; none when the node id does not fit beside it
+    /// (then it is cast again when asked).
+    fn new(source: u32, fraction: f64) -> Option<Fraction> {
+        let free = (fraction * f64::from(SEGMENTS)) as u32;
+        (source < 1 << (32 - FREE_BITS)).then_some(Fraction(source << FREE_BITS | free))
+    }
+
+    fn source(self) -> u32 {
+        self.0 >> FREE_BITS
+    }
+
+    fn fraction(self) -> f64 {
+        f64::from(self.0 & ((1 << FREE_BITS) - 1)) / f64::from(SEGMENTS)
+    }
+}
+
+/// A leaf's fractions: those of the last build (sorted by source) and those cast now.
+struct Fractions<'a> {
+    before: &'a [Fraction],
+    now: Vec<Fraction>,
+}
+
+impl Fractions<'_> {
+    /// The leaf's visible fraction of `source`: from the last build, or `cast`, and kept
+    /// when it is partial (all [`SEGMENTS`] were cast; a clear or hidden one took four).
+    fn of(&mut self, source: u32, cast: impl FnOnce() -> f64) -> f64 {
+        if let Ok(k) = self.before.binary_search_by_key(&source, |f| f.source()) {
+            return self.before[k].fraction();
+        }
+        let fraction = cast();
+        if fraction > 0.0 && fraction < 1.0 {
+            self.now.extend(Fraction::new(source, fraction));
+        }
+        fraction
+    }
+}
+
+impl SeenCache {
+    /// Forgets the cast fractions (refinement is over: no later operator will reuse them).
+    pub fn forget_fractions(&mut self) {
+        self.fractions = Vec::new();
+    }
+
+    /// Keeps each leaf's fractions cast now (`now`, by `leaves`) beside those of the last
+    /// build, sorted by source; those of nodes that are no longer leaves are dropped.
+    fn keep_fractions(&mut self, nodes: usize, leaves: &[u32], now: Vec<Vec<Fraction>>) {
+        let mut fresh: Vec<Option<Vec<Fraction>>> = vec![None; nodes];
+        leaves.iter().zip(now).for_each(|(&leaf, now)| fresh[leaf as usize] = Some(now));
+        self.fractions.resize_with(nodes, Vec::new);
+        self.fractions.par_iter_mut().zip(fresh).for_each(|(own, fresh)| match fresh {
+            None => *own = Vec::new(),
+            Some(fresh) if !fresh.is_empty() => {
+                own.extend(fresh);
+                own.sort_unstable();
+                own.dedup_by_key(|f| f.source());
+                own.shrink_to_fit();
+            }
+            Some(_) => {}
+        });
+    }
 }
 
 /// For each leaf (in `leaves` order), the bundles its ancestors (itself included) receive,
@@ -61,27 +142,33 @@ pub fn push_rows(
         let row = previous.get(leaf as usize)?;
         row.iter().find(|e| e.0 == a && e.1 == fingerprints[b]).map(|e| e.2)
     };
-    let rows: Vec<Vec<(u32, u64, f64)>> = leaves
+    let before = &cache.fractions;
+    let (rows, fractions): (Vec<Vec<(u32, u64, f64)>>, Vec<Vec<Fraction>>) = leaves
         .par_iter()
         .map(|&leaf| {
             let mut row = Vec::new();
+            let before = before.get(leaf as usize).map_or(&[][..], Vec::as_slice);
+            let mut fractions = Fractions { before, now: Vec::new() };
             // Seconds on a large tree: a signal leaves the rest empty (`crate::interrupt`).
             if crate::interrupt::asked() {
-                return row;
+                return (row, Vec::new());
             }
-            let Some(patch) = tree.node(leaf).patch().filter(|p| p.exposed > 0.0) else { return row };
+            let Some(patch) = tree.node(leaf).patch().filter(|p| p.exposed > 0.0) else { return (row, Vec::new()) };
             let mut a = leaf;
             while a != NONE {
                 for b in bundles.of_node(a) {
-                    let s = cached(leaf, a, b)
-                        .unwrap_or_else(|| seen(tree, visibility, links, bundles.links_of(b), a, (leaf, patch)));
+                    let s = cached(leaf, a, b).unwrap_or_else(|| {
+                        let own = bundles.links_of(b);
+                        seen(tree, visibility, links, own, a, (leaf, patch), &mut fractions)
+                    });
                     row.push((b as u32, fingerprints[b], s));
                 }
                 a = tree.node(a).parent;
             }
-            row
+            (row, fractions.now)
         })
-        .collect();
+        .unzip();
+    cache.keep_fractions(tree.len(), leaves, fractions);
     cache.rows = vec![Vec::new(); tree.len()];
     for (row, &leaf) in rows.iter().zip(leaves) {
         cache.rows[leaf as usize] = row.iter().map(|&(b, f, s)| (bundles.receiver[b as usize], f, s)).collect();
@@ -117,8 +204,16 @@ pub fn push_rows(
 /// `S_iab` of `leaf` under `a`, whose bundle's links are `own`: from an ancestor, each
 /// element source's factor with the leaf's own visible fraction of it (the link's is the
 /// ancestor's, an average over lit and shadowed leaves), unless the leaf straddles a
-/// contact.
-fn seen(tree: &Tree, visibility: &Visibility, links: &[Link], own: &[u32], a: u32, leaf: (u32, &Patch)) -> f64 {
+/// contact; the leaf's fractions are read from or kept in `fractions`.
+fn seen(
+    tree: &Tree,
+    visibility: &Visibility,
+    links: &[Link],
+    own: &[u32],
+    a: u32,
+    leaf: (u32, &Patch),
+    fractions: &mut Fractions,
+) -> f64 {
     let (id, patch) = leaf;
     let under_cluster = tree.node(a).patch().is_none();
     // a leaf across a contact: its points inside the solid see nothing
@@ -134,10 +229,10 @@ fn seen(tree: &Tree, visibility: &Visibility, links: &[Link], own: &[u32], a: u3
                     let f: f64 = points.iter().map(|&x| point_factor(x, patch.normal, q)).sum();
                     let visible = match a == id || f == 0.0 || straddles || link.sight() == Sight::Clear {
                         true => f64::from(link.visible),
-                        false => {
+                        false => fractions.of(link.source, || {
                             visible_fraction(visibility, patch, &points, q, &polygon_points(&q.polygon), &mut blocker)
                                 .fraction
-                        }
+                        }),
                     };
                     visible * f / points.len() as f64
                 }
