@@ -47,9 +47,12 @@ use rayon::prelude::*;
 /// source.
 #[derive(Debug, Default)]
 pub struct SeenCache {
-    rows: Vec<Vec<(u32, u64, f64)>>,
+    rows: Vec<Vec<Seen>>,
     fractions: Vec<Vec<Fraction>>,
 }
+
+/// One leaf's `S_iab`: `(a or b, fingerprint of the bundle's links, S_iab)`.
+type Seen = (u32, u64, f64);
 
 /// A leaf's own visible fraction of one element source, as its rays found it: the source's
 /// node id and the free segments of the [`SEGMENTS`] in one word (ordered by source).
@@ -143,7 +146,7 @@ pub fn push_rows(
         row.iter().find(|e| e.0 == a && e.1 == fingerprints[b]).map(|e| e.2)
     };
     let before = &cache.fractions;
-    let (rows, fractions): (Vec<Vec<(u32, u64, f64)>>, Vec<Vec<Fraction>>) = leaves
+    let (rows, fractions): (Vec<Vec<Seen>>, Vec<Vec<Fraction>>) = leaves
         .par_iter()
         .map(|&leaf| {
             let mut row = Vec::new();
