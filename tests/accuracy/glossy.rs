@@ -12,6 +12,7 @@
 use super::{bench_scene, read, reference};
 
 #[test]
+#[ignore = "about a minute: make test-long"]
 fn probes_beside_a_glossy_floor_read_its_lobe_piece_by_piece() {
     let reference = reference("glossy-cornell");
     let mut scene = bench_scene("glossy-cornell", &reference);

@@ -87,12 +87,14 @@ fn coverage(case: &str) -> f64 {
 }
 
 #[test]
+#[ignore = "about a minute: make test-long"]
 fn the_error_bars_cover_nine_in_ten_points_of_the_open_box_floor_grid() {
     let share = coverage("open-box");
     assert!(share >= 0.9, "open-box: {:.0} % of the grid's points within their bars", 100.0 * share);
 }
 
 #[test]
+#[ignore = "about a minute: make test-long"]
 fn the_error_bars_cover_nine_in_ten_points_of_the_cornell_box_floor_grid() {
     let share = coverage("cornell-box");
     assert!(share >= 0.9, "cornell-box: {:.0} % of the grid's points within their bars", 100.0 * share);

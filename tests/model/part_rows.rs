@@ -15,6 +15,7 @@ fn close(a: f64, b: f64) -> bool {
 }
 
 #[test]
+#[ignore = "about a minute: make test-long"]
 fn the_parts_rows_are_the_one_process_operators_rows() {
     let mut scene = Scene::load(Path::new("cases/office.toml")).expect("the case loads");
     scene.discretization.patch_size = 0.4;
