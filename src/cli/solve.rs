@@ -156,7 +156,7 @@ fn print_hierarchy(assembly: f64, rays: usize, h: &HierarchyRecord) {
             )
         });
         say!(
-            "    pass {}            {:>12.3} s   ({} links refined, {} leaves split along the direct light; {} links, {} leaves, ε {:.2e} cd/m²; solve {:.3} s{balanced})",
+            "    pass {}            {:>12.3} s   ({} links refined, {} leaves split along the direct light; {} links, {} leaves, ε {:.2e} cd/m²; operator {:.3} s, solve {:.3} s{balanced})",
             p.pass,
             p.seconds,
             p.refined,
@@ -164,6 +164,7 @@ fn print_hierarchy(assembly: f64, rays: usize, h: &HierarchyRecord) {
             p.links,
             p.leaves,
             p.epsilon,
+            p.operator_seconds,
             p.solve_seconds
         );
     }

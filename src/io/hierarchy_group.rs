@@ -37,6 +37,7 @@ pub(super) fn write_hierarchy(g: &hdf5::Group, h: &HierarchyRecord) -> hdf5::Res
     dataset(&passes, "rays", &column(|p| p.rays as f64))?;
     dataset(&passes, "epsilon_cd_m2", &column(|p| p.epsilon))?;
     dataset(&passes, "seconds", &column(|p| p.seconds))?;
+    dataset(&passes, "operator_seconds", &column(|p| p.operator_seconds))?;
     dataset(&passes, "solve_seconds", &column(|p| p.solve_seconds))?;
     // balancing to the leaves' closures (NaN: the pass's operator was not balanced)
     let balance = |f: fn(&BalanceReport) -> f64| {

@@ -110,6 +110,7 @@ fn record(h: &Hierarchy, kernel: &Kernel, pass: usize, refined: usize, before: &
         balance: kernel.g.hierarchy().and_then(|g| g.balanced()),
         epsilon: h.epsilon(),
         seconds: work.seconds - before.seconds,
+        operator_seconds: work.operator_seconds - before.operator_seconds,
         solve_seconds: solved.elapsed().as_secs_f64(),
     };
     *before = work;

@@ -27,6 +27,11 @@ fn a_hierarchical_solve_writes_its_passes_and_renders() {
     let row_error = file.dataset("hierarchy/passes/balance_row_error").unwrap().read_1d::<f64>().unwrap();
     assert_eq!(row_error.len(), links.len());
     assert!(row_error.iter().any(|e| e.is_finite() && *e < 1e-3), "the passes were balanced: {row_error:?}");
+    // every pass's operator was built (and timed), the last one's too
+    let operator = file.dataset("hierarchy/passes/operator_seconds").unwrap().read_1d::<f64>().unwrap();
+    assert_eq!(operator.len(), links.len());
+    assert!(operator.iter().all(|&s| s > 0.0), "{operator:?}");
+    assert!(summary.contains("operator "), "{summary}");
 
     let o = ugo(&["render", out.to_str().unwrap(), "-o", dir.to_str().unwrap(), "--shading", "smooth"]);
     assert!(o.status.success(), "{}", stderr(&o));

@@ -15,6 +15,7 @@ impl Hierarchy {
     /// `G` on the current leaves, balanced to their closures unless `options.balance` is
     /// off (the rays of new leaves' closures count in the work).
     pub fn operator(&mut self) -> Operator {
+        let start = std::time::Instant::now();
         let mut operator =
             Operator::new(&self.tree, &self.visibility, &self.links, &self.directions, &mut self.memo.seen);
         if self.options.balance {
@@ -26,6 +27,7 @@ impl Hierarchy {
             operator.balance(&targets, &areas, start, SENDING * self.options.tolerance);
             self.memo.keep_factors(self.tree.len(), &leaves, &operator.receive, &operator.send);
         }
+        self.work.operator_seconds += start.elapsed().as_secs_f64();
         operator
     }
 

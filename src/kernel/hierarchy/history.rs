@@ -25,8 +25,11 @@ pub struct Pass {
     pub balance: Option<BalanceReport>,
     /// The error allowed per link in the pass, cd/m².
     pub epsilon: f64,
-    /// Wall time of the pass, s.
+    /// Wall time of the pass's linking and refining, s.
     pub seconds: f64,
+    /// Wall time of building the pass's operator (the push's weights, the pull, the
+    /// balancing), s.
+    pub operator_seconds: f64,
     /// Wall time of the solve that followed the pass, s (0 until it ran).
     pub solve_seconds: f64,
 }
@@ -42,4 +45,6 @@ pub struct Work {
     pub splits: usize,
     /// Wall time of linking and refining, s.
     pub seconds: f64,
+    /// Wall time of building operators (`Hierarchy::operator`), s.
+    pub operator_seconds: f64,
 }
