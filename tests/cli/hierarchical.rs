@@ -132,9 +132,12 @@ fn bench_reports_the_hierarchys_links_against_the_leaves() {
     for l in levels {
         let (n, links) = (l["leaves"].as_f64().unwrap(), l["links"].as_f64().unwrap());
         assert!(links > 0.0 && links < n * n, "{l}");
-        for key in ["rays", "nodes", "seconds", "links_per_n2", "operator_bytes"] {
+        for key in ["rays", "nodes", "seconds", "linking_seconds", "operator_seconds", "links_per_n2", "operator_bytes"]
+        {
             assert!(l[key].as_f64().is_some_and(|v| v > 0.0), "{key}: {l}");
         }
+        let stages = l["linking_seconds"].as_f64().unwrap() + l["operator_seconds"].as_f64().unwrap();
+        assert!(stages <= l["refinement_seconds"].as_f64().unwrap(), "the stages are of the build: {l}");
     }
     assert!(levels[0]["leaves"].as_u64() < levels[2]["leaves"].as_u64(), "sorted by N");
     let err = assert_clean_failure(&ugo(&[&args[..], &["--export", "/tmp/never"]].concat()));

@@ -64,7 +64,7 @@ fn print(c: &Curve, tolerance: f64) {
         c.time_exponent
     );
     say!(
-        "    {:>10} {:>6} {:>8} {:>10} {:>9} {:>9} {:>11} {:>7} {:>8} {:>8} {:>8} {:>9}",
+        "    {:>10} {:>6} {:>8} {:>10} {:>9} {:>9} {:>11} {:>7} {:>8} {:>8} {:>8} {:>8} {:>8} {:>9}",
         "patch size",
         "roots",
         "leaves N",
@@ -74,6 +74,8 @@ fn print(c: &Curve, tolerance: f64) {
         "rays",
         "passes",
         "refine s",
+        "link s",
+        "op s",
         "solve s",
         "op MiB",
         "+peak MiB"
@@ -82,7 +84,7 @@ fn print(c: &Curve, tolerance: f64) {
     for l in &c.levels {
         let peak = l.peak_bytes.map_or("-".into(), |b| format!("{:.0}", mib(b)));
         say!(
-            "    {:>9.4} {:>6} {:>8} {:>10} {:>9.2e} {:>9} {:>11} {:>7} {:>8.2} {:>8.3} {:>8.1} {:>9}",
+            "    {:>9.4} {:>6} {:>8} {:>10} {:>9.2e} {:>9} {:>11} {:>7} {:>8.2} {:>8.2} {:>8.2} {:>8.3} {:>8.1} {:>9}",
             l.patch_size,
             l.roots,
             l.leaves,
@@ -92,6 +94,8 @@ fn print(c: &Curve, tolerance: f64) {
             l.rays,
             l.passes,
             l.refinement_seconds,
+            l.linking_seconds,
+            l.operator_seconds,
             l.solve_seconds,
             mib(l.operator_bytes),
             peak

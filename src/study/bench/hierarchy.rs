@@ -1,7 +1,7 @@
 //! The hierarchical kernel's curve (issue 14, point 6; `docs/design.md` §3b): the case built
 //! and solved at a sequence of leaf sizes (`patch_size`) under the same roots and link
-//! tolerance, and per size the leaves N, links, nodes, occlusion rays, time, memory and
-//! links/N², with the growth exponents of links and of time against N fitted by least
+//! tolerance, and per size the leaves N, links, nodes, occlusion rays, time (and of it the
+//! linking's and the operators'), memory and links/N², with the growth exponents of links and of time against N fitted by least
 //! squares on the logarithms (the uniform kernel's pairs grow as N²).
 
 use super::error::BenchError;
@@ -34,6 +34,10 @@ pub struct Level {
     pub passes: usize,
     /// The model's build: roots, luminaires' light, every pass and its solve, s.
     pub refinement_seconds: f64,
+    /// Of the build, the passes' linking and refining, s.
+    pub linking_seconds: f64,
+    /// Of the build, the passes' operators (the push's weights, the pull, the balancing), s.
+    pub operator_seconds: f64,
     /// The final solve on the leaves (Neumann to 1e-8), s.
     pub solve_seconds: f64,
     /// `refinement_seconds + solve_seconds`.
@@ -89,6 +93,8 @@ fn counts(
         rays: model.stats.rays,
         passes: record.history.len(),
         refinement_seconds: build,
+        linking_seconds: record.history.iter().map(|p| p.seconds).sum(),
+        operator_seconds: record.history.iter().map(|p| p.operator_seconds).sum(),
         solve_seconds: solve,
         seconds: build + solve,
         operator_bytes: model.kernel.g.bytes(),
