@@ -27,8 +27,8 @@ pub struct Pass {
     pub epsilon: f64,
     /// Wall time of the pass's linking and refining, s.
     pub seconds: f64,
-    /// Wall time of building the pass's operator (the push's weights, the pull, the
-    /// balancing), s.
+    /// Wall time of building the pass's operator (the push's weights, the pull, the new
+    /// leaves' closure rays, the balancing), s.
     pub operator_seconds: f64,
     /// Wall time of the solve that followed the pass, s (0 until it ran).
     pub solve_seconds: f64,

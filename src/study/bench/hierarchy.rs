@@ -1,8 +1,9 @@
 //! The hierarchical kernel's curve (issue 14, point 6; `docs/design.md` §3b): the case built
 //! and solved at a sequence of leaf sizes (`patch_size`) under the same roots and link
 //! tolerance, and per size the leaves N, links, nodes, occlusion rays, time (and of it the
-//! linking's and the operators'), memory and links/N², with the growth exponents of links and of time against N fitted by least
-//! squares on the logarithms (the uniform kernel's pairs grow as N²).
+//! linking's and the operators'), memory and links/N², with the growth exponents of links
+//! and of time against N fitted by least squares on the logarithms (the uniform kernel's
+//! pairs grow as N²).
 
 use super::error::BenchError;
 use super::peak::Peak;
@@ -36,7 +37,8 @@ pub struct Level {
     pub refinement_seconds: f64,
     /// Of the build, the passes' linking and refining, s.
     pub linking_seconds: f64,
-    /// Of the build, the passes' operators (the push's weights, the pull, the balancing), s.
+    /// Of the build, the passes' operators (the push's weights, the pull, the new leaves'
+    /// closure rays, the balancing), s.
     pub operator_seconds: f64,
     /// The final solve on the leaves (Neumann to 1e-8), s.
     pub solve_seconds: f64,
