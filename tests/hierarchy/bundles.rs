@@ -24,6 +24,7 @@ use ugo::solve::{LinOp, Method, SolveParams, System, solve};
 use ugo::visibility::Visibility;
 
 #[test]
+#[ignore = "about a minute: make test-long"]
 fn leaves_take_the_lamps_light_by_their_own_view_of_it() {
     let scene = Scene::load(Path::new("cases/open-box.toml")).unwrap_or_else(|e| panic!("{e}"));
     let directions = DirectionSet::single();

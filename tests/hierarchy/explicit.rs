@@ -72,6 +72,7 @@ fn tolerance_zero_agrees_with_the_explicit_kernel_on_the_leaves() {
 }
 
 #[test]
+#[ignore = "about a minute: make test-long"]
 fn tolerance_zero_agrees_with_the_explicit_kernel_for_glossy_materials_at_64_cells() {
     // the glossy Cornell box's materials: a Phong room and a GGX block casting shadows,
     // 64 cells. Both split each pair's factor by cells from either end; the uniform kernel

@@ -22,6 +22,7 @@ use ugo::trace::{TraceOptions, World, trace_probes};
 const PATHS: usize = 65_536;
 
 #[test]
+#[ignore = "about a minute: make test-long"]
 fn the_open_boxs_probes_agree_with_backward_monte_carlo_from_coarse_roots() {
     let mut scene = Scene::load(Path::new("cases/open-box.toml")).unwrap_or_else(|e| panic!("{e}"));
     let KernelKind::Hierarchical(hierarchy) = scene.discretization.kernel else { panic!("not hierarchical") };

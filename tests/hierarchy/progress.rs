@@ -28,7 +28,7 @@ impl Progress for Stages {
     fn end(&self) {}
 }
 
-/// `case` built hierarchically (roots of 1 m, links to 0.1, leaves of 0.5 m), with what it told.
+/// `case` built hierarchically (roots of 1 m, links to 0.1, leaves of 1 m), with what it told.
 fn built(case: &str) -> (Model, Stages) {
     let mut scene = Scene::load(Path::new(case)).unwrap();
     scene.discretization.kernel = KernelKind::Hierarchical(Hierarchical {
@@ -36,7 +36,7 @@ fn built(case: &str) -> (Model, Stages) {
         link_tolerance: 1e-1,
         passes: ugo::scene::Hierarchical::DEFAULT_PASSES,
     });
-    scene.discretization.patch_size = 0.5;
+    scene.discretization.patch_size = 1.0;
     let stages = Stages::default();
     let model = Model::build(&scene, &stages).expect("fits in memory");
     (model, stages)
