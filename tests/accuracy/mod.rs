@@ -1,6 +1,6 @@
 //! The fast subset of the hard-probe benchmark (issue 34, point 1; docs/accuracy.md): the
-//! Cornell box and the open box at their case's settings, read at their committed hard
-//! probes (tests/data/accuracy/CASE.csv, `ugo trace` references at about 0.3 % standard
+//! Cornell box, the open box and the slot behind a desk at their case's settings, read at
+//! their committed hard probes (tests/data/accuracy/CASE.csv, `ugo trace` references at about 0.3 % standard
 //! error, made by tools/accuracy/bench.py), each class's largest error held to today's
 //! figure rounded up, so that a regression fails. These bounds are not the goal: the
 //! issue's target is every hard probe within 1 % of its reference (mean ≤ 0.3 %).
@@ -71,13 +71,15 @@ struct Solved {
     readings: Vec<ProbeReading>,
 }
 
-/// `case` solved once for every test of this file: "cornell-box" or "open-box".
+/// `case` solved once for every test of this file: "cornell-box", "open-box" or "slot-room".
 fn solved(case: &str) -> &'static Solved {
     static CORNELL_BOX: OnceLock<Solved> = OnceLock::new();
     static OPEN_BOX: OnceLock<Solved> = OnceLock::new();
+    static SLOT_ROOM: OnceLock<Solved> = OnceLock::new();
     let once = match case {
         "cornell-box" => &CORNELL_BOX,
         "open-box" => &OPEN_BOX,
+        "slot-room" => &SLOT_ROOM,
         _ => panic!("no benchmark case {case}"),
     };
     once.get_or_init(|| {
@@ -221,4 +223,13 @@ fn the_correction_near_geometry_brings_contacts_closer_to_monte_carlo() {
     assert_eq!(plain.len(), 40);
     assert!(mean(&corrected) < 0.5 * mean(&plain), "the correction does not halve the mean error");
     assert!(largest(&corrected) < 0.5 * largest(&plain), "the correction does not halve the largest error");
+}
+
+#[test]
+fn the_slot_behind_a_desk_is_no_worse_than_today() {
+    // The office's worst probes (+6 … +8 %: the wall behind its desks' modesty panels) in a
+    // 4 × 3 m room at the office's settings (docs/accuracy.md, "A slot behind a desk"):
+    // the slot's probes read 5–14 % bright, neither tighter links, finer leaves nor the
+    // uniform kernel cure it; the controls within 0.6 %.
+    check("slot-room", &[("slot", 13.8), ("open", 0.8)]);
 }

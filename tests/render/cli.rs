@@ -83,7 +83,7 @@ fn render_fails_clearly_on_a_missing_or_foreign_file() {
 }
 
 /// Every bundled case, coarsened (patch size, direction cells) so that the test is quick.
-const CASES: [(&str, &str, &str); 11] = [
+const CASES: [(&str, &str, &str); 12] = [
     ("cornell-box", "0.1", "1"),
     ("daylit-office", "0.5", "1"),
     ("daylit-office-twin", "0.5", "1"),
@@ -95,6 +95,7 @@ const CASES: [(&str, &str, &str); 11] = [
     ("opal-diffuser", "0.25", "1"),
     ("open-box", "0.25", "1"),
     ("parallel-plates", "0.25", "1"),
+    ("slot-room", "0.5", "1"),
 ];
 
 /// The furnished rooms (`cases/generate/rooms.py`, the building floor of
