@@ -185,6 +185,36 @@ impl ConvexPolygon {
         }
     }
 
+    /// Four strips with one boundary on the plane through `point` with unit `normal`, when
+    /// the polygon is a quad with two opposite edges parallel to that plane and the plane
+    /// crosses it at least `least` (m) from both: the part on each side halved, so that the
+    /// pieces beside the line are the finer. With where it crosses, as a share `t` of the
+    /// way between those edges. `None` for a triangle, a plane askew to the edges, or one
+    /// beside the quad or within `least` of its edges. (A two-by-two grid, the parts halved
+    /// along the line instead, read the slot room's probes behind the desk 6 % bright
+    /// against 1.5 %: `docs/hierarchy.md`, "Cuts".)
+    pub fn split_along(&self, point: DVec3, normal: DVec3, least: f64) -> Option<(f64, [ConvexPolygon; 4])> {
+        let v = self.vertices();
+        if v.len() != 4 {
+            return None;
+        }
+        let d: Vec<f64> = v.iter().map(|x| (*x - point).dot(normal)).collect();
+        let slack = 1e-9 * self.diameter();
+        // edges (a, b) and (e, c) parallel to the plane, the strips running from the first to the second
+        let across = |a: usize, b: usize, c: usize, e: usize| {
+            let parallel = (d[a] - d[b]).abs() <= slack && (d[e] - d[c]).abs() <= slack;
+            let t = d[a] / (d[a] - d[e]);
+            let width = v[a].distance(v[e]).min(v[b].distance(v[c]));
+            let strip = |s: f64, u: f64| {
+                Self::quad(v[a].lerp(v[e], s), v[b].lerp(v[c], s), v[b].lerp(v[c], u), v[a].lerp(v[e], u))
+            };
+            (parallel && t * width >= least && (1.0 - t) * width >= least).then(|| {
+                (t, [strip(0.0, 0.5 * t), strip(0.5 * t, t), strip(t, 0.5 * (1.0 + t)), strip(0.5 * (1.0 + t), 1.0)])
+            })
+        };
+        across(0, 1, 2, 3).or_else(|| across(1, 2, 3, 0))
+    }
+
     /// Hands `visit` its pieces as seen from `x` within the angle `spread` (a piece's diameter
     /// over its distance from `x`): quarters ([`ConvexPolygon::split`]) while a piece's
     /// diameter exceeds `spread` times its distance, at most `depth` levels deep.

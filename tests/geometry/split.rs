@@ -53,3 +53,35 @@ fn a_near_square_quad_and_a_triangle_are_cut_by_midpoints() {
     let t = ConvexPolygon::triangle(DVec3::ZERO, DVec3::new(1.0, 0.0, 0.0), DVec3::new(0.5, 0.01, 0.0));
     assert_eq!(t.split_even(), t.split());
 }
+
+#[test]
+fn a_quad_is_cut_along_a_line_parallel_to_its_edges_and_nowhere_else() {
+    // a 1 × 0.9 m wall piece in the plane z = 0, the line y = 0.715 across it
+    let wall = ConvexPolygon::quad(
+        DVec3::ZERO,
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(1.0, 0.9, 0.0),
+        DVec3::new(0.0, 0.9, 0.0),
+    );
+    let (t, pieces) = wall.split_along(DVec3::new(0.3, 0.715, 0.0), DVec3::Y, 1e-3).expect("the line crosses it");
+    assert!((t - 0.715 / 0.9).abs() < 1e-12, "{t}");
+    tiles(&wall, &pieces);
+    let tops: Vec<f64> = pieces.iter().map(|p| p.vertices().iter().map(|v| v.y).fold(f64::MIN, f64::max)).collect();
+    let bottoms: Vec<f64> = pieces.iter().map(|p| p.vertices().iter().map(|v| v.y).fold(f64::MAX, f64::min)).collect();
+    assert!(tops.iter().chain(&bottoms).any(|y| (y - 0.715).abs() < 1e-12), "a boundary on the line: {tops:?}");
+    assert!(
+        pieces.iter().all(|p| {
+            let (lo, hi) = p.vertices().iter().fold((f64::MAX, f64::MIN), |(lo, hi), v| (lo.min(v.y), hi.max(v.y)));
+            hi <= 0.715 + 1e-12 || lo >= 0.715 - 1e-12
+        }),
+        "a piece across the line"
+    );
+    // the same along the other edges: x = 0.25
+    assert!(wall.split_along(DVec3::new(0.25, 0.0, 0.0), DVec3::X, 1e-3).is_some());
+    // askew, beside it, within 1 mm of its edge, or a triangle: not cut
+    assert!(wall.split_along(DVec3::new(0.5, 0.5, 0.0), DVec3::new(1.0, 1.0, 0.0).normalize(), 1e-3).is_none());
+    assert!(wall.split_along(DVec3::new(0.0, 1.2, 0.0), DVec3::Y, 1e-3).is_none());
+    assert!(wall.split_along(DVec3::new(0.0, 0.8995, 0.0), DVec3::Y, 1e-3).is_none());
+    let triangle = ConvexPolygon::triangle(DVec3::ZERO, DVec3::X, DVec3::Y);
+    assert!(triangle.split_along(DVec3::new(0.0, 0.5, 0.0), DVec3::Y, 1e-3).is_none());
+}

@@ -66,3 +66,37 @@ fn a_slot_is_cut_near_its_mouth_and_not_in_its_depth() {
     assert!(mouth < 0.3 * PATCH_SIZE, "by the edge: {mouth}");
     assert!(depth > 0.45 * PATCH_SIZE, "under the middle, as far from any slot: {depth}");
 }
+
+#[test]
+fn no_leaf_of_the_wall_straddles_the_lines_of_a_board_before_it() {
+    // a 1 m board, 2.5 cm thick, 2 cm before the wall z = 2 of the 2 m room, its faces from
+    // y = 0.715 to 0.74 (a desk top's back edge): every leaf of the wall behind it lies
+    // wholly above or below each of those lines (`cuts.rs`). Straddling one, a leaf sends
+    // the mean of the lit wall above into the slot below (docs/accuracy.md, "A slot behind
+    // a desk"); the roots' middles fall at 0.5 and 1 m, so without the cuts the leaves
+    // across 0.715 and 0.74 are the splits' own.
+    let h = room_with("board", DVec3::new(0.5, 0.715, 1.955), DVec3::new(1.5, 0.74, 1.98));
+    let leaves = h.leaf_mesh();
+    let wall: Vec<&Patch> = leaves
+        .patches
+        .iter()
+        .filter(|p| p.normal.z < -0.9 && (p.centroid.z - 2.0).abs() < 1e-9 && (0.5..1.5).contains(&p.centroid.x))
+        .collect();
+    let across = |line: f64| {
+        wall.iter()
+            .filter(|p| {
+                let (lo, hi) =
+                    p.polygon.vertices().iter().fold((f64::MAX, f64::MIN), |(l, h), v| (l.min(v.y), h.max(v.y)));
+                lo < line - 1e-9 && hi > line + 1e-9
+            })
+            .count()
+    };
+    eprintln!(
+        "{} leaves of the wall behind the board; across y = 0.715: {}, across 0.74: {}",
+        wall.len(),
+        across(0.715),
+        across(0.74)
+    );
+    assert!(!wall.is_empty());
+    assert_eq!((across(0.715), across(0.74)), (0, 0));
+}

@@ -62,7 +62,7 @@ fn to_split(tree: &Tree, visibility: &Visibility, patch_size: f64, p: u32, q: u3
 /// The pairs of distinct elements whose bounding boxes are nearer than `patch_size` (m)
 /// and whose normals are apart by more than the angle of [`EDGE_FACING`], found by walking
 /// the cluster tree in pairs of nodes.
-fn near_pairs(tree: &Tree, patch_size: f64) -> Vec<(u32, u32)> {
+pub(super) fn near_pairs(tree: &Tree, patch_size: f64) -> Vec<(u32, u32)> {
     let (mut out, top) = (Vec::new(), tree.top());
     let mut stack = if top == NONE { Vec::new() } else { vec![(top, top)] };
     while let Some((a, b)) = stack.pop() {

@@ -7,6 +7,7 @@
 //! `leaf_mesh`, `emission` and `prolong` on the leaves (`leaves.rs`). The kernel `K = B·G`
 //! over that `G`, and the passes iterated with solves, are `crate::kernel`'s.
 
+use super::cuts;
 use super::grading::grade;
 use super::history::Work;
 use super::link::Link;
@@ -93,7 +94,8 @@ impl Hierarchy {
         let albedo: Vec<f64> = blocks.iter().map(|b| largest_albedo(b, &directions)).collect();
         let backs = Backs::of(roots);
         let exposed: Vec<f64> = roots.patches.iter().map(|p| p.exposed).collect();
-        let tree = Tree::new(roots, &albedo, &exposed);
+        let mut tree = Tree::new(roots, &albedo, &exposed);
+        tree.set_cuts(cuts::of(&tree, roots.len(), options.patch_size));
         let share = cell_shares(&directions);
         let (guess, ambient) = first_guess(&tree, l0, &share);
         let oracle = Oracle { epsilon: options.tolerance * ambient, patch_size: options.patch_size };

@@ -19,6 +19,7 @@ mod brightness;
 mod bundle;
 mod census;
 mod cluster;
+mod cuts;
 mod edges;
 mod expand;
 mod factors;

@@ -1,10 +1,12 @@
 //! The element trees and the cluster tree above them, in one arena (`docs/design.md` §3b,
 //! "Element trees"): every input element (a patch of the coarse mesh) is a root; an element
-//! splits lazily into the 4 pieces of `ConvexPolygon::split` (quads by their edges,
-//! triangles by their edge midpoints), the two sides of a two-sided element together.
+//! splits lazily into 4 pieces, the two sides of a two-sided element together: strips along
+//! a cut of its root that crosses it (`cuts.rs`, §3b "Cuts"), else those of
+//! `ConvexPolygon::split_even` (quads by their edges, triangles by their edge midpoints).
 //! Node ids never change: the arena only grows.
 
 use super::cluster;
+use super::cuts::Cut;
 use super::node::{Kind, NONE, Node, longest_edge};
 use crate::geometry::{ConvexPolygon, Mesh, Patch};
 
@@ -18,6 +20,9 @@ pub struct Tree {
     /// Child lists: a node's children are a contiguous run.
     children: Vec<u32>,
     top: u32,
+    /// The lines each root's elements split along where one crosses them (`cuts.rs`), by
+    /// root id; empty until [`Tree::set_cuts`].
+    cuts: Vec<Vec<Cut>>,
 }
 
 impl Tree {
@@ -34,11 +39,16 @@ impl Tree {
                 Node::element(Patch { exposed, ..*p }, p.twin, 0, albedo, e)
             })
             .collect();
-        let mut tree = Tree { nodes, children: Vec::new(), top: NONE };
+        let mut tree = Tree { nodes, children: Vec::new(), top: NONE, cuts: Vec::new() };
         let mut ids: Vec<u32> = (0..roots.len() as u32).collect();
         let centres: Vec<glam::DVec3> = tree.nodes.iter().map(Node::centre).collect();
         tree.top = cluster::build(&centres, &mut ids, &mut |members| tree.add_cluster(members));
         tree
+    }
+
+    /// Sets the lines along which each root's elements split (`cuts.rs`), by root id.
+    pub(super) fn set_cuts(&mut self, cuts: Vec<Vec<Cut>>) {
+        self.cuts = cuts;
     }
 
     /// The node at the top: the root cluster (or the only element, or [`NONE`] when empty).
@@ -102,8 +112,9 @@ impl Tree {
         }
     }
 
-    /// Gives element `id` (and its twin) their four children (`ConvexPolygon::split_even`:
-    /// quarters, or strips across a long quad), unless they have them;
+    /// Gives element `id` (and its twin) their four children, unless they have them: strips
+    /// along the most central of its root's cuts that crosses it (`cuts.rs`), else
+    /// `ConvexPolygon::split_even` (quarters, or strips across a long quad);
     /// `exposed` measures a child's exposed area (`transfer::exposure`). A pair of twins is
     /// cut from the side under the lower root, whichever of them is asked, so that a
     /// child's address names the same piece in every process (`address.rs`).
@@ -115,7 +126,7 @@ impl Tree {
         }
         let (id, twin) = if twin != NONE && self.root(twin) < self.root(id) { (twin, id) } else { (id, twin) };
         let Some(patch) = self.nodes[id as usize].patch().copied() else { return };
-        let pieces = patch.polygon.split_even();
+        let pieces = self.cut_along(self.root(id), &patch.polygon).unwrap_or_else(|| patch.polygon.split_even());
         let front = self.add_children(id, pieces, exposed);
         if twin == NONE {
             return;
@@ -125,6 +136,17 @@ impl Tree {
             self.set_twin(f, b);
             self.set_twin(b, f);
         }
+    }
+
+    /// `polygon` (an element under `root`) in strips along the cut of `root` that crosses it
+    /// nearest its middle, beside the cut's edge, if one does.
+    fn cut_along(&self, root: u32, polygon: &ConvexPolygon) -> Option<[ConvexPolygon; 4]> {
+        let cuts = self.cuts.get(root as usize)?;
+        let along = cuts
+            .iter()
+            .filter(|c| c.beside(polygon))
+            .filter_map(|c| polygon.split_along(c.point, c.normal, super::cuts::LEAST));
+        along.min_by(|a, b| (a.0 - 0.5).abs().total_cmp(&(b.0 - 0.5).abs())).map(|(_, pieces)| pieces)
     }
 
     /// The root element that element `id` is or descends from.
