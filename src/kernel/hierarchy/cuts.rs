@@ -12,39 +12,9 @@
 use super::grading::near_pairs;
 use super::slots::SLOT_FACING;
 use super::tree::Tree;
-use crate::geometry::{ConvexPolygon, Patch};
+use crate::geometry::{CUT_LEAST, Cut, Patch};
 use glam::DVec3;
 use std::collections::HashMap;
-
-/// A cut nearer than this to an element's edge, m, leaves the element to its usual split:
-/// its edge lies on the line already.
-pub const LEAST: f64 = 1e-3;
-
-/// An edge carried onto an element's plane: the element splits along the edge's line
-/// where the edge lies before it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Cut {
-    /// The edge's ends, m.
-    pub point: DVec3,
-    pub end: DVec3,
-    /// The unit normal of the plane through the edge across the element's plane.
-    pub normal: DVec3,
-}
-
-impl Cut {
-    /// True when the edge lies beside `polygon` along its line: the polygon's vertices,
-    /// projected on the line, reach within [`LEAST`] of the edge. An edge's line is cut
-    /// only where the edge is (a desk's foot cuts the floor beside it, not across the room).
-    pub fn beside(&self, polygon: &ConvexPolygon) -> bool {
-        let length = self.point.distance(self.end);
-        let along = (self.end - self.point) / length;
-        let (lo, hi) = polygon.vertices().iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-            let s = (*v - self.point).dot(along);
-            (lo.min(s), hi.max(s))
-        });
-        hi > -LEAST && lo < length + LEAST
-    }
-}
 
 /// The cuts of each root of `tree` (which holds its `roots` roots and the clusters above
 /// them, not split yet), by root id: the lines of the outline edges of every element that
@@ -70,17 +40,17 @@ pub fn of(tree: &Tree, roots: usize, patch_size: f64) -> Vec<Vec<Cut>> {
     cuts
 }
 
-/// True when no vertex of `q` lies behind `p` by more than [`LEAST`]: in front of it, or
+/// True when no vertex of `q` lies behind `p` by more than [`CUT_LEAST`]: in front of it, or
 /// against it.
 fn ahead(p: &Patch, q: &Patch) -> bool {
-    q.polygon.vertices().iter().all(|v| (*v - p.centroid).dot(p.normal) > -LEAST)
+    q.polygon.vertices().iter().all(|v| (*v - p.centroid).dot(p.normal) > -CUT_LEAST)
 }
 
 /// The plane through `edge` standing across `patch`, if its line crosses the patch.
 fn across(patch: &Patch, edge: [DVec3; 2]) -> Option<Cut> {
     let normal = (edge[1] - edge[0]).cross(patch.normal).try_normalize()?;
     let cut = Cut { point: edge[0], end: edge[1], normal };
-    (cut.beside(&patch.polygon) && patch.polygon.split_along(cut.point, cut.normal, LEAST).is_some()).then_some(cut)
+    (cut.beside(&patch.polygon) && patch.polygon.split_along(cut.point, cut.normal, CUT_LEAST).is_some()).then_some(cut)
 }
 
 /// True when two cuts are one edge.

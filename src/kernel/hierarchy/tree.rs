@@ -6,9 +6,8 @@
 //! Node ids never change: the arena only grows.
 
 use super::cluster;
-use super::cuts::Cut;
 use super::node::{Kind, NONE, Node, longest_edge};
-use crate::geometry::{ConvexPolygon, Mesh, Patch};
+use crate::geometry::{ConvexPolygon, Cut, Mesh, Patch};
 
 /// How a new element's exposed area is measured, m².
 pub type Exposure<'a> = dyn Fn(&Patch) -> f64 + Sync + 'a;
@@ -126,7 +125,8 @@ impl Tree {
         }
         let (id, twin) = if twin != NONE && self.root(twin) < self.root(id) { (twin, id) } else { (id, twin) };
         let Some(patch) = self.nodes[id as usize].patch().copied() else { return };
-        let pieces = self.cut_along(self.root(id), &patch.polygon).unwrap_or_else(|| patch.polygon.split_even());
+        let cuts = self.cuts.get(self.root(id) as usize).map_or(&[][..], Vec::as_slice);
+        let pieces = Cut::split(&patch.polygon, cuts).unwrap_or_else(|| patch.polygon.split_even());
         let front = self.add_children(id, pieces, exposed);
         if twin == NONE {
             return;
@@ -136,17 +136,6 @@ impl Tree {
             self.set_twin(f, b);
             self.set_twin(b, f);
         }
-    }
-
-    /// `polygon` (an element under `root`) in strips along the cut of `root` that crosses it
-    /// nearest its middle, beside the cut's edge, if one does.
-    fn cut_along(&self, root: u32, polygon: &ConvexPolygon) -> Option<[ConvexPolygon; 4]> {
-        let cuts = self.cuts.get(root as usize)?;
-        let along = cuts
-            .iter()
-            .filter(|c| c.beside(polygon))
-            .filter_map(|c| polygon.split_along(c.point, c.normal, super::cuts::LEAST));
-        along.min_by(|a, b| (a.0 - 0.5).abs().total_cmp(&(b.0 - 0.5).abs())).map(|(_, pieces)| pieces)
     }
 
     /// The root element that element `id` is or descends from.
