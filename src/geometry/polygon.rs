@@ -198,7 +198,7 @@ impl ConvexPolygon {
         if v.len() != 4 {
             return None;
         }
-        let d: Vec<f64> = v.iter().map(|x| (*x - point).dot(normal)).collect();
+        let d: [f64; 4] = std::array::from_fn(|i| (v[i] - point).dot(normal));
         let slack = 1e-9 * self.diameter();
         // edges (a, b) and (e, c) parallel to the plane, the strips running from the first to the second
         let across = |a: usize, b: usize, c: usize, e: usize| {

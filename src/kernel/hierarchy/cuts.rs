@@ -14,7 +14,7 @@ use super::slots::SLOT_FACING;
 use super::tree::Tree;
 use crate::geometry::{CUT_LEAST, Cut, Patch};
 use glam::DVec3;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// The cuts of each root of `tree` (which holds its `roots` roots and the clusters above
 /// them, not split yet), by root id: the lines of the outline edges of every element that
@@ -28,8 +28,7 @@ pub fn of(tree: &Tree, roots: usize, patch_size: f64) -> Vec<Vec<Cut>> {
             continue;
         }
         for (to, on, from) in [(p, a, b), (q, b, a)] {
-            for cut in edges(from).filter(|e| !inner.contains_key(&key(from.surface, *e))).filter_map(|e| across(on, e))
-            {
+            for cut in edges(from).filter(|e| !inner.contains(&key(from.surface, *e))).filter_map(|e| across(on, e)) {
                 let known = &mut cuts[to as usize];
                 if !known.iter().any(|k| same(k, &cut)) {
                     known.push(cut);
@@ -77,7 +76,7 @@ fn key(surface: u32, edge: [DVec3; 2]) -> EdgeKey {
 
 /// The edges that two roots of one surface share in one plane: seams of its mesh, not
 /// its outline.
-fn inner_edges(tree: &Tree, roots: usize) -> HashMap<EdgeKey, ()> {
+fn inner_edges(tree: &Tree, roots: usize) -> HashSet<EdgeKey> {
     let mut seen: HashMap<(EdgeKey, [i64; 3]), u32> = HashMap::new();
     for id in 0..roots as u32 {
         let Some(p) = tree.node(id).patch() else { continue };
@@ -86,5 +85,5 @@ fn inner_edges(tree: &Tree, roots: usize) -> HashMap<EdgeKey, ()> {
             *seen.entry((key(p.surface, e), facing)).or_default() += 1;
         }
     }
-    seen.into_iter().filter(|(_, n)| *n > 1).map(|((k, _), _)| (k, ())).collect()
+    seen.into_iter().filter(|(_, n)| *n > 1).map(|((k, _), _)| k).collect()
 }
