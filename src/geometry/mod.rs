@@ -1,6 +1,7 @@
 //! Geometry: surfaces as described, convex polygons, polygons with holes, rigid motions and
 //! tessellation of shapes, the patch mesh (`docs/design.md` §2) and its section by a plane.
 
+mod angle;
 mod cut;
 mod facing;
 mod frame;
@@ -13,6 +14,7 @@ mod surface;
 mod tessellate;
 mod warp;
 
+pub use angle::angle;
 pub use cut::{CUT_LEAST, Cut};
 pub use facing::facing;
 pub use frame::Frame;

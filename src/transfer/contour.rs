@@ -7,7 +7,7 @@
 //! handled exactly. This is the near-field-exact building block of `docs/design.md` §3,
 //! equation (3.9).
 
-use crate::geometry::{ConvexPolygon, MAX_CLIPPED, Patch};
+use crate::geometry::{ConvexPolygon, MAX_CLIPPED, Patch, angle};
 use glam::DVec3;
 use std::f64::consts::PI;
 
@@ -47,7 +47,7 @@ pub fn projected_solid_angle(x: DVec3, n: DVec3, vertices: &[DVec3]) -> f64 {
         let c = previous.cross(current);
         let s = c.length();
         if s > 1e-300 {
-            let gamma = s.atan2(previous.dot(current));
+            let gamma = angle(s, previous.dot(current));
             sum += gamma * n.dot(c) / s;
         }
         previous = current;
