@@ -6,7 +6,9 @@ in place of its own probes (cameras, grids and light scenes dropped, file paths 
 absolute), trace the reference into tests/data/accuracy/CASE.csv with the commands in its
 header: a pilot (`ugo trace --probe-samples 16384 --seed S`) says how many paths each probe
 needs for TARGET standard error, and the probes, grouped by that count (powers of two), are
-traced again with seed S + 1 (the pilot only chooses the counts); solve it with each setting
+traced again with seed S + 1 (the pilot only chooses the counts; a large group in chunks,
+the k-th with seed S + 1 + k; a trace that ran to the end is kept, and `--step reference`
+run again resumes after it); solve it with each setting
 (timed, wall clock and peak memory) and write every probe's relative error to
 out/accuracy/CASE-SETTING.csv (`--step compare` again from the solves' files); trace the
 probes with `ugo trace` in about the case's own solve time, compared like a setting
@@ -48,6 +50,10 @@ DATA = ROOT / "tests" / "data" / "accuracy"
 TARGET = 0.003
 PILOT = 1 << 14
 MOST = 1 << 22
+# The most probe paths one trace of the references takes (paths × probes; about an hour
+# of the lecture hall's on two cores): a larger group is traced in chunks, each kept when
+# done (`traced`), the k-th with seed S + 1 + k.
+CHUNK = 1 << 23
 
 # The floor of a relative error: a reading is judged (and its reference traced) relative to
 # the larger of its own illuminance and this share of the mean illuminance of the room's
@@ -97,6 +103,21 @@ def run(command, log):
         sys.exit(f"bench: {shlex.join(map(str, command))} failed (exit {done.returncode}), see {log}")
     peak = int(done.stderr.strip().splitlines()[-1]) / 1024
     return done.stdout, seconds, peak
+
+
+def traced(command, log):
+    """`run(command, log)` for a trace of the references, kept: its stdout and seconds. A
+    trace whose log and record (the log's name with `.run`: the command and its seconds)
+    say it ran to the end with the same arguments (any binary) is read back, not traced again, so a
+    reference cut off (hours of tracing) resumes where it stopped."""
+    record, arguments = log.with_suffix(".run"), f"# ugo {shown(command[1:])}"
+    if log.exists() and record.exists():
+        lines = record.read_text().splitlines()
+        if lines[0] == arguments:
+            return log.read_text(), float(lines[1].split("seconds ")[1].split()[0])
+    out, seconds, peak = run(command, log)
+    record.write_text(f"{arguments}\n# seconds {seconds:.1f} peak_MB {peak:.0f}\n")
+    return out, seconds
 
 
 def shown(command):
@@ -173,7 +194,7 @@ def pilot(name, bench, seed):
     """The pilot: (its command, seconds, the floor, {paths: probes}); prints what the
     references will cost."""
     command = [UGO, "trace", bench, "--probe-samples", PILOT, "--seed", seed]
-    out, seconds, _ = run(command, OUT / f"{name}-pilot.log")
+    out, seconds = traced(command, OUT / f"{name}-pilot.log")
     piloted = reading_lines(out)
     floor = floor_of([(probe, e) for probe, _, _, e, _ in piloted])
     groups = {}
@@ -195,13 +216,17 @@ def reference(name, bench, placed, seed):
     readings = []
     case = ROOT / "cases" / f"{name}.toml"
     for paths, names in sorted(groups.items()):
-        group = OUT / f"{name}-bench-{paths}.toml"
-        group.write_text(bench_case(case, "".join(tables[n]["text"] for n in names)))
-        command = [UGO, "trace", group, "--probe-samples", paths, "--seed", seed + 1]
-        out, seconds, _ = run(command, OUT / f"{name}-trace-{paths}.log")
-        commands.append(f"{len(names)} probes: {shown(command)} ({seconds:.0f} s)")
-        readings += reading_lines(out)
-        print(f"  {len(names)} probes at {paths} paths: {seconds:.0f} s")
+        size = max(1, CHUNK // paths)
+        chunks = [names[k:k + size] for k in range(0, len(names), size)]
+        for k, chunk in enumerate(chunks):
+            part = f"{paths}-{k}" if len(chunks) > 1 else f"{paths}"
+            group = OUT / f"{name}-bench-{part}.toml"
+            group.write_text(bench_case(case, "".join(tables[n]["text"] for n in chunk)))
+            command = [UGO, "trace", group, "--probe-samples", paths, "--seed", seed + 1 + k]
+            out, seconds = traced(command, OUT / f"{name}-trace-{part}.log")
+            commands.append(f"{len(chunk)} probes: {shown(command)} ({seconds:.0f} s)")
+            readings += reading_lines(out)
+            print(f"  {len(chunk)} probes at {paths} paths: {seconds:.0f} s", flush=True)
     write_reference(name, placed, commands, readings, tables)
 
 
