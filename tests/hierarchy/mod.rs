@@ -20,6 +20,7 @@ mod plates;
 mod progress;
 mod push;
 mod rebalance;
+mod rooms_apart;
 mod slots;
 mod spectrum;
 mod transpose;

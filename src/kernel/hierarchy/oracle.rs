@@ -66,7 +66,7 @@ pub fn sample_points(patch: &Patch) -> impl Iterator<Item = glam::DVec3> + '_ {
 
 /// How far the corner samples are pulled towards the centroid (off shared edges, where the
 /// point factor of a neighbour drops to 0).
-const CORNER_INSET: f64 = 0.01;
+pub(super) const CORNER_INSET: f64 = 0.01;
 
 /// `A_q/(π d²)`, at most 1, for a link with a cluster at one end; infinite when the
 /// bounding boxes touch.

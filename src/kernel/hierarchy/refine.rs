@@ -12,7 +12,7 @@ use super::link::{Link, cluster_factor, element_factor};
 use super::node::Node;
 use super::oracle::{Oracle, cluster_bound, variation};
 use super::partition::Partition;
-use super::sight::{Sight, sight, stand_in_sight, stand_ins};
+use super::sight::{Sight, corners_see, sight, stand_in_sight, stand_ins};
 use super::tree::{Exposure, Tree};
 use crate::directions::DirectionSet;
 use crate::geometry::{Patch, facing};
@@ -185,11 +185,13 @@ fn evaluate(
 
 /// A pair with a cluster at one end (or both). The bound ignores visibility; the factor of
 /// an accepted link is multiplied by the visible fraction of the stand-ins' segments. A
-/// pair whose stand-ins see nothing of each other is refined, not dropped: four points do
-/// not stand for a cluster's view (a chair base's rim sees the ceiling past its seat, the
-/// centroid of its top, the one stand-in that faces up, does not), so its elements decide,
-/// which drop an occluded pair only once the oracle accepts it (`docs/hierarchy.md`,
-/// "Occluded cluster links").
+/// pair whose stand-ins see nothing of each other is tested again from the corners of the
+/// elements they stand on: four points do not stand for a cluster's view (a chair base's
+/// rim sees the ceiling past its seat, the centroid of its top, the one stand-in that faces
+/// up, does not). When a corner sees the other end the pair is refined, so its elements
+/// decide, which drop an occluded pair only once the oracle accepts it; when none does it
+/// is dropped: refined, two rooms behind a wall would be refined down to their elements
+/// (`docs/hierarchy.md`, "Occluded cluster links").
 fn clusters(
     tree: &Tree,
     brightness: f64,
@@ -212,8 +214,9 @@ fn clusters(
     let (from, to) = (stand_ins(tree, p, b.centre()), stand_ins(tree, q, a.centre()));
     let (seen, visible, rays) = stand_in_sight(settings.visibility, &from, &to, blocker);
     if seen == Sight::Occluded {
-        let split = settings.oracle.choose(tree, p, q);
-        return (split.map_or(Outcome::Drop, Outcome::Split), rays);
+        let (open, more) = corners_see(settings.visibility, tree, p, q, blocker);
+        let split = open.then(|| settings.oracle.choose(tree, p, q)).flatten();
+        return (split.map_or(Outcome::Drop, Outcome::Split), rays + more);
     }
     let (factor, mut pieces) = cluster_factor(a, b, settings.directions);
     pieces.iter_mut().for_each(|piece| piece.2 *= visible);

@@ -4,8 +4,11 @@
 //! that nothing passes between two large elements, so the oracle refines occluded links
 //! like partial ones and drops them only once it accepts them. A cluster is represented by
 //! the centroids of four of its elements, one from each quarter of its median splits; a
-//! pair whose stand-ins see nothing of each other is always refined (`refine.rs`).
+//! pair whose stand-ins see nothing of each other is tested again from those elements'
+//! corners ([`corners_see`]), and refined (`refine.rs`) only when some corner sees the
+//! other end.
 
+use super::oracle::CORNER_INSET;
 use super::tree::Tree;
 use crate::geometry::Patch;
 use crate::transfer::occlusion::{POINTS, fraction_between, polygon_points, visible_fraction};
@@ -51,6 +54,58 @@ pub fn stand_ins(tree: &Tree, id: u32, towards: DVec3) -> [(DVec3, u32); POINTS]
     if let Some(patch) = tree.node(id).patch() {
         return polygon_points(&patch.polygon).map(|x| (x, patch.face));
     }
+    let chosen = chosen(tree, id, towards);
+    std::array::from_fn(|k| {
+        chosen.get(k % chosen.len().max(1)).map_or((tree.node(id).centre(), u32::MAX), |p| (p.centroid, p.face))
+    })
+}
+
+/// True when some corner of the elements that stand for `p` (seen from `q`'s centre) sees
+/// some corner of those standing for `q`: corner `k` of each of one end's four to corner
+/// `k` of the other's, the corners pulled [`CORNER_INSET`] towards their centroids; with
+/// the rays it took (4 to 16). Four centroids do not stand for a cluster's view: the one
+/// element of a chair's base that faces the ceiling is its top, whose centroid lies under
+/// the seat while its rim sees the ceiling (`docs/hierarchy.md`, "Occluded cluster
+/// links"); a room's elements behind a wall see nothing from their corners either.
+pub fn corners_see(visibility: &Visibility, tree: &Tree, p: u32, q: u32, blocker: &mut Blocker) -> (bool, usize) {
+    let (a, b) = (tree.node(p), tree.node(q));
+    let (from, to) = (standing_for(tree, p, b.centre()), standing_for(tree, q, a.centre()));
+    if from.is_empty() || to.is_empty() {
+        return (true, 0);
+    }
+    let mut rays = 0;
+    for k in 0..POINTS {
+        let v = fraction_between(visibility, &corners(&from, k), &corners(&to, k), blocker);
+        rays += v.rays;
+        if v.fraction > 0.0 {
+            return (true, rays);
+        }
+    }
+    (false, rays)
+}
+
+/// The elements standing for node `id` as seen from `towards`: the element itself, or a
+/// cluster's [`chosen`] ones (its centre's stand-in when it has none).
+fn standing_for(tree: &Tree, id: u32, towards: DVec3) -> Vec<&Patch> {
+    match tree.node(id).patch() {
+        Some(patch) => vec![patch],
+        None => chosen(tree, id, towards),
+    }
+}
+
+/// Corner `k` of each of four elements (taken in turn from `elements`), pulled
+/// [`CORNER_INSET`] towards its centroid, with its face.
+fn corners(elements: &[&Patch], k: usize) -> [(DVec3, u32); POINTS] {
+    std::array::from_fn(|j| {
+        let patch = elements[j % elements.len()];
+        let v = patch.polygon.vertices();
+        (v[k % v.len()].lerp(patch.centroid, CORNER_INSET), patch.face)
+    })
+}
+
+/// Up to four elements of cluster `id` that face `towards`, taken in turn from the quarters
+/// of its median splits (the first elements when none faces).
+fn chosen(tree: &Tree, id: u32, towards: DVec3) -> Vec<&Patch> {
     let quarters: Vec<Vec<&Patch>> = tree
         .children(id)
         .iter()
@@ -62,10 +117,7 @@ pub fn stand_ins(tree: &Tree, id: u32, towards: DVec3) -> [(DVec3, u32); POINTS]
         .map(|q| q.iter().copied().filter(|p| (towards - p.centroid).dot(p.normal) > 0.0).collect())
         .collect();
     let pool = if facing.iter().any(|q| !q.is_empty()) { &facing } else { &quarters };
-    let chosen = in_turn(pool);
-    std::array::from_fn(|k| {
-        chosen.get(k % chosen.len().max(1)).map_or((tree.node(id).centre(), u32::MAX), |p| (p.centroid, p.face))
-    })
+    in_turn(pool)
 }
 
 /// Up to [`POINTS`] elements, one from each non-empty list in turn.
