@@ -12,6 +12,7 @@ use super::transport::Transport;
 use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, NO_TWIN};
 use crate::material::Block;
+use crate::progress::Progress;
 use sprs::{CsMat, TriMat};
 
 /// `K = B·G`: transport `G` over `(patch, cell)` unknowns and per-material blocks `B`.
@@ -55,9 +56,9 @@ impl Kernel {
     }
 
     /// The kernel on the current leaves of `hierarchy` (its balanced operator as `G`), with
-    /// the leaves as a mesh.
-    pub fn on_leaves(hierarchy: &mut Hierarchy) -> (Kernel, Mesh) {
-        let g = Transport::Hierarchical(Box::new(hierarchy.operator()));
+    /// the leaves as a mesh; `progress` hears of the operator's build.
+    pub fn on_leaves(hierarchy: &mut Hierarchy, progress: &dyn Progress) -> (Kernel, Mesh) {
+        let g = Transport::Hierarchical(Box::new(hierarchy.operator(progress)));
         let leaves = hierarchy.leaf_mesh();
         let kernel = Kernel::on_mesh(g, &leaves, hierarchy.directions().clone(), hierarchy.blocks().to_vec());
         (kernel, leaves)

@@ -45,7 +45,7 @@ pub struct Refined {
 
 /// Solves, refines and solves again until a pass refines nothing or `options.passes`
 /// passes ran, each pass steered by the `readings`' importance (3b.3b); `progress` hears
-/// of each pass's linking.
+/// of each pass's linking and operator.
 pub fn refine_with_solves<E: From<Stopped>>(
     hierarchy: &mut Hierarchy,
     source: &mut SourceTerm<E>,
@@ -55,7 +55,7 @@ pub fn refine_with_solves<E: From<Stopped>>(
 ) -> Result<Refined, E> {
     let mut before = Work::default();
     let mut l0 = source(hierarchy)?;
-    let (mut kernel, mut leaves) = balanced(hierarchy, 0)?;
+    let (mut kernel, mut leaves) = balanced(hierarchy, 0, progress)?;
     let start = Instant::now();
     let mut x = solve(&kernel, &l0, 1.0)?;
     let mut history = vec![record(hierarchy, &kernel, 0, 1, &mut before, start)];
@@ -67,7 +67,7 @@ pub fn refine_with_solves<E: From<Stopped>>(
             break;
         }
         l0 = source(hierarchy)?;
-        let (next, next_leaves) = balanced(hierarchy, history.len())?;
+        let (next, next_leaves) = balanced(hierarchy, history.len(), progress)?;
         let start = Instant::now();
         let x0 = hierarchy.prolong(&solved_on, &x);
         let mut r = vec![0.0; x0.len()];
@@ -86,10 +86,14 @@ pub fn refine_with_solves<E: From<Stopped>>(
     Ok(Refined { x, kernel, leaves, l0, history })
 }
 
-/// The kernel on the leaves (`Kernel::on_leaves`, seconds of balancing), or the stop a
-/// signal asked for meanwhile (`crate::interrupt`).
-fn balanced<E: From<Stopped>>(hierarchy: &mut Hierarchy, pass: usize) -> Result<(Kernel, Mesh), E> {
-    let built = Kernel::on_leaves(hierarchy);
+/// The kernel on the leaves (`Kernel::on_leaves`, seconds of balancing; `progress` hears of
+/// its push), or the stop a signal asked for meanwhile (`crate::interrupt`).
+fn balanced<E: From<Stopped>>(
+    hierarchy: &mut Hierarchy,
+    pass: usize,
+    progress: &dyn Progress,
+) -> Result<(Kernel, Mesh), E> {
+    let built = Kernel::on_leaves(hierarchy, progress);
     crate::interrupt::check(|| format!("the hierarchical kernel's balancing, pass {pass}"))
         .map_err(|stop| E::from(Stopped::from(stop)))?;
     Ok(built)

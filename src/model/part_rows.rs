@@ -90,7 +90,7 @@ pub fn part_rows(
     h.split_leaves(&|visibility, patch, albedo, epsilon| {
         varies(&sources, &windows, visibility, patch, albedo, epsilon)
     });
-    let rows = h.part_rows().map_err(ModelError::Parts)?;
+    let rows = h.part_rows(progress).map_err(ModelError::Parts)?;
     let index = leaf_index(&h, &rows);
     let (l0, direct) = own_source(&h, &rows, &index, &sources, &blocks);
     let own = &rows.leaves[rows.own_leaves.clone()];

@@ -19,6 +19,7 @@ use super::{hierarchy, options};
 use std::path::Path;
 use ugo::directions::DirectionSet;
 use ugo::kernel::{Factored, Kernel, Precision, Transport, TransportMatrix, assemble};
+use ugo::progress::Silent;
 use ugo::scene::Scene;
 use ugo::solve::{LinOp, Method, SolveParams, System, solve};
 use ugo::visibility::Visibility;
@@ -29,7 +30,7 @@ fn leaves_take_the_lamps_light_by_their_own_view_of_it() {
     let scene = Scene::load(Path::new("cases/open-box.toml")).unwrap_or_else(|e| panic!("{e}"));
     let directions = DirectionSet::single();
     let mut h = hierarchy(&scene, 0.25, directions.clone(), options(1e-2, 0.1));
-    let (hierarchical, leaves) = Kernel::on_leaves(&mut h);
+    let (hierarchical, leaves) = Kernel::on_leaves(&mut h, &Silent);
     let visibility = Visibility::build(&leaves);
     let t = assemble(&leaves, &visibility, &directions, &Default::default(), &[], &|_| {}).unwrap();
     let g = Transport::Uniform(TransportMatrix::new(t.g, Precision::Double));

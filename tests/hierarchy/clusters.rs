@@ -9,6 +9,7 @@ use ugo::directions::DirectionSet;
 use ugo::geometry::{Emission, Shape, Surface};
 use ugo::kernel::hierarchy::Hierarchy;
 use ugo::kernel::{Precision, Transport, TransportMatrix, assemble};
+use ugo::progress::Silent;
 use ugo::scene::Scene;
 use ugo::transfer::form_factor::Quadrature;
 use ugo::visibility::Visibility;
@@ -44,7 +45,7 @@ fn cluster_links(h: &Hierarchy) -> usize {
 #[test]
 fn cluster_links_agree_with_the_explicit_kernel() {
     let mut h = hierarchy(&cloud(3), 10.0, DirectionSet::single(), options(1e-2, 0.25));
-    let op = h.operator();
+    let op = h.operator(&Silent);
     let leaves = h.leaf_mesh();
     let directions = DirectionSet::single();
     let t = assemble(&leaves, &Visibility::build(&leaves), &directions, &Quadrature::default(), &[], &|_| {}).unwrap();

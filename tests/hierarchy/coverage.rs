@@ -6,6 +6,7 @@ use crate::support::furnace;
 use ugo::directions::DirectionSet;
 use ugo::geometry::facing;
 use ugo::kernel::hierarchy::{Hierarchy, NONE};
+use ugo::progress::Silent;
 
 /// Leaf indices under node `id`.
 fn leaves_under(h: &Hierarchy, index: &[u32], id: u32, out: &mut Vec<usize>) {
@@ -20,7 +21,7 @@ fn leaves_under(h: &Hierarchy, index: &[u32], id: u32, out: &mut Vec<usize>) {
 #[test]
 fn every_facing_leaf_pair_is_covered_once() {
     let mut h = hierarchy(&furnace(1.0, 0.5, 1.0, 1.0), 1.0, DirectionSet::single(), options(2e-3, 0.125));
-    let op = h.operator();
+    let op = h.operator(&Silent);
     let mesh = h.leaf_mesh();
     let n = mesh.len();
     let mut index = vec![NONE; h.tree().len()];

@@ -8,6 +8,7 @@ use ugo::directions::DirectionSet;
 use ugo::kernel::hierarchy::Options;
 use ugo::kernel::{Factored, Kernel, Precision, Transport, TransportMatrix, assemble};
 use ugo::material::MaterialModel;
+use ugo::progress::Silent;
 use ugo::scene::Scene;
 use ugo::solve::{LinOp, Method, SolveParams, System, solve};
 use ugo::transfer::form_factor::Quadrature;
@@ -23,7 +24,7 @@ fn compare(scene: Scene, directions: DirectionSet, patch_size: f64) -> (f64, f64
     let quadrature = Quadrature { eta: 0.25, max_depth: 4 };
     let settings = Options { balance: false, quadrature, ..options(0.0, patch_size) };
     let mut h = hierarchy(&scene, 1.0, directions.clone(), settings);
-    let (hierarchical, leaves) = Kernel::on_leaves(&mut h);
+    let (hierarchical, leaves) = Kernel::on_leaves(&mut h, &Silent);
     let op = Factored::new(&hierarchical);
     let visibility = Visibility::build(&leaves);
     // the same outer quadrature: with K > 1 its points decide the receiver cells

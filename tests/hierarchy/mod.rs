@@ -107,7 +107,7 @@ pub fn solved(h: &mut Hierarchy, method: Method) -> (Vec<f64>, Kernel) {
 
 /// The kernel `K = B·G` on the current leaves of `h`.
 pub fn kernel(h: &mut Hierarchy) -> Kernel {
-    Kernel::on_leaves(h).0
+    Kernel::on_leaves(h, &Silent).0
 }
 
 /// Links of the hierarchical kernel `k`.

@@ -21,6 +21,7 @@ use std::f64::consts::PI;
 use ugo::directions::DirectionSet;
 use ugo::geometry::Patch;
 use ugo::geometry::Shape;
+use ugo::progress::Silent;
 use ugo::random::Rng;
 use ugo::scene::Scene;
 use ugo::visibility::Visibility;
@@ -52,7 +53,7 @@ fn chair_room() -> Scene {
 #[test]
 fn a_chair_base_sees_the_ceiling_past_its_seat() {
     let mut h = hierarchy(&chair_room(), 1.0, DirectionSet::single(), options(1e-2, 0.14));
-    let op = h.operator();
+    let op = h.operator(&Silent);
     let leaves = h.leaf_mesh();
     let is_ceiling = |p: &Patch| p.normal.y < -0.9 && p.centroid.y > SIDE - 1e-6;
     let ceiling: Vec<f64> = leaves.patches.iter().map(|p| if is_ceiling(p) { 1.0 } else { 0.0 }).collect();

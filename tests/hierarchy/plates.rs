@@ -7,6 +7,7 @@ use crate::support::{corner_factor, mean_over};
 use std::path::Path;
 use ugo::directions::DirectionSet;
 use ugo::material::MaterialModel;
+use ugo::progress::Silent;
 use ugo::scene::Scene;
 
 const L: f64 = 1000.0;
@@ -22,7 +23,7 @@ fn receiver(rho: f64, tolerance: f64) -> (f64, f64, usize) {
     let mut scene = Scene::load(Path::new("cases/parallel-plates.toml")).unwrap();
     scene.materials[0].model = MaterialModel::Lambert { reflectance: rho, transmittance: 0.0 };
     let mut h = hierarchy(&scene, 1.0, DirectionSet::single(), options(tolerance, 0.05));
-    let op = h.operator();
+    let op = h.operator(&Silent);
     let mesh = h.leaf_mesh();
     let l0 = h.emission();
     let mut z = vec![0.0; l0.len()];

@@ -2,7 +2,8 @@
 //! office's window on every root; the building floor's 29 windows made it minutes of
 //! silence) is announced with the number of roots and advances once per root; the linking
 //! (the building's first pass: nine minutes without a line) tells the pairs it settles, and
-//! the leaves' direct light the leaves done.
+//! the leaves' direct light the leaves done, and each operator's push the leaves whose rows are
+//! made.
 
 use std::path::Path;
 use std::sync::Mutex;
@@ -67,4 +68,19 @@ fn the_linking_tells_the_pairs_it_settles_round_by_round() {
     let light = told.iter().filter(|(_, m)| m.starts_with("direct light on ")).collect::<Vec<_>>();
     let (last, message) = light.last().expect("the leaves' direct light is told");
     assert_eq!(message, &format!("direct light on {last} new leaves: leaves done"), "every new leaf counted");
+}
+
+/// Each operator's push (minutes on the building's million leaves, silent before) tells
+/// the leaves done, a batch at a time, up to all of them; one operator per pass.
+#[test]
+fn the_operators_push_tells_the_leaves_done() {
+    let (model, stages) = built("cases/office.toml");
+    let told = stages.1.into_inner().unwrap();
+    let passes = model.hierarchy.as_ref().expect("hierarchical").history.len();
+    let total = |m: &str| -> Option<u64> { m.strip_prefix("the operator's push on ")?.split(' ').next()?.parse().ok() };
+    let push: Vec<(u64, u64)> = told.iter().filter_map(|(at, m)| Some((*at, total(m)?))).collect();
+    assert!(push.iter().all(|(at, all)| at <= all), "never beyond the leaves: {push:?}");
+    let complete = push.iter().filter(|(at, all)| at == all).count();
+    assert!(complete >= passes, "{complete} operators told to the end for {passes} passes");
+    assert_eq!(push.last().map(|p| p.1), Some(model.mesh.patches.len() as u64), "the last operator's leaves");
 }

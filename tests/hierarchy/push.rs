@@ -23,8 +23,8 @@ fn kept_push_weights_give_the_operator_built_afresh() {
     let x = solver(Method::Neumann)(&first, &h.emission(), 1.0).unwrap();
     let refined = h.refine(&x, None, &Silent).expect("the pass fits in memory");
     assert!(refined > 0, "the solved field refines some links");
-    let kept = h.operator();
-    let fresh = Operator::new(h.tree(), h.visibility(), h.links(), &directions, &mut SeenCache::default());
+    let kept = h.operator(&Silent);
+    let fresh = Operator::new(h.tree(), (h.visibility(), h.links()), &directions, &mut SeenCache::default(), &Silent);
     let y: Vec<f64> = (0..kept.dim()).map(|i| 1.0 + (i % 7) as f64).collect();
     let (mut a, mut b) = (vec![0.0; y.len()], vec![0.0; y.len()]);
     kept.arriving(&y, &mut a);

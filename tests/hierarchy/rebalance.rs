@@ -6,6 +6,7 @@ use super::{box_with_block, hierarchy, options, relative_difference};
 use ugo::directions::DirectionSet;
 use ugo::kernel::BalanceReport;
 use ugo::kernel::hierarchy::Operator;
+use ugo::progress::Silent;
 
 fn balance(g: &Operator) -> BalanceReport {
     g.balanced().expect("balanced")
@@ -14,9 +15,9 @@ fn balance(g: &Operator) -> BalanceReport {
 #[test]
 fn an_operator_built_again_balances_from_the_last_factors() {
     let mut h = hierarchy(&box_with_block(0.8), 0.5, DirectionSet::single(), options(3e-2, 0.05));
-    let first = h.operator();
+    let first = h.operator(&Silent);
     let cold = balance(&first);
-    let again = h.operator();
+    let again = h.operator(&Silent);
     let warm = balance(&again);
     let y: Vec<f64> = (0..first.dim()).map(|i| 1.0 + (i % 7) as f64).collect();
     let (mut a, mut b) = (vec![0.0; y.len()], vec![0.0; y.len()]);

@@ -3,6 +3,7 @@
 
 use super::kernel::Hierarchy;
 use super::operator::Operator;
+use crate::progress::Progress;
 
 /// How far a leaf's sending factor may move from 1, in link tolerances: a link is kept while
 /// its error is below the tolerance times the scene's mean reflected luminance, so a column
@@ -13,11 +14,12 @@ pub(super) const SENDING: f64 = 3.0;
 
 impl Hierarchy {
     /// `G` on the current leaves, balanced to their closures unless `options.balance` is
-    /// off (the rays of new leaves' closures count in the work).
-    pub fn operator(&mut self) -> Operator {
+    /// off (the rays of new leaves' closures count in the work); `progress` hears of the
+    /// leaves whose push rows are done.
+    pub fn operator(&mut self, progress: &dyn Progress) -> Operator {
         let start = std::time::Instant::now();
-        let mut operator =
-            Operator::new(&self.tree, &self.visibility, &self.links, &self.directions, &mut self.memo.seen);
+        let parts = (&self.visibility, &self.links[..]);
+        let mut operator = Operator::new(&self.tree, parts, &self.directions, &mut self.memo.seen, progress);
         if self.options.balance {
             let leaves = operator.leaves().to_vec();
             self.work.rays += self.memo.measure_closure(&self.tree, &self.backs, &self.visibility, &leaves);

@@ -5,7 +5,7 @@
 //! of all links between leaves.
 //!
 //! Use: `Hierarchy::new(&roots, visibility, directions, blocks, options, l0, progress)`
-//! links the roots (a coarse `Mesh`, with its source term); `h.operator()` is `G` on the
+//! links the roots (a coarse `Mesh`, with its source term); `h.operator(progress)` is `G` on the
 //! leaves, `h.leaf_mesh()` the leaves' mesh, `h.split_leaves(varies)` splits them along the
 //! luminaires' shadows, `h.refine(x, progress)` refines again with a solved field (`progress`
 //! hears of the pairs settled). `K = B·G` over it, and the passes

@@ -15,6 +15,7 @@ use super::push::{SeenCache, push_rows};
 use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::kernel::BalanceReport;
+use crate::progress::Progress;
 use crate::visibility::Visibility;
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -64,13 +65,14 @@ pub struct Operator {
 
 impl Operator {
     /// The operator of `links` over the leaves of `tree` (whose faces `visibility` holds);
-    /// the push's weights are kept in `seen` from one build to the next.
+    /// the push's weights are kept in `seen` from one build to the next; `progress` hears
+    /// of the leaves whose push rows are done.
     pub fn new(
         tree: &Tree,
-        visibility: &Visibility,
-        links: &[Link],
+        (visibility, links): (&Visibility, &[Link]),
         directions: &DirectionSet,
         seen: &mut SeenCache,
+        progress: &dyn Progress,
     ) -> Operator {
         let order = tree.preorder();
         let mut position = vec![NONE; tree.len()];
@@ -82,7 +84,7 @@ impl Operator {
         let leaves: Vec<u32> = order.iter().copied().filter(|&id| tree.node(id).is_leaf()).collect();
         let leaf_position = leaves.iter().map(|&id| position[id as usize]).collect();
         let bundles = Bundles::new(tree, links, &position);
-        let (push_row, push) = push_rows(tree, visibility, links, &bundles, &leaves, seen);
+        let (push_row, push) = push_rows(tree, visibility, (links, &bundles), &leaves, seen, progress);
         let (row, entries) = gather_rows(links, &bundles, &position);
         let n = leaves.len();
         let parts = Parts {

@@ -36,6 +36,7 @@ use super::node::NONE;
 use super::sight::Sight;
 use super::tree::Tree;
 use crate::geometry::Patch;
+use crate::progress::Progress;
 use crate::random::mix;
 use crate::transfer::far_field::point_factor;
 use crate::transfer::occlusion::{POINTS, polygon_points, visible_fraction};
@@ -128,15 +129,19 @@ impl SeenCache {
     }
 }
 
+/// Leaves whose push rows are made between two progress reports.
+const PUSH_BATCH: usize = 1 << 14;
+
 /// For each leaf (in `leaves` order), the bundles its ancestors (itself included) receive,
-/// as `(bundle, weight)`, CSR; `cache` is read and replaced.
+/// as `(bundle, weight)`, CSR; `cache` is read and replaced; `progress` hears of the leaves
+/// done, a batch at a time.
 pub fn push_rows(
     tree: &Tree,
     visibility: &Visibility,
-    links: &[Link],
-    bundles: &Bundles,
+    (links, bundles): (&[Link], &Bundles),
     leaves: &[u32],
     cache: &mut SeenCache,
+    progress: &dyn Progress,
 ) -> (Vec<usize>, Vec<(u32, f64)>) {
     let fingerprints: Vec<u64> =
         (0..bundles.len()).into_par_iter().map(|b| fingerprint(links, bundles.links_of(b))).collect();
@@ -146,31 +151,37 @@ pub fn push_rows(
         row.iter().find(|e| e.0 == a && e.1 == fingerprints[b]).map(|e| e.2)
     };
     let before = &cache.fractions;
-    let (rows, fractions): (Vec<Vec<Seen>>, Vec<Vec<Fraction>>) = leaves
-        .par_iter()
-        .map(|&leaf| {
-            let mut row = Vec::new();
-            let before = before.get(leaf as usize).map_or(&[][..], Vec::as_slice);
-            let mut fractions = Fractions { before, now: Vec::new() };
-            // Seconds on a large tree: a signal leaves the rest empty (`crate::interrupt`).
-            if crate::interrupt::asked() {
-                return (row, Vec::new());
+    let row_of = |&leaf: &u32| {
+        let mut row = Vec::new();
+        let before = before.get(leaf as usize).map_or(&[][..], Vec::as_slice);
+        let mut fractions = Fractions { before, now: Vec::new() };
+        // Seconds on a large tree: a signal leaves the rest empty (`crate::interrupt`).
+        if crate::interrupt::asked() {
+            return (row, Vec::new());
+        }
+        let Some(patch) = tree.node(leaf).patch().filter(|p| p.exposed > 0.0) else { return (row, Vec::new()) };
+        let mut a = leaf;
+        while a != NONE {
+            for b in bundles.of_node(a) {
+                let s = cached(leaf, a, b).unwrap_or_else(|| {
+                    let own = bundles.links_of(b);
+                    seen(tree, visibility, links, own, a, (leaf, patch), &mut fractions)
+                });
+                row.push((b as u32, fingerprints[b], s));
             }
-            let Some(patch) = tree.node(leaf).patch().filter(|p| p.exposed > 0.0) else { return (row, Vec::new()) };
-            let mut a = leaf;
-            while a != NONE {
-                for b in bundles.of_node(a) {
-                    let s = cached(leaf, a, b).unwrap_or_else(|| {
-                        let own = bundles.links_of(b);
-                        seen(tree, visibility, links, own, a, (leaf, patch), &mut fractions)
-                    });
-                    row.push((b as u32, fingerprints[b], s));
-                }
-                a = tree.node(a).parent;
-            }
-            (row, fractions.now)
-        })
-        .unzip();
+            a = tree.node(a).parent;
+        }
+        (row, fractions.now)
+    };
+    // minutes on a building's million leaves: told a batch at a time
+    let what = format!("the operator's push on {} leaves: leaves done", leaves.len());
+    let (mut rows, mut fractions): (Vec<Vec<Seen>>, Vec<Vec<Fraction>>) = (Vec::new(), Vec::new());
+    for batch in leaves.chunks(PUSH_BATCH) {
+        let (r, f): (Vec<Vec<Seen>>, Vec<Vec<Fraction>>) = batch.par_iter().map(row_of).unzip();
+        rows.extend(r);
+        fractions.extend(f);
+        progress.at(rows.len() as u64, &what);
+    }
     cache.keep_fractions(tree.len(), leaves, fractions);
     cache.rows = vec![Vec::new(); tree.len()];
     for (row, &leaf) in rows.iter().zip(leaves) {

@@ -14,6 +14,7 @@ use super::node::NONE;
 use super::operator::{gather_rows, parents};
 use super::parts::Entry;
 use super::push::push_rows;
+use crate::progress::Progress;
 use crate::transfer::closure::Closure;
 use std::ops::Range;
 
@@ -67,8 +68,9 @@ pub struct Rows {
 
 impl Hierarchy {
     /// The rows of the part this hierarchy was rebuilt for (`rebuilt.rs`) on its current
-    /// leaves; the closure rays of its leaves count in the work.
-    pub fn part_rows(&mut self) -> Result<Rows, String> {
+    /// leaves; the closure rays of its leaves count in the work; `progress` hears of the
+    /// leaves whose push rows are done.
+    pub fn part_rows(&mut self, progress: &dyn Progress) -> Result<Rows, String> {
         let partition = self.partition.clone().ok_or("rows are a part's (Options::part)")?;
         let tree = &self.tree;
         let order = tree.preorder();
@@ -87,7 +89,8 @@ impl Hierarchy {
         };
         let reaching = Bundles::new(tree, &self.links, &position);
         let mine = &leaves[own_leaves.clone()];
-        let (push_row, push) = push_rows(tree, &self.visibility, &self.links, &reaching, mine, &mut self.memo.seen);
+        let (push_row, push) =
+            push_rows(tree, &self.visibility, (&self.links, &reaching), mine, &mut self.memo.seen, progress);
         let push = push.into_iter().map(|(b, s)| (key(&self.links, &reaching, b as usize), s)).collect();
         // the part's own bundles: the run of those reaching it whose receiver it owns
         let Range { start: first, end } =
