@@ -63,7 +63,7 @@ pub fn stand_ins(tree: &Tree, id: u32, towards: DVec3) -> [(DVec3, u32); POINTS]
 /// True when some corner of the elements that stand for `p` (seen from `q`'s centre) sees
 /// some corner of those standing for `q`: corner `k` of each of one end's four to corner
 /// `k` of the other's, the corners pulled [`CORNER_INSET`] towards their centroids; with
-/// the rays it took (4 to 16). Four centroids do not stand for a cluster's view: the one
+/// the rays it took (4 to 64). A cluster with no element to stand for it is taken to see. Four centroids do not stand for a cluster's view: the one
 /// element of a chair's base that faces the ceiling is its top, whose centroid lies under
 /// the seat while its rim sees the ceiling (`docs/hierarchy.md`, "Occluded cluster
 /// links"); a room's elements behind a wall see nothing from their corners either.
@@ -85,7 +85,7 @@ pub fn corners_see(visibility: &Visibility, tree: &Tree, p: u32, q: u32, blocker
 }
 
 /// The elements standing for node `id` as seen from `towards`: the element itself, or a
-/// cluster's [`chosen`] ones (its centre's stand-in when it has none).
+/// cluster's [`chosen`] ones.
 fn standing_for(tree: &Tree, id: u32, towards: DVec3) -> Vec<&Patch> {
     match tree.node(id).patch() {
         Some(patch) => vec![patch],
