@@ -110,7 +110,7 @@ def traced(command, log):
     trace whose log and record (the log's name with `.run`: the command and its seconds)
     say it ran to the end with the same arguments (any binary) is read back, not traced again, so a
     reference cut off (hours of tracing) resumes where it stopped."""
-    record, arguments = log.with_suffix(".run"), f"# ugo {shown(command[1:])}"
+    record, arguments = log.with_suffix(".run"), f"# {as_ugo(command)}"
     if log.exists() and record.exists():
         lines = record.read_text().splitlines()
         if lines[0] == arguments:
@@ -118,6 +118,12 @@ def traced(command, log):
     out, seconds, peak = run(command, log)
     record.write_text(f"{arguments}\n# seconds {seconds:.1f} peak_MB {peak:.0f}\n")
     return out, seconds
+
+
+def as_ugo(command):
+    """A trace's command as written in a reference's header and its record: `ugo` and its
+    arguments, whichever build (`--ugo`) traced it."""
+    return f"ugo {shown(command[1:])}"
 
 
 def shown(command):
@@ -210,7 +216,7 @@ def reference(name, bench, placed, seed):
     """Traces the references into DATA/name.csv with the commands in its header."""
     command, seconds, floor, groups = pilot(name, bench, seed)
     tables = probe_tables(bench)
-    commands = [f"pilot: {shown(command)} ({seconds:.0f} s)",
+    commands = [f"pilot: {as_ugo(command)} ({seconds:.0f} s)",
                 f"paths a probe for a standard error of {TARGET} × max(E, {floor:.4g} lx), the floor "
                 f"{FLOOR_SHARE} × the open probes' mean (the pilot's)"]
     readings = []
@@ -224,7 +230,7 @@ def reference(name, bench, placed, seed):
             group.write_text(bench_case(case, "".join(tables[n]["text"] for n in chunk)))
             command = [UGO, "trace", group, "--probe-samples", paths, "--seed", seed + 1 + k]
             out, seconds = traced(command, OUT / f"{name}-trace-{part}.log")
-            commands.append(f"{len(chunk)} probes: {shown(command)} ({seconds:.0f} s)")
+            commands.append(f"{len(chunk)} probes: {as_ugo(command)} ({seconds:.0f} s)")
             readings += reading_lines(out)
             print(f"  {len(chunk)} probes at {paths} paths: {seconds:.0f} s", flush=True)
     write_reference(name, placed, commands, readings, tables)
