@@ -108,16 +108,21 @@ def run(command, log):
 def traced(command, log):
     """`run(command, log)` for a trace of the references, kept: its stdout and seconds. A
     trace whose log and record (the log's name with `.run`: the command and its seconds)
-    say it ran to the end with the same arguments (any binary) is read back, not traced again, so a
-    reference cut off (hours of tracing) resumes where it stopped."""
+    say it ran to the end with the same arguments (any binary) is read back, not traced
+    again, so a reference cut off (hours of tracing) resumes where it stopped."""
     record, arguments = log.with_suffix(".run"), f"# {as_ugo(command)}"
     if log.exists() and record.exists():
         lines = record.read_text().splitlines()
         if lines[0] == arguments:
-            return log.read_text(), float(lines[1].split("seconds ")[1].split()[0])
+            return log.read_text(), recorded_seconds(record)
     out, seconds, peak = run(command, log)
     record.write_text(f"{arguments}\n# seconds {seconds:.1f} peak_MB {peak:.0f}\n")
     return out, seconds
+
+
+def recorded_seconds(record):
+    """The wall seconds a run's record (`name.run`: its command, then `# seconds S ...`) holds."""
+    return float(record.read_text().split("seconds ")[1].split()[0])
 
 
 def as_ugo(command):
@@ -316,7 +321,7 @@ def trace_equal(name, bench, seed):
     solve (out/accuracy/name-case.run): paths per probe from the reference's pilot time,
     scaled and rounded down to a power of two; its readings and error bars (2σ) in
     out/accuracy/name-trace-equal-probes.csv, compared like a setting."""
-    case_seconds = float((OUT / f"{name}-case.run").read_text().split("seconds ")[1].split()[0])
+    case_seconds = recorded_seconds(OUT / f"{name}-case.run")
     pilot_seconds = header_seconds((DATA / f"{name}.csv").read_text(), "# pilot:")
     paths = max(64, 1 << math.floor(math.log2(PILOT * case_seconds / pilot_seconds)))
     command = [UGO, "trace", bench, "--probe-samples", paths, "--seed", seed + 2]

@@ -175,7 +175,8 @@ pub fn push_rows(
     };
     // minutes on a building's million leaves: told a batch at a time
     let what = format!("the operator's push on {} leaves: leaves done", leaves.len());
-    let (mut rows, mut fractions): (Vec<Vec<Seen>>, Vec<Vec<Fraction>>) = (Vec::new(), Vec::new());
+    let mut rows: Vec<Vec<Seen>> = Vec::with_capacity(leaves.len());
+    let mut fractions: Vec<Vec<Fraction>> = Vec::with_capacity(leaves.len());
     for batch in leaves.chunks(PUSH_BATCH) {
         let (r, f): (Vec<Vec<Seen>>, Vec<Vec<Fraction>>) = batch.par_iter().map(row_of).unzip();
         rows.extend(r);

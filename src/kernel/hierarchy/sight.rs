@@ -63,10 +63,11 @@ pub fn stand_ins(tree: &Tree, id: u32, towards: DVec3) -> [(DVec3, u32); POINTS]
 /// True when some corner of the elements that stand for `p` (seen from `q`'s centre) sees
 /// some corner of those standing for `q`: corner `k` of each of one end's four to corner
 /// `k` of the other's, the corners pulled [`CORNER_INSET`] towards their centroids; with
-/// the rays it took (4 to 64). A cluster with no element to stand for it is taken to see. Four centroids do not stand for a cluster's view: the one
-/// element of a chair's base that faces the ceiling is its top, whose centroid lies under
-/// the seat while its rim sees the ceiling (`docs/hierarchy.md`, "Occluded cluster
-/// links"); a room's elements behind a wall see nothing from their corners either.
+/// the rays it took (4 to 64). A cluster with no element to stand for it is taken to see.
+/// Four centroids do not stand for a cluster's view: the one element of a chair's base that
+/// faces the ceiling is its top, whose centroid lies under the seat while its rim sees the
+/// ceiling (`docs/hierarchy.md`, "Occluded cluster links"); a room's elements behind a wall
+/// see nothing from their corners either.
 pub fn corners_see(visibility: &Visibility, tree: &Tree, p: u32, q: u32, blocker: &mut Blocker) -> (bool, usize) {
     let (a, b) = (tree.node(p), tree.node(q));
     let (from, to) = (standing_for(tree, p, b.centre()), standing_for(tree, q, a.centre()));
