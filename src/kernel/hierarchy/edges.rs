@@ -8,7 +8,11 @@
 //! other, down to their distance but not below [`EDGE_FINEST`] of the smallest size. An
 //! element any part of which lies inside or against a solid is left to the linking (§3b,
 //! "Contacts"): graded, its pieces under the solid had no light of their own to read. Nor
-//! are the elements of narrow surfaces ([`EDGE_NARROWEST`]).
+//! are the elements of narrow surfaces ([`EDGE_NARROWEST`]). Toward a narrow surface (a
+//! whiteboard's 2 cm underside against a wall) only the wide side is graded, even where it
+//! straddles the contact: the contact's cuts part it first (`cuts.rs`), and the narrow face,
+//! which sees it at large factors, otherwise reads its mean (`docs/accuracy.md`, "A whiteboard
+//! on a wall": the wall 1 cm under the board +3.7 %).
 
 use super::node::longest_edge;
 use super::oracle::split_toward;
@@ -25,28 +29,38 @@ pub const EDGE_FACING: f64 = 0.5;
 /// across a slot (`slots::SLOT_FINEST`).
 pub const EDGE_FINEST: f64 = 0.25;
 
-/// The element of the pair `(p, q)` to split, if they meet at a concave edge: both wholly
-/// exposed, on wide surfaces ([`EDGE_NARROWEST`]), in front of each other, nearer than
-/// `patch_size` (m); the larger first, down
-/// to their distance (0 at a shared edge) but not below [`EDGE_FINEST`] of `patch_size`.
-/// An element of the smallest size is split below it only if the pair sees something of
-/// each other. With the rays it took.
+/// The element of the pair `(p, q)` to split, if they meet at a concave edge, in front of
+/// each other and nearer than `patch_size` (m): the larger of those graded toward the
+/// other ([`graded_toward`]), down to their distance (0 at a shared edge) but not below
+/// [`EDGE_FINEST`] of `patch_size`. An element of the smallest size is split below it only
+/// if the pair sees something of each other. With the rays it took.
 pub fn to_split(tree: &Tree, visibility: &Visibility, patch_size: f64, p: u32, q: u32) -> (Option<u32>, usize) {
     let (a, b) = (tree.node(p), tree.node(q));
     let (Some(pa), Some(pb)) = (a.patch(), b.patch()) else { return (None, 0) };
     let distance = a.box_distance(b);
-    let exposed = a.wholly_exposed() && b.wholly_exposed();
-    if distance >= patch_size || !exposed || !facing(pa, pb) || !wide(tree, p, patch_size) || !wide(tree, q, patch_size)
-    {
+    if distance >= patch_size || !facing(pa, pb) {
         return (None, 0);
     }
     let finest = distance.max(EDGE_FINEST * patch_size);
-    let Some((n, smallest)) = split_toward(tree, p, q, finest, patch_size) else { return (None, 0) };
+    let toward = |n: u32| graded_toward(tree, n, if n == p { q } else { p }, patch_size);
+    let Some((n, smallest)) = split_toward(tree, (p, q), finest, patch_size, toward) else { return (None, 0) };
     if !smallest {
         return (Some(n), 0);
     }
     let (seen, _, rays) = sight(visibility, pa, pb, &mut Blocker::default());
     (if seen == Sight::Occluded { None } else { Some(n) }, rays)
+}
+
+/// True when element `n` is graded toward element `m` across their concave edge: `n` lies
+/// on a wide surface ([`EDGE_NARROWEST`]) and `m` is wholly exposed, and either both are
+/// wholly exposed and wide (a room's walls, floor and ceiling where they meet) or `m` is
+/// narrow (a whiteboard's 2 cm underside against a wall). Then `n` may straddle a contact
+/// (the wall's element under the whiteboard): it splits along the contact's cuts first
+/// (`cuts.rs`), so that no piece straddles it, and its exposed pieces are graded.
+fn graded_toward(tree: &Tree, n: u32, m: u32, patch_size: f64) -> bool {
+    let (a, b) = (tree.node(n), tree.node(m));
+    let narrow = !wide(tree, m, patch_size);
+    wide(tree, n, patch_size) && b.wholly_exposed() && (narrow || a.wholly_exposed())
 }
 
 /// Surfaces narrower than this many smallest sizes are not graded: the band graded on

@@ -113,11 +113,17 @@ pub(super) fn larger_first(p: u32, q: u32, size_p: f64, size_q: f64) -> [u32; 2]
 }
 
 /// The element of the pair `(p, q)` that grading splits toward the other down to `finest`
-/// (m), the larger first, with whether it is a leaf of the smallest size `patch_size` (m),
-/// which is split below it only if the pair sees something of each other; `None` when
-/// neither can split down to `finest`.
-pub(super) fn split_toward(tree: &Tree, p: u32, q: u32, finest: f64, patch_size: f64) -> Option<(u32, bool)> {
+/// (m), the larger of those that `may` be split first, with whether it is a leaf of the
+/// smallest size `patch_size` (m), which is split below it only if the pair sees something
+/// of each other; `None` when neither can split down to `finest`.
+pub(super) fn split_toward(
+    tree: &Tree,
+    (p, q): (u32, u32),
+    finest: f64,
+    patch_size: f64,
+    may: impl Fn(u32) -> bool,
+) -> Option<(u32, bool)> {
     let order = larger_first(p, q, tree.node(p).area, tree.node(q).area);
-    let n = order.into_iter().find(|&n| tree.can_split(n, finest))?;
+    let n = order.into_iter().find(|&n| may(n) && tree.can_split(n, finest))?;
     Some((n, tree.node(n).is_leaf() && !tree.can_split(n, patch_size)))
 }

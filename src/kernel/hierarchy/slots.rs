@@ -41,7 +41,7 @@ pub fn to_split(tree: &Tree, visibility: &Visibility, patch_size: f64, p: u32, q
         return (None, 0);
     }
     let finest = width.max(SLOT_FINEST * patch_size);
-    let Some((n, smallest)) = split_toward(tree, p, q, finest, patch_size) else { return (None, 0) };
+    let Some((n, smallest)) = split_toward(tree, (p, q), finest, patch_size, |_| true) else { return (None, 0) };
     if !smallest {
         return (Some(n), 0);
     }
