@@ -245,6 +245,7 @@ fn the_wall_under_a_whiteboard_is_no_worse_than_today() {
     // room at the office's settings (docs/accuracy.md, "A whiteboard on a wall"): the board's
     // 2 cm underside read the wall's leaf under it at its mean, +30 % against the forward
     // bins, until the wall was graded toward it (`kernel/hierarchy/edges.rs`,
-    // `graded_toward`): the contacts +3.7 % before, within 1 % since; the controls 0.3 %.
-    check("board-room", &[("contact", 1.1), ("underside", 1.0), ("open", 0.4)]);
+    // `graded_toward`, down to the board's width): the contacts +3.7 % before, 0.63 % since;
+    // the controls 0.24 %.
+    check("board-room", &[("contact", 0.8), ("underside", 0.8), ("open", 0.4)]);
 }

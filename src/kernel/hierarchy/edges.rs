@@ -9,10 +9,11 @@
 //! element any part of which lies inside or against a solid is left to the linking (§3b,
 //! "Contacts"): graded, its pieces under the solid had no light of their own to read. Nor
 //! are the elements of narrow surfaces ([`EDGE_NARROWEST`]). Toward a narrow surface (a
-//! whiteboard's 2 cm underside against a wall) only the wide side is graded, even where it
-//! straddles the contact: the contact's cuts part it first (`cuts.rs`), and the narrow face,
-//! which sees it at large factors, otherwise reads its mean (`docs/accuracy.md`, "A whiteboard
-//! on a wall": the wall 1 cm under the board +3.7 %).
+//! whiteboard's 2 cm underside against a wall) only the wide side is graded, down to the
+//! narrow face's width ([`NARROW_FINEST`]), even where it straddles the contact: the
+//! contact's cuts part it first (`cuts.rs`), and the narrow face, which sees it at large
+//! factors, otherwise reads its mean (`docs/accuracy.md`, "A whiteboard on a wall": the
+//! wall 1 cm under the board +3.7 %).
 
 use super::node::longest_edge;
 use super::oracle::split_toward;
@@ -32,7 +33,8 @@ pub const EDGE_FINEST: f64 = 0.25;
 /// The element of the pair `(p, q)` to split, if they meet at a concave edge, in front of
 /// each other and nearer than `patch_size` (m): the larger of those graded toward the
 /// other ([`graded_toward`]), down to their distance (0 at a shared edge) but not below
-/// [`EDGE_FINEST`] of `patch_size`. An element of the smallest size is split below it only
+/// [`EDGE_FINEST`] of `patch_size`; toward a narrow surface, down to its width (a 2 cm
+/// underside: 2 cm) but not below [`NARROW_FINEST`] of `patch_size`. An element of the smallest size is split below it only
 /// if the pair sees something of each other. With the rays it took.
 pub fn to_split(tree: &Tree, visibility: &Visibility, patch_size: f64, p: u32, q: u32) -> (Option<u32>, usize) {
     let (a, b) = (tree.node(p), tree.node(q));
@@ -41,7 +43,8 @@ pub fn to_split(tree: &Tree, visibility: &Visibility, patch_size: f64, p: u32, q
     if distance >= patch_size || !facing(pa, pb) {
         return (None, 0);
     }
-    let finest = distance.max(EDGE_FINEST * patch_size);
+    let narrowest = width(tree, p).min(width(tree, q)).max(NARROW_FINEST * patch_size);
+    let finest = distance.max((EDGE_FINEST * patch_size).min(narrowest));
     let toward = |n: u32| graded_toward(tree, n, if n == p { q } else { p }, patch_size);
     let Some((n, smallest)) = split_toward(tree, (p, q), finest, patch_size, toward) else { return (None, 0) };
     if !smallest {
@@ -63,6 +66,13 @@ fn graded_toward(tree: &Tree, n: u32, m: u32, patch_size: f64) -> bool {
     wide(tree, n, patch_size) && b.wholly_exposed() && (narrow || a.wholly_exposed())
 }
 
+/// Elements graded toward a narrow surface split down to its width, but not below this
+/// share of the smallest size: a face a millimetre thick would cut its neighbour to a
+/// millimetre. The office's wall 1 cm under its whiteboard: +0.82 % graded to a quarter of
+/// the smallest size (3.75 cm), +0.33 % to the board's 2 cm (`docs/hierarchy.md`, "Toward
+/// narrow faces").
+pub const NARROW_FINEST: f64 = 1.0 / 16.0;
+
 /// Surfaces narrower than this many smallest sizes are not graded: the band graded on
 /// each side of an edge, a smallest size wide, would cover all of them (a seat's parts, a
 /// riser, a book). The lecture hall: 196,573 leaves graded on every surface, 109,477 so;
@@ -70,8 +80,14 @@ fn graded_toward(tree: &Tree, n: u32, m: u32, patch_size: f64) -> bool {
 pub const EDGE_NARROWEST: f64 = 2.0;
 
 /// True when element `n` lies on a surface at least [`EDGE_NARROWEST`] smallest sizes
-/// `patch_size` (m) wide: its root element's area over its longest edge.
+/// `patch_size` (m) wide.
 fn wide(tree: &Tree, n: u32, patch_size: f64) -> bool {
-    let Some(root) = tree.node(tree.root(n)).patch() else { return false };
-    root.area / longest_edge(&root.polygon) >= EDGE_NARROWEST * patch_size
+    width(tree, n) >= EDGE_NARROWEST * patch_size
+}
+
+/// The width of the surface element `n` lies on, m: its root element's area over its
+/// longest edge (0 for a cluster).
+fn width(tree: &Tree, n: u32) -> f64 {
+    let Some(root) = tree.node(tree.root(n)).patch() else { return 0.0 };
+    root.area / longest_edge(&root.polygon)
 }
