@@ -83,7 +83,8 @@ fn render_fails_clearly_on_a_missing_or_foreign_file() {
 }
 
 /// Every bundled case, coarsened (patch size, direction cells) so that the test is quick.
-const CASES: [(&str, &str, &str); 12] = [
+const CASES: [(&str, &str, &str); 13] = [
+    ("board-room", "0.5", "1"),
     ("cornell-box", "0.1", "1"),
     ("daylit-office", "0.5", "1"),
     ("daylit-office-twin", "0.5", "1"),

@@ -8,11 +8,11 @@
 //! other, down to their distance but not below [`EDGE_FINEST`] of the smallest size. An
 //! element any part of which lies inside or against a solid is left to the linking (§3b,
 //! "Contacts"): graded, its pieces under the solid had no light of their own to read. Nor
-//! are the elements of narrow surfaces ([`EDGE_NARROWEST`]). Toward a narrow surface (a
-//! whiteboard's 2 cm underside against a wall) only the wide side is graded, down to the
-//! narrow face's width ([`NARROW_FINEST`]), even where it straddles the contact: the
-//! contact's cuts part it first (`cuts.rs`), and the narrow face, which sees it at large
-//! factors, otherwise reads its mean (`docs/accuracy.md`, "A whiteboard on a wall": the
+//! are the elements of narrow surfaces ([`EDGE_NARROWEST`]). Toward a thin face, narrower
+//! than [`EDGE_FINEST`] of the smallest size (a whiteboard's 2 cm underside against a
+//! wall), only the wide side is graded, down to the thin face's width ([`NARROW_FINEST`]),
+//! even where it straddles the contact: the contact's cuts part it first (`cuts.rs`), and
+//! the thin face, which sees it at large factors, otherwise reads its mean (`docs/accuracy.md`, "A whiteboard on a wall": the
 //! wall 1 cm under the board +3.7 %).
 
 use super::node::longest_edge;
@@ -33,7 +33,7 @@ pub const EDGE_FINEST: f64 = 0.25;
 /// The element of the pair `(p, q)` to split, if they meet at a concave edge, in front of
 /// each other and nearer than `patch_size` (m): the larger of those graded toward the
 /// other ([`graded_toward`]), down to their distance (0 at a shared edge) but not below
-/// [`EDGE_FINEST`] of `patch_size`; toward a narrow surface, down to its width (a 2 cm
+/// [`EDGE_FINEST`] of `patch_size`; toward a thin face, down to its width (a 2 cm
 /// underside: 2 cm) but not below [`NARROW_FINEST`] of `patch_size`. An element of the smallest size is split below it only
 /// if the pair sees something of each other. With the rays it took.
 pub fn to_split(tree: &Tree, visibility: &Visibility, patch_size: f64, p: u32, q: u32) -> (Option<u32>, usize) {
@@ -55,18 +55,22 @@ pub fn to_split(tree: &Tree, visibility: &Visibility, patch_size: f64, p: u32, q
 }
 
 /// True when element `n` is graded toward element `m` across their concave edge: `n` lies
-/// on a wide surface ([`EDGE_NARROWEST`]) and `m` is wholly exposed, and either both are
-/// wholly exposed and wide (a room's walls, floor and ceiling where they meet) or `m` is
-/// narrow (a whiteboard's 2 cm underside against a wall). Then `n` may straddle a contact
-/// (the wall's element under the whiteboard): it splits along the contact's cuts first
-/// (`cuts.rs`), so that no piece straddles it, and its exposed pieces are graded.
+/// on a wide surface ([`EDGE_NARROWEST`]), `m` is wholly exposed, and either `n` is wholly
+/// exposed too (a room's walls, floor and ceiling where they meet; a floor before a low
+/// panel) or `m` is thin, narrower than [`EDGE_FINEST`] of the smallest size (a
+/// whiteboard's 2 cm underside against a wall). Then `n` may straddle a contact (the wall's
+/// element under the whiteboard): it splits along the contact's cuts first (`cuts.rs`), so
+/// that no piece straddles it, and its exposed pieces are graded.
+/// Merely narrow faces are not enough: a surface's width is its root's, and the open box's
+/// 0.3 m blocks, cut into roots of 0.15 m, would grade the floor at their feet into leaves
+/// that read 80 % off the uniform kernel's (`docs/hierarchy.md`, "Toward narrow faces").
 fn graded_toward(tree: &Tree, n: u32, m: u32, patch_size: f64) -> bool {
     let (a, b) = (tree.node(n), tree.node(m));
-    let narrow = !wide(tree, m, patch_size);
-    wide(tree, n, patch_size) && b.wholly_exposed() && (narrow || a.wholly_exposed())
+    let thin = width(tree, m) < EDGE_FINEST * patch_size;
+    wide(tree, n, patch_size) && b.wholly_exposed() && (thin || a.wholly_exposed())
 }
 
-/// Elements graded toward a narrow surface split down to its width, but not below this
+/// Elements graded toward a thin face split down to its width, but not below this
 /// share of the smallest size: a face a millimetre thick would cut its neighbour to a
 /// millimetre. The office's wall 1 cm under its whiteboard: +0.82 % graded to a quarter of
 /// the smallest size (3.75 cm), +0.33 % to the board's 2 cm (`docs/hierarchy.md`, "Toward
