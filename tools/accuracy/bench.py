@@ -126,7 +126,7 @@ def recorded_seconds(record):
 
 
 def as_ugo(command):
-    """A trace's command as written in a reference's header and its record: `ugo` and its
+    """A command of `ugo` as written in a reference's header and its record: `ugo` and its
     arguments, whichever build (`--ugo`) traced it."""
     return f"ugo {shown(command[1:])}"
 
@@ -246,7 +246,7 @@ def write_reference(name, placed, commands, readings, tables):
     DATA.mkdir(parents=True, exist_ok=True)
     with open(DATA / f"{name}.csv", "w", newline="") as f:
         f.write(f"# Hard-probe references of cases/{name}.toml (issue 34, docs/accuracy.md).\n")
-        f.write(f"# probes: {shown(placed)}\n")
+        f.write(f"# probes: {as_ugo(placed)}\n")
         if DATA.name == "tuning":
             f.write(f"# then every probe within {TUNING_APART} m of one of tests/data/accuracy/{name}.csv left out\n")
         f.write(f"# case: tools/accuracy/bench.py: cases/{name}.toml without its "
