@@ -243,7 +243,7 @@ fn the_slot_behind_a_desk_is_no_worse_than_today() {
 fn the_wall_under_a_whiteboard_is_no_worse_than_today() {
     // The office's contact-1cm/005 (+3.7 %: the wall 1 cm under its whiteboard) in a 4 × 3 m
     // room at the office's settings (docs/accuracy.md, "A whiteboard on a wall"): the board's
-    // 2 cm underside read the wall's leaf under it at its mean, +30 % against the forward
+    // 2 cm underside read the wall's leaf under it at its mean, +27.5 % against the forward
     // bins, until the wall was graded toward it (`kernel/hierarchy/edges.rs`,
     // `graded_toward`, down to the board's width): the contacts +3.7 % before, 0.63 % since;
     // the controls 0.24 %.

@@ -56,7 +56,7 @@ fn panel(name: &str, origin: DVec3, u: DVec3, v: DVec3) -> ugo::geometry::Surfac
 /// are cut to a quarter of the smallest size; before the low one only the floor is: the
 /// low panel is not graded (`edges::EDGE_NARROWEST`: graded, it would be cut all over),
 /// but the wide floor is graded toward it, as a wall toward a whiteboard's underside
-/// (`edges::graded_toward`; before, neither side was, and the floor's leaf there 0.12 m).
+/// (`edges::graded_toward`; before, neither side was).
 #[test]
 fn a_narrow_surface_is_not_graded_and_the_floor_before_it_is() {
     let mut room = furnace(2.0, 0.5, 1.0, 10.0);

@@ -12,8 +12,8 @@
 //! than [`EDGE_FINEST`] of the smallest size (a whiteboard's 2 cm underside against a
 //! wall), only the wide side is graded, down to the thin face's width ([`NARROW_FINEST`]),
 //! even where it straddles the contact: the contact's cuts part it first (`cuts.rs`), and
-//! the thin face, which sees it at large factors, otherwise reads its mean (`docs/accuracy.md`, "A whiteboard on a wall": the
-//! wall 1 cm under the board +3.7 %).
+//! the thin face, which sees it at large factors, otherwise reads its mean
+//! (`docs/accuracy.md`, "A whiteboard on a wall": the wall 1 cm under the board +3.7 %).
 
 use super::node::longest_edge;
 use super::oracle::split_toward;
@@ -34,8 +34,9 @@ pub const EDGE_FINEST: f64 = 0.25;
 /// each other and nearer than `patch_size` (m): the larger of those graded toward the
 /// other ([`graded_toward`]), down to their distance (0 at a shared edge) but not below
 /// [`EDGE_FINEST`] of `patch_size`; toward a thin face, down to its width (a 2 cm
-/// underside: 2 cm) but not below [`NARROW_FINEST`] of `patch_size`. An element of the smallest size is split below it only
-/// if the pair sees something of each other. With the rays it took.
+/// underside: 2 cm) but not below [`NARROW_FINEST`] of `patch_size`. An element of the
+/// smallest size is split below it only if the pair sees something of each other. With
+/// the rays it took.
 pub fn to_split(tree: &Tree, visibility: &Visibility, patch_size: f64, p: u32, q: u32) -> (Option<u32>, usize) {
     let (a, b) = (tree.node(p), tree.node(q));
     let (Some(pa), Some(pb)) = (a.patch(), b.patch()) else { return (None, 0) };
@@ -73,7 +74,7 @@ fn graded_toward(tree: &Tree, n: u32, m: u32, patch_size: f64) -> bool {
 /// Elements graded toward a thin face split down to its width, but not below this
 /// share of the smallest size: a face a millimetre thick would cut its neighbour to a
 /// millimetre. The office's wall 1 cm under its whiteboard: +0.82 % graded to a quarter of
-/// the smallest size (3.75 cm), +0.33 % to the board's 2 cm (`docs/hierarchy.md`, "Toward
+/// the smallest size (3.75 cm), +0.32 % to the board's 2 cm (`docs/hierarchy.md`, "Toward
 /// narrow faces").
 pub const NARROW_FINEST: f64 = 1.0 / 16.0;
 
