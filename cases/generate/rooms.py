@@ -11,6 +11,7 @@ Files (relative to cases/):
     office.toml            a furnished 8 x 6 x 2.8 m office, about 1,000 quads
     office-downlight.ies   its recessed downlight: batwing, 3,400 lm (LM-63-2002, type C)
     lecture-hall.toml      a tiered lecture hall with 140 box seats, about 3,000 quads
+    seat-room.toml         two of its tiers, four seats a row, in a 3 x 4.5 m room
     hall-obj.toml          the same hall whose seat cushions are triangle meshes ...
     hall-obj/seats.obj     ... about 2e5 triangles (not committed: `make cases` writes it)
     hall-downlight.ies     the halls' downlight: cos^2, 6,000 lm (LM-63-2002, type C)
@@ -612,6 +613,66 @@ def lecture_hall():
                      box_seat, [("seat", 0.15)], patch_size=0.25, hierarchy=(3e-2, 1.0))
 
 
+SEAT_ROOM = (3.0, 3.5, 4.5)  # width (x), height (y), depth (z) of the seat room
+
+
+def seat_room():
+    """Two of the lecture hall's tiers in a small closed room (issue 34, docs/accuracy.md,
+    "Seats on tiers"): its undersides and umbrae read dark, its ceiling corners bright, in
+    seconds instead of the hall's minutes."""
+    w, h, d = SEAT_ROOM
+    header = [
+        "Two of the lecture hall's tiers in a 3 x 4.5 x 3.5 m closed room (issue 34,",
+        "docs/accuracy.md, \"Seats on tiers\"): a flat front 1.5 m deep, then two tiers (0.3 m",
+        "rise, 1 m tread; the second runs to the back wall), each with the hall's writing desk",
+        "and four of its box seats between armrests; four of its 6,000 lm downlights 1 cm below",
+        "the ceiling; its reflectances and settings (roots of 1 m, link tolerance 3e-2, leaves",
+        "down to 0.25 m). The hall's undersides (down to -5.2 %) and umbrae (-4.5 %) read dark",
+        "and its ceiling corners bright against `ugo trace`; so do this room's hard probes",
+        "(tests/data/accuracy/seat-room.csv), in 5 s of solve instead of 150 s.",
+    ]
+    case = Case("seat-room", "Two tiers of the lecture hall's seats in a small room", header,
+                patch_size=0.25, hierarchy=(3e-2, 1.0))
+    for material, rho in [("floor", 0.25), ("ceiling", 0.75), ("wall", 0.55), ("desk", 0.5), ("wood", 0.35),
+                          ("seat", 0.15)]:
+        case.material(material, rho)
+    front = 1.5
+    edges = [0.0, front, front + TREAD, d]
+    case.rect("front floor", "floor", (0, 0, 0), (w, 0, 0), (0, 0, front), (0, 1, 0))
+    for k in (1, 2):
+        y, z = k * RISER, edges[k]
+        case.rect(f"riser {k}", "floor", (0, y - RISER, z), (w, 0, 0), (0, RISER, 0), (0, 0, -1))
+        case.rect(f"tread {k}", "floor", (0, y, z), (w, 0, 0), (0, 0, edges[k + 1] - z), (0, 1, 0))
+    case.rect("ceiling", "ceiling", (0, h, 0), (w, 0, 0), (0, 0, d), (0, -1, 0))
+    case.rect("front wall", "wall", (0, 0, 0), (w, 0, 0), (0, h, 0), (0, 0, 1))
+    case.rect("back wall", "wall", (0, 2 * RISER, d), (w, 0, 0), (0, h - 2 * RISER, 0), (0, 0, -1))
+    for k in range(3):
+        y, z0, z1 = k * RISER, edges[k], edges[k + 1]
+        case.rect(f"left wall, tier {k}", "wall", (0, y, z0), (0, h - y, 0), (0, 0, z1 - z0), (1, 0, 0))
+        case.rect(f"right wall, tier {k}", "wall", (w, y, z0), (0, h - y, 0), (0, 0, z1 - z0), (-1, 0, 0))
+    x0, seats = 0.3, 4
+    for k in (1, 2):
+        y, z = k * RISER, edges[k]
+        x1 = x0 + seats * PITCH
+        row = f"row {k}"
+        case.box(f"{row}, desk", "desk", (x0 - 0.025, y + 0.72, z + 0.03), (x1 + 0.025, y + 0.75, z + 0.38))
+        case.box(f"{row}, desk panel", "wood", (x0 - 0.025, y, z + 0.03), (x1 + 0.025, y + 0.72, z + 0.06))
+        for a in range(seats + 1):
+            xa = x0 + a * PITCH
+            case.box(f"{row}, armrest {a + 1}", "wood", (xa - 0.025, y, z + 0.48), (xa + 0.025, y + 0.65, z + 0.92))
+        for i in range(seats):
+            box_seat(case, f"{row}, seat {i + 1}", *seat_x(x0, i), y, z)
+    for i, (x, z) in enumerate([(0.9, 1.3), (2.1, 1.3), (0.9, 3.3), (2.1, 3.3)]):
+        case.luminaire(f"downlight {i + 1}", "hall-downlight.ies", (x, h - 0.01, z))
+    x = seat_x(x0, 1)[0] + 0.275
+    case.probe("row 1, seat 2, pan underside", (x, RISER + 0.399, front + 0.7), (0, -1, 0))
+    case.probe("tread 1 under seat 2", (x, RISER, front + 0.7), (0, 1, 0))
+    case.probe("row 1, desk", (x, RISER + 0.75, front + 0.2), (0, 1, 0))
+    case.probe("ceiling, centre", (w / 2, h, d / 2), (0, -1, 0))
+    case.camera("from the back corner", (w - 0.2, 2.6, d - 0.2), (1.2, 0.6, 1.6), 70, (640, 400))
+    return case
+
+
 # ----------------------------------------------------------------------------- the meshed seats
 
 
@@ -706,19 +767,22 @@ def outputs(detail):
     """Every file the script writes: {path relative to cases/: text}, and a summary."""
     office_case, books = office()
     hall = lecture_hall()
+    seats = seat_room()
     obj_case, obj_text = hall_obj(detail)
     files = {
         "office.toml": office_case.text(),
         "office-downlight.ies": office_downlight(),
         "lecture-hall.toml": hall.text(),
         "hall-downlight.ies": hall_downlight(),
+        "seat-room.toml": seats.text(),
         "hall-obj.toml": obj_case.text(),
         "hall-obj/seats.obj": obj_text,
     }
     summary = [f"office.toml: {office_case.quads:,} quads ({books} books)",
                f"lecture-hall.toml: {hall.quads:,} quads",
+               f"seat-room.toml: {seats.quads:,} quads",
                f"hall-obj.toml: {obj_case.quads:,} quads, {obj_case.triangles:,} OBJ triangles"]
-    return files, summary, [office_case, hall, obj_case]
+    return files, summary, [office_case, hall, seats, obj_case]
 
 
 def check(directory, files):

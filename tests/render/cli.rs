@@ -83,7 +83,7 @@ fn render_fails_clearly_on_a_missing_or_foreign_file() {
 }
 
 /// Every bundled case, coarsened (patch size, direction cells) so that the test is quick.
-const CASES: [(&str, &str, &str); 13] = [
+const CASES: [(&str, &str, &str); 14] = [
     ("board-room", "0.5", "1"),
     ("cornell-box", "0.1", "1"),
     ("daylit-office", "0.5", "1"),
@@ -96,6 +96,7 @@ const CASES: [(&str, &str, &str); 13] = [
     ("opal-diffuser", "0.25", "1"),
     ("open-box", "0.25", "1"),
     ("parallel-plates", "0.25", "1"),
+    ("seat-room", "0.5", "1"),
     ("slot-room", "0.5", "1"),
 ];
 

@@ -127,6 +127,25 @@ fn the_lecture_hall_is_furnished_closed_and_lit_from_inside() {
 }
 
 #[test]
+fn the_seat_room_is_two_of_the_halls_tiers_closed_and_lit_from_inside() {
+    let scene = load("cases/seat-room.toml");
+    assert_eq!(quads(&scene), 194);
+    assert_eq!(scene.luminaires.len(), 4);
+    let seats = scene.surfaces.iter().filter(|s| s.name.ends_with(", pan")).count();
+    assert_eq!(seats, 8, "two rows of four seats");
+    let hall = load("cases/lecture-hall.toml");
+    let pan = |scene: &Scene| -> Shape {
+        scene.surfaces.iter().find(|s| s.name.ends_with("seat 1, pan")).expect("a pan").shape.clone()
+    };
+    let size = |shape: Shape| match shape {
+        Shape::Box { min, max, .. } => max - min,
+        other => panic!("a pan is a box, not {other:?}"),
+    };
+    assert!(size(pan(&scene)).abs_diff_eq(size(pan(&hall)), 1e-9), "the hall's seats");
+    closed_around_luminaires(&scene);
+}
+
+#[test]
 fn the_hall_of_meshed_seats_has_two_hundred_thousand_triangles() {
     if !Path::new(HALL_OBJ).exists() {
         eprintln!("skipped: {HALL_OBJ} has not been generated (`make cases` or `python3 cases/generate/rooms.py`)");
