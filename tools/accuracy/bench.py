@@ -12,12 +12,17 @@ run again resumes after it); solve it with each setting
 (timed, wall clock and peak memory) and write every probe's relative error to
 out/accuracy/CASE-SETTING.csv (`--step compare` again from the solves' files); trace the
 probes with `ugo trace` in about the case's own solve time, compared like a setting
-(`trace-equal`, `--step trace`). `report.py` turns those into the tables of docs/accuracy.md.
+(`trace-equal`, `--step trace`); and solve the case as it stands, its own probes steering the
+refinement, then read the hard probes on that field with `ugo readout` (`unsteered`,
+`--step unsteered`: in the solves above the hard probes' own importance refines the links
+they read, which a user's probes elsewhere would not). `report.py` turns those into the
+tables of docs/accuracy.md.
 
     tools/accuracy/bench.py cornell-box open-box office            # all three steps
     tools/accuracy/bench.py --step pilot lecture-hall                 # what its references would cost
     tools/accuracy/bench.py --step solve office                       # the solves only
     tools/accuracy/bench.py --step trace cornell-box                  # ugo trace at equal time
+    tools/accuracy/bench.py --step unsteered seat-room                # the probes read after the solve
     tools/accuracy/bench.py --tuning open-box                         # a second probe set to tune on
     tools/accuracy/bench.py --step solve --ugo B --setting NAME office  # another build, as NAME
 
@@ -310,6 +315,24 @@ def compare(name, setting):
             w.writerow([probe, cls, e, se, x, relative(x - e), relative(bar)])
 
 
+def unsteered(name, bench, flags):
+    """Solves cases/name.toml with `flags` and its own readings (`--save-kernel`), then reads
+    the benchmark's probes on that field (`ugo readout`): out/accuracy/name-unsteered-probes.csv,
+    the two commands and their cost in name-unsteered.run, compared like a setting."""
+    case, saved, output = ROOT / "cases" / f"{name}.toml", OUT / f"{name}-solved.h5", OUT / f"{name}-unsteered.h5"
+    solved = [UGO, "solve", case, "-o", saved, "--save-kernel", *flags]
+    read = [UGO, "readout", saved, bench, "-o", output]
+    _, solve_seconds, solve_peak = run(solved, OUT / f"{name}-solved.log")
+    _, read_seconds, read_peak = run(read, OUT / f"{name}-unsteered.log")
+    (OUT / f"{name}-unsteered.run").write_text(
+        f"# {shown(solved)}; {shown(read)}\n"
+        f"# seconds {solve_seconds + read_seconds:.1f} peak_MB {max(solve_peak, read_peak):.0f}\n")
+    for path in (saved, output):
+        path.unlink(missing_ok=True)
+    print(f"  unsteered: solve {solve_seconds:.1f} s, readout {read_seconds:.1f} s")
+    compare(name, "unsteered")
+
+
 def header_seconds(text, prefix):
     """The seconds in parentheses on the header line of `text` starting with `prefix`."""
     line = next(l for l in text.splitlines() if l.startswith(prefix))
@@ -339,7 +362,8 @@ def trace_equal(name, bench, seed):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("cases", nargs="+", help="names of cases/NAME.toml")
-    parser.add_argument("--step", choices=["all", "pilot", "reference", "solve", "compare", "trace"], default="all",
+    parser.add_argument("--step", choices=["all", "pilot", "reference", "solve", "compare", "trace", "unsteered"],
+                        default="all",
                         help="pilot: only what the references would cost")
     parser.add_argument("--count", type=int, help="probes per class (20; 10 with --tuning)")
     parser.add_argument("--seed", type=int, help="the probes' seed (1; 2 with --tuning)")
@@ -374,6 +398,8 @@ def main():
                 compare(name, setting)
         if args.step in ("all", "trace"):
             trace_equal(name, bench, seed)
+        if args.step in ("all", "unsteered"):
+            unsteered(name, bench, [])
 
 
 if __name__ == "__main__":
