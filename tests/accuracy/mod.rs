@@ -266,3 +266,32 @@ fn the_seats_on_tiers_are_no_worse_than_today() {
         &[("corner-2cm", 2.2), ("contact-3cm", 2.1), ("underside", 3.6), ("umbra", 6.7), ("dim", 5.7), ("open", 0.6)],
     );
 }
+
+#[test]
+fn leaf_row_splits_a_leafs_light_by_bundle_from_the_saved_operator() {
+    // tools/accuracy/leaf_row.py (docs/hierarchy.md, "Clear links pushed into umbrae"): the
+    // saved factors reproduce the solved field, and the light it lists bundle by bundle for
+    // the floor under a seat pan adds up to the leaf's illuminance less its direct light.
+    let dir = crate::support::scratch("leaf-row");
+    let out = dir.join("seat-room.h5");
+    let o = crate::support::ugo(&["solve", "cases/seat-room.toml", "--save-kernel", "-o", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let python = std::process::Command::new("/usr/bin/python3")
+        .args(["tools/accuracy/leaf_row.py", out.to_str().unwrap(), "--at", "2.46", "0.3", "2.28", "0", "1", "0"])
+        .output()
+        .expect("/usr/bin/python3 runs (make deps installs python3-h5py and python3-scipy)");
+    let said = String::from_utf8_lossy(&python.stdout).into_owned();
+    assert!(python.status.success(), "{said}{}", String::from_utf8_lossy(&python.stderr));
+    let number_after = |line: &str, key: &str| -> f64 {
+        let rest = &line[line.find(key).unwrap_or_else(|| panic!("no {key} in {line}")) + key.len()..];
+        rest.trim_start().split(' ').next().unwrap().trim_end_matches(',').parse().unwrap()
+    };
+    let leaf = said.lines().find(|l| l.starts_with("leaf ")).expect("the leaf's line");
+    let (e, direct) = (number_after(leaf, ": E"), number_after(leaf, "direct"));
+    let bundles: f64 =
+        said.lines().filter(|l| l.trim_start().starts_with("bundle")).map(|l| number_after(l, "→")).sum();
+    assert!(
+        e > 0.0 && (bundles - (e - direct)).abs() <= 1e-3 * e,
+        "{bundles} lx by bundle, E {e} − direct {direct}: {said}"
+    );
+}
