@@ -319,10 +319,13 @@ def unsteered(name, bench, flags):
     """Solves cases/name.toml with `flags` and its own readings (`--save-kernel`), then reads
     the benchmark's probes on that field (`ugo readout`): out/accuracy/name-unsteered-probes.csv,
     the two commands and their cost in name-unsteered.run, compared like a setting."""
-    case, saved, output = ROOT / "cases" / f"{name}.toml", OUT / f"{name}-solved.h5", OUT / f"{name}-unsteered.h5"
+    # the solve's own readings (probe and grid CSVs, plans) go beside it, apart from the settings'
+    folder = OUT / "solved"
+    folder.mkdir(exist_ok=True)
+    case, saved, output = ROOT / "cases" / f"{name}.toml", folder / f"{name}.h5", OUT / f"{name}-unsteered.h5"
     solved = [UGO, "solve", case, "-o", saved, "--save-kernel", *flags]
     read = [UGO, "readout", saved, bench, "-o", output]
-    _, solve_seconds, solve_peak = run(solved, OUT / f"{name}-solved.log")
+    _, solve_seconds, solve_peak = run(solved, folder / f"{name}.log")
     _, read_seconds, read_peak = run(read, OUT / f"{name}-unsteered.log")
     (OUT / f"{name}-unsteered.run").write_text(
         f"# {shown(solved)}; {shown(read)}\n"
