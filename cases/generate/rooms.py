@@ -474,27 +474,33 @@ ROWS, RISER, TREAD, FRONT = 10, 0.3, 1.0, 4.5  # tiers: count, rise, depth; the 
 SEATS, PITCH, AISLE = 7, 0.6, 1.2  # seats per block (two blocks a row), their pitch, the centre aisle
 
 
-def tier(k):
-    """Row k (1..ROWS): the height of its tread and the z where it starts."""
-    return k * RISER, FRONT + (k - 1) * TREAD
+def tier(k, front=FRONT):
+    """Row k (1, 2, ...) behind a flat front `front` deep: the height of its tread and the z
+    where it starts."""
+    return k * RISER, front + (k - 1) * TREAD
 
 
 def hall_shell(case):
-    """A closed tiered hall: the flat front, a riser and a tread per row (the last tread
-    runs to the back wall), the ceiling, front and back walls, and each side wall as one
-    rectangle per tier (above that tier's tread)."""
-    w, h, d = HALL
-    case.rect("front floor", "floor", (0, 0, 0), (w, 0, 0), (0, 0, FRONT), (0, 1, 0))
-    edges = [0.0] + [tier(k)[1] for k in range(1, ROWS + 1)] + [d]
-    for k in range(1, ROWS + 1):
-        y, z = tier(k)
+    """The lecture hall's closed shell (`tiered_shell`)."""
+    tiered_shell(case, HALL, ROWS, FRONT)
+
+
+def tiered_shell(case, size, rows, front):
+    """A closed tiered room of `size`: the flat front `front` deep, a riser and a tread per
+    row (the last tread runs to the back wall), the ceiling, front and back walls, and each
+    side wall as one rectangle per tier (above that tier's tread)."""
+    w, h, d = size
+    case.rect("front floor", "floor", (0, 0, 0), (w, 0, 0), (0, 0, front), (0, 1, 0))
+    edges = [0.0] + [tier(k, front)[1] for k in range(1, rows + 1)] + [d]
+    for k in range(1, rows + 1):
+        y, z = tier(k, front)
         case.rect(f"riser {k}", "floor", (0, y - RISER, z), (w, 0, 0), (0, RISER, 0), (0, 0, -1))
         case.rect(f"tread {k}", "floor", (0, y, z), (w, 0, 0), (0, 0, edges[k + 1] - z), (0, 1, 0))
     case.rect("ceiling", "ceiling", (0, h, 0), (w, 0, 0), (0, 0, d), (0, -1, 0))
     case.rect("front wall", "wall", (0, 0, 0), (w, 0, 0), (0, h, 0), (0, 0, 1))
-    top = tier(ROWS)[0]
+    top = tier(rows, front)[0]
     case.rect("back wall", "wall", (0, top, d), (w, 0, 0), (0, h - top, 0), (0, 0, -1))
-    for k in range(ROWS + 1):
+    for k in range(rows + 1):
         y, z0, z1 = k * RISER, edges[k], edges[k + 1]
         case.rect(f"left wall, tier {k}", "wall", (0, y, z0), (0, h - y, 0), (0, 0, z1 - z0), (1, 0, 0))
         case.rect(f"right wall, tier {k}", "wall", (w, y, z0), (0, h - y, 0), (0, 0, z1 - z0), (-1, 0, 0))
@@ -517,15 +523,21 @@ def hall_rows(case, seats):
     for k in range(1, ROWS + 1):
         y, z = tier(k)
         for b, x0 in enumerate(blocks()):
-            x1 = x0 + SEATS * PITCH
-            row = f"row {k} {'left' if b == 0 else 'right'}"
-            case.box(f"{row}, desk", "desk", (x0 - 0.025, y + 0.72, z + 0.03), (x1 + 0.025, y + 0.75, z + 0.38))
-            case.box(f"{row}, desk panel", "wood", (x0 - 0.025, y, z + 0.03), (x1 + 0.025, y + 0.72, z + 0.06))
-            for a in range(SEATS + 1):
-                xa = x0 + a * PITCH
-                case.box(f"{row}, armrest {a + 1}", "wood", (xa - 0.025, y, z + 0.48), (xa + 0.025, y + 0.65, z + 0.92))
-            for i in range(SEATS):
-                seats(case, f"{row}, seat {i + 1}", *seat_x(x0, i), y, z)
+            seat_block(case, f"row {k} {'left' if b == 0 else 'right'}", x0, SEATS, y, z, seats)
+
+
+def seat_block(case, row, x0, count, y, z, seats):
+    """One block of a row on the tread at height `y` starting at `z`: a writing desk (top
+    and front panel), `count + 1` armrests from `x0` on, and `count` seats made by
+    `seats(case, name, x0, x1, y, z)`."""
+    x1 = x0 + count * PITCH
+    case.box(f"{row}, desk", "desk", (x0 - 0.025, y + 0.72, z + 0.03), (x1 + 0.025, y + 0.75, z + 0.38))
+    case.box(f"{row}, desk panel", "wood", (x0 - 0.025, y, z + 0.03), (x1 + 0.025, y + 0.72, z + 0.06))
+    for a in range(count + 1):
+        xa = x0 + a * PITCH
+        case.box(f"{row}, armrest {a + 1}", "wood", (xa - 0.025, y, z + 0.48), (xa + 0.025, y + 0.65, z + 0.92))
+    for i in range(count):
+        seats(case, f"{row}, seat {i + 1}", *seat_x(x0, i), y, z)
 
 
 def box_seat(case, name, x0, x1, y, z):
@@ -636,32 +648,10 @@ def seat_room():
     for material, rho in [("floor", 0.25), ("ceiling", 0.75), ("wall", 0.55), ("desk", 0.5), ("wood", 0.35),
                           ("seat", 0.15)]:
         case.material(material, rho)
-    front = 1.5
-    edges = [0.0, front, front + TREAD, d]
-    case.rect("front floor", "floor", (0, 0, 0), (w, 0, 0), (0, 0, front), (0, 1, 0))
+    front, x0 = 1.5, 0.3
+    tiered_shell(case, SEAT_ROOM, 2, front)
     for k in (1, 2):
-        y, z = k * RISER, edges[k]
-        case.rect(f"riser {k}", "floor", (0, y - RISER, z), (w, 0, 0), (0, RISER, 0), (0, 0, -1))
-        case.rect(f"tread {k}", "floor", (0, y, z), (w, 0, 0), (0, 0, edges[k + 1] - z), (0, 1, 0))
-    case.rect("ceiling", "ceiling", (0, h, 0), (w, 0, 0), (0, 0, d), (0, -1, 0))
-    case.rect("front wall", "wall", (0, 0, 0), (w, 0, 0), (0, h, 0), (0, 0, 1))
-    case.rect("back wall", "wall", (0, 2 * RISER, d), (w, 0, 0), (0, h - 2 * RISER, 0), (0, 0, -1))
-    for k in range(3):
-        y, z0, z1 = k * RISER, edges[k], edges[k + 1]
-        case.rect(f"left wall, tier {k}", "wall", (0, y, z0), (0, h - y, 0), (0, 0, z1 - z0), (1, 0, 0))
-        case.rect(f"right wall, tier {k}", "wall", (w, y, z0), (0, h - y, 0), (0, 0, z1 - z0), (-1, 0, 0))
-    x0, seats = 0.3, 4
-    for k in (1, 2):
-        y, z = k * RISER, edges[k]
-        x1 = x0 + seats * PITCH
-        row = f"row {k}"
-        case.box(f"{row}, desk", "desk", (x0 - 0.025, y + 0.72, z + 0.03), (x1 + 0.025, y + 0.75, z + 0.38))
-        case.box(f"{row}, desk panel", "wood", (x0 - 0.025, y, z + 0.03), (x1 + 0.025, y + 0.72, z + 0.06))
-        for a in range(seats + 1):
-            xa = x0 + a * PITCH
-            case.box(f"{row}, armrest {a + 1}", "wood", (xa - 0.025, y, z + 0.48), (xa + 0.025, y + 0.65, z + 0.92))
-        for i in range(seats):
-            box_seat(case, f"{row}, seat {i + 1}", *seat_x(x0, i), y, z)
+        seat_block(case, f"row {k}", x0, 4, *tier(k, front), box_seat)
     for i, (x, z) in enumerate([(0.9, 1.3), (2.1, 1.3), (0.9, 3.3), (2.1, 3.3)]):
         case.luminaire(f"downlight {i + 1}", "hall-downlight.ies", (x, h - 0.01, z))
     x = seat_x(x0, 1)[0] + 0.275
