@@ -143,13 +143,14 @@ fn read_from(file: &File) -> Result<StoredKernel, Why> {
         true => Transport::Hierarchical(Box::new(read_operator(file, &directions)?)),
         false => Transport::Uniform(csr(file, n * k)?),
     };
-    let vector = |name: &str, len: usize| -> Result<Vec<f64>, Why> {
+    let values = |name: &str, len: usize, (valid, what): (fn(&f64) -> bool, &str)| -> Result<Vec<f64>, Why> {
         let v = file.raw::<f64>(&format!("kernel/{name}"))?;
-        if v.len() != len || v.iter().any(|x| !x.is_finite()) {
-            return Err(Why(format!("/kernel/{name} holds {} values (expected {len} finite ones)", v.len())));
+        if v.len() != len || !v.iter().all(valid) {
+            return Err(Why(format!("/kernel/{name} holds {} values (expected {len} {what} ones)", v.len())));
         }
         Ok(v)
     };
+    let vector = |name: &str, len: usize| values(name, len, (|x| x.is_finite(), "finite"));
     let arriving = vector("direct/arriving", n * k)?;
     let intercepted = file.raw::<f64>("kernel/direct/intercepted")?;
     let rays: u64 = g.group("direct")?.attr("rays")?.read_scalar()?;
@@ -157,7 +158,9 @@ fn read_from(file: &File) -> Result<StoredKernel, Why> {
     let fingerprint = fingerprint(&g.group("fingerprint")?)?;
     // A hierarchy's leaves keep their cuts: a group's light (`Model::source_term_of`) is cut
     // as the solve cut it, so that it adds up to the stored `D` (`docs/light-scenes.md`).
-    let least = if hierarchical { vector("direct/least", n)? } else { Vec::new() };
+    // +∞ on a leaf that reflects nothing (a lamp's surface): none of its light is worth cutting
+    let cut_limit: (fn(&f64) -> bool, &str) = (|x| *x >= 0.0, "non-negative");
+    let least = if hierarchical { values("direct/least", n, cut_limit)? } else { Vec::new() };
     let direct = DirectLight { arriving, intercepted, rays: rays as usize, least: least.clone() };
     let hierarchy = hierarchical.then(|| read_hierarchy(file, n, least)).transpose()?;
     if transport.rows() != n * k {

@@ -151,6 +151,22 @@ fn a_light_scene_added_alone_keeps_the_stored_readings_and_reads_the_stored_dire
 }
 
 #[test]
+fn a_hierarchy_with_an_emitting_surface_that_reflects_nothing_reads_out_after_the_solve() {
+    // The open box's lamp is a surface of albedo 0: its leaves' cut limits are +∞
+    // (`model/hierarchical.rs`, `worth_cutting`), which the kernel file stores and which
+    // `ugo readout` refused as not finite (`tools/accuracy/bench.py --step unsteered open-box`).
+    let dir = scratch("readout-black-lamp");
+    let (solved, read_out) = (dir.join("a.h5"), dir.join("b.h5"));
+    let (a, b) = (solved.to_str().unwrap(), read_out.to_str().unwrap());
+    run(&["solve", "cases/open-box.toml", "--save-kernel", "-o", a]);
+    let least = read(&solved, "kernel/direct/least");
+    assert!(least.iter().any(|x| x.is_infinite()), "no leaf with an infinite cut limit");
+    run(&["readout", a, "cases/open-box.toml", "-o", b]);
+    let (again, stored) = (read(&read_out, "probes/illuminance"), read(&solved, "probes/illuminance"));
+    assert!(!stored.is_empty() && relative(&again, &stored) <= 1e-12, "{again:?} against {stored:?}");
+}
+
+#[test]
 fn a_changed_case_is_refused_and_the_file_left_as_it_was() {
     let dir = scratch("readout-refused");
     let case = dir.write("box.toml", CASE);
