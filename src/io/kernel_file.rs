@@ -143,14 +143,14 @@ fn read_from(file: &File) -> Result<StoredKernel, Why> {
         true => Transport::Hierarchical(Box::new(read_operator(file, &directions)?)),
         false => Transport::Uniform(csr(file, n * k)?),
     };
-    let values = |name: &str, len: usize, (valid, what): (fn(&f64) -> bool, &str)| -> Result<Vec<f64>, Why> {
+    let values = |name: &str, len: usize, valid: fn(&f64) -> bool, what: &str| -> Result<Vec<f64>, Why> {
         let v = file.raw::<f64>(&format!("kernel/{name}"))?;
         if v.len() != len || !v.iter().all(valid) {
             return Err(Why(format!("/kernel/{name} holds {} values (expected {len} {what} ones)", v.len())));
         }
         Ok(v)
     };
-    let vector = |name: &str, len: usize| values(name, len, (|x| x.is_finite(), "finite"));
+    let vector = |name: &str, len: usize| values(name, len, |x| x.is_finite(), "finite");
     let arriving = vector("direct/arriving", n * k)?;
     let intercepted = file.raw::<f64>("kernel/direct/intercepted")?;
     let rays: u64 = g.group("direct")?.attr("rays")?.read_scalar()?;
@@ -159,8 +159,7 @@ fn read_from(file: &File) -> Result<StoredKernel, Why> {
     // A hierarchy's leaves keep their cuts: a group's light (`Model::source_term_of`) is cut
     // as the solve cut it, so that it adds up to the stored `D` (`docs/light-scenes.md`).
     // +∞ on a leaf that reflects nothing (a lamp's surface): none of its light is worth cutting
-    let cut_limit: (fn(&f64) -> bool, &str) = (|x| *x >= 0.0, "non-negative");
-    let least = if hierarchical { values("direct/least", n, cut_limit)? } else { Vec::new() };
+    let least = if hierarchical { values("direct/least", n, |x| *x >= 0.0, "non-negative")? } else { Vec::new() };
     let direct = DirectLight { arriving, intercepted, rays: rays as usize, least: least.clone() };
     let hierarchy = hierarchical.then(|| read_hierarchy(file, n, least)).transpose()?;
     if transport.rows() != n * k {
