@@ -140,7 +140,7 @@ fn print_hierarchy(assembly: f64, rays: usize, h: &HierarchyRecord) {
     let leaves = h.census.leaf_level.len();
     let links: usize = h.census.element_links.iter().sum::<usize>() + h.census.cluster_links;
     say!(
-        "  assembly           {assembly:>12.3} s   (hierarchical, link tolerance {:.0e}, roots {} m, leaves down to {} m: {} roots → {leaves} leaves, {links} links ({} with clusters, {} partly visible), {rays} occlusion rays)",
+        "  assembly           {assembly:>12.3} s   (hierarchical, link tolerance {:.0e}, roots {} m, leaves down to {} m: {} roots → {leaves} leaves, {links} links ({} with clusters, {} with segments blocked), {rays} occlusion rays)",
         h.parameters.link_tolerance,
         h.parameters.root_size,
         h.patch_size,

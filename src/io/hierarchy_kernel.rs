@@ -83,7 +83,7 @@ fn write_operator(g: &hdf5::Group, parts: &Parts) -> hdf5::Result<()> {
     let push = g.create_group("push")?;
     dataset(&push, "indptr", &Array1::from_iter(parts.push_row.iter().map(|&r| r as u64)))?;
     dataset(&push, "bundle", &Array1::from_iter(parts.push.iter().map(|p| p.0)))?;
-    dataset(&push, "share", &Array1::from_iter(parts.push.iter().map(|p| p.1)))?;
+    dataset(&push, "share", &Array1::from_iter(parts.push.iter().map(|p| f64::from(p.1))))?;
     write_gather(g, &parts.row, &parts.entries)?;
     dataset(g, "receive", &Array1::from(parts.receive.clone()))?;
     dataset(g, "send", &Array1::from(parts.send.clone()))?;
@@ -102,9 +102,10 @@ pub(super) fn read_operator(file: &File, directions: &DirectionSet) -> Result<Op
     let index = |name: &str| -> Result<Vec<usize>, Why> {
         Ok(file.raw::<u64>(&at(name))?.into_iter().map(|v| v as usize).collect())
     };
-    let zip2 = |a: Vec<u32>, b: Vec<f64>| -> Result<Vec<(u32, f64)>, Why> {
+    // the shares are f32 in memory (`push.rs`), written as f64
+    let zip2 = |a: Vec<u32>, b: Vec<f64>| -> Result<Vec<(u32, f32)>, Why> {
         match a.len() == b.len() {
-            true => Ok(a.into_iter().zip(b).collect()),
+            true => Ok(a.into_iter().zip(b.into_iter().map(|s| s as f32)).collect()),
             false => Err(Why("/kernel/hierarchy/operator/push: bundle and share differ in length".into())),
         }
     };

@@ -4,9 +4,9 @@
 //! `cells`, `format`, `links`, `reaching_links`, `rays`, `seconds`, `leaves` (`first`,
 //! `end`: the part's run of unknowns) and `nodes` (`first`, `end`: its run of depth-first
 //! positions); `projected` (the cells' `μ_k`); `tree/{parent (u32), weight (f64), cluster
-//! (u8), leaf_position (u32)}`, the whole tree; `bundles/{receiver (u32), kind (u8)}`, its
+//! (u8), leaf_position (u32)}`, the whole tree; `bundles/{receiver (u32), kind (u8), source (u32)}`, its
 //! bundles' keys; `gather/{indptr (u64), source (u32), d, m (u16), f (f64)}` by bundle;
-//! `push/{indptr (u64), receiver (u32), kind (u8), share (f64)}` by own leaf; by own leaf
+//! `push/{indptr (u64), receiver (u32), kind (u8), source (u32), share (f64)}` by own leaf; by own leaf
 //! `L0` and `arriving` (`x[l·K + k]`, f64), `exposed` (f64), `emits` (u8),
 //! `closure/{cast, covered}` (u32), `material` and `twin` (u32, an unknown's index or
 //! 4294967295); `balancing`, attributes: the rules of the sweeps (`balance.rs`) and the
@@ -23,7 +23,7 @@ use ndarray::Array1;
 use std::path::Path;
 
 /// The layout of `/rows`.
-const ROWS_FORMAT: u64 = 2;
+const ROWS_FORMAT: u64 = 3;
 
 /// Writes `rows` with the case's `fingerprint` and the cells' projected solid angles
 /// `projected` to `path` (through a temporary file).
@@ -61,12 +61,14 @@ fn write_to(path: &Path, fingerprint: &Fingerprint, projected: &[f64], p: &PartR
     let bundles = g.create_group("bundles")?;
     dataset(&bundles, "receiver", &Array1::from_iter(r.bundles.iter().map(|b| b.receiver)))?;
     dataset(&bundles, "kind", &Array1::from_iter(r.bundles.iter().map(|b| b.kind)))?;
+    dataset(&bundles, "source", &Array1::from_iter(r.bundles.iter().map(|b| b.source)))?;
     write_gather(&g, &r.row, &r.entries)?;
     let push = g.create_group("push")?;
     dataset(&push, "indptr", &Array1::from_iter(r.push_row.iter().map(|&i| i as u64)))?;
     dataset(&push, "receiver", &Array1::from_iter(r.push.iter().map(|(b, _)| b.receiver)))?;
     dataset(&push, "kind", &Array1::from_iter(r.push.iter().map(|(b, _)| b.kind)))?;
-    dataset(&push, "share", &Array1::from_iter(r.push.iter().map(|(_, s)| *s)))?;
+    dataset(&push, "source", &Array1::from_iter(r.push.iter().map(|(b, _)| b.source)))?;
+    dataset(&push, "share", &Array1::from_iter(r.push.iter().map(|(_, s)| f64::from(*s))))?;
     dataset(&g, "L0", &Array1::from(p.l0.clone()))?;
     dataset(&g, "arriving", &Array1::from(p.arriving.clone()))?;
     dataset(&g, "exposed", &Array1::from(p.exposed.clone()))?;

@@ -66,6 +66,8 @@ pub fn refine_with_solves<E: From<Stopped>>(
         if refined == 0 {
             break;
         }
+        // the next operator is built in this one's place: two at once would hold the push twice
+        drop(kernel);
         l0 = source(hierarchy)?;
         let (next, next_leaves) = balanced(hierarchy, history.len(), progress)?;
         let start = Instant::now();

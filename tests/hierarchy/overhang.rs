@@ -11,7 +11,11 @@
 //! Here, in a closed 4 m room, the light arriving at the base's top from the ceiling alone
 //! (`G x` with `x` 1 on the ceiling's leaves and 0 elsewhere) by the hierarchy, against the
 //! share of cosine rays from the base's leaves whose first face is the ceiling: 0.0000
-//! before the fix, 0.0984 after, 0.1046 traced.
+//! before the fix, 0.0984 after, 0.1046 traced. The base's nodes under the seat see none of
+//! the ceiling from their four points, and the pair was dropped: 0.0974 against 0.1040
+//! traced (−6.3 %) until such pairs were kept for the leaves' own rays where a corner of the
+//! node sees the ceiling, each ceiling element a bundle of its own (docs/hierarchy.md, "A
+//! bundle per source"): 0.1049 (+0.9 %).
 
 use super::{hierarchy, options};
 use crate::support::{furnace, lambert, surface};
@@ -75,7 +79,7 @@ fn a_chair_base_sees_the_ceiling_past_its_seat() {
         "chair base, {} leaves: the ceiling's share {hierarchical:.4} by the hierarchy, {traced:.4} traced",
         base.len()
     );
-    assert!((hierarchical / traced - 1.0).abs() < 0.1, "{hierarchical} against {traced}");
+    assert!((hierarchical / traced - 1.0).abs() < 0.03, "{hierarchical} against {traced}");
 }
 
 /// The share of cosine-distributed rays from uniform points of `p` whose first face is one

@@ -1,4 +1,4 @@
-//! The push's weights and the leaves' cast visible fractions kept between operator builds
+//! The leaves' views of their sources kept between operator builds
 //! (`push.rs`, `SeenCache`): after a refinement pass the operator (`G`) built with what was
 //! kept is the one built afresh (a fraction read back wrong by 1 % fails it).
 

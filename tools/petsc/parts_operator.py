@@ -14,13 +14,21 @@ from petsc4py import PETSc
 import hierarchy
 from kernel_read import _mat, _vec, blocks
 
-# A bundle's key is its receiver's position times this plus its sources' class (a u8,
-# `SourceClass::code` in src/kernel/hierarchy/bundle.rs), so that keys order as bundles do.
-KINDS = 256
-
 # The rows files' `format` this program reads (ROWS_FORMAT in src/io/part_rows_file.rs):
-# 2 since bundles are keyed by their sources' facing.
-ROWS_FORMAT = 2
+# 3 since a link between elements whose receiver is not a leaf is a bundle of its own,
+# keyed by its source's position as well.
+ROWS_FORMAT = 3
+
+
+def bundle_keys(g):
+    """The keys of bundles (or of push entries) in group `g`, ordered as the bundles are:
+    receiver's position, sources' class (`SourceClass::code` in
+    src/kernel/hierarchy/bundle.rs, a u8) and lone source's position (4294967295 for a
+    class of sources), in 24, 8 and 32 bits of one u64."""
+    receiver, kind, source = (g[name][:].astype(np.uint64) for name in ("receiver", "kind", "source"))
+    if len(receiver) and int(receiver.max()) >= 1 << 24:
+        raise SystemExit("from_parts: more than 2^24 tree nodes: the bundles' keys do not fit in 64 bits")
+    return (receiver << np.uint64(40)) | (kind << np.uint64(32)) | source
 
 
 @dataclass
@@ -51,7 +59,7 @@ def survey(paths):
             g = f["rows"]
             if int(g.attrs.get("format", 0)) != ROWS_FORMAT:
                 raise SystemExit(f"from_parts: {path}: rows format {int(g.attrs.get('format', 0))}, this program reads {ROWS_FORMAT}: form the parts again with this ugo")
-            keys = g["bundles/receiver"][:].astype(np.int64) * KINDS + g["bundles/kind"][:]
+            keys = bundle_keys(g["bundles"])
             fingerprint = {k: str(v) for k, v in g["fingerprint"].attrs.items()}
             parts.append(Part(path, int(g.attrs["part"]), int(g.attrs["parts"]), tuple(int(v) for v in g.attrs["leaves"]), tuple(int(v) for v in g.attrs["nodes"]), keys, fingerprint))
     parts.sort(key=lambda p: p.index)
@@ -114,9 +122,10 @@ class Operator:
         R = _mat(hierarchy.node_pull(tree, share, (a, b), lambda start, end: np.ones(end - start)), n, comm, columns=own)
         row, values = csr(files, "gather", hierarchy.LINK_FIELDS)
         Lam = _mat(hierarchy.links(row, values, share, b1 - b0, self.nodes), self.nodes * cells, comm, columns=(b - a) * cells)
-        row, values = csr(files, "push", ("receiver", "kind", "share"))
-        bundle = np.searchsorted(keys, values["receiver"].astype(np.int64) * KINDS + values["kind"])
-        if np.any(keys[np.minimum(bundle, len(keys) - 1)] != values["receiver"].astype(np.int64) * KINDS + values["kind"]):
+        row, values = csr(files, "push", ("receiver", "kind", "source", "share"))
+        wanted = bundle_keys(values)
+        bundle = np.searchsorted(keys, wanted)
+        if np.any(keys[np.minimum(bundle, len(keys) - 1)] != wanted):
             raise SystemExit("from_parts: a leaf's push names a bundle no part holds: parts of different linkings?")
         P = _mat(hierarchy.pushed(row, {"bundle": bundle, "share": values["share"]}, cells, last - first, self.bundles), self.bundles * cells, comm, columns=(b1 - b0) * cells)
         material, twin = concatenated(files, "material"), concatenated(files, "twin")

@@ -34,9 +34,9 @@ impl Hierarchy {
     }
 
     /// Refinement is over: frees what only a later pass's operator would reuse (the push's
-    /// cast visible fractions, `push.rs`); a later operator casts them again.
+    /// leaves' views, `push.rs`); a later operator finds them again.
     pub fn refined(&mut self) {
-        self.memo.seen.forget_fractions();
+        self.memo.seen.forget();
     }
 
     /// Each leaf's row sum to balance to. An emitting leaf's own estimate is its column,

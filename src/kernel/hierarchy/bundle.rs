@@ -11,7 +11,11 @@
 //! block's side see the far floor in the ratio of their heights to their ancestor's, a
 //! quarter, and the wall beside them as well as their ancestor does; in one bundle the
 //! floor's light came at 0.8 of the ancestor's and they read 30 % bright,
-//! `docs/hierarchy.md`, "Bundles by facing").
+//! `docs/hierarchy.md`, "Bundles by facing"). Those classes hold a leaf's own links and a
+//! node's cluster sources: a link between elements whose receiver is not a leaf is a bundle
+//! of its own, which each leaf takes by its own view of that one source, so that no bundle
+//! hands a bright wall's light out by a dim armrest's view (`docs/hierarchy.md`, "A bundle
+//! per source").
 
 use super::link::Link;
 use super::tree::Tree;
@@ -73,12 +77,20 @@ impl SourceClass {
     }
 }
 
+/// [`Bundles::source`] of a bundle of a class of sources: after every lone source of its
+/// receiver and class.
+pub const ALL_SOURCES: u32 = u32::MAX;
+
 /// The links grouped into bundles, ordered by receiver (depth-first position) and source
 /// class.
 #[derive(Debug, Default)]
 pub struct Bundles {
     /// Receiver node id of each bundle.
     pub receiver: Vec<u32>,
+    /// The depth-first position of each bundle's one source (a link between elements whose
+    /// receiver is not a leaf is a bundle of its own, `push.rs`), [`ALL_SOURCES`] for a
+    /// bundle of a class of sources.
+    pub source: Vec<u32>,
     /// The link indices of each bundle, CSR: `links[row[b]..row[b + 1]]`.
     pub row: Vec<usize>,
     pub links: Vec<u32>,
@@ -87,12 +99,16 @@ pub struct Bundles {
 }
 
 impl Bundles {
-    /// Groups `links` by receiver and source class; `position` is each node's depth-first
-    /// position, which orders the bundles, and the links within a bundle by source.
+    /// Groups `links` by receiver and source class, and the links between elements whose
+    /// receiver is not a leaf one to a bundle; `position` is each node's depth-first position,
+    /// which orders the bundles (by receiver, class and lone source), and the links within a
+    /// bundle by source.
     pub fn new(tree: &Tree, links: &[Link], position: &[u32]) -> Bundles {
         let key = |l: u32| {
             let link = &links[l as usize];
-            (position[link.receiver as usize], SourceClass::of(tree, link))
+            let alone = tree.node(link.source).patch().is_some() && !tree.node(link.receiver).is_leaf();
+            let source = if alone { position[link.source as usize] } else { ALL_SOURCES };
+            (position[link.receiver as usize], SourceClass::of(tree, link), source)
         };
         // within a bundle by source: the same order however the links were made (a part's
         // links rebuilt from files, `rebuilt.rs`), so that the push's rays meet the same
@@ -108,6 +124,7 @@ impl Bundles {
             }
             own.1 += 1;
             bundles.receiver.push(receiver);
+            bundles.source.push(key(bundle[0]).2);
             bundles.row.push(bundles.row[bundles.row.len() - 1] + bundle.len());
         }
         bundles.links = order;

@@ -17,7 +17,7 @@ impl Operator {
     pub fn for_each_in_row(&self, row: usize, mut f: impl FnMut(usize, f64)) {
         let (k, a, d) = (self.k, row / self.k, row % self.k);
         for &(bundle, w) in &self.push[self.push_row[a]..self.push_row[a + 1]] {
-            let (bundle, w) = (bundle as usize, w * self.receive[a]);
+            let (bundle, w) = (bundle as usize, f64::from(w) * self.receive[a]);
             for e in &self.entries[self.row[bundle]..self.row[bundle + 1]] {
                 let c = match e.d {
                     ALL_CELLS => w * e.f * self.share[d],

@@ -46,7 +46,7 @@ impl Operator {
         let mut tri = TriMat::with_capacity((leaves * k, bundles * k), self.push.len() * k);
         for l in 0..leaves {
             for &(b, w) in &self.push[self.push_row[l]..self.push_row[l + 1]] {
-                (0..k).for_each(|d| tri.add_triplet(l * k + d, b as usize * k + d, w));
+                (0..k).for_each(|d| tri.add_triplet(l * k + d, b as usize * k + d, f64::from(w)));
             }
         }
         tri.to_csr()

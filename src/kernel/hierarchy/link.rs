@@ -29,7 +29,9 @@ pub struct Link {
     pub receiver: u32,
     /// The node gathered from, `q`.
     pub source: u32,
-    /// `F_pq` with visibility, dimensionless.
+    /// `F_pq` with visibility, dimensionless; between elements that `p`'s four points
+    /// do not see at all (`visible` 0), `F_pq` unoccluded, for `p`'s leaves to see by their
+    /// own rays (`push.rs`).
     pub factor: f64,
     /// The visible fraction in `factor`: free segments of 4 or 16, exact in f32.
     pub visible: f32,

@@ -1,5 +1,5 @@
 //! What the hierarchy keeps from one operator to the next, in one value: each node's
-//! closure rays (measured once, when it is first a leaf), the push's weights (`push.rs`),
+//! closure rays (measured once, when it is first a leaf), the leaves' views of their ancestors' sources (`push.rs`),
 //! and each node's balancing factors when it was last a balanced leaf, where the next
 //! operator's balancing starts (`balance.rs`).
 
@@ -17,7 +17,7 @@ pub(super) struct Memo {
     /// Each node's closure rays (`transfer::closure`); `None` until it is a leaf of an
     /// operator.
     closure: Vec<Option<Closure>>,
-    /// The push's weights of the last operator.
+    /// The leaves' views of their ancestors' sources, as the last operator's push found them.
     pub(super) seen: SeenCache,
     /// Each node's (receiving, sending) factors when it was last a balanced leaf.
     factors: Vec<Option<(f64, f64)>>,

@@ -11,7 +11,7 @@ use super::bundle::Bundles;
 use super::link::{ALL_CELLS, Link};
 use super::node::NONE;
 use super::parts::{Entry, Parts};
-use super::push::{SeenCache, push_rows};
+use super::push::{SeenCache, gathered, push_rows};
 use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::kernel::BalanceReport;
@@ -38,7 +38,7 @@ pub struct Operator {
     pub(super) leaf_position: Vec<u32>,
     /// The bundles each leaf's ancestors receive and its share of their light (CSR, `push.rs`).
     pub(super) push_row: Vec<usize>,
-    pub(super) push: Vec<(u32, f64)>,
+    pub(super) push: Vec<(u32, f32)>,
     /// By depth-first position: parent position ([`NONE`] at the top), area share in the
     /// parent, and whether the parent is a cluster.
     pub(super) parent: Vec<u32>,
@@ -65,8 +65,8 @@ pub struct Operator {
 
 impl Operator {
     /// The operator of `links` over the leaves of `tree` (whose faces `visibility` holds);
-    /// the push's weights are kept in `seen` from one build to the next; `progress` hears
-    /// of the leaves whose push rows are done.
+    /// the leaves' views of their sources are kept in `seen` from one build to the next
+    /// (`push.rs`); `progress` hears of the leaves whose push rows are done.
     pub fn new(
         tree: &Tree,
         (visibility, links): (&Visibility, &[Link]),
@@ -85,7 +85,7 @@ impl Operator {
         let leaf_position = leaves.iter().map(|&id| position[id as usize]).collect();
         let bundles = Bundles::new(tree, links, &position);
         let (push_row, push) = push_rows(tree, visibility, (links, &bundles), &leaves, seen, progress);
-        let (row, entries) = gather_rows(links, &bundles, &position);
+        let (row, entries) = gather_rows(tree, links, &bundles, &position);
         let n = leaves.len();
         let parts = Parts {
             leaves,
@@ -174,7 +174,7 @@ impl Operator {
         let nodes = self.parent.len() as f64;
         let per_node = 4.0 + 8.0 + 1.0 + 8.0 + 2.0 * 8.0 * self.k as f64;
         let per_leaf = 4.0 * 2.0 + 3.0 * 8.0 + 8.0 * self.k as f64;
-        (self.entries.len() * std::mem::size_of::<Entry>() + self.push.len() * 16) as f64
+        (self.entries.len() * std::mem::size_of::<Entry>() + self.push.len() * std::mem::size_of::<(u32, f32)>()) as f64
             + nodes * per_node
             + self.leaves.len() as f64 * per_leaf
     }
@@ -244,7 +244,7 @@ impl Operator {
             z.fill(0.0);
             for &(b, w) in &self.push[self.push_row[l]..self.push_row[l + 1]] {
                 let g = &gathered[b as usize * k..(b as usize + 1) * k];
-                let w = w * self.receive[l];
+                let w = f64::from(w) * self.receive[l];
                 z.iter_mut().zip(g).for_each(|(z, g)| *z += w * g);
             }
         });
@@ -304,8 +304,14 @@ fn subtree_ends(parent: &[u32]) -> Vec<u32> {
     end
 }
 
-/// The links' pieces as CSR rows by bundle.
-pub(super) fn gather_rows(links: &[Link], bundles: &Bundles, position: &[u32]) -> (Vec<usize>, Vec<Entry>) {
+/// The links' pieces as CSR rows by bundle, each link's factor without its visible fraction
+/// (`push.rs`: each leaf's own rays see the rest).
+pub(super) fn gather_rows(
+    tree: &Tree,
+    links: &[Link],
+    bundles: &Bundles,
+    position: &[u32],
+) -> (Vec<usize>, Vec<Entry>) {
     let pieces = |l: u32| links[l as usize].pieces.len().max(1);
     let mut row = Vec::with_capacity(bundles.len() + 1);
     row.push(0);
@@ -316,9 +322,11 @@ pub(super) fn gather_rows(links: &[Link], bundles: &Bundles, position: &[u32]) -
     for &l in &bundles.links {
         let l = &links[l as usize];
         let source = position[l.source as usize];
+        let f = gathered(tree, l);
+        let open = if l.factor > 0.0 { f / l.factor } else { 1.0 };
         match l.pieces.is_empty() {
-            true => entries.push(Entry { source, d: 0, m: 0, f: l.factor }),
-            false => entries.extend(l.pieces.iter().map(|&(d, m, f)| Entry { source, d, m, f })),
+            true => entries.push(Entry { source, d: 0, m: 0, f }),
+            false => entries.extend(l.pieces.iter().map(|&(d, m, f)| Entry { source, d, m, f: f * open })),
         }
     }
     (row, entries)

@@ -42,7 +42,7 @@ pub struct Parts {
     /// `push[push_row[l]..push_row[l + 1]]` holds `(bundle, share)`.
     pub push_row: Vec<usize>,
     /// See `push_row`.
-    pub push: Vec<(u32, f64)>,
+    pub push: Vec<(u32, f32)>,
     /// The gathered pieces of each bundle, CSR: `entries[row[b]..row[b + 1]]`.
     pub row: Vec<usize>,
     /// See `row`.

@@ -1,130 +1,132 @@
 //! The push of `docs/design.md` §3b ("each node's gathered value added to all its leaves"),
-//! weighted by each leaf's own view of the sources of each bundle its ancestors gather
-//! (`bundle.rs`, (3b.5)). A link `(a, q)` holds the factor averaged over `a`; a leaf `i` of
-//! `a` sees `q` more or less than that average (a leaf by a corner sees the adjacent walls
-//! more). Each leaf takes the share `w_iab` of the light gathered in bundle `b` of its
-//! ancestor `a`, from `S_iab = Σ_{q ∈ b} v_aq F̄_{i→q}`: the exact point factors to the
-//! bundle's sources averaged over the leaf's four stratified points, with the leaf's own
-//! visible fraction of a source the ancestor sees partly (a cluster source counts
-//! with its link factor; under a cluster ancestor with the leaf's own projected area towards it
-//! instead of the cluster's, so that an element facing away gets nothing, Sillion 1995).
+//! by each leaf's own view of the sources of each bundle its ancestors gather (`bundle.rs`,
+//! (3b.5), with the point factors of (3b.6)). A link `(a, q)` between elements, `a` not a
+//! leaf, gathers `F^u_aq x̄_q`, its factor *without* the visible fraction its rays found
+//! ([`gathered`]): those rays leave from `a`'s four stratified points, and a leaf of `a`
+//! beside an armrest or under a seat pan may see none of what they saw, or past a seat what
+//! they did not (a pair those rays found hidden is kept, `refine.rs`). Such a link is a
+//! bundle of its own, and each leaf `i` of `a` takes the share
 //!
-//! * Under an element, `w_iab = S_iab / S̄_ab`, `S̄_ab` the area-weighted mean of `S_iab` over
-//!   the leaves of `a`: the light `a` gathers with its accurate factors is distributed, never
-//!   created or lost. For a source field uniform over the bundle's sources every leaf gets its
-//!   own view, so the leaves of a closed scene close whatever the level of their links; for
-//!   any other field the shares are right only as far as the bundle's sources are alike,
-//!   which is why emitters are a bundle of their own.
-//! * Under a cluster, whose factors are estimates, `w_iab = S_iab / C_ab` with
-//!   `C_ab = Σ_{q ∈ b} F_aq`: each leaf gets its own estimate `S_iab x̄_q` (normalising by
-//!   `S̄_ab` instead was measured worse: CIE 171 5.8 at ρ = 0.95 and tolerance 1e-2 absorbs
-//!   7.0 % too much flux, against 2.3 % this way).
+//! `w_iaq = v_iq F̄_{i→q} / Ū_aq`
 //!
-//! `S_iab` depends only on the leaf and on the bundle's links, and a refinement pass after
-//! the first changes a few thousand of a million links: each build keeps every leaf's
-//! `S_iab` with a fingerprint of the bundle's links ([`SeenCache`]) and reuses it while the
-//! fingerprint holds (the lecture hall's later builds: 3.1–3.5 s each before). A refinement
-//! pass changes a few links in most bundles of the large ancestors, so most bundles' `S_iab`
-//! are summed again: each leaf also keeps its own visible fraction of every source its rays
-//! found partly visible ([`Fraction`]; all 16 segments cast, where a clear or hidden source
-//! took 4), which depends on the two elements alone and is read back instead of cast again
-//! (the office's second build: 29–32 s before, 17 s with them; `docs/performance.md`).
+//! of its light: `F̄_{i→q}` the exact point factor to the source averaged over the leaf's
+//! four stratified points, `v_iq` the leaf's own visible fraction of it (its own rays, 4 or
+//! 16 segments; the link's where the leaf straddles a contact, whose points inside the solid
+//! see nothing), `Ū_aq` the area-weighted mean of `F̄_{i→q}` over the leaves of `a`. The
+//! leaves together take `Σ_i A_i v_iq F̄_iq x̄_q`: each leaf its own gather from `q`, whatever
+//! the level of the link, and the push stays linear in the field, so that balancing holds
+//! the push the solve applies and light is conserved.
+//!
+//! The other bundles (a leaf's own links, a node's cluster sources) hold several sources:
+//! under an element `w_iab = S_iab / Ū_ab` with `S_iab = Σ_{q ∈ b} v_iq F̄_{i→q}` (`v_iq` the
+//! links' fractions: a cluster's four stand-in points do not tell a leaf's view, `sight.rs`)
+//! and `Ū_ab` the mean of its unoccluded twin; under a cluster, whose factors are
+//! estimates, `w_iab = S_iab / C_ab` with `C_ab = Σ_{q ∈ b} F_aq`, each leaf's own
+//! estimate with its own projected area towards the source (Sillion 1995).
+//! `docs/hierarchy.md`, "Each leaf's own view of its ancestors' sources", measures it
+//! against the push by the ancestors' visibility it replaced.
+//!
+//! A leaf keeps only the bundles whose sources it sees; the weights are summed again at each
+//! build (a refinement pass changes the links), but what they are summed from is not found
+//! again: each leaf keeps its view of every element source it met ([`Seen`]: the mean point
+//! factor and the visible fraction its rays found), which depends on the two elements alone.
 
 use super::bundle::Bundles;
 use super::link::{Link, axis};
-use super::node::NONE;
-use super::sight::Sight;
+use super::node::{NONE, Node};
+use super::sight::stand_ins;
 use super::tree::Tree;
 use crate::geometry::Patch;
 use crate::progress::Progress;
-use crate::random::mix;
 use crate::transfer::far_field::point_factor;
-use crate::transfer::occlusion::{POINTS, polygon_points, visible_fraction};
+use crate::transfer::occlusion::{POINTS, fraction_between, polygon_points};
 use crate::visibility::{NO_BLOCKER, Visibility};
 use rayon::prelude::*;
 
-/// Each leaf's `S_iab` of the last build, by leaf node id: `(a, fingerprint of the bundle's
-/// links, S_iab)`; and its own visible fractions of the sources it cast rays to, sorted by
-/// source.
+/// Each leaf's own view of the element sources it met, sorted by source, by leaf node id.
 #[derive(Debug, Default)]
 pub struct SeenCache {
-    rows: Vec<Vec<Seen>>,
-    fractions: Vec<Vec<Fraction>>,
+    views: Vec<Vec<Seen>>,
 }
 
-/// One leaf's `S_iab`: `(a or b, fingerprint of the bundle's links, S_iab)`.
-type Seen = (u32, u64, f64);
-
-/// A leaf's own visible fraction of one element source, as its rays found it: the source's
-/// node id and the free segments of the [`SEGMENTS`] in one word (ordered by source).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-struct Fraction(u32);
+/// A leaf's own view of one element source, as its points and rays found it: the source's
+/// node id and the free segments of the [`SEGMENTS`] in one word (ordered by source), and
+/// `F̄_{i→q}`, the mean of the point factors from the leaf's four points (in f32, as every
+/// build reads it).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Seen {
+    key: u32,
+    open: f32,
+}
 
 /// The segments between two elements' stratified points: a fraction is a whole number of them.
 const SEGMENTS: u32 = (POINTS * POINTS) as u32;
 
-/// Bits of a [`Fraction`] that hold the free segments (0 to [`SEGMENTS`]).
+/// Bits of a [`Seen`] key that hold the free segments (0 to [`SEGMENTS`]).
 const FREE_BITS: u32 = 5;
 
-impl Fraction {
-    /// The fraction `fraction` of `source`; none when the node id does not fit beside it
-    /// (then it is cast again when asked).
-    fn new(source: u32, fraction: f64) -> Option<Fraction> {
-        let free = (fraction * f64::from(SEGMENTS)) as u32;
-        (source < 1 << (32 - FREE_BITS)).then_some(Fraction(source << FREE_BITS | free))
+impl Seen {
+    /// The view of `source`; none when the node id does not fit beside the segments (then
+    /// it is found again when asked).
+    fn new(source: u32, (open, fraction): (f32, f64)) -> Option<Seen> {
+        let free = (fraction * f64::from(SEGMENTS)).round() as u32;
+        (source < 1 << (32 - FREE_BITS)).then_some(Seen { key: source << FREE_BITS | free, open })
     }
 
     fn source(self) -> u32 {
-        self.0 >> FREE_BITS
+        self.key >> FREE_BITS
     }
 
     fn fraction(self) -> f64 {
-        f64::from(self.0 & ((1 << FREE_BITS) - 1)) / f64::from(SEGMENTS)
+        f64::from(self.key & ((1 << FREE_BITS) - 1)) / f64::from(SEGMENTS)
     }
 }
 
-/// A leaf's fractions: those of the last build (sorted by source) and those cast now.
-struct Fractions<'a> {
-    before: &'a [Fraction],
-    now: Vec<Fraction>,
+/// A leaf's views: those of the last build (sorted by source) and those found now.
+struct Views<'a> {
+    before: &'a [Seen],
+    now: Vec<Seen>,
 }
 
-impl Fractions<'_> {
-    /// The leaf's visible fraction of `source`: from the last build, or `cast`, and kept
-    /// when it is partial (all [`SEGMENTS`] were cast; a clear or hidden one took four).
-    fn of(&mut self, source: u32, cast: impl FnOnce() -> f64) -> f64 {
-        if let Ok(k) = self.before.binary_search_by_key(&source, |f| f.source()) {
-            return self.before[k].fraction();
+impl Views<'_> {
+    /// The leaf's `(F̄_{i→q}, visible fraction)` of `source`: from the last build, or
+    /// `look`ed for and kept.
+    fn of(&mut self, source: u32, look: impl FnOnce() -> (f64, f64)) -> (f64, f64) {
+        if let Ok(k) = self.before.binary_search_by_key(&source, |s| s.source()) {
+            return (f64::from(self.before[k].open), self.before[k].fraction());
         }
-        let fraction = cast();
-        if fraction > 0.0 && fraction < 1.0 {
-            self.now.extend(Fraction::new(source, fraction));
-        }
-        fraction
+        let (open, fraction) = look();
+        let open = open as f32;
+        self.now.extend(Seen::new(source, (open, fraction)));
+        (f64::from(open), fraction)
     }
 }
 
 impl SeenCache {
-    /// Forgets the cast fractions (refinement is over: no later operator will reuse them).
-    pub fn forget_fractions(&mut self) {
-        self.fractions = Vec::new();
+    /// Forgets the leaves' views (refinement is over: no later operator will reuse them).
+    pub fn forget(&mut self) {
+        self.views = Vec::new();
     }
 
-    /// Keeps each leaf's fractions cast now (`now`, by `leaves`) beside those of the last
+    /// Keeps each leaf's views found now (`now`, by `leaves`) beside those of the last
     /// build, sorted by source; those of nodes that are no longer leaves are dropped.
-    fn keep_fractions(&mut self, nodes: usize, leaves: &[u32], now: Vec<Vec<Fraction>>) {
-        let mut fresh: Vec<Option<Vec<Fraction>>> = vec![None; nodes];
+    fn keep(&mut self, nodes: usize, leaves: &[u32], now: Vec<Vec<Seen>>) {
+        let mut fresh: Vec<Option<Vec<Seen>>> = vec![None; nodes];
         leaves.iter().zip(now).for_each(|(&leaf, now)| fresh[leaf as usize] = Some(now));
-        self.fractions.resize_with(nodes, Vec::new);
-        self.fractions.par_iter_mut().zip(fresh).for_each(|(own, fresh)| match fresh {
+        self.views.resize_with(nodes, Vec::new);
+        self.views.par_iter_mut().zip(fresh).for_each(|(own, fresh)| match fresh {
             None => *own = Vec::new(),
-            Some(fresh) if !fresh.is_empty() => {
-                own.extend(fresh);
-                own.sort_unstable();
-                own.dedup_by_key(|f| f.source());
+            Some(fresh) if fresh.is_empty() => {}
+            Some(fresh) => {
+                // the first build's views moved, not copied: they are most of its memory
+                match own.is_empty() {
+                    true => *own = fresh,
+                    false => own.extend(fresh),
+                }
+                own.sort_unstable_by_key(|s| s.key);
+                own.dedup_by_key(|s| s.source());
                 own.shrink_to_fit();
             }
-            Some(_) => {}
         });
     }
 }
@@ -132,9 +134,35 @@ impl SeenCache {
 /// Leaves whose push rows are made between two progress reports.
 const PUSH_BATCH: usize = 1 << 14;
 
-/// For each leaf (in `leaves` order), the bundles its ancestors (itself included) receive,
-/// as `(bundle, weight)`, CSR; `cache` is read and replaced; `progress` hears of the leaves
-/// done, a batch at a time.
+/// A leaf's sums over one bundle's sources: `S` and `U` of the module's text.
+#[derive(Debug, Clone, Copy, Default)]
+struct Sums {
+    seen: f64,
+    open: f64,
+}
+
+/// Each bundle's exposed-area sum of its leaves' `open` sums, and their area, as the
+/// batches of leaves are made (`Ū_ab` is their ratio).
+struct Opens {
+    sum: Vec<f64>,
+    area: Vec<f64>,
+}
+
+impl Opens {
+    /// Adds one leaf's `row` (`node` the leaf).
+    fn add(&mut self, node: &Node, row: &[(u32, Sums)]) {
+        for (b, s) in row {
+            self.sum[*b as usize] += node.exposed * s.open;
+            self.area[*b as usize] += node.area;
+        }
+    }
+}
+
+/// The push's rows of `leaves` under the links of `bundles`, CSR: for each leaf (in
+/// `leaves` order) the bundles of its ancestors (itself included) whose light it takes,
+/// `(bundle, w_iab)`, those it sees nothing of left out; `cache` keeps the leaves' views of
+/// their sources from one build to the next; `progress` hears of the leaves done, a batch
+/// at a time.
 pub fn push_rows(
     tree: &Tree,
     visibility: &Visibility,
@@ -142,139 +170,166 @@ pub fn push_rows(
     leaves: &[u32],
     cache: &mut SeenCache,
     progress: &dyn Progress,
-) -> (Vec<usize>, Vec<(u32, f64)>) {
-    let fingerprints: Vec<u64> =
-        (0..bundles.len()).into_par_iter().map(|b| fingerprint(links, bundles.links_of(b))).collect();
-    let previous = std::mem::take(&mut cache.rows);
-    let cached = |leaf: u32, a: u32, b: usize| {
-        let row = previous.get(leaf as usize)?;
-        row.iter().find(|e| e.0 == a && e.1 == fingerprints[b]).map(|e| e.2)
-    };
-    let before = &cache.fractions;
+) -> (Vec<usize>, Vec<(u32, f32)>) {
+    let before = &cache.views;
     let row_of = |&leaf: &u32| {
         let mut row = Vec::new();
         let before = before.get(leaf as usize).map_or(&[][..], Vec::as_slice);
-        let mut fractions = Fractions { before, now: Vec::new() };
+        let mut views = Views { before, now: Vec::new() };
         // Seconds on a large tree: a signal leaves the rest empty (`crate::interrupt`).
         if crate::interrupt::asked() {
             return (row, Vec::new());
         }
         let Some(patch) = tree.node(leaf).patch().filter(|p| p.exposed > 0.0) else { return (row, Vec::new()) };
-        let mut a = leaf;
-        while a != NONE {
-            for b in bundles.of_node(a) {
-                let s = cached(leaf, a, b).unwrap_or_else(|| {
+        let view = View { tree, visibility, links };
+        let mut by_rays = true;
+        loop {
+            let mut a = leaf;
+            while a != NONE {
+                for b in bundles.of_node(a) {
                     let own = bundles.links_of(b);
-                    seen(tree, visibility, links, own, a, (leaf, patch), &mut fractions)
-                });
-                row.push((b as u32, fingerprints[b], s));
+                    row.push((b as u32, view.sums(own, a, (leaf, patch), by_rays, &mut views)));
+                }
+                a = tree.node(a).parent;
             }
-            a = tree.node(a).parent;
+            // a sliver in a slot whose sixteen segments meet none of the sources its
+            // ancestors see: its rays do not resolve the slot, the links' own fractions stand
+            let blind = row.iter().all(|(_, s)| s.seen == 0.0) && row.iter().any(|(_, s)| s.open > 0.0);
+            if !(blind && by_rays) {
+                break;
+            }
+            by_rays = false;
+            row.clear();
         }
-        (row, fractions.now)
+        (row, views.now)
     };
     // minutes on a building's million leaves: told a batch at a time
     let what = format!("the operator's push on {} leaves: leaves done", leaves.len());
-    let mut rows: Vec<Vec<Seen>> = Vec::with_capacity(leaves.len());
-    let mut fractions: Vec<Vec<Fraction>> = Vec::with_capacity(leaves.len());
+    let mut opens = Opens { sum: vec![0.0; bundles.len()], area: vec![0.0; bundles.len()] };
+    let (mut row, mut entries) = (Vec::with_capacity(leaves.len() + 1), Vec::new());
+    row.push(0);
+    let mut views: Vec<Vec<Seen>> = Vec::with_capacity(leaves.len());
     for batch in leaves.chunks(PUSH_BATCH) {
-        let (r, f): (Vec<Vec<Seen>>, Vec<Vec<Fraction>>) = batch.par_iter().map(row_of).unzip();
-        rows.extend(r);
-        fractions.extend(f);
-        progress.at(rows.len() as u64, &what);
+        let (rows, now): (Vec<_>, Vec<_>) = batch.par_iter().map(row_of).unzip();
+        for (r, &leaf) in rows.iter().zip(batch) {
+            opens.add(tree.node(leaf), r);
+            // a source a leaf does not see gives it nothing (a bundle whose leaves see none
+            // of its sources, `open` 0, shares its light out evenly: kept)
+            entries.extend(r.iter().filter(|(_, s)| s.seen > 0.0 || s.open == 0.0).map(|(b, s)| (*b, s.seen as f32)));
+            row.push(entries.len());
+        }
+        views.extend(now);
+        progress.at((row.len() - 1) as u64, &what);
     }
-    cache.keep_fractions(tree.len(), leaves, fractions);
-    cache.rows = vec![Vec::new(); tree.len()];
-    for (row, &leaf) in rows.iter().zip(leaves) {
-        cache.rows[leaf as usize] = row.iter().map(|&(b, f, s)| (bundles.receiver[b as usize], f, s)).collect();
+    cache.keep(tree.len(), leaves, views);
+    let totals = totals(tree, (links, bundles), &opens);
+    entries.iter_mut().for_each(|(b, w)| *w = shared(f64::from(*w), totals[*b as usize]) as f32);
+    (row, entries)
+}
+
+/// `seen / total`, 1 where a bundle's total is 0.
+fn shared(seen: f64, total: f64) -> f64 {
+    if total > 0.0 { seen / total } else { 1.0 }
+}
+
+/// Each bundle's total to share out: under an element the area-weighted mean of the leaves'
+/// `open` sums (`Ū_ab`), under a cluster `Σ_q F^u_aq`.
+fn totals(tree: &Tree, (links, bundles): (&[Link], &Bundles), opens: &Opens) -> Vec<f64> {
+    (0..bundles.len())
+        .map(|b| match tree.node(bundles.receiver[b]).patch() {
+            Some(_) if opens.area[b] > 0.0 => opens.sum[b] / opens.area[b],
+            Some(_) => 0.0,
+            None => bundles.links_of(b).iter().map(|&l| gathered(tree, &links[l as usize])).sum(),
+        })
+        .collect()
+}
+
+/// Whether the leaves under the link's receiver see its source by their own rays: an
+/// element source of a receiver that is not a leaf. A cluster source's light, and a leaf's
+/// own links, are gathered with the links' own visible fractions.
+fn seen_by_leaves(tree: &Tree, link: &Link) -> bool {
+    tree.node(link.source).patch().is_some() && !tree.node(link.receiver).is_leaf()
+}
+
+/// The factor by which the link gathers: without the visible fraction its rays found where
+/// the leaves see its source by their own ([`seen_by_leaves`]; as it is when those rays saw
+/// nothing: 0), else its own.
+pub(super) fn gathered(tree: &Tree, link: &Link) -> f64 {
+    match (seen_by_leaves(tree, link), link.visible > 0.0) {
+        (true, true) => link.factor / f64::from(link.visible),
+        (true, false) | (false, true) => link.factor,
+        (false, false) => 0.0,
     }
-    let rows: Vec<Vec<(u32, f64)>> =
-        rows.into_iter().map(|r| r.into_iter().map(|(b, _, s)| (b, s)).collect()).collect();
-    // S̄_ab: Σ A_i^exp S_iab / Σ A_i over the leaves of an element a, so that the leaves'
-    // exposed areas take all the flux a bundle gathers
-    let (mut sum, mut area) = (vec![0.0; bundles.len()], vec![0.0; bundles.len()]);
-    for (row, &leaf) in rows.iter().zip(leaves) {
-        let node = tree.node(leaf);
-        for &(b, s) in row {
-            sum[b as usize] += node.exposed * s;
-            area[b as usize] += node.area;
+}
+
+/// What a leaf's view of its ancestors' sources needs.
+struct View<'a> {
+    tree: &'a Tree,
+    visibility: &'a Visibility,
+    links: &'a [Link],
+}
+
+impl View<'_> {
+    /// The [`Sums`] of `leaf` under `a` over the links `own` of one bundle, by the leaf's own
+    /// rays when `by_rays` (its views read from or kept in `views`), else by the links'
+    /// fractions.
+    fn sums(&self, own: &[u32], a: u32, leaf: (u32, &Patch), by_rays: bool, views: &mut Views) -> Sums {
+        let (id, patch) = leaf;
+        // a leaf across a contact: its points inside the solid see nothing
+        let own_rays = by_rays && a != id && !self.tree.node(id).straddles_contact();
+        let points = polygon_points(&patch.polygon);
+        let from = points.map(|x| (x, patch.face));
+        let mut blocker = NO_BLOCKER;
+        let mut sums = Sums::default();
+        for &l in own {
+            let link = &self.links[l as usize];
+            let by_leaf = seen_by_leaves(self.tree, link);
+            let (open, visible) = match (by_leaf, own_rays) {
+                (true, true) => views.of(link.source, || {
+                    let open = self.open_factor(link, a, (&points, patch), true);
+                    if open <= 0.0 {
+                        return (open, 0.0);
+                    }
+                    let to = stand_ins(self.tree, link.source, patch.centroid);
+                    (open, fraction_between(self.visibility, &from, &to, &mut blocker).fraction)
+                }),
+                (true, false) => (self.open_factor(link, a, (&points, patch), true), f64::from(link.visible)),
+                (false, _) => (self.open_factor(link, a, (&points, patch), false), 1.0),
+            };
+            if open <= 0.0 {
+                continue;
+            }
+            sums.seen += visible * open;
+            sums.open += open;
+        }
+        sums
+    }
+
+    /// `F̄_{i→q}` of the leaf (its stratified `points`) to the link's source: an element's
+    /// exact point factors, unoccluded where the leaf sees it by its own rays (`by_leaf`),
+    /// else times the link's visible fraction; a cluster's link factor, with the leaf's own
+    /// projected area under a cluster ancestor `a`.
+    fn open_factor(
+        &self,
+        link: &Link,
+        a: u32,
+        (points, patch): (&[glam::DVec3; POINTS], &Patch),
+        by_leaf: bool,
+    ) -> f64 {
+        let source = self.tree.node(link.source);
+        if let Some(q) = source.patch() {
+            let f = points.iter().map(|&x| point_factor(x, patch.normal, q)).sum::<f64>() / POINTS as f64;
+            return if by_leaf { f } else { f * f64::from(link.visible) };
+        }
+        let ancestor = self.tree.node(a);
+        if ancestor.patch().is_some() {
+            return link.factor;
+        }
+        let (u, _) = axis(ancestor, source);
+        let projected = ancestor.projected(u);
+        match projected > 0.0 {
+            true => link.factor * ancestor.area * patch.normal.dot(u).max(0.0) / projected,
+            false => 0.0,
         }
     }
-    let mut row = Vec::with_capacity(rows.len() + 1);
-    row.push(0);
-    for r in &rows {
-        row.push(row[row.len() - 1] + r.len());
-    }
-    let entries = rows.into_iter().flatten().map(|(b, s)| {
-        let bu = b as usize;
-        let total = match tree.node(bundles.receiver[bu]).patch() {
-            Some(_) => sum[bu] / area[bu],
-            None => bundles.links_of(bu).iter().map(|&l| links[l as usize].factor).sum(),
-        };
-        (b, if total > 0.0 { s / total } else { 1.0 })
-    });
-    (row, entries.collect())
-}
-
-/// `S_iab` of `leaf` under `a`, whose bundle's links are `own`: from an ancestor, each
-/// element source's factor with the leaf's own visible fraction of it (the link's is the
-/// ancestor's, an average over lit and shadowed leaves), unless the leaf straddles a
-/// contact; the leaf's fractions are read from or kept in `fractions`.
-fn seen(
-    tree: &Tree,
-    visibility: &Visibility,
-    links: &[Link],
-    own: &[u32],
-    a: u32,
-    leaf: (u32, &Patch),
-    fractions: &mut Fractions,
-) -> f64 {
-    let (id, patch) = leaf;
-    let under_cluster = tree.node(a).patch().is_none();
-    // a leaf across a contact: its points inside the solid see nothing
-    let straddles = tree.node(id).straddles_contact();
-    let points = polygon_points(&patch.polygon);
-    let mut blocker = NO_BLOCKER;
-    own.iter()
-        .map(|&l| {
-            let link = &links[l as usize];
-            let source = tree.node(link.source);
-            match source.patch() {
-                Some(q) => {
-                    let f: f64 = points.iter().map(|&x| point_factor(x, patch.normal, q)).sum();
-                    let visible = match a == id || f == 0.0 || straddles || link.sight() == Sight::Clear {
-                        true => f64::from(link.visible),
-                        false => fractions.of(link.source, || {
-                            visible_fraction(visibility, patch, &points, q, &polygon_points(&q.polygon), &mut blocker)
-                                .fraction
-                        }),
-                    };
-                    visible * f / points.len() as f64
-                }
-                None if under_cluster => {
-                    // the link's factor with the leaf's own projected area for the cluster's
-                    let (u, _) = axis(tree.node(a), source);
-                    let projected = tree.node(a).projected(u);
-                    if projected > 0.0 {
-                        link.factor * tree.node(a).area * patch.normal.dot(u).max(0.0) / projected
-                    } else {
-                        0.0
-                    }
-                }
-                None => link.factor,
-            }
-        })
-        .sum()
-}
-
-/// A fingerprint of the links `own` (indices into `links`) that does not depend on their
-/// order: the wrapping sum of a mixed hash of each link's source, factor and visible fraction.
-fn fingerprint(links: &[Link], own: &[u32]) -> u64 {
-    own.iter().fold(0u64, |sum, &l| {
-        let link = &links[l as usize];
-        let h = u64::from(link.source)
-            ^ link.factor.to_bits().rotate_left(21)
-            ^ u64::from(link.visible.to_bits()).rotate_left(42);
-        sum.wrapping_add(mix(h))
-    })
 }

@@ -262,10 +262,22 @@ fn elements(
     {
         return (Outcome::Split(n), rays);
     }
+    // an occluded pair is kept with its factor unoccluded and visible fraction 0 when some
+    // corner of `a` sees one of `b`: the leaves under `p` see `b` by their own rays
+    // (`push.rs`), and some of them past what hid it from `a`'s four points (a chair's base
+    // past its seat: `docs/hierarchy.md`, "A bundle per source"). Kept whether or not `p` is
+    // a leaf now: it may be split later, and what a part's linking finds must not depend on
+    // the order in which the tree was split (`model/part_rows.rs`).
+    let mut rays = rays;
     if seen == Sight::Occluded {
-        return (Outcome::Drop, rays);
+        let (open, more) = corners_see(settings.visibility, tree, p, q, blocker);
+        rays += more;
+        if !open {
+            return (Outcome::Drop, rays);
+        }
     }
-    let (factor, pieces) = element_factor(a, b, visible, settings.quadrature, binning);
+    let open = if seen == Sight::Occluded { 1.0 } else { visible };
+    let (factor, pieces) = element_factor(a, b, open, settings.quadrature, binning);
     if factor <= 0.0 {
         return (Outcome::Drop, rays);
     }

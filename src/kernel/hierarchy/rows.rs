@@ -2,7 +2,7 @@
 //! operator from the part files"; `docs/design.md` §3b, "Apply K x"): the tree by
 //! depth-first position (the pull `R`, the same in every part), the gather rows `Λ` of the
 //! bundles its links make, and the push rows `P` of its own leaves, each bundle named by its
-//! key (receiver's position, source class) so that the parts' bundles are numbered as the
+//! key (receiver's position, source class, lone source's position) so that the parts' bundles are numbered as the
 //! one-process operator numbers them, by key. With them each leaf's closure rays, what
 //! balancing needs (`balanced.rs`), which the part cannot do alone.
 
@@ -19,13 +19,16 @@ use crate::transfer::closure::Closure;
 use std::ops::Range;
 
 /// A bundle by what orders it in the one-process operator: its receiver's depth-first
-/// position and its sources' class (`bundle.rs`).
+/// position, its sources' class and its lone source's position (`bundle.rs`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub struct BundleKey {
     /// Depth-first position of the receiver.
     pub receiver: u32,
     /// [`SourceClass::code`]: the sources' kind and facing.
     pub kind: u8,
+    /// Depth-first position of its one source, [`ALL_SOURCES`](super::bundle::ALL_SOURCES) for a class of sources
+    /// (`bundle.rs`).
+    pub source: u32,
 }
 
 /// A part's rows of `G = P Λ R`, unbalanced.
@@ -57,7 +60,7 @@ pub struct Rows {
     /// Each own leaf's bundles and shares, CSR.
     pub push_row: Vec<usize>,
     /// See `push_row`.
-    pub push: Vec<(BundleKey, f64)>,
+    pub push: Vec<(BundleKey, f32)>,
     /// Each own leaf's closure rays.
     pub closure: Vec<Closure>,
     /// The links the part owns.
@@ -86,6 +89,7 @@ impl Hierarchy {
         let key = |links: &[Link], bundles: &Bundles, b: usize| BundleKey {
             receiver: position[bundles.receiver[b] as usize],
             kind: SourceClass::of(tree, &links[bundles.links_of(b)[0] as usize]).code(),
+            source: bundles.source[b],
         };
         let reaching = Bundles::new(tree, &self.links, &position);
         let mine = &leaves[own_leaves.clone()];
@@ -95,7 +99,7 @@ impl Hierarchy {
         // the part's own bundles: the run of those reaching it whose receiver it owns
         let Range { start: first, end } =
             run(&reaching.receiver, own).ok_or("the part's bundles are not one run of the bundles")?;
-        let (all_rows, all_entries) = gather_rows(&self.links, &reaching, &position);
+        let (all_rows, all_entries) = gather_rows(tree, &self.links, &reaching, &position);
         let row = all_rows[first..=end].iter().map(|r| r - all_rows[first]).collect();
         let entries = all_entries[all_rows[first]..all_rows[end]].to_vec();
         let keys = (first..end).map(|b| key(&self.links, &reaching, b)).collect();

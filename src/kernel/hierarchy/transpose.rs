@@ -22,7 +22,7 @@ impl Operator {
         for (l, z) in y.chunks(k).enumerate() {
             for &(b, w) in &self.push[self.push_row[l]..self.push_row[l + 1]] {
                 let g = &mut gathered[b as usize * k..][..k];
-                let w = w * self.receive[l];
+                let w = f64::from(w) * self.receive[l];
                 g.iter_mut().zip(z).for_each(|(g, z)| *g += w * z);
             }
         }
