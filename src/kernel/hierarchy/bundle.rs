@@ -77,6 +77,14 @@ impl SourceClass {
     }
 }
 
+/// Whether the leaves under the link's receiver see its source by their own rays, in a
+/// bundle of its own (`push.rs`): an element source of a receiver that is not a leaf. A
+/// cluster source's light, and a leaf's own links, are gathered with the links' own visible
+/// fractions, in bundles of their class.
+pub fn seen_by_leaves(tree: &Tree, link: &Link) -> bool {
+    tree.node(link.source).patch().is_some() && !tree.node(link.receiver).is_leaf()
+}
+
 /// [`Bundles::source`] of a bundle of a class of sources: after every lone source of its
 /// receiver and class.
 pub const ALL_SOURCES: u32 = u32::MAX;
@@ -106,8 +114,7 @@ impl Bundles {
     pub fn new(tree: &Tree, links: &[Link], position: &[u32]) -> Bundles {
         let key = |l: u32| {
             let link = &links[l as usize];
-            let alone = tree.node(link.source).patch().is_some() && !tree.node(link.receiver).is_leaf();
-            let source = if alone { position[link.source as usize] } else { ALL_SOURCES };
+            let source = if seen_by_leaves(tree, link) { position[link.source as usize] } else { ALL_SOURCES };
             (position[link.receiver as usize], SourceClass::of(tree, link), source)
         };
         // within a bundle by source: the same order however the links were made (a part's

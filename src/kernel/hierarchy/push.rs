@@ -31,7 +31,7 @@
 //! again: each leaf keeps its view of every element source it met ([`Seen`]: the mean point
 //! factor and the visible fraction its rays found), which depends on the two elements alone.
 
-use super::bundle::Bundles;
+use super::bundle::{Bundles, seen_by_leaves};
 use super::link::{Link, axis};
 use super::node::{NONE, Node};
 use super::sight::stand_ins;
@@ -242,13 +242,6 @@ fn totals(tree: &Tree, (links, bundles): (&[Link], &Bundles), opens: &Opens) -> 
             None => bundles.links_of(b).iter().map(|&l| gathered(tree, &links[l as usize])).sum(),
         })
         .collect()
-}
-
-/// Whether the leaves under the link's receiver see its source by their own rays: an
-/// element source of a receiver that is not a leaf. A cluster source's light, and a leaf's
-/// own links, are gathered with the links' own visible fractions.
-fn seen_by_leaves(tree: &Tree, link: &Link) -> bool {
-    tree.node(link.source).patch().is_some() && !tree.node(link.receiver).is_leaf()
 }
 
 /// The factor by which the link gathers: without the visible fraction its rays found where
