@@ -23,6 +23,7 @@ tables of docs/accuracy.md.
     tools/accuracy/bench.py --step solve office                       # the solves only
     tools/accuracy/bench.py --step trace cornell-box                  # ugo trace at equal time
     tools/accuracy/bench.py --step unsteered seat-room                # the probes read after the solve
+    tools/accuracy/bench.py --step unsteered --setting tolerance-2e-2 office  # … with a setting's flags
     tools/accuracy/bench.py --tuning open-box                         # a second probe set to tune on
     tools/accuracy/bench.py --step solve --ugo B --setting NAME office  # another build, as NAME
 
@@ -81,6 +82,8 @@ SETTINGS = {
     ],
     "office": [
         ("case", []),
+        ("tolerance-2e-2", ["--link-tolerance", "2e-2"]),
+        ("tolerance-4e-2", ["--link-tolerance", "4e-2"]),
         ("leaves-0.05", ["--patch-size", "0.05"]),
         ("tolerance-3e-3", ["--link-tolerance", "3e-3"]),
         ("uniform-0.25", ["--kernel", "uniform", "--patch-size", "0.25"]),
@@ -315,25 +318,25 @@ def compare(name, setting):
             w.writerow([probe, cls, e, se, x, relative(x - e), relative(bar)])
 
 
-def unsteered(name, bench, flags):
+def unsteered(name, bench, flags, tag):
     """Solves cases/name.toml with `flags` and its own readings (`--save-kernel`), then reads
-    the benchmark's probes on that field (`ugo readout`): out/accuracy/name-unsteered-probes.csv,
-    the two commands and their cost in name-unsteered.run, compared like a setting."""
+    the benchmark's probes on that field (`ugo readout`): out/accuracy/name-tag-probes.csv,
+    the two commands and their cost in name-tag.run, compared like a setting."""
     # the solve's own readings (probe and grid CSVs, plans) go beside it, apart from the settings'
     folder = OUT / "solved"
     folder.mkdir(exist_ok=True)
-    case, saved, output = ROOT / "cases" / f"{name}.toml", folder / f"{name}.h5", OUT / f"{name}-unsteered.h5"
+    case, saved, output = ROOT / "cases" / f"{name}.toml", folder / f"{name}-{tag}.h5", OUT / f"{name}-{tag}.h5"
     solved = [UGO, "solve", case, "-o", saved, "--save-kernel", *flags]
-    read = [UGO, "readout", saved, bench, "-o", output]
-    _, solve_seconds, solve_peak = run(solved, folder / f"{name}.log")
-    _, read_seconds, read_peak = run(read, OUT / f"{name}-unsteered.log")
-    (OUT / f"{name}-unsteered.run").write_text(
+    read = [UGO, "readout", saved, bench, "-o", output, *flags]
+    _, solve_seconds, solve_peak = run(solved, folder / f"{name}-{tag}.log")
+    _, read_seconds, read_peak = run(read, OUT / f"{name}-{tag}.log")
+    (OUT / f"{name}-{tag}.run").write_text(
         f"# {shown(solved)}; {shown(read)}\n"
         f"# seconds {solve_seconds + read_seconds:.1f} peak_MB {max(solve_peak, read_peak):.0f}\n")
     for path in (saved, output):
         path.unlink(missing_ok=True)
-    print(f"  unsteered: solve {solve_seconds:.1f} s, readout {read_seconds:.1f} s")
-    compare(name, "unsteered")
+    print(f"  {tag}: solve {solve_seconds:.1f} s, readout {read_seconds:.1f} s")
+    compare(name, tag)
 
 
 def header_seconds(text, prefix):
@@ -402,7 +405,9 @@ def main():
         if args.step in ("all", "trace"):
             trace_equal(name, bench, seed)
         if args.step in ("all", "unsteered"):
-            unsteered(name, bench, [])
+            # the case as it stands, or with the flags of the settings asked for
+            for setting, flags in settings if args.setting else [("case", [])]:
+                unsteered(name, bench, flags, "unsteered" if setting == "case" else f"unsteered-{setting}")
 
 
 if __name__ == "__main__":
