@@ -32,3 +32,29 @@ fn leaving_is_the_transpose_of_arriving() {
         assert!(a > 0.0 && (a - b).abs() < 1e-12 * a, "K = {k}: {a} against {b}");
     }
 }
+
+/// `Gᵀ y`'s scatters split between one, three and four tasks (as many as the threads of the pool
+/// the operator is built in, `transpose.rs`) add up to the same `Gᵀ y`, to rounding.
+#[test]
+fn leaving_is_the_same_on_one_three_and_four_threads() {
+    let directions = DirectionSet::hemisphere(8);
+    let on = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        pool.install(|| {
+            let mut h = hierarchy(&box_with_block(0.6), 0.5, directions.clone(), options(1e-2, 0.1));
+            let (_, kernel) = solved(&mut h, Method::Gmres { restart: 30 });
+            let Some(op) = kernel.g.hierarchy() else { panic!("not hierarchical") };
+            let mut gty = vec![0.0; op.dim()];
+            op.leaving(&wavy(op.dim(), 1.3), &mut gty);
+            gty
+        })
+    };
+    let one = on(1);
+    for threads in [3, 4] {
+        let many = on(threads);
+        let largest = one.iter().map(|v| v.abs()).fold(0.0, f64::max);
+        let worst = one.iter().zip(&many).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        eprintln!("{threads} threads: largest difference {worst:.3e} of {largest:.3e}");
+        assert!(one.len() == many.len() && worst <= 1e-12 * largest, "{threads} threads: {worst} of {largest}");
+    }
+}

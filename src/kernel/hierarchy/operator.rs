@@ -22,11 +22,13 @@ use std::f64::consts::PI;
 use std::sync::Mutex;
 
 /// Work arrays: `nodes × K` (means), `bundles × K` (gathered light) and `leaves × K` (sent light), shared
-/// by `G x` and `Gᵀ y` (`transpose.rs`).
+/// by `G x` and `Gᵀ y` (`transpose.rs`); and the partial sums of `Gᵀ y`'s scatters beside
+/// the first (`transpose::lanes` − 1 of the larger of `nodes × K` and `bundles × K`).
 pub(super) struct Scratch {
     sent: Vec<f64>,
     pub(super) mean: Vec<f64>,
     pub(super) gathered: Vec<f64>,
+    pub(super) spare: Vec<f64>,
 }
 
 /// The hierarchical transport `G` as an operator on `x[leaf·K + k]`.
@@ -135,6 +137,7 @@ impl Operator {
                 sent: vec![0.0; dim],
                 mean: vec![0.0; nodes * k],
                 gathered: vec![0.0; bundles * k],
+                spare: vec![0.0; (super::transpose::lanes() - 1) * nodes.max(bundles) * k],
             }),
         }
     }
@@ -183,7 +186,7 @@ impl Operator {
     /// illuminance `E = π Σ_d z_d`, lx).
     pub fn arriving(&self, x: &[f64], z: &mut [f64]) {
         let mut s = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
-        let Scratch { sent, mean, gathered } = &mut *s;
+        let Scratch { sent, mean, gathered, .. } = &mut *s;
         self.transport(x, sent, mean, gathered, z);
     }
 
