@@ -21,9 +21,14 @@ use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::sync::Mutex;
 
+/// Most partial sums a scatter of `Gᵀ y` keeps side by side, one per task (`transpose.rs`):
+/// each beyond the first costs the larger of `bundles × K` and `nodes × K` values.
+pub(super) const MOST_LANES: usize = 4;
+
 /// Work arrays: `nodes × K` (means), `bundles × K` (gathered light) and `leaves × K` (sent light), shared
 /// by `G x` and `Gᵀ y` (`transpose.rs`); and the partial sums of `Gᵀ y`'s scatters beside
-/// the first (`transpose::lanes` − 1 of the larger of `nodes × K` and `bundles × K`).
+/// the first (one fewer than the threads, at most [`MOST_LANES`], of the larger of
+/// `nodes × K` and `bundles × K`).
 pub(super) struct Scratch {
     sent: Vec<f64>,
     pub(super) mean: Vec<f64>,
@@ -137,7 +142,7 @@ impl Operator {
                 sent: vec![0.0; dim],
                 mean: vec![0.0; nodes * k],
                 gathered: vec![0.0; bundles * k],
-                spare: vec![0.0; (super::transpose::lanes() - 1) * nodes.max(bundles) * k],
+                spare: vec![0.0; (rayon::current_num_threads().clamp(1, MOST_LANES) - 1) * nodes.max(bundles) * k],
             }),
         }
     }

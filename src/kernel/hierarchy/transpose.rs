@@ -9,18 +9,9 @@
 //! "Balancing on both cores").
 
 use super::link::ALL_CELLS;
-use super::operator::{Operator, Scratch};
+use super::operator::{MOST_LANES, Operator, Scratch};
 use rayon::prelude::*;
 use std::ops::Range;
-
-/// Most partial sums a scatter of `Gᵀ y` keeps side by side, one per task: each beyond the
-/// first costs the larger of `bundles × K` and `nodes × K` values.
-const MOST_LANES: usize = 4;
-
-/// How many tasks share each scatter of `Gᵀ y`: the threads, at most [`MOST_LANES`].
-pub(super) fn lanes() -> usize {
-    rayon::current_num_threads().clamp(1, MOST_LANES)
-}
 
 impl Operator {
     /// `x = Gᵀ y` (both `leaves × K`): the push's and the gathers' scatters split between
