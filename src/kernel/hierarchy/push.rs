@@ -40,7 +40,7 @@ use crate::geometry::Patch;
 use crate::progress::Progress;
 use crate::transfer::far_field::point_factor;
 use crate::transfer::occlusion::{POINTS, fraction_between, polygon_points};
-use crate::visibility::{NO_BLOCKER, Visibility};
+use crate::visibility::{Blocker, NO_BLOCKER, Visibility};
 use rayon::prelude::*;
 
 /// Each leaf's own view of the element sources it met, sorted by source, by leaf node id.
@@ -82,20 +82,23 @@ impl Seen {
     }
 }
 
-/// A leaf's views: those of the last build (sorted by source) and those found now.
+/// A leaf's views: those of the last build (sorted by source) and those found now; and
+/// the triangle that blocked its last ray, tried first by the next (the sources hidden
+/// from a leaf under a desk are mostly hidden by the same few triangles).
 struct Views<'a> {
     before: &'a [Seen],
     now: Vec<Seen>,
+    blocker: Blocker,
 }
 
 impl Views<'_> {
     /// The leaf's `(F̄_{i→q}, visible fraction)` of `source`: from the last build, or
-    /// `look`ed for and kept.
-    fn of(&mut self, source: u32, look: impl FnOnce() -> (f64, f64)) -> (f64, f64) {
+    /// `look`ed for (with the leaf's last blocker) and kept.
+    fn of(&mut self, source: u32, look: impl FnOnce(&mut Blocker) -> (f64, f64)) -> (f64, f64) {
         if let Ok(k) = self.before.binary_search_by_key(&source, |s| s.source()) {
             return (f64::from(self.before[k].open), self.before[k].fraction());
         }
-        let (open, fraction) = look();
+        let (open, fraction) = look(&mut self.blocker);
         let open = open as f32;
         self.now.extend(Seen::new(source, (open, fraction)));
         (f64::from(open), fraction)
@@ -175,7 +178,7 @@ pub fn push_rows(
     let row_of = |&leaf: &u32| {
         let mut row = Vec::new();
         let before = before.get(leaf as usize).map_or(&[][..], Vec::as_slice);
-        let mut views = Views { before, now: Vec::new() };
+        let mut views = Views { before, now: Vec::new(), blocker: NO_BLOCKER };
         // Seconds on a large tree: a signal leaves the rest empty (`crate::interrupt`).
         if crate::interrupt::asked() {
             return (row, Vec::new());
@@ -272,19 +275,18 @@ impl View<'_> {
         let own_rays = by_rays && a != id && !self.tree.node(id).straddles_contact();
         let points = polygon_points(&patch.polygon);
         let from = points.map(|x| (x, patch.face));
-        let mut blocker = NO_BLOCKER;
         let mut sums = Sums::default();
         for &l in own {
             let link = &self.links[l as usize];
             let by_leaf = seen_by_leaves(self.tree, link);
             let (open, visible) = match (by_leaf, own_rays) {
-                (true, true) => views.of(link.source, || {
+                (true, true) => views.of(link.source, |blocker| {
                     let open = self.open_factor(link, a, (&points, patch), true);
                     if open <= 0.0 {
                         return (open, 0.0);
                     }
                     let to = stand_ins(self.tree, link.source, patch.centroid);
-                    (open, fraction_between(self.visibility, &from, &to, &mut blocker).fraction)
+                    (open, fraction_between(self.visibility, &from, &to, blocker).fraction)
                 }),
                 (true, false) => (self.open_factor(link, a, (&points, patch), true), f64::from(link.visible)),
                 (false, _) => (self.open_factor(link, a, (&points, patch), false), 1.0),
