@@ -8,9 +8,11 @@
 //! `links/{factor, visible}` (L, f64), `links/sight` (L, u8: 0 clear, 1 partial, 2
 //! occluded), `links/pieces/{indptr, d, m, f}` (the cell split, CSR by link; empty for one
 //! cell); `operator/{parent, weight, cluster}` (by position: parent position, share of the
-//! parent's exposed area, 1 for a cluster), `operator/leaf_position` (N), `operator/push/
-//! {indptr, bundle, share}` (CSR by leaf), `operator/gather/{indptr, source, d, m, f}` (CSR by
-//! bundle; `d` = 65535 for light that arrives from all cells alike, `μ_d/π` each),
+//! parent's exposed area, 1 for a cluster), `operator/facing_share` (T×6: under a cluster,
+//! the node's share of each of its parent's six facing areas), `operator/leaf_position`
+//! (N), `operator/push/{indptr, bundle, share}` (CSR by leaf), `operator/gather/{indptr,
+//! source, d, m, f}` (CSR by bundle; `d` = 65535 for light that arrives from all cells alike,
+//! `μ_d/π` each; `m` of a cluster source names one of its six facing values),
 //! `operator/{receive, send}` (N) and the attributes `links`, `balance_correction`,
 //! `balance_sweeps`, `balance_row_error`; `leaves/frame` (N×3×3: each leaf's tangent,
 //! bitangent and normal, which it keeps from its root) and `leaves/root_position` (N, u32:
@@ -23,10 +25,10 @@ use super::read::{File, Why, patches};
 use crate::directions::DirectionSet;
 use crate::geometry::Mesh;
 use crate::kernel::BalanceReport;
-use crate::kernel::hierarchy::{Entry, Link, NONE, Operator, Parts, Sight, Skeleton, Structure};
+use crate::kernel::hierarchy::{Entry, FACING, Link, NONE, Operator, Parts, Sight, Skeleton, Structure};
 use crate::model::StoredHierarchy;
 use glam::DVec3;
-use ndarray::{Array1, Array3};
+use ndarray::{Array1, Array2, Array3};
 
 /// Level stored for a cluster.
 const CLUSTER: u8 = u8::MAX;
@@ -79,6 +81,7 @@ fn write_operator(g: &hdf5::Group, parts: &Parts) -> hdf5::Result<()> {
     dataset(g, "parent", &Array1::from(parts.parent.clone()))?;
     dataset(g, "weight", &Array1::from(parts.weight.clone()))?;
     dataset(g, "cluster", &Array1::from_iter(parts.cluster.iter().map(|&c| c as u8)))?;
+    dataset(g, "facing_share", &facing_array(&parts.facing_share))?;
     dataset(g, "leaf_position", &Array1::from(parts.leaf_position.clone()))?;
     let push = g.create_group("push")?;
     dataset(&push, "indptr", &Array1::from_iter(parts.push_row.iter().map(|&r| r as u64)))?;
@@ -136,6 +139,7 @@ pub(super) fn read_operator(file: &File, directions: &DirectionSet) -> Result<Op
         parent: file.raw::<u32>(&at("parent"))?,
         weight: file.raw::<f64>(&at("weight"))?,
         cluster: file.raw::<u8>(&at("cluster"))?.into_iter().map(|c| c != 0).collect(),
+        facing_share: facing_rows(file.raw::<f64>(&at("facing_share"))?)?,
         push_row: index("push/indptr")?,
         push: zip2(file.raw::<u32>(&at("push/bundle"))?, file.raw::<f64>(&at("push/share"))?)?,
         row: index("gather/indptr")?,
@@ -243,4 +247,17 @@ pub(super) fn write_gather(g: &hdf5::Group, row: &[usize], entries: &[Entry]) ->
     dataset(&gather, "d", &Array1::from_iter(entries.iter().map(|e| e.d)))?;
     dataset(&gather, "m", &Array1::from_iter(entries.iter().map(|e| e.m)))?;
     dataset(&gather, "f", &Array1::from_iter(entries.iter().map(|e| e.f)))
+}
+
+/// Facing shares as a `T × 6` array.
+pub(crate) fn facing_array(shares: &[[f64; FACING]]) -> Array2<f64> {
+    Array2::from_shape_vec((shares.len(), FACING), shares.as_flattened().to_vec()).expect("six a row")
+}
+
+/// Facing shares from a `T × 6` array read flat.
+pub(crate) fn facing_rows(flat: Vec<f64>) -> Result<Vec<[f64; FACING]>, Why> {
+    match flat.len() % FACING {
+        0 => Ok(flat.chunks(FACING).map(|c| std::array::from_fn(|i| c[i])).collect()),
+        _ => Err(Why(format!("/kernel/hierarchy/operator/facing_share: {} values, not six a node", flat.len()))),
+    }
 }

@@ -15,7 +15,7 @@
 
 use super::IoError;
 use super::dataset::dataset;
-use super::hierarchy_kernel::write_gather;
+use super::hierarchy_kernel::{facing_array, write_gather};
 use super::kernel_file::{write_blocks, write_fingerprint};
 use crate::kernel::hierarchy::BALANCING_RULES;
 use crate::model::{Fingerprint, PartRows};
@@ -23,7 +23,7 @@ use ndarray::Array1;
 use std::path::Path;
 
 /// The layout of `/rows`.
-const ROWS_FORMAT: u64 = 3;
+const ROWS_FORMAT: u64 = 4;
 
 /// Writes `rows` with the case's `fingerprint` and the cells' projected solid angles
 /// `projected` to `path` (through a temporary file).
@@ -56,6 +56,7 @@ fn write_to(path: &Path, fingerprint: &Fingerprint, projected: &[f64], p: &PartR
     let tree = g.create_group("tree")?;
     dataset(&tree, "parent", &Array1::from(r.parent.clone()))?;
     dataset(&tree, "weight", &Array1::from(r.weight.clone()))?;
+    dataset(&tree, "facing_share", &facing_array(&r.facing_share))?;
     dataset(&tree, "cluster", &Array1::from_iter(r.cluster.iter().map(|&c| u8::from(c))))?;
     dataset(&tree, "leaf_position", &Array1::from(r.leaf_position.clone()))?;
     let bundles = g.create_group("bundles")?;

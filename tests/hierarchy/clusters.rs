@@ -67,6 +67,77 @@ fn cluster_links_agree_with_the_explicit_kernel() {
     assert!(worst < 5e-2 && rms < 2e-2, "worst {worst}, rms {rms}");
 }
 
+/// A 10 cm box and a 20 cm square 4 m away up and aside facing it: far enough for a link
+/// from the box's cluster of six faces, whose transfer is then exact for axis-aligned faces.
+fn box_and_a_far_square() -> Scene {
+    let mut s = furnace(0.1, 0.5, 0.0, 1.0);
+    s.surfaces.clear();
+    let shape = Shape::Box { min: DVec3::ZERO, max: DVec3::splat(0.1), rotate_y_deg: 0.0 };
+    s.surfaces.push(Surface {
+        name: "box".into(),
+        shape,
+        material: 0,
+        two_sided: false,
+        inside: false,
+        emission: None,
+    });
+    let towards = DVec3::new(2.0, 3.0, 1.5).normalize();
+    let (u, v) = (towards.cross(DVec3::Y).normalize() * 0.2, towards.cross(DVec3::Y).normalize().cross(towards) * 0.2);
+    let origin = towards * 4.0 - (u + v) / 2.0;
+    // edges ordered so that the square faces the boxes (normal u × v along −towards)
+    let (edge_u, edge_v) = if u.cross(v).dot(towards) < 0.0 { (u, v) } else { (v, u) };
+    let shape = Shape::Rectangle { origin, edge_u, edge_v };
+    s.surfaces.push(Surface {
+        name: "square".into(),
+        shape,
+        material: 0,
+        two_sided: false,
+        inside: false,
+        emission: None,
+    });
+    s
+}
+
+/// Light of the box's top alone, or of its `+x` side alone, reaches the far square as the
+/// explicit kernel carries it: a cluster sends the light of its faces turned to the
+/// receiver, each by its projected area (`docs/design.md` (3b.7)), not the mean of all its
+/// faces (which sent the square 34 % of the `+x` side's light, and from the bottom, which
+/// faces away, a fifth of the top's).
+#[test]
+fn clusters_send_the_light_of_the_faces_turned_to_the_receiver() {
+    let mut h = hierarchy(&box_and_a_far_square(), 1.0, DirectionSet::single(), options(1e-2, 0.05));
+    let op = h.operator(&Silent);
+    let leaves = h.leaf_mesh();
+    let t =
+        assemble(&leaves, &Visibility::build(&leaves), &DirectionSet::single(), &Quadrature::default(), &[], &|_| {})
+            .unwrap();
+    let uniform = Transport::Uniform(TransportMatrix::new(t.g, Precision::Double));
+    let patches = &leaves.patches;
+    let square = patches.iter().map(|p| p.surface).max().unwrap();
+    let tree = h.tree();
+    let cluster_sources = h.links().iter().filter(|l| tree.node(l.source).patch().is_none()).count();
+    // the flux the square gathers from the faces facing `n`, by the hierarchy and explicitly
+    let gathered = |n: DVec3| -> (f64, f64) {
+        let x: Vec<f64> =
+            patches.iter().map(|p| f64::from(u8::from(p.surface < square && p.normal.dot(n) > 0.99))).collect();
+        let (mut a, mut b) = (vec![0.0; x.len()], vec![0.0; x.len()]);
+        op.arriving(&x, &mut a);
+        uniform.apply(&x, &mut b);
+        let flux =
+            |z: &[f64]| patches.iter().zip(z).filter(|(p, _)| p.surface == square).map(|(p, z)| p.area * z).sum();
+        (flux(&a), flux(&b))
+    };
+    let (tops, sides, bottoms) = (gathered(DVec3::Y), gathered(DVec3::X), gathered(-DVec3::Y));
+    eprintln!(
+        "clusters by facing: the square gathers from the tops {tops:?}, the +x sides {sides:?}, the bottoms {bottoms:?} (hierarchy, explicit); {cluster_sources} links from clusters"
+    );
+    assert!(cluster_sources > 0, "the box sends through its cluster");
+    for (what, (h, e)) in [("tops", tops), ("+x sides", sides)] {
+        assert!(e > 0.0 && (h / e - 1.0).abs() < 2e-2, "from the {what}: {h} against {e}");
+    }
+    assert!(bottoms.1 < 1e-12 && bottoms.0 < 1e-12, "the bottoms face away: {bottoms:?}");
+}
+
 #[test]
 fn links_grow_much_slower_than_input_elements_squared() {
     let counts: Vec<(f64, f64)> = [3, 6]

@@ -57,10 +57,13 @@ def hierarchy_factors(k, share):
 
 def hierarchy_parts(k, share):
     """P, Λ, R and the diagonals of G from /kernel/hierarchy/operator, without their
-    product (which a large hierarchy cannot hold)."""
+    product (which a large hierarchy cannot hold). Nodes hold S = max(K, 6) values: an
+    element's K cells, a cluster's six facing values."""
     h = k["hierarchy/operator"]
     cells = len(share)
-    parent, weight, cluster = h["parent"][:], h["weight"][:], h["cluster"][:]
+    stride = max(cells, 6)
+    parent, weight, cluster = h["parent"][:], h["weight"][:], h["cluster"][:].astype(bool)
+    facing_share = h["facing_share"][:]
     leaf_position = h["leaf_position"][:]
     nodes, leaves = len(parent), len(leaf_position)
     # push: leaf ← the bundles its ancestors gather, by its share, cell by cell
@@ -71,35 +74,43 @@ def hierarchy_parts(k, share):
     rows = (leaf_of[:, None] * cells + np.arange(cells)).ravel()
     cols = (bundle.astype(np.int64)[:, None] * cells + np.arange(cells)).ravel()
     P = sp.csr_matrix((np.repeat(w, cells), (rows, cols)), shape=(leaves * cells, bundles * cells))
-    # links: bundle ← node, by cells; d = 65535 arrives from all cells alike (μ_d/π each)
+    # links: bundle ← node value, by cells; d = 65535 arrives from all cells alike (μ_d/π each)
     source, d, m, f = h["gather/source"][:].astype(np.int64), h["gather/d"][:].astype(np.int64), h["gather/m"][:], h["gather/f"][:]
     row_of = np.repeat(np.arange(bundles), np.diff(gather))
     spread = d == 65535
     rows = [(row_of[~spread] * cells + d[~spread])]
-    cols = [source[~spread] * cells + m[~spread]]
+    cols = [source[~spread] * stride + m[~spread]]
     vals = [f[~spread]]
     for dd in range(cells):
         rows.append(row_of[spread] * cells + dd)
-        cols.append(source[spread] * cells + m[spread])
+        cols.append(source[spread] * stride + m[spread])
         vals.append(f[spread] * share[dd])
-    Lam = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(bundles * cells, nodes * cells))
-    # pull: node ← area-weighted mean of its leaves; a cluster's value (cell 0) the cell-weighted mean
+    Lam = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(bundles * cells, nodes * stride))
+    # pull: node ← area-weighted mean of its leaves; a cluster's six values, each the
+    # cell-weighted mean over its elements' exposed area facing one axis direction
     rows, cols, vals = [], [], []
     for leaf, pos in enumerate(leaf_position):
-        at, omega = int(pos), 1.0
+        at, omega, facing = int(pos), 1.0, None
         while True:
-            if cluster[at]:
-                rows += [at * cells] * cells
-                vals += list(omega * share)
-            else:
-                rows += [at * cells + c for c in range(cells)]
+            if facing is None:
+                rows += [at * stride + c for c in range(cells)]
                 vals += [omega] * cells
-            cols += [leaf * cells + c for c in range(cells)]
+                cols += [leaf * cells + c for c in range(cells)]
+            else:
+                for c in range(6):
+                    rows += [at * stride + c] * cells
+                    vals += list(facing[c] * share)
+                    cols += [leaf * cells + m for m in range(cells)]
             if parent[at] == NO_TWIN:
                 break
-            omega *= weight[at]
+            if facing is not None:
+                facing = facing * facing_share[at]
+            elif cluster[parent[at]]:
+                facing = omega * facing_share[at]
+            else:
+                omega *= weight[at]
             at = int(parent[at])
-    R = sp.csr_matrix((vals, (rows, cols)), shape=(nodes * cells, leaves * cells))
+    R = sp.csr_matrix((vals, (rows, cols)), shape=(nodes * stride, leaves * cells))
     receive, send = np.repeat(h["receive"][:], cells), np.repeat(h["send"][:], cells)
     return {"P": P, "Lambda": Lam, "R": R, "receive": receive, "send": send}
 

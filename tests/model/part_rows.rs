@@ -38,6 +38,10 @@ fn the_parts_rows_are_the_one_process_operators_rows() {
     let k = whole.l0.len() / op.leaves.len();
     assert!(rows.iter().all(|r| r.rows.parent == op.parent && r.rows.leaf_position == op.leaf_position));
     assert!(rows.iter().all(|r| r.rows.weight.iter().zip(&op.weight).all(|(a, b)| close(*a, *b))));
+    assert!(
+        rows.iter().all(|r| r.rows.facing_share == op.facing_share),
+        "the clusters' facing shares as in one process"
+    );
     let tiles = rows.windows(2).all(|w| w[0].rows.own_leaves.end == w[1].rows.own_leaves.start);
     assert!(tiles && rows[0].rows.own_leaves.start == 0 && rows[1].rows.own_leaves.end == op.leaves.len());
     let keys: Vec<BundleKey> = rows.iter().flat_map(|r| r.rows.bundles.iter().copied()).collect();

@@ -12,7 +12,8 @@ be the stored illuminance (checked to 1e-9 relative, else the script fails). For
 (given by index, or the leaf whose patch holds the point and faces the normal) it prints,
 bundle by bundle of its ancestors, the leaf's share of the bundle, the illuminance it takes
 from it, and the sources that give most of it: each source node's factor, mean luminance
-and the surfaces and extent of the leaves under it. With `--forward`, the leaf's bin of
+and the surfaces and extent of the leaves under it (a cluster by the facing value the link
+takes: `+x` … `−z`, docs/design.md (3b.7)). With `--forward`, the leaf's bin of
 `ugo trace --forward --bins-of OUT.h5` beside it. One cell (K = 1) only.
 
 h5py, numpy and scipy (Debian's python3-h5py, python3-scipy: `make deps`).
@@ -29,6 +30,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tests" / "io"))
 from kernel_check import hierarchy_parts  # noqa: E402
 
 NO_PARENT = 0xFFFFFFFF
+# A node's values in Λ's columns: K = 1 cell of an element, six facing values of a cluster.
+STRIDE = 6
+FACING = ("+x", "−x", "+y", "−y", "+z", "−z")
 
 
 def leaf_at(mesh, point, normal):
@@ -82,7 +86,7 @@ def main():
         x = f["field/luminance"][:].ravel()
         direct, stored = f["field/direct_illuminance"][:], f["field/illuminance"][:]
         op = f["kernel/hierarchy/operator"]
-        parent, leaf_position = op["parent"][:], op["leaf_position"][:]
+        parent, leaf_position, cluster = op["parent"][:], op["leaf_position"][:], op["cluster"][:].astype(bool)
         mesh = f["mesh"]
         leaf = args.leaf if args.leaf is not None else leaf_at(mesh, np.array(args.at[:3]), np.array(args.at[3:]))
         surfaces, lo, hi = under_each_node(parent, leaf_position, mesh)
@@ -108,10 +112,12 @@ def main():
         print(f"  bundle {b}: share {w:.3f} of {np.pi * gathered[b]:.3f} lx gathered → {taken:.3f} lx")
         links = Lam.getrow(b)
         parts_of = sorted(zip(links.indices, links.data), key=lambda qf: -qf[1] * mean[qf[0]])
-        for q, factor in parts_of[: args.top]:
-            light = np.pi * receive[leaf] * w * factor * mean[q]
+        for column, factor in parts_of[: args.top]:
+            light = np.pi * receive[leaf] * w * factor * mean[column]
+            q, value = divmod(column, STRIDE)
+            facing = f" facing {FACING[value]}" if cluster[q] else ""
             extent = f"{np.round(lo[q], 2)}–{np.round(hi[q], 2)}"
-            print(f"      source {q}: F {factor:.4f}, L̄ {mean[q]:.3f} cd/m² → {light:.3f} lx "
+            print(f"      source {q}{facing}: F {factor:.4f}, L̄ {mean[column]:.3f} cd/m² → {light:.3f} lx "
                   f"[{', '.join(sorted(surfaces[q]))[:60]}] {extent}")
 
 

@@ -3,14 +3,16 @@ as distributed PETSc factors, never multiplied out for the Krylov solvers (docs/
 
     K = B · diag(receive) · P · Λ · R · diag(send)
 
-with, every index times the C cells plus the cell (N leaves, T tree nodes by depth-first
-position, U bundles):
+with, every leaf and bundle index times the C cells plus the cell, every node index times
+S = max(C, 6) plus its value (N leaves, T tree nodes by depth-first position, U bundles):
 
-* `R` (TC × NC), the pull: node ← the area-weighted mean of the leaves under it (the
-  product of the area shares on the way up); a cluster's value, the cell-weighted mean
-  `Σ_m (μ_m/π) x_m`, in its cell 0;
-* `Λ` (UC × TC), the links: bundle `(b, d)` ← node `(q, m)` by `F^{d,m}`, `d = 65535`
-  spread over the cells as `μ_d/π`;
+* `R` (TS × NC), the pull: an element ← the area-weighted mean of the leaves under it (the
+  product of the area shares on the way up), in its C cells; a cluster's six values, each
+  the cell-weighted mean `Σ_m (μ_m/π) x_m` over its elements' exposed area facing one axis
+  direction (`+x, −x, +y, −y, +z, −z`: the product of the facing shares from the way
+  into the clusters up);
+* `Λ` (UC × TS), the links: bundle `(b, d)` ← node `(q, m)` by `F^{d,m}`, `d = 65535`
+  spread over the cells as `μ_d/π` (for a cluster source, `m` names a facing value);
 * `P` (NC × UC), the push: leaf `(l, d)` ← bundle `(b, d)` by the leaf's share;
 * `B` (NC × NC), the material blocks (kernel_read.blocks), as for the explicit kernel.
 
@@ -18,7 +20,8 @@ The diagonals are folded in: `receive` scales `P`'s rows, `send` `R`'s columns. 
 factor is an AIJ matrix whose rows are split over the ranks and whose column split is the
 row split of the factor applied before it, so the chain multiplies without redistribution:
 leaves by whole leaves (`kernel_read.patch_range`, as patches), nodes and bundles evenly.
-Every rank reads the tree whole (parents, weights, clusters, the leaves' positions: O(T))
+Every rank reads the tree whole (parents, weights, facing shares, clusters, the leaves'
+positions: O(T))
 and, by hyperslabs (hyperslabs.py), only its own rows of the links' pieces, of the push and
 of the per-leaf vectors, and the `send` of the leaves its rows of the pull reach.
 
@@ -40,6 +43,8 @@ from kernel_read import NO_TWIN, Kernel, _mat, _vec, blocks, patch_range
 
 # `gather/d` of a link whose light arrives in all cells alike (`link.rs`'s ALL_CELLS).
 ALL_CELLS = 65535
+# The values of a cluster: its light by the axis direction its elements face (`node.rs`'s FACING).
+FACING = 6
 # AIJ bytes per stored non-zero: an f64 value and an int32 column index.
 BYTES_PER_NONZERO = 12
 
@@ -102,11 +107,11 @@ def from_solution(path, comm=PETSc.COMM_WORLD, leaf_rows=None, record=None):
             raise SystemExit(f"ugo_petsc: {path}: /kernel/hierarchy has {leaves} leaves and /directions {cells} cells, /kernel {len(k['patch_material'])} patches of {k['B/reflection'].shape[1]} cells")
         first, last = leaf_rows or patch_range(leaves, comm)
         node_rows, bundle_rows = patch_range(nodes, comm), patch_range(gather.count, comm)
-        n, own = leaves * cells, (last - first) * cells
-        sizes = [(b - a) * cells for a, b in (node_rows, bundle_rows)]
+        n, own, stride = leaves * cells, (last - first) * cells, values_per_node(cells)
+        sizes = [(node_rows[1] - node_rows[0]) * stride, (bundle_rows[1] - bundle_rows[0]) * cells]
         R = _mat(_node_pull(h, tree, share, node_rows, record), n, comm, columns=own)
         row, values = gather.rows(np.arange(*bundle_rows), LINK_FIELDS)
-        Lam = _mat(links(row, values, share, bundle_rows[1] - bundle_rows[0], nodes), nodes * cells, comm, columns=sizes[0])
+        Lam = _mat(links(row, values, share, bundle_rows[1] - bundle_rows[0], nodes), nodes * stride, comm, columns=sizes[0])
         receive = np.repeat(span(h["receive"], first, last, record), cells)
         row, values = push.rows(np.arange(first, last), PUSH_FIELDS)
         P = _mat(sp.diags(receive) @ pushed(row, values, cells, last - first, gather.count), gather.count * cells, comm, columns=sizes[1])
@@ -120,31 +125,48 @@ def from_solution(path, comm=PETSc.COMM_WORLD, leaf_rows=None, record=None):
 
 @dataclass
 class Tree:
-    """The operator's tree by depth-first position (`operator/{parent,weight,cluster}`) and
-    each leaf's position (`operator/leaf_position`), read whole by every rank: O(T)."""
+    """The operator's tree by depth-first position (`operator/{parent,weight,facing_share,
+    cluster}`) and each leaf's position (`operator/leaf_position`), read whole by every
+    rank: O(T)."""
 
     parent: np.ndarray
     weight: np.ndarray
+    facing_share: np.ndarray
     cluster: np.ndarray
     leaf_position: np.ndarray
 
 
+def values_per_node(cells):
+    """S, the values a node holds in `R`'s rows and `Λ`'s columns: an element's cells, a
+    cluster's six facing values."""
+    return max(cells, FACING)
+
+
 def read_tree(h, record):
     """The tree of the operator group `h`."""
-    parent, weight, cluster, at = (whole(h[name], record) for name in ("parent", "weight", "cluster", "leaf_position"))
-    return Tree(parent, weight, cluster.astype(bool), at.astype(np.int64))
+    if "facing_share" not in h:
+        raise SystemExit(f"ugo_petsc: {h.file.filename}: no {h.name}/facing_share: saved by a ugo before clusters sent light by facing (kernel format 1); save it again with `ugo solve CASE --save-kernel`")
+    names = ("parent", "weight", "facing_share", "cluster", "leaf_position")
+    parent, weight, facing_share, cluster, at = (whole(h[name], record) for name in names)
+    return Tree(parent, weight, facing_share, cluster.astype(bool), at.astype(np.int64))
 
 
 def ancestry(tree, leaves):
-    """Every (leaf, node above it or itself, product of the area shares from the leaf up to
-    the node) for the leaves `leaves`, as three arrays."""
+    """Every (leaf, node above it or itself, its weight in the node) for the leaves
+    `leaves`, as four arrays: under an element, the product of the area shares from the
+    leaf up (`omega`); in a cluster, six weights, one per facing value, the products of the
+    facing shares from the way into the clusters up (`facing`, n × 6)."""
     leaf = np.asarray(leaves, dtype=np.int64)
-    at, omega = tree.leaf_position[leaf], np.ones(len(leaf))
-    found = [(leaf, at, omega)]
+    at, omega, facing = tree.leaf_position[leaf], np.ones(len(leaf)), np.zeros((len(leaf), FACING))
+    found = [(leaf, at, omega, facing)]
     while len(at):
         up = tree.parent[at] != NO_TWIN
-        leaf, omega, at = leaf[up], omega[up] * tree.weight[at[up]], tree.parent[at[up]].astype(np.int64)
-        found.append((leaf, at, omega))
+        leaf, omega, facing, at = leaf[up], omega[up], facing[up], at[up]
+        parent = tree.parent[at].astype(np.int64)
+        into = tree.cluster[parent][:, None]
+        facing = np.where(into, np.where(tree.cluster[at][:, None], facing, omega[:, None]) * tree.facing_share[at], 0.0)
+        omega, at = omega * tree.weight[at], parent
+        found.append((leaf, at, omega, facing))
     return tuple(np.concatenate(a) for a in zip(*found))
 
 
@@ -159,18 +181,30 @@ def positions_in(ordered, ids):
 
 def pull(tree, share, found, node_rows, first, count, send):
     """Rows `node_rows` (sorted node positions) of R·diag(send) over the leaves `[first,
-    first + count)` (`send` theirs), from their `ancestry`: node ← each leaf under it by
-    the product of the area shares; a cluster's row is its cell 0, `μ_m/π` per cell. The
-    leaves that send nothing (`send = 0`) are left out."""
-    leaf, at, omega = found
-    cells = len(share)
+    first + count)` (`send` theirs), from their `ancestry`: an element ← each leaf under it
+    by the product of the area shares, cell by cell; a cluster's facing value `c` ← every
+    cell of each leaf by its weight `c` times `μ_m/π`. The leaves that send nothing
+    (`send = 0`) are left out."""
+    leaf, at, omega, facing = found
+    cells, stride = len(share), values_per_node(len(share))
     index, mine = positions_in(node_rows, at)
-    leaf, row, omega, spread = leaf[mine] - first, index[mine], omega[mine], tree.cluster[at[mine], None]
-    cell = np.arange(cells)
-    rows = (row[:, None] * cells + np.where(spread, 0, cell)).ravel()
-    cols = (leaf[:, None] * cells + cell).ravel()
-    vals = (omega[:, None] * np.where(spread, share, 1.0) * send[leaf, None]).ravel()
-    R = sp.csr_matrix((vals, (rows, cols)), shape=(len(node_rows) * cells, count * cells))
+    leaf, row, omega, facing, spread = leaf[mine] - first, index[mine], omega[mine], facing[mine], tree.cluster[at[mine]]
+    cell, value = np.arange(cells), np.arange(FACING)
+    e, c = ~spread, spread
+    shape = (c.sum(), FACING, cells)
+    rows = np.concatenate([
+        (row[e, None] * stride + cell).ravel(),
+        np.broadcast_to(row[c, None, None] * stride + value[None, :, None], shape).ravel(),
+    ])
+    cols = np.concatenate([
+        (leaf[e, None] * cells + cell).ravel(),
+        np.broadcast_to(leaf[c, None, None] * cells + cell[None, None, :], shape).ravel(),
+    ])
+    vals = np.concatenate([
+        np.broadcast_to((omega[e] * send[leaf[e]])[:, None], (e.sum(), cells)).ravel(),
+        (facing[c, :, None] * share[None, None, :] * send[leaf[c], None, None]).ravel(),
+    ])
+    R = sp.csr_matrix((vals, (rows, cols)), shape=(len(node_rows) * stride, count * cells))
     R.eliminate_zeros()
     return R
 
@@ -201,7 +235,7 @@ PUSH_FIELDS = ("bundle", "share")
 
 def links(row, values, share, count, nodes):
     """`count` rows of Λ, from the gather entries `values` of rows `row` (`Csr.rows`):
-    bundle `(b, d)` ← node `(q, m)` by `f`; `d = ALL_CELLS` spreads `f` over the bundle's
+    bundle `(b, d)` ← node value `(q, m)` by `f`; `d = ALL_CELLS` spreads `f` over the bundle's
     cells as `μ_d/π` (its cell 0 in place, the other cells after). Built in PETSc's index
     type, in place where it can: this is the largest factor, and its temporaries set the
     peak memory of a rank."""
@@ -209,7 +243,7 @@ def links(row, values, share, count, nodes):
     d, f = values["d"], values["f"]
     spread = d == ALL_CELLS
     col = values["source"].astype(PETSc.IntType)
-    col *= cells
+    col *= values_per_node(cells)
     col += values["m"]
     rows = row.astype(PETSc.IntType)
     rows *= cells
@@ -220,7 +254,7 @@ def links(row, values, share, count, nodes):
         rows = np.concatenate([rows] + [(row[spread] * cells + c).astype(PETSc.IntType) for c in range(1, cells)])
         col = np.concatenate([col] + [col[spread]] * (cells - 1))
         vals = np.concatenate([vals] + [f[spread] * share[c] for c in range(1, cells)])
-    return sp.csr_matrix((vals, (rows, col)), shape=(count * cells, nodes * cells))
+    return sp.csr_matrix((vals, (rows, col)), shape=(count * cells, nodes * values_per_node(cells)))
 
 
 def pushed(row, values, cells, count, bundles):

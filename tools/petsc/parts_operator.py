@@ -16,8 +16,9 @@ from kernel_read import _mat, _vec, blocks
 
 # The rows files' `format` this program reads (ROWS_FORMAT in src/io/part_rows_file.rs):
 # 3 since a link between elements whose receiver is not a leaf is a bundle of its own,
-# keyed by its source's position as well.
-ROWS_FORMAT = 3
+# keyed by its source's position as well; 4 since a cluster holds six facing values
+# (`tree/facing_share`).
+ROWS_FORMAT = 4
 
 
 def bundle_keys(g):
@@ -114,14 +115,14 @@ class Operator:
         g = files[0]["rows"]
         share = g["projected"][:] / np.pi
         cells = self.cells = len(share)
-        tree = hierarchy.Tree(g["tree/parent"][:], g["tree/weight"][:], g["tree/cluster"][:].astype(bool), g["tree/leaf_position"][:].astype(np.int64))
+        tree = hierarchy.Tree(g["tree/parent"][:], g["tree/weight"][:], g["tree/facing_share"][:], g["tree/cluster"][:].astype(bool), g["tree/leaf_position"][:].astype(np.int64))
         self.leaves, self.nodes, self.bundles = len(tree.leaf_position), len(tree.parent), len(keys)
         first, last = mine[0].leaves[0], mine[-1].leaves[1]
         a, b = mine[0].nodes[0], mine[-1].nodes[1]
-        n, own = self.leaves * cells, (last - first) * cells
+        n, own, stride = self.leaves * cells, (last - first) * cells, hierarchy.values_per_node(cells)
         R = _mat(hierarchy.node_pull(tree, share, (a, b), lambda start, end: np.ones(end - start)), n, comm, columns=own)
         row, values = csr(files, "gather", hierarchy.LINK_FIELDS)
-        Lam = _mat(hierarchy.links(row, values, share, b1 - b0, self.nodes), self.nodes * cells, comm, columns=(b - a) * cells)
+        Lam = _mat(hierarchy.links(row, values, share, b1 - b0, self.nodes), self.nodes * stride, comm, columns=(b - a) * stride)
         row, values = csr(files, "push", ("receiver", "kind", "source", "share"))
         wanted = bundle_keys(values)
         bundle = np.searchsorted(keys, wanted)

@@ -2,9 +2,9 @@
 //! matrix): for the methods and norms that need the explicit product `B·G`. Row `(a, d)` of leaf
 //! `a` sums, over each bundle of an ancestor `p` (with `a`'s push share `w`) and each piece
 //! `f` of `p`'s links from `q`, `w f` times the pull weight `ω_b` of every leaf `b` under
-//! `q` (the product of area shares down the tree): in `b`'s cell `m` when `q` is an
-//! element, spread as `μ_m/π` over all `b`'s cells when `q` is a cluster (whose value is
-//! the cell-weighted mean); times `a`'s receiving and `b`'s sending balancing factor
+//! `q` (the product of area shares down the tree, and of shares of the piece's facing value
+//! below a cluster): in `b`'s cell `m` when `q` is an element, spread as `μ_m/π` over all
+//! `b`'s cells when `q` is a cluster (whose values are cell-weighted means); times `a`'s receiving and `b`'s sending balancing factor
 //! (`balance.rs`). Every pair of leaves lies under exactly one link, so the
 //! expansion has one entry per visible pair and cell pair, like the uniform kernel.
 
@@ -25,7 +25,7 @@ impl Operator {
                     _ => continue,
                 };
                 let source = e.source as usize;
-                for (b, omega) in self.leaves_under(source) {
+                for (b, omega) in self.leaves_under(source, e.m as usize) {
                     let omega = omega * self.send[b];
                     if self.cluster[source] {
                         self.share.iter().enumerate().for_each(|(m, s)| f(b * k + m, c * omega * s));
@@ -61,13 +61,14 @@ impl Operator {
         first..end
     }
 
-    /// Each leaf under `pos` with its pull weight `ω_b`: the product of the area shares
-    /// from the leaf up to `pos`.
-    fn leaves_under(&self, pos: usize) -> impl Iterator<Item = (usize, f64)> + '_ {
+    /// Each leaf under `pos` with its pull weight `ω_b` in `pos`'s value `m`: the product of
+    /// the area shares from the leaf up to `pos`, of the shares of facing value `m` from the
+    /// way into a cluster on.
+    fn leaves_under(&self, pos: usize, m: usize) -> impl Iterator<Item = (usize, f64)> + '_ {
         self.leaf_range(pos).map(move |b| {
             let (mut at, mut omega) = (self.leaf_position[b] as usize, 1.0);
             while at != pos {
-                omega *= self.weight[at];
+                omega *= if self.into_cluster[at] { self.facing_share[at][m] } else { self.weight[at] };
                 at = self.parent[at] as usize;
             }
             (b, omega)

@@ -4,12 +4,13 @@
 //! area-weighted mean of its leaves), `Λ` gathers (bundle ← node, the links' pieces), `P`
 //! pushes (leaf ← its ancestors' bundles, by its share) and `r`, `s` are the receiving and
 //! sending balancing factors, each repeated over the `K` cells of a leaf. Rows and columns
-//! are `(index · K + cell)`; nodes by depth-first position. A cluster's value is the same in
-//! every cell, the cell-weighted mean of its children's: `R` holds it in cell 0, the only
-//! cell of a cluster `Λ` reads. Built from the operator's own arrays, so the product equals
-//! `Operator::arriving` to rounding.
+//! are `(index · K + cell)` for leaves and bundles, `(position · S + value)` for nodes,
+//! `S = max(K, 6)`: an element's `K` cells, a cluster's six facing values (each the
+//! cell-weighted mean of its elements facing one axis direction, `operator.rs`). Built from
+//! the operator's own arrays, so the product equals `Operator::arriving` to rounding.
 
 use super::link::ALL_CELLS;
+use super::node::{FACING, NONE};
 use super::operator::Operator;
 use sprs::{CsMat, TriMat};
 
@@ -17,9 +18,9 @@ use sprs::{CsMat, TriMat};
 pub struct Factors {
     /// Push, `(leaves·K) × (bundles·K)`.
     pub push: CsMat<f64>,
-    /// Links, `(bundles·K) × (nodes·K)`.
+    /// Links, `(bundles·K) × (nodes·S)`.
     pub links: CsMat<f64>,
-    /// Pull, `(nodes·K) × (leaves·K)`.
+    /// Pull, `(nodes·S) × (leaves·K)`.
     pub pull: CsMat<f64>,
     /// The receiving balancing factor of every unknown, `leaves·K`.
     pub receive: Vec<f64>,
@@ -54,10 +55,10 @@ impl Operator {
 
     fn links_matrix(&self) -> CsMat<f64> {
         let (k, bundles, nodes) = (self.k, self.row.len() - 1, self.parent.len());
-        let mut tri = TriMat::with_capacity((bundles * k, nodes * k), self.entries.len());
+        let mut tri = TriMat::with_capacity((bundles * k, nodes * self.stride), self.entries.len());
         for b in 0..bundles {
             for e in &self.entries[self.row[b]..self.row[b + 1]] {
-                let column = e.source as usize * k + e.m as usize;
+                let column = e.source as usize * self.stride + e.m as usize;
                 match e.d {
                     ALL_CELLS => {
                         self.share.iter().enumerate().for_each(|(d, s)| tri.add_triplet(b * k + d, column, e.f * s))
@@ -70,23 +71,31 @@ impl Operator {
     }
 
     /// Each leaf's weight in every ancestor (itself with 1): the product of the area shares
-    /// on the way up, times `μ_m/π` once the way enters a cluster.
+    /// on the way up, times `μ_m/π` once the way enters a cluster, and from there on each
+    /// facing value's product of facing shares.
     fn pull_matrix(&self) -> CsMat<f64> {
-        let (k, leaves, nodes) = (self.k, self.leaf_position.len(), self.parent.len());
-        let mut tri = TriMat::new((nodes * k, leaves * k));
+        let (k, stride, leaves, nodes) = (self.k, self.stride, self.leaf_position.len(), self.parent.len());
+        let mut tri = TriMat::new((nodes * stride, leaves * k));
         for (l, &pos) in self.leaf_position.iter().enumerate() {
-            let (mut at, mut omega) = (pos as usize, 1.0);
+            let (mut at, mut omega, mut facing): (usize, f64, Option<[f64; FACING]>) = (pos as usize, 1.0, None);
             loop {
-                match self.cluster[at] {
-                    true => {
-                        self.share.iter().enumerate().for_each(|(m, s)| tri.add_triplet(at * k, l * k + m, omega * s))
-                    }
-                    false => (0..k).for_each(|m| tri.add_triplet(at * k + m, l * k + m, omega)),
+                match facing {
+                    Some(by) => self.share.iter().enumerate().for_each(|(m, s)| {
+                        by.iter().enumerate().for_each(|(c, w)| tri.add_triplet(at * stride + c, l * k + m, w * s))
+                    }),
+                    None => (0..k).for_each(|m| tri.add_triplet(at * stride + m, l * k + m, omega)),
                 }
-                if self.parent[at] == super::node::NONE {
+                if self.parent[at] == NONE {
                     break;
                 }
-                omega *= self.weight[at];
+                facing = match (facing, self.into_cluster[at]) {
+                    (Some(by), _) => Some(std::array::from_fn(|c| by[c] * self.facing_share[at][c])),
+                    (None, true) => Some(self.facing_share[at].map(|w| omega * w)),
+                    (None, false) => {
+                        omega *= self.weight[at];
+                        None
+                    }
+                };
                 at = self.parent[at] as usize;
             }
         }

@@ -55,7 +55,7 @@ pub use factors::Factors;
 pub use history::{Pass, Work};
 pub use kernel::Hierarchy;
 pub use link::{ALL_CELLS, Link};
-pub use node::{Kind, NONE, Node, longest_edge};
+pub use node::{FACING, Kind, NONE, Node, longest_edge};
 pub use operator::Operator;
 pub use options::{DEFAULT_PASSES, DEFAULT_TOLERANCE, Options};
 pub use oracle::sample_points;

@@ -51,8 +51,12 @@ pub struct Node {
     pub emission: f64,
     /// Exposed area facing each axis direction, `Σ A_e max(0, ±n_e·axis)` over the elements under it
     /// (`+x, −x, +y, −y, +z, −z`), m²: the projected area of a cluster (`projected`).
-    pub facing: [f64; 6],
+    pub facing: [f64; FACING],
 }
+
+/// The axis directions a cluster's exposed area is kept facing (`Node::facing`), and its
+/// light by: `+x, −x, +y, −y, +z, −z`.
+pub const FACING: usize = 6;
 
 impl Node {
     /// An unsplit element of `patch`.
@@ -99,6 +103,23 @@ impl Node {
                 .map(|(a, &c)| c.abs() * self.facing[2 * a + usize::from(c < 0.0)])
                 .sum(),
         }
+    }
+
+    /// How a cluster's light towards the unit direction `u` is made of its [`FACING`]
+    /// values: `|u_a| facing[a, sign u_a] / projected(u)` for each axis `a`, at that
+    /// value's index, 0 elsewhere (all 0 where nothing faces `u`). Its elements facing `u`
+    /// send it, each by its projected area, exactly when they are axis-aligned; what faces
+    /// away (the undersides of a row of seats seen from the ceiling) sends none.
+    pub fn facing_weights(&self, u: DVec3) -> [f64; FACING] {
+        let mut weights = [0.0; FACING];
+        let projected = self.projected(u);
+        if projected > 0.0 {
+            for (a, c) in [u.x, u.y, u.z].into_iter().enumerate() {
+                let at = 2 * a + usize::from(c < 0.0);
+                weights[at] = c.abs() * self.facing[at] / projected;
+            }
+        }
+        weights
     }
 
     /// The patch of an element, `None` for a cluster.

@@ -1,6 +1,7 @@
 //! `G x` on the leaf unknowns (`docs/design.md` §3b, "Apply K x"): pull (leaf values up the trees
 //! as area averages; into a cluster as the cell-weighted mean `Σ_m (μ_m/π) x_m`, which means
-//! the same in every frame), gather over the links at every level (`z_p += F_pq x̄_q`, by
+//! the same in every frame, averaged six times, over the exposed area facing each axis
+//! direction: a cluster's light towards a receiver is its elements' that face it), gather over the links at every level (`z_p += F_pq x̄_q`, by
 //! cells), push (each node's gathered light to all its leaves, each leaf with its own share,
 //! `push.rs`). The material blocks are the kernel's (`crate::kernel::Kernel`), as for the
 //! uniform kernel's `G`. Nodes are stored in depth-first order, so pull is one backward
@@ -8,8 +9,8 @@
 //! allocated per application.
 
 use super::bundle::Bundles;
-use super::link::{ALL_CELLS, Link};
-use super::node::NONE;
+use super::link::{ALL_CELLS, Link, axis};
+use super::node::{FACING, NONE};
 use super::parts::{Entry, Parts};
 use super::push::{SeenCache, gathered, push_rows};
 use super::tree::Tree;
@@ -25,7 +26,7 @@ use std::sync::Mutex;
 /// each beyond the first costs the larger of `bundles × K` and `nodes × K` values.
 pub(super) const MOST_LANES: usize = 4;
 
-/// Work arrays: `nodes × K` (means), `bundles × K` (gathered light) and `leaves × K` (sent light), shared
+/// Work arrays: `nodes × max(K, 6)` (means: an element's `K` cells, a cluster's six facing values), `bundles × K` (gathered light) and `leaves × K` (sent light), shared
 /// by `G x` and `Gᵀ y` (`transpose.rs`); and the partial sums of `Gᵀ y`'s scatters beside
 /// the first (one fewer than the threads, at most [`MOST_LANES`], of the larger of
 /// `nodes × K` and `bundles × K`).
@@ -51,6 +52,11 @@ pub struct Operator {
     pub(super) parent: Vec<u32>,
     pub(super) weight: Vec<f64>,
     pub(super) into_cluster: Vec<bool>,
+    /// By depth-first position: under a cluster, the node's share of each of its parent's
+    /// six facing values (`Parts::facing_share`).
+    pub(super) facing_share: Vec<[f64; FACING]>,
+    /// Values per node in the means: `max(K, 6)`.
+    pub(super) stride: usize,
     /// By depth-first position: one past the last position of its subtree, and whether it is
     /// a cluster (for the expansion, `expand.rs`).
     pub(super) subtree_end: Vec<u32>,
@@ -88,6 +94,7 @@ impl Operator {
         }
         let (parent, weight) = parents(tree, &order, &position);
         let cluster = order.iter().map(|&id| tree.node(id).patch().is_none()).collect();
+        let facing_share = facing_shares(tree, &order);
         let leaves: Vec<u32> = order.iter().copied().filter(|&id| tree.node(id).is_leaf()).collect();
         let leaf_position = leaves.iter().map(|&id| position[id as usize]).collect();
         let bundles = Bundles::new(tree, links, &position);
@@ -100,6 +107,7 @@ impl Operator {
             parent,
             weight,
             cluster,
+            facing_share,
             push_row,
             push,
             row,
@@ -116,10 +124,23 @@ impl Operator {
     /// `Parts::check`).
     pub(super) fn of(parts: Parts, directions: &DirectionSet) -> Operator {
         let k = directions.len();
-        let Parts { leaves, leaf_position, parent, weight, cluster, push_row, push, row, entries, links, .. } = parts;
+        let Parts {
+            leaves,
+            leaf_position,
+            parent,
+            weight,
+            cluster,
+            facing_share,
+            push_row,
+            push,
+            row,
+            entries,
+            links,
+            ..
+        } = parts;
         let into_cluster = parent.iter().map(|&p| p != NONE && cluster[p as usize]).collect();
         let subtree_end = subtree_ends(&parent);
-        let (nodes, dim, bundles) = (parent.len(), leaves.len() * k, row.len() - 1);
+        let (nodes, dim, bundles, stride) = (parent.len(), leaves.len() * k, row.len() - 1, k.max(FACING));
         Operator {
             k,
             leaves,
@@ -129,6 +150,8 @@ impl Operator {
             parent,
             weight,
             into_cluster,
+            facing_share,
+            stride,
             subtree_end,
             cluster,
             row,
@@ -140,9 +163,12 @@ impl Operator {
             balanced: parts.balanced,
             scratch: Mutex::new(Scratch {
                 sent: vec![0.0; dim],
-                mean: vec![0.0; nodes * k],
+                mean: vec![0.0; nodes * stride],
                 gathered: vec![0.0; bundles * k],
-                spare: vec![0.0; (rayon::current_num_threads().clamp(1, MOST_LANES) - 1) * nodes.max(bundles) * k],
+                spare: vec![
+                    0.0;
+                    (rayon::current_num_threads().clamp(1, MOST_LANES) - 1) * (nodes * stride).max(bundles * k)
+                ],
             }),
         }
     }
@@ -180,7 +206,7 @@ impl Operator {
     /// Bytes held: the pieces, the push weights, the per-node arrays and the work arrays.
     pub fn bytes(&self) -> f64 {
         let nodes = self.parent.len() as f64;
-        let per_node = 4.0 + 8.0 + 1.0 + 8.0 + 2.0 * 8.0 * self.k as f64;
+        let per_node = 4.0 + 8.0 + 1.0 + 8.0 + 8.0 * FACING as f64 + 8.0 * (self.k + self.stride) as f64;
         let per_leaf = 4.0 * 2.0 + 3.0 * 8.0 + 8.0 * self.k as f64;
         (self.entries.len() * std::mem::size_of::<Entry>() + self.push.len() * std::mem::size_of::<(u32, f32)>()) as f64
             + nodes * per_node
@@ -207,34 +233,41 @@ impl Operator {
         self.push(gathered, arriving);
     }
 
-    /// Area averages of the leaf values at every node.
+    /// Area averages of the leaf values at every node; a cluster's six, each over its
+    /// elements' exposed area facing one axis direction.
     fn pull(&self, x: &[f64], mean: &mut [f64]) {
-        let k = self.k;
+        let (k, stride) = (self.k, self.stride);
         mean.fill(0.0);
         for (l, &pos) in self.leaf_position.iter().enumerate() {
-            mean[pos as usize * k..(pos as usize + 1) * k].copy_from_slice(&x[l * k..(l + 1) * k]);
+            mean[pos as usize * stride..][..k].copy_from_slice(&x[l * k..(l + 1) * k]);
         }
         for pos in (1..self.parent.len()).rev() {
-            let (up, down) = mean.split_at_mut(pos * k);
-            let parent = &mut up[self.parent[pos] as usize * k..][..k];
-            let child = &down[..k];
-            let w = self.weight[pos];
-            if self.into_cluster[pos] {
-                let m: f64 = child.iter().zip(&self.share).map(|(v, s)| v * s).sum();
-                parent.iter_mut().for_each(|p| *p += w * m);
-            } else {
-                parent.iter_mut().zip(child).for_each(|(p, c)| *p += w * c);
+            let (up, down) = mean.split_at_mut(pos * stride);
+            let parent = &mut up[self.parent[pos] as usize * stride..][..stride];
+            let child = &down[..stride];
+            if !self.into_cluster[pos] {
+                let w = self.weight[pos];
+                parent[..k].iter_mut().zip(&child[..k]).for_each(|(p, c)| *p += w * c);
+                continue;
+            }
+            let shares = self.facing_share[pos].iter().zip(parent.iter_mut());
+            match self.cluster[pos] {
+                true => shares.zip(child).for_each(|((s, p), c)| *p += s * c),
+                false => {
+                    let m: f64 = child[..k].iter().zip(&self.share).map(|(v, s)| v * s).sum();
+                    shares.for_each(|(s, p)| *p += s * m);
+                }
             }
         }
     }
 
     /// `z_b = Σ_q F_pq x̄_q` over every bundle's links, in parallel over bundles.
     fn gather(&self, mean: &[f64], gathered: &mut [f64]) {
-        let k = self.k;
+        let (k, stride) = (self.k, self.stride);
         gathered.par_chunks_mut(k).enumerate().for_each(|(b, z)| {
             z.fill(0.0);
             for e in &self.entries[self.row[b]..self.row[b + 1]] {
-                let v = e.f * mean[e.source as usize * k + e.m as usize];
+                let v = e.f * mean[e.source as usize * stride + e.m as usize];
                 if e.d == ALL_CELLS {
                     z.iter_mut().zip(&self.share).for_each(|(z, s)| *z += v * s);
                 } else {
@@ -268,6 +301,7 @@ impl Operator {
             parent: self.parent.clone(),
             weight: self.weight.clone(),
             cluster: self.cluster.clone(),
+            facing_share: self.facing_share.clone(),
             push_row: self.push_row.clone(),
             push: self.push.clone(),
             row: self.row.clone(),
@@ -302,6 +336,25 @@ pub(super) fn parents(tree: &Tree, order: &[u32], position: &[u32]) -> (Vec<u32>
     (parent, weight)
 }
 
+/// By depth-first position (`order`): under a cluster, the node's share of each of its
+/// parent's facing areas (`Node::facing`; 0 where the parent faces none that way).
+pub(super) fn facing_shares(tree: &Tree, order: &[u32]) -> Vec<[f64; FACING]> {
+    order
+        .iter()
+        .map(|&id| {
+            let node = tree.node(id);
+            match node.parent {
+                NONE => [0.0; FACING],
+                up if tree.node(up).patch().is_some() => [0.0; FACING],
+                up => {
+                    let whole = tree.node(up).facing;
+                    std::array::from_fn(|c| if whole[c] > 0.0 { node.facing[c] / whole[c] } else { 0.0 })
+                }
+            }
+        })
+        .collect()
+}
+
 /// One past the last depth-first position of every position's subtree.
 fn subtree_ends(parent: &[u32]) -> Vec<u32> {
     let mut end: Vec<u32> = (1..=parent.len() as u32).collect();
@@ -313,29 +366,41 @@ fn subtree_ends(parent: &[u32]) -> Vec<u32> {
 }
 
 /// The links' pieces as CSR rows by bundle, each link's factor without its visible fraction
-/// (`push.rs`: each leaf's own rays see the rest).
+/// (`push.rs`: each leaf's own rays see the rest); a cluster source's pieces split between
+/// its facing values towards the receiver (`Node::facing_weights`).
 pub(super) fn gather_rows(
     tree: &Tree,
     links: &[Link],
     bundles: &Bundles,
     position: &[u32],
 ) -> (Vec<usize>, Vec<Entry>) {
-    let pieces = |l: u32| links[l as usize].pieces.len().max(1);
     let mut row = Vec::with_capacity(bundles.len() + 1);
     row.push(0);
+    let mut entries = Vec::with_capacity(bundles.links.len());
     for b in 0..bundles.len() {
-        row.push(row[b] + bundles.links_of(b).iter().map(|&l| pieces(l)).sum::<usize>());
-    }
-    let mut entries = Vec::with_capacity(row[bundles.len()]);
-    for &l in &bundles.links {
-        let l = &links[l as usize];
-        let source = position[l.source as usize];
-        let f = gathered(tree, l);
-        let open = if l.factor > 0.0 { f / l.factor } else { 1.0 };
-        match l.pieces.is_empty() {
-            true => entries.push(Entry { source, d: 0, m: 0, f }),
-            false => entries.extend(l.pieces.iter().map(|&(d, m, f)| Entry { source, d, m, f: f * open })),
+        for &l in bundles.links_of(b) {
+            pieces_of(tree, &links[l as usize], position, &mut entries);
         }
+        row.push(entries.len());
     }
     (row, entries)
+}
+
+/// The gathered pieces of `link` added to `entries`.
+fn pieces_of(tree: &Tree, link: &Link, position: &[u32], entries: &mut Vec<Entry>) {
+    let source = position[link.source as usize];
+    let f = gathered(tree, link);
+    let open = if link.factor > 0.0 { f / link.factor } else { 1.0 };
+    let pieces = link.pieces.iter().map(|&(d, m, f)| (d, m, f * open));
+    let pieces: Vec<_> = if link.pieces.is_empty() { vec![(0, 0, f)] } else { pieces.collect() };
+    let (q, p) = (tree.node(link.source), tree.node(link.receiver));
+    if q.patch().is_some() {
+        entries.extend(pieces.iter().map(|&(d, m, f)| Entry { source, d, m, f }));
+        return;
+    }
+    let towards = q.facing_weights(-axis(p, q).0);
+    for (d, _, f) in pieces {
+        let by_facing = towards.iter().enumerate().filter(|(_, w)| **w > 0.0);
+        entries.extend(by_facing.map(|(m, w)| Entry { source, d, m: m as u16, f: f * w }));
+    }
 }

@@ -9,7 +9,7 @@
 //! value read from a file before the operator is made of them.
 
 use super::link::ALL_CELLS;
-use super::node::NONE;
+use super::node::{FACING, NONE};
 use crate::kernel::BalanceReport;
 
 /// One gathered piece: `z[receiver, d] += f · x̄[source, m]` (`d` = [`ALL_CELLS`]: `μ_d/π` each).
@@ -19,7 +19,8 @@ pub struct Entry {
     pub source: u32,
     /// Receiver cell, or [`ALL_CELLS`].
     pub d: u16,
-    /// Source cell (0 for a cluster source, whose value is the same in all).
+    /// Source cell; for a cluster source, which of its [`FACING`] values: the mean of its
+    /// elements facing `+x, −x, +y, −y, +z` or `−z`.
     pub m: u16,
     /// The factor of the piece.
     pub f: f64,
@@ -38,6 +39,9 @@ pub struct Parts {
     pub weight: Vec<f64>,
     /// By depth-first position: true for a cluster.
     pub cluster: Vec<bool>,
+    /// By depth-first position: under a cluster, the node's share of its parent's exposed
+    /// area facing each axis direction (`Node::facing`; zeros under an element).
+    pub facing_share: Vec<[f64; FACING]>,
     /// The bundles each leaf's ancestors receive with its share of them, CSR by leaf:
     /// `push[push_row[l]..push_row[l + 1]]` holds `(bundle, share)`.
     pub push_row: Vec<usize>,
@@ -63,11 +67,12 @@ impl Parts {
     pub fn check(&self, k: usize) -> Result<(), String> {
         let (nodes, leaves) = (self.parent.len(), self.leaves.len());
         let bundles = self.row.len().checked_sub(1).ok_or("the gather has no row pointer")?;
-        if self.weight.len() != nodes || self.cluster.len() != nodes {
+        if self.weight.len() != nodes || self.cluster.len() != nodes || self.facing_share.len() != nodes {
             return Err(format!(
-                "{nodes} parents, {} weights and {} cluster flags",
+                "{nodes} parents, {} weights, {} cluster flags and {} facing shares",
                 self.weight.len(),
-                self.cluster.len()
+                self.cluster.len(),
+                self.facing_share.len()
             ));
         }
         if self.leaf_position.len() != leaves || self.receive.len() != leaves || self.send.len() != leaves {
@@ -85,12 +90,16 @@ impl Parts {
             return Err(format!("a push share names a bundle beyond {bundles} or is not finite"));
         }
         let cell = |c: u16| (c as usize) < k;
-        if self.entries.iter().any(|e| e.source as usize >= nodes || !(cell(e.d) || e.d == ALL_CELLS) || !cell(e.m)) {
-            return Err(format!("a gathered piece names a node beyond {nodes} or a cell beyond {k}"));
+        let value = |e: &Entry| (e.m as usize) < if self.cluster[e.source as usize] { FACING } else { k };
+        if self.entries.iter().any(|e| e.source as usize >= nodes || !(cell(e.d) || e.d == ALL_CELLS) || !value(e)) {
+            return Err(format!(
+                "a gathered piece names a node beyond {nodes}, a cell beyond {k} or a cluster's facing beyond {FACING}"
+            ));
         }
         let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
         let factors = self.entries.iter().all(|e| e.f.is_finite());
-        if !(finite(&self.weight) && finite(&self.receive) && finite(&self.send) && factors) {
+        let shares = finite(self.facing_share.as_flattened());
+        if !(finite(&self.weight) && finite(&self.receive) && finite(&self.send) && factors && shares) {
             return Err("a weight, factor or balancing factor is not finite".into());
         }
         Ok(())

@@ -10,8 +10,8 @@ use super::balanced::SENDING;
 use super::bundle::{Bundles, SourceClass};
 use super::kernel::Hierarchy;
 use super::link::Link;
-use super::node::NONE;
-use super::operator::{gather_rows, parents};
+use super::node::{FACING, NONE};
+use super::operator::{facing_shares, gather_rows, parents};
 use super::parts::Entry;
 use super::push::push_rows;
 use crate::progress::Progress;
@@ -35,10 +35,13 @@ pub struct BundleKey {
 #[derive(Debug, Clone)]
 pub struct Rows {
     /// By depth-first position, the whole tree: parent ([`NONE`] at the top), area share in
-    /// it, whether it is a cluster.
+    /// it, share of its facing areas under a cluster (`Parts::facing_share`), whether it is
+    /// a cluster.
     pub parent: Vec<u32>,
     /// See `parent`.
     pub weight: Vec<f64>,
+    /// See `parent`.
+    pub facing_share: Vec<[f64; FACING]>,
     /// See `parent`.
     pub cluster: Vec<bool>,
     /// Tree node of every leaf, in unknown order.
@@ -81,6 +84,7 @@ impl Hierarchy {
         order.iter().enumerate().for_each(|(pos, &id)| position[id as usize] = pos as u32);
         let (parent, weight) = parents(tree, &order, &position);
         let cluster = order.iter().map(|&id| tree.node(id).patch().is_none()).collect();
+        let facing_share = facing_shares(tree, &order);
         let leaves: Vec<u32> = order.iter().copied().filter(|&id| tree.node(id).is_leaf()).collect();
         let leaf_position = leaves.iter().map(|&id| position[id as usize]).collect();
         let own = |id: &u32| partition.owns(tree, *id);
@@ -110,6 +114,7 @@ impl Hierarchy {
         Ok(Rows {
             parent,
             weight,
+            facing_share,
             cluster,
             leaves,
             leaf_position,

@@ -2,7 +2,8 @@
 //! "Apply K x") run backwards, balancing factors included (`balance.rs`: `(R G S)ᵀ =
 //! S Gᵀ R`). Push becomes a sum over each leaf's ancestors, gather a
 //! scatter over the links from receiver to source, pull a sweep down the trees (into a
-//! cluster: `Σ_d` of the cluster's value times each child cell's `μ_m/π`). Its uses: the
+//! cluster: each of its six facing values times the child's share of it, and into an
+//! element's cells by their `μ_m/π`). Its uses: the
 //! light each leaf sends to the whole scene, `Σ_i A_i G_ij` (the columns that energy
 //! conservation constrains), and `‖K‖₁` without the expansion. The two scatters run on up
 //! to four tasks, each into partial sums of its own, added after (`docs/performance.md`,
@@ -40,31 +41,38 @@ impl Operator {
                 let all: f64 = z.iter().zip(&self.share).map(|(z, s)| z * s).sum();
                 for e in &self.entries[self.row[b]..self.row[b + 1]] {
                     let v = if e.d == ALL_CELLS { all } else { z[e.d as usize] };
-                    mean[e.source as usize * k + e.m as usize] += e.f * v;
+                    mean[e.source as usize * self.stride + e.m as usize] += e.f * v;
                 }
             }
         });
         self.pull_down(mean);
         let mean = &*mean;
         x.par_chunks_mut(k).zip(&self.leaf_position).zip(&self.send).for_each(|((x, &pos), s)| {
-            x.iter_mut().zip(&mean[pos as usize * k..]).for_each(|(x, m)| *x = s * m);
+            x.iter_mut().zip(&mean[pos as usize * self.stride..]).for_each(|(x, m)| *x = s * m);
         });
     }
 
-    /// Each node's value added to its children's by their area shares (a cluster's total
-    /// spread by the cells' shares), parents before children: serial, over the nodes.
+    /// Each node's value added to its children's by their area shares (a cluster's facing
+    /// values by the child's shares of them, into an element spread by the cells' shares),
+    /// parents before children: serial, over the nodes.
     fn pull_down(&self, mean: &mut [f64]) {
-        let k = self.k;
+        let (k, stride) = (self.k, self.stride);
         for pos in 1..self.parent.len() {
-            let (up, down) = mean.split_at_mut(pos * k);
-            let parent = &up[self.parent[pos] as usize * k..][..k];
-            let child = &mut down[..k];
-            let w = self.weight[pos];
-            if self.into_cluster[pos] {
-                let total: f64 = parent.iter().sum();
-                child.iter_mut().zip(&self.share).for_each(|(c, s)| *c += w * s * total);
-            } else {
-                child.iter_mut().zip(parent).for_each(|(c, p)| *c += w * p);
+            let (up, down) = mean.split_at_mut(pos * stride);
+            let parent = &up[self.parent[pos] as usize * stride..][..stride];
+            let child = &mut down[..stride];
+            if !self.into_cluster[pos] {
+                let w = self.weight[pos];
+                child[..k].iter_mut().zip(&parent[..k]).for_each(|(c, p)| *c += w * p);
+                continue;
+            }
+            let shares = self.facing_share[pos].iter().zip(parent.iter());
+            match self.cluster[pos] {
+                true => shares.zip(child.iter_mut()).for_each(|((s, p), c)| *c += s * p),
+                false => {
+                    let total: f64 = shares.map(|(s, p)| s * p).sum();
+                    child[..k].iter_mut().zip(&self.share).for_each(|(c, s)| *c += s * total);
+                }
             }
         }
     }
