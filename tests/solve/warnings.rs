@@ -267,16 +267,12 @@ fn strict_fails_before_the_solve_or_writes_the_solution_and_verbose_gives_the_wh
 
 /// The closed lecture hall at three times its case's link tolerance (9e-2): of its escaped flux,
 /// the leaves' closures account for a small part (its real gaps), and the rest is the
-/// hierarchy's links' own loss, warned about as such, with no opening named (which the
-/// columns alone would have blamed). At the case's 3e-2 the links lost 0.89 % once occluded
-/// cluster pairs were refined (`docs/hierarchy.md`), below the warning's 1 %; measured again
-/// on 2026-12-06, 1.06 % before each leaf saw its ancestors' sources by its own rays and
-/// 1.08 % since (the case's own solve warns; what moved it past 1 % in between was not
-/// measured); since long
-/// elements are cut into strips, 0.98 % at 6e-2, 1.04 % at 9e-2, 0.91 % at 1.5e-1 (the
-/// loss is not monotonic in the tolerance: the refinement it stops differs). Since its
-/// slots and concave edges are graded (the case at 3e-2: 109,477 leaves instead of 59,845)
-/// the solve takes four to five minutes: `make test-long` runs it, `make test` does not.
+/// hierarchy's links' own loss, told as such when beyond 1 % of the emitted flux, and never
+/// as an opening (which the columns alone would have blamed). The loss was 1.04 % at 9e-2
+/// while a cluster sent the mean of all its faces; since clusters send by facing
+/// (`docs/hierarchy.md`, "Clusters send by facing") 604.7 lm of 192,001.7 (0.31 %), the
+/// gaps' 6.0 lm, and no warning. Since its slots and concave edges are graded the solve
+/// takes four to five minutes: `make test-long` runs it, `make test` does not.
 #[test]
 #[ignore = "four minutes: make test-long"]
 fn the_hierarchys_own_loss_of_light_is_told_apart_from_an_opening() {
@@ -299,9 +295,21 @@ fn the_hierarchys_own_loss_of_light_is_told_apart_from_an_opening() {
         "the lecture hall at 9e-2: the links' loss {links:.1} lm, the gaps' {geometry:.1} lm, of {:.1} lm",
         e.emitted
     );
-    assert!(links > 1e-2 * e.emitted && links > 5.0 * geometry, "the links' loss {links}, the gaps' {geometry}");
+    assert!(links > 5.0 * geometry, "the links' loss {links}, the gaps' {geometry}");
     let told = texts(&s.warnings);
-    let w = told.iter().find(|w| w.contains("lost by the hierarchy's links")).unwrap_or_else(|| panic!("{told:?}"));
-    assert!(w.starts_with(&format!("{links:.4} lm")), "{w}");
+    let warned = told.iter().find(|w| w.contains("lost by the hierarchy's links"));
+    match links > 1e-2 * e.emitted {
+        true => assert!(warned.is_some_and(|w| w.starts_with(&format!("{links:.4} lm"))), "{told:?}"),
+        false => assert!(warned.is_none(), "{told:?}"),
+    }
     assert!(!s.warnings.iter().any(|w| matches!(w, Warning::SmallOpening { .. })), "{told:?}");
+}
+
+/// The links' own loss is told with its figure, its share of the emitted flux and what to
+/// do about it.
+#[test]
+fn the_links_own_loss_is_told_with_its_share_and_the_way_out() {
+    let told = Warning::KernelLoss { lost: 2074.3277, emitted: 192_001.7 }.to_string();
+    assert!(told.starts_with("2074.3277 lm (1.1 % of the flux emitted) is lost by the hierarchy's links"), "{told}");
+    assert!(told.contains("a smaller link_tolerance loses less"), "{told}");
 }
