@@ -81,8 +81,8 @@ pub fn element_factor(
 /// ends' projected areas across the line between their centres,
 /// `F_pq = P_p(u) P_q(−u) / (A_p π d²)` (`Node::projected`).
 pub fn cluster_factor(p: &Node, q: &Node, directions: &DirectionSet) -> (f64, Vec<Piece>) {
-    let (u, distance) = axis(p, q);
-    let factor = (p.projected(u) * q.projected(-u) / (p.area * PI * distance * distance)).min(1.0);
+    let (u, _) = axis(p, q);
+    let factor = projected_transfer(p, q);
     let cell_p = cell(p, u, directions);
     let cell_q = match cell(q, -u, directions) {
         ALL_CELLS => 0,
@@ -90,6 +90,15 @@ pub fn cluster_factor(p: &Node, q: &Node, directions: &DirectionSet) -> (f64, Ve
     };
     let pieces = if directions.len() > 1 { vec![(cell_p, cell_q, factor)] } else { Vec::new() };
     (factor, pieces)
+}
+
+/// `P_p(u) P_q(−u) / (A_p π d²)` along the line between the centres of `p` and `q`, at most 1
+/// (`docs/design.md` (3b.2)): the factor of a link with a cluster at one end, and the
+/// estimate by which a leaf takes its share of what its element ancestor gathers from a
+/// cluster (`push.rs`).
+pub fn projected_transfer(p: &Node, q: &Node) -> f64 {
+    let (u, distance) = axis(p, q);
+    (p.projected(u) * q.projected(-u) / (p.area * PI * distance * distance)).min(1.0)
 }
 
 /// The unit direction from `p`'s centre to `q`'s and their distance (at least the gap

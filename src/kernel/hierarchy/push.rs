@@ -32,7 +32,7 @@
 //! factor and the visible fraction its rays found), which depends on the two elements alone.
 
 use super::bundle::{Bundles, seen_by_leaves};
-use super::link::{Link, axis};
+use super::link::{Link, axis, projected_transfer};
 use super::node::{NONE, Node};
 use super::sight::stand_ins;
 use super::tree::Tree;
@@ -273,6 +273,7 @@ impl View<'_> {
         let (id, patch) = leaf;
         // a leaf across a contact: its points inside the solid see nothing
         let own_rays = by_rays && a != id && !self.tree.node(id).straddles_contact();
+        let leaf = self.tree.node(id);
         let points = polygon_points(&patch.polygon);
         let from = points.map(|x| (x, patch.face));
         let mut sums = Sums::default();
@@ -281,15 +282,15 @@ impl View<'_> {
             let by_leaf = seen_by_leaves(self.tree, link);
             let (open, visible) = match (by_leaf, own_rays) {
                 (true, true) => views.of(link.source, |blocker| {
-                    let open = self.open_factor(link, a, (&points, patch), true);
+                    let open = self.open_factor(link, a, (leaf, &points), true);
                     if open <= 0.0 {
                         return (open, 0.0);
                     }
                     let to = stand_ins(self.tree, link.source, patch.centroid);
                     (open, fraction_between(self.visibility, &from, &to, blocker).fraction)
                 }),
-                (true, false) => (self.open_factor(link, a, (&points, patch), true), f64::from(link.visible)),
-                (false, _) => (self.open_factor(link, a, (&points, patch), false), 1.0),
+                (true, false) => (self.open_factor(link, a, (leaf, &points), true), f64::from(link.visible)),
+                (false, _) => (self.open_factor(link, a, (leaf, &points), false), 1.0),
             };
             if open <= 0.0 {
                 continue;
@@ -303,22 +304,21 @@ impl View<'_> {
     /// `F̄_{i→q}` of the leaf (its stratified `points`) to the link's source: an element's
     /// exact point factors, unoccluded where the leaf sees it by its own rays (`by_leaf`),
     /// else times the link's visible fraction; a cluster's link factor, with the leaf's own
-    /// projected area under a cluster ancestor `a`.
-    fn open_factor(
-        &self,
-        link: &Link,
-        a: u32,
-        (points, patch): (&[glam::DVec3; POINTS], &Patch),
-        by_leaf: bool,
-    ) -> f64 {
+    /// projected area under a cluster ancestor `a`, and under an element ancestor scaled by
+    /// the leaf's own projected transfer against the ancestor's (its own direction and
+    /// distance to the cluster: a leaf in a room's far corner takes less of a cluster in its
+    /// middle than one beneath it).
+    fn open_factor(&self, link: &Link, a: u32, (leaf, points): (&Node, &[glam::DVec3; POINTS]), by_leaf: bool) -> f64 {
         let source = self.tree.node(link.source);
+        let patch = leaf.patch().expect("a leaf is an element");
         if let Some(q) = source.patch() {
             let f = points.iter().map(|&x| point_factor(x, patch.normal, q)).sum::<f64>() / POINTS as f64;
             return if by_leaf { f } else { f * f64::from(link.visible) };
         }
         let ancestor = self.tree.node(a);
         if ancestor.patch().is_some() {
-            return link.factor;
+            let whole = projected_transfer(ancestor, source);
+            return if whole > 0.0 { link.factor * projected_transfer(leaf, source) / whole } else { 0.0 };
         }
         let (u, _) = axis(ancestor, source);
         let projected = ancestor.projected(u);
