@@ -39,6 +39,13 @@ fn cloud_turned(n: usize, turn: f64) -> Scene {
     s
 }
 
+/// The explicit (uniform) kernel's transport on the hierarchy's `leaves`, one cell.
+fn explicit(leaves: &ugo::geometry::Mesh) -> Transport {
+    let t = assemble(leaves, &Visibility::build(leaves), &DirectionSet::single(), &Quadrature::default(), &[], &|_| {})
+        .unwrap();
+    Transport::Uniform(TransportMatrix::new(t.g, Precision::Double))
+}
+
 fn cluster_links(h: &Hierarchy) -> usize {
     let tree = h.tree();
     h.links()
@@ -52,9 +59,7 @@ fn cluster_links_agree_with_the_explicit_kernel() {
     let mut h = hierarchy(&cloud(3), 10.0, DirectionSet::single(), options(1e-2, 0.25));
     let op = h.operator(&Silent);
     let leaves = h.leaf_mesh();
-    let directions = DirectionSet::single();
-    let t = assemble(&leaves, &Visibility::build(&leaves), &directions, &Quadrature::default(), &[], &|_| {}).unwrap();
-    let uniform = Transport::Uniform(TransportMatrix::new(t.g, Precision::Double));
+    let uniform = explicit(&leaves);
     let x: Vec<f64> = (0..op.dim()).map(|i| 1.0 + 0.5 * (i as f64 * 0.37).sin()).collect();
     let (mut a, mut b) = (vec![0.0; x.len()], vec![0.0; x.len()]);
     op.arriving(&x, &mut a);
@@ -113,10 +118,7 @@ fn clusters_send_the_light_of_the_faces_turned_to_the_receiver() {
     let mut h = hierarchy(&box_and_a_far_square(), 1.0, DirectionSet::single(), options(1e-2, 0.05));
     let op = h.operator(&Silent);
     let leaves = h.leaf_mesh();
-    let t =
-        assemble(&leaves, &Visibility::build(&leaves), &DirectionSet::single(), &Quadrature::default(), &[], &|_| {})
-            .unwrap();
-    let uniform = Transport::Uniform(TransportMatrix::new(t.g, Precision::Double));
+    let uniform = explicit(&leaves);
     let patches = &leaves.patches;
     let square = patches.iter().map(|p| p.surface).max().unwrap();
     let tree = h.tree();
@@ -149,16 +151,13 @@ fn clusters_send_the_light_of_the_faces_turned_to_the_receiver() {
 /// (which read the room's corners 2.5–5 times the explicit kernel's light: rms 0.74 of the
 /// explicit kernel's over the room's leaves, 0.27 by their own view). What is left is the
 /// clusters' point transfer (3b.2) half a metre from the walls: the walls nearest the cloud
-/// gather 23–37 % too much, the others 2–4 %.
+/// gather 23–37 % too much, the others −2 to +4 %.
 #[test]
 fn a_wall_s_leaves_take_a_cluster_s_light_by_their_own_view_of_it() {
     let mut h = hierarchy(&cloud_turned(3, 0.0), 10.0, DirectionSet::single(), options(1e-2, 0.25));
     let op = h.operator(&Silent);
     let leaves = h.leaf_mesh();
-    let t =
-        assemble(&leaves, &Visibility::build(&leaves), &DirectionSet::single(), &Quadrature::default(), &[], &|_| {})
-            .unwrap();
-    let uniform = Transport::Uniform(TransportMatrix::new(t.g, Precision::Double));
+    let uniform = explicit(&leaves);
     let room: Vec<usize> = (0..leaves.patches.len()).filter(|&i| leaves.patches[i].surface == 0).collect();
     let x: Vec<f64> = leaves.patches.iter().map(|p| f64::from(u8::from(p.surface > 0))).collect();
     let (mut a, mut b) = (vec![0.0; x.len()], vec![0.0; x.len()]);

@@ -1,8 +1,8 @@
 //! `G x` on the leaf unknowns (`docs/design.md` §3b, "Apply K x"): pull (leaf values up the trees
 //! as area averages; into a cluster as the cell-weighted mean `Σ_m (μ_m/π) x_m`, which means
 //! the same in every frame, averaged six times, over the exposed area facing each axis
-//! direction: a cluster's light towards a receiver is its elements' that face it), gather over the links at every level (`z_p += F_pq x̄_q`, by
-//! cells), push (each node's gathered light to all its leaves, each leaf with its own share,
+//! direction: a cluster's light towards a receiver is its elements' that face it), gather
+//! over the links at every level (`z_p += F_pq x̄_q`, by cells), push (each node's gathered light to all its leaves, each leaf with its own share,
 //! `push.rs`). The material blocks are the kernel's (`crate::kernel::Kernel`), as for the
 //! uniform kernel's `G`. Nodes are stored in depth-first order, so pull is one backward
 //! sweep; gather (over receivers) and push (over leaves) run in parallel. Nothing is
@@ -26,7 +26,8 @@ use std::sync::Mutex;
 /// each beyond the first costs the larger of `bundles × K` and `nodes × K` values.
 pub(super) const MOST_LANES: usize = 4;
 
-/// Work arrays: `nodes × max(K, 6)` (means: an element's `K` cells, a cluster's six facing values), `bundles × K` (gathered light) and `leaves × K` (sent light), shared
+/// Work arrays: `nodes × max(K, 6)` (means: an element's `K` cells, a cluster's six facing
+/// values), `bundles × K` (gathered light) and `leaves × K` (sent light), shared
 /// by `G x` and `Gᵀ y` (`transpose.rs`); and the partial sums of `Gᵀ y`'s scatters beside
 /// the first (one fewer than the threads, at most [`MOST_LANES`], of the larger of
 /// `nodes × K` and `bundles × K`).
@@ -391,11 +392,11 @@ fn pieces_of(tree: &Tree, link: &Link, position: &[u32], entries: &mut Vec<Entry
     let source = position[link.source as usize];
     let f = gathered(tree, link);
     let open = if link.factor > 0.0 { f / link.factor } else { 1.0 };
-    let pieces = link.pieces.iter().map(|&(d, m, f)| (d, m, f * open));
-    let pieces: Vec<_> = if link.pieces.is_empty() { vec![(0, 0, f)] } else { pieces.collect() };
+    let scaled = link.pieces.iter().map(|&(d, m, f)| (d, m, f * open));
+    let pieces = scaled.chain(link.pieces.is_empty().then_some((0, 0, f)));
     let (q, p) = (tree.node(link.source), tree.node(link.receiver));
     if q.patch().is_some() {
-        entries.extend(pieces.iter().map(|&(d, m, f)| Entry { source, d, m, f }));
+        entries.extend(pieces.map(|(d, m, f)| Entry { source, d, m, f }));
         return;
     }
     let towards = q.facing_weights(-axis(p, q).0);
