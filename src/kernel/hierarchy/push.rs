@@ -18,13 +18,17 @@
 //! the push the solve applies and light is conserved.
 //!
 //! The other bundles (a leaf's own links, a node's cluster sources) hold several sources:
-//! under an element `w_iab = S_iab / Ū_ab` with `S_iab = Σ_{q ∈ b} v_iq F̄_{i→q}` (`v_iq` the
-//! links' fractions: a cluster's four stand-in points do not tell a leaf's view, `sight.rs`)
-//! and `Ū_ab` the mean of its unoccluded twin; under a cluster, whose factors are
-//! estimates, `w_iab = S_iab / C_ab` with `C_ab = Σ_{q ∈ b} F_aq`, each leaf's own
-//! estimate with its own projected area towards the source (Sillion 1995).
-//! `docs/hierarchy.md`, "Each leaf's own view of its ancestors' sources", measures it
-//! against the push by the ancestors' visibility it replaced.
+//! `S_iab = Σ_{q ∈ b} v_iq F̄_{i→q}`, `v_iq` the link's fraction for a leaf's own links and
+//! for a cluster source the leaf's own fraction of the segments from its four points to the
+//! source's four stand-ins that face it (`sight.rs`) over the link's. Under an element
+//! `w_iab = S_iab / Ū_ab`, `Ū_ab` the area mean of `S_iab`: the leaves share what the link
+//! gathers by their own view, not more, for stand-in rays tell a cluster's visible part
+//! only roughly, but alike for the leaves of one plane. Under a cluster, whose factors are
+//! estimates, `w_iab = S_iab / C_ab` with `C_ab = Σ_{q ∈ b} F_aq`: each leaf its own estimate
+//! with its own projected area towards the source (Sillion 1995) and its own rays, so that
+//! a face hidden behind its cluster's others (a desk's panel behind a row of seat backs)
+//! takes none of the light they take. `docs/hierarchy.md`, "Each leaf's own view of its
+//! ancestors' sources" and "A cluster's light by each leaf's own rays", measure both.
 //!
 //! A leaf keeps only the bundles whose sources it sees; the weights are summed again at each
 //! build (a refinement pass changes the links), but what they are summed from is not found
@@ -137,11 +141,14 @@ impl SeenCache {
 /// Leaves whose push rows are made between two progress reports.
 const PUSH_BATCH: usize = 1 << 14;
 
-/// A leaf's sums over one bundle's sources: `S` and `U` of the module's text.
+/// A leaf's sums over one bundle's sources: `S` and `U` of the module's text, and what
+/// its element ancestor's mean `Ū` is taken of: `U`, or `S` for clusters' light shared
+/// out by the leaves' own rays.
 #[derive(Debug, Clone, Copy, Default)]
 struct Sums {
     seen: f64,
     open: f64,
+    shared: f64,
 }
 
 /// Each bundle's exposed-area sum of its leaves' `open` sums, and their area, as the
@@ -155,7 +162,7 @@ impl Opens {
     /// Adds one leaf's `row` (`node` the leaf).
     fn add(&mut self, node: &Node, row: &[(u32, Sums)]) {
         for (b, s) in row {
-            self.sum[*b as usize] += node.exposed * s.open;
+            self.sum[*b as usize] += node.exposed * s.shared;
             self.area[*b as usize] += node.area;
         }
     }
@@ -280,6 +287,7 @@ impl View<'_> {
         for &l in own {
             let link = &self.links[l as usize];
             let by_leaf = seen_by_leaves(self.tree, link);
+            let cluster_by_rays = !by_leaf && own_rays;
             let (open, visible) = match (by_leaf, own_rays) {
                 (true, true) => views.of(link.source, |blocker| {
                     let open = self.open_factor(link, a, (leaf, &points), true);
@@ -290,13 +298,27 @@ impl View<'_> {
                     (open, fraction_between(self.visibility, &from, &to, blocker).fraction)
                 }),
                 (true, false) => (self.open_factor(link, a, (leaf, &points), true), f64::from(link.visible)),
-                (false, _) => (self.open_factor(link, a, (leaf, &points), false), 1.0),
+                // a cluster's light by the leaf's own rays to its stand-ins in place of the
+                // link's: the leaf may lie behind its receiver cluster's faces turned to it
+                (false, true) => {
+                    let open = self.open_factor(link, a, (leaf, &points), false);
+                    if open <= 0.0 {
+                        continue;
+                    }
+                    let (_, own) = views.of(link.source, |blocker| {
+                        let to = stand_ins(self.tree, link.source, patch.centroid);
+                        (0.0, fraction_between(self.visibility, &from, &to, blocker).fraction)
+                    });
+                    (open, own / f64::from(link.visible))
+                }
+                (false, false) => (self.open_factor(link, a, (leaf, &points), false), 1.0),
             };
             if open <= 0.0 {
                 continue;
             }
             sums.seen += visible * open;
             sums.open += open;
+            sums.shared += if cluster_by_rays { visible * open } else { open };
         }
         sums
     }
