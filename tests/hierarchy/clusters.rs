@@ -202,6 +202,34 @@ fn a_leaf_hidden_in_its_cluster_takes_none_of_a_far_cluster_s_light() {
     assert!(square.1 < 1e-3 * top.1 && square.0 < 2e-2 * top.1, "the square under the slab: {square:?}");
 }
 
+/// A 10 cm slab 5 mm above a 5 cm square: the square faces up as the slab's top does, but
+/// the slab covers it. Its openness up is 0 and the cluster of both faces up with the top's
+/// area alone: it counted the square's too, so that a receiver above took the mean of the
+/// lit top and the square in its shadow, times both areas (`docs/design.md` (3b.7)).
+#[test]
+fn a_face_hidden_in_its_cluster_does_not_face_the_way_it_is_hidden() {
+    let mut scene = square_under_a_slab_and_a_far_box();
+    let slab =
+        Shape::Box { min: DVec3::new(-0.025, 0.005, -0.025), max: DVec3::new(0.075, 0.01, 0.075), rotate_y_deg: 0.0 };
+    scene.surfaces[0].shape = slab;
+    scene.surfaces[1].shape =
+        Shape::Rectangle { origin: DVec3::ZERO, edge_u: DVec3::Z * 0.05, edge_v: DVec3::X * 0.05 };
+    scene.surfaces.truncate(2);
+    let h = hierarchy(&scene, 1.0, DirectionSet::single(), options(1e-2, 0.05));
+    let tree = h.tree();
+    let up = |id: u32| tree.node(id).facing[2];
+    let square = (0..tree.len() as u32).find(|&id| tree.node(id).patch().is_some_and(|p| p.surface == 1)).unwrap();
+    let top = tree.top();
+    eprintln!(
+        "clusters: facing up, the square {:.4e} m² open {:?}, the cluster {:.4e} m²",
+        up(square),
+        tree.open(square),
+        up(top)
+    );
+    assert!((up(square) - 0.0025).abs() < 1e-9 && tree.open(square)[2] == 0.0, "the square: {:?}", tree.open(square));
+    assert!((up(top) - 0.01).abs() < 1e-9, "the cluster faces up with {} m², the slab's top 0.01", up(top));
+}
+
 /// The cloud's cubes (not turned: their clusters' projected areas exact) send 1 cd/m², the
 /// room nothing: each leaf of the room's walls takes its own share of what its element
 /// gathers from a cluster, by its own direction and distance to it, not an even share

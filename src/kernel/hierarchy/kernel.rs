@@ -13,6 +13,7 @@ use super::history::Work;
 use super::link::Link;
 use super::memo::Memo;
 use super::node::NONE;
+use super::openness;
 use super::options::Options;
 use super::oracle::Oracle;
 use super::partition::Partition;
@@ -96,6 +97,8 @@ impl Hierarchy {
         let exposed: Vec<f64> = roots.patches.iter().map(|p| p.exposed).collect();
         let mut tree = Tree::new(roots, &albedo, &exposed);
         tree.set_cuts(cuts::of(&tree, roots.len(), options.patch_size));
+        let open = openness::open_facing(&mut tree, &visibility);
+        tree.set_open(open);
         let share = cell_shares(&directions);
         let (guess, ambient) = first_guess(&tree, l0, &share);
         let oracle = Oracle { epsilon: options.tolerance * ambient, patch_size: options.patch_size };

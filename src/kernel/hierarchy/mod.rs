@@ -30,6 +30,7 @@ mod leaves;
 mod link;
 mod memo;
 mod node;
+mod openness;
 mod operator;
 mod options;
 mod oracle;

@@ -49,8 +49,9 @@ pub struct Node {
     pub albedo: f64,
     /// Emitted luminance of an element, cd/m² (0 for a cluster).
     pub emission: f64,
-    /// Exposed area facing each axis direction, `Σ A_e max(0, ±n_e·axis)` over the elements under it
-    /// (`+x, −x, +y, −y, +z, −z`), m²: the projected area of a cluster (`projected`).
+    /// Exposed area facing each axis direction (`+x, −x, +y, −y, +z, −z`), m²: an element's
+    /// `A_e max(0, ±n_e·axis)`; a cluster's its children's times their openness within it
+    /// (`openness.rs`, (3b.8)), the projected area of a cluster (`projected`).
     pub facing: [f64; FACING],
 }
 

@@ -348,8 +348,8 @@ pub(super) fn facing_shares(tree: &Tree, order: &[u32]) -> Vec<[f64; FACING]> {
                 NONE => [0.0; FACING],
                 up if tree.node(up).patch().is_some() => [0.0; FACING],
                 up => {
-                    let whole = tree.node(up).facing;
-                    std::array::from_fn(|c| if whole[c] > 0.0 { node.facing[c] / whole[c] } else { 0.0 })
+                    let (whole, open) = (tree.node(up).facing, tree.open(id));
+                    std::array::from_fn(|c| if whole[c] > 0.0 { node.facing[c] * open[c] / whole[c] } else { 0.0 })
                 }
             }
         })

@@ -6,7 +6,7 @@
 //! Node ids never change: the arena only grows.
 
 use super::cluster;
-use super::node::{Kind, NONE, Node, longest_edge};
+use super::node::{FACING, Kind, NONE, Node, longest_edge};
 use crate::geometry::{ConvexPolygon, Cut, Mesh, Patch};
 
 /// How a new element's exposed area is measured, m².
@@ -22,6 +22,9 @@ pub struct Tree {
     /// The lines each root's elements split along where one crosses them (`cuts.rs`), by
     /// root id; empty until [`Tree::set_cuts`].
     cuts: Vec<Vec<Cut>>,
+    /// Each cluster member's openness within its cluster along the axes (`openness.rs`), by
+    /// node id; empty until [`Tree::set_open`] (1 for every node past its end).
+    open: Vec<[f64; FACING]>,
 }
 
 impl Tree {
@@ -38,7 +41,7 @@ impl Tree {
                 Node::element(Patch { exposed, ..*p }, p.twin, 0, albedo, e)
             })
             .collect();
-        let mut tree = Tree { nodes, children: Vec::new(), top: NONE, cuts: Vec::new() };
+        let mut tree = Tree { nodes, children: Vec::new(), top: NONE, cuts: Vec::new(), open: Vec::new() };
         let mut ids: Vec<u32> = (0..roots.len() as u32).collect();
         let centres: Vec<glam::DVec3> = tree.nodes.iter().map(Node::centre).collect();
         tree.top = cluster::build(&centres, &mut ids, &mut |members| tree.add_cluster(members));
@@ -48,6 +51,21 @@ impl Tree {
     /// Sets the lines along which each root's elements split (`cuts.rs`), by root id.
     pub(super) fn set_cuts(&mut self, cuts: Vec<Vec<Cut>>) {
         self.cuts = cuts;
+    }
+
+    /// Sets each cluster member's openness within its cluster (`openness.rs`), by node id.
+    pub(super) fn set_open(&mut self, open: Vec<[f64; FACING]>) {
+        self.open = open;
+    }
+
+    /// Node `id`'s openness within its cluster along each axis (`openness.rs`).
+    pub fn open(&self, id: u32) -> [f64; FACING] {
+        self.open.get(id as usize).copied().unwrap_or([1.0; FACING])
+    }
+
+    /// Sets cluster `id`'s facing areas (`openness.rs`).
+    pub(super) fn set_facing(&mut self, id: u32, facing: [f64; FACING]) {
+        self.nodes[id as usize].facing = facing;
     }
 
     /// The node at the top: the root cluster (or the only element, or [`NONE`] when empty).
