@@ -23,7 +23,7 @@ use crate::visibility::VisibilityOptions;
 use std::fmt::Write;
 
 /// The layout of the `/kernel` group; a file of another layout is another version.
-pub const KERNEL_FORMAT: u32 = 2;
+pub const KERNEL_FORMAT: u32 = 3;
 
 /// The named parts of a fingerprint.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
