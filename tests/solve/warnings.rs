@@ -270,8 +270,10 @@ fn strict_fails_before_the_solve_or_writes_the_solution_and_verbose_gives_the_wh
 /// hierarchy's links' own loss, told as such when beyond 1 % of the emitted flux, and never
 /// as an opening (which the columns alone would have blamed). The loss was 1.04 % at 9e-2
 /// while a cluster sent the mean of all its faces; since clusters send by facing
-/// (`docs/hierarchy.md`, "Clusters send by facing") 604.7 lm of 192,001.7 (0.31 %), the
-/// gaps' 6.0 lm, and no warning. Since its slots and concave edges are graded the solve
+/// (`docs/hierarchy.md`, "Clusters send by facing") 604.7 lm of 192,001.7 (0.31 %); since
+/// a cluster's faces count by their openness ("A cluster's faces by their openness") the
+/// links gain 244.2 lm (−0.13 %), the gaps lose 6.2 lm, and no warning: the links' balance
+/// is held within 0.5 % either way. Since its slots and concave edges are graded the solve
 /// takes four to five minutes: `make test-long` runs it, `make test` does not.
 #[test]
 #[ignore = "four minutes: make test-long"]
@@ -295,7 +297,7 @@ fn the_hierarchys_own_loss_of_light_is_told_apart_from_an_opening() {
         "the lecture hall at 9e-2: the links' loss {links:.1} lm, the gaps' {geometry:.1} lm, of {:.1} lm",
         e.emitted
     );
-    assert!(links > 5.0 * geometry, "the links' loss {links}, the gaps' {geometry}");
+    assert!(links.abs() < 5e-3 * e.emitted, "the links' loss {links}, the gaps' {geometry}");
     let told = texts(&s.warnings);
     let warned = told.iter().find(|w| w.contains("lost by the hierarchy's links"));
     match links > 1e-2 * e.emitted {
