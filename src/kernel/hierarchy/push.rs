@@ -151,7 +151,7 @@ struct Sums {
     shared: f64,
 }
 
-/// Each bundle's exposed-area sum of its leaves' `open` sums, and their area, as the
+/// Each bundle's exposed-area sum of its leaves' `shared` sums, and their area, as the
 /// batches of leaves are made (`Ū_ab` is their ratio).
 struct Opens {
     sum: Vec<f64>,
