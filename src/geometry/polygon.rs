@@ -87,6 +87,24 @@ impl ConvexPolygon {
         sum / weight
     }
 
+    /// A uniform point: `u0` chooses the fan triangle by area, `u1, u2` the point in it
+    /// (each uniform on [0, 1)).
+    pub fn point_at(&self, u0: f64, u1: f64, u2: f64) -> DVec3 {
+        let mut s = u0 * self.area();
+        let mut chosen = None;
+        for tri in self.triangles() {
+            let area = 0.5 * (tri[1] - tri[0]).cross(tri[2] - tri[0]).length();
+            chosen = Some(tri);
+            if s < area {
+                break;
+            }
+            s -= area;
+        }
+        let [a, b, c] = chosen.expect("a polygon has a triangle");
+        let r = u1.sqrt();
+        a * (1.0 - r) + b * (r * (1.0 - u2)) + c * (r * u2)
+    }
+
     /// The triangles of a fan from vertex 0.
     pub fn triangles(&self) -> impl Iterator<Item = [DVec3; 3]> + '_ {
         let v = self.vertices();

@@ -18,7 +18,6 @@ use crate::luminaire::Source;
 use crate::random::Rng;
 use crate::scene::Scene;
 use crate::trace::World;
-use crate::trace::emitters::point_on;
 use glam::DVec3;
 use std::collections::BTreeMap;
 
@@ -137,7 +136,7 @@ impl Room<'_> {
         let u = rng.uniform() * total;
         let (_, i) = area[area.partition_point(|(c, _)| *c <= u).min(area.len() - 1)];
         let patch = &self.sight.world.mesh.patches[i];
-        let point = point_on(&patch.polygon, rng.uniform(), rng.uniform(), rng.uniform());
+        let point = patch.polygon.point_at(rng.uniform(), rng.uniform(), rng.uniform());
         Some(Spot { patch: i, point, frame: patch.frame(), face: patch.face, shell: self.shell.holds(patch) })
     }
 

@@ -19,7 +19,7 @@
 //! that sees one opening through another (two glazed openings in a row) counts both, where
 //! the backward tracer sees the sky once through the two panes.
 
-use super::emitters::{Departure, point_on};
+use super::emitters::Departure;
 use super::openings::pick;
 use crate::geometry::{Frame, cosine_direction};
 use crate::luminaire::{Light, Source};
@@ -109,7 +109,7 @@ impl DaylightPhotons {
         let (i, v) = pick(&self.chance, u[0])?;
         match &self.sources[i] {
             Entry::Sky { opening, sky, frame } => {
-                let x = point_on(&opening.polygon, v, u[1], u[2]);
+                let x = opening.polygon.point_at(v, u[1], u[2]);
                 let l = frame.world(cosine_direction(u[3], u[4]));
                 let open = visibility.escapes(x, l, NO_FACE);
                 let cos = l.dot(opening.polygon.normal()).abs();
@@ -119,7 +119,7 @@ impl DaylightPhotons {
                 Some((Departure { origin: x, direction: -l, face: NO_FACE }, weight))
             }
             Entry::Beam { opening, direction, illuminance, glass } => {
-                let x = point_on(&opening.polygon, v, u[1], u[2]);
+                let x = opening.polygon.point_at(v, u[1], u[2]);
                 let open = visibility.escapes(x, -*direction, NO_FACE);
                 // just inside the opening, so that the opening's own glass counts
                 let inside = x + *direction * (1e-9 * opening.polygon.diameter());
@@ -153,7 +153,7 @@ fn open_share(opening: &Opening, frame: &Frame, visibility: &Visibility) -> f64 
     let mut open = 0;
     for k in 0..TEST_RAYS {
         let (s, t) = (((k % side) as f64 + 0.5) / side as f64, ((k / side) as f64 + 0.5) / side as f64);
-        let x = point_on(&opening.polygon, s, t, 0.5);
+        let x = opening.polygon.point_at(s, t, 0.5);
         let l = frame.world(cosine_direction(t, s));
         open += usize::from(visibility.escapes(x, l, NO_FACE));
     }

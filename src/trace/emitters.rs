@@ -8,8 +8,8 @@
 //! and for photon emission (a point and a Lambertian direction). Luminaires are sampled
 //! apart, exactly (`luminaires.rs`).
 
+use crate::geometry::Mesh;
 use crate::geometry::cosine_direction;
-use crate::geometry::{ConvexPolygon, Mesh};
 use glam::DVec3;
 use std::f64::consts::PI;
 
@@ -100,7 +100,7 @@ impl Emitters {
         }
         let (patch, v) = self.pick(u[0]);
         let p = &mesh.patches[patch as usize];
-        let point = point_on(&p.polygon, v, u[1], u[2]);
+        let point = p.polygon.point_at(v, u[1], u[2]);
         let to = point - x;
         let distance2 = to.length_squared();
         let direction = to / distance2.sqrt();
@@ -130,25 +130,8 @@ impl Emitters {
         }
         let (patch, v) = self.pick(u[0]);
         let p = &mesh.patches[patch as usize];
-        let origin = point_on(&p.polygon, v, u[1], u[2]);
+        let origin = p.polygon.point_at(v, u[1], u[2]);
         let direction = p.frame().world(cosine_direction(u[3], u[4]));
         Some(Departure { origin, direction, face: p.face })
     }
-}
-
-/// A uniform point of `polygon`: `u0` chooses the fan triangle by area, `u1, u2` the point in it.
-pub fn point_on(polygon: &ConvexPolygon, u0: f64, u1: f64, u2: f64) -> DVec3 {
-    let mut s = u0 * polygon.area();
-    let mut chosen = None;
-    for tri in polygon.triangles() {
-        let area = 0.5 * (tri[1] - tri[0]).cross(tri[2] - tri[0]).length();
-        chosen = Some(tri);
-        if s < area {
-            break;
-        }
-        s -= area;
-    }
-    let [a, b, c] = chosen.expect("a patch has a triangle");
-    let r = u1.sqrt();
-    a * (1.0 - r) + b * (r * (1.0 - u2)) + c * (r * u2)
 }

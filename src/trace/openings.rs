@@ -16,7 +16,7 @@
 //! A camera sees the sky through an opening as it does in the render of the solved field
 //! (`crate::render`, which reads it here); a probe's luminance is its first surface's.
 
-use super::emitters::{Incoming, point_on};
+use super::emitters::Incoming;
 use crate::luminaire::{Light, Source};
 use crate::sky::{Opening, Sky};
 use crate::visibility::{NO_FACE, Visibility};
@@ -80,7 +80,7 @@ impl Openings {
     /// lies in the opening's plane. The shadow ray is [`Openings::clear`].
     pub fn sample_towards(&self, x: DVec3, u: [f64; 3]) -> Option<Incoming> {
         let (index, v) = pick(&self.chance, u[0])?;
-        let point = point_on(&self.list[index].0.polygon, v, u[1], u[2]);
+        let point = self.list[index].0.polygon.point_at(v, u[1], u[2]);
         let direction = (point - x).normalize_or_zero();
         let seen = self.seen(x, direction).filter(|s| s.pdf.is_finite() && s.pdf > 0.0)?;
         Some(Incoming { direction, point, face: NO_FACE, luminance: seen.luminance, pdf: seen.pdf })

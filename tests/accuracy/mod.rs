@@ -185,18 +185,24 @@ fn the_open_box_at_its_hard_probes_is_no_worse_than_today() {
     // they had steered the old push to them: the 3 cm contacts 0.8 → 1.15 %, the dimmest
     // 0.95 → 1.17 %; read on a field they did not steer (`bench.py --step unsteered
     // open-box`), better: 34 of 240 beyond 1 % → 15, mean 0.48 → 0.36 %, largest 2.40 → 1.78 %.
+    // Occluded pairs tested by random segments before they are dropped (docs/hierarchy.md,
+    // "Occluded pairs tested by random segments": the lecture hall's hard probes beyond 1 %
+    // from 73 to 41) read these a little worse: the corners at 5 cm 0.6 → 0.70 %, at 10 cm
+    // 0.6 → 0.66 %, the 5 cm edges 0.9 → 0.95 %, the 1 cm contacts 1.1 → 1.24 %, the 3 cm
+    // ones 1.3 → 1.33 %, the umbrae 1.0 → 1.03 %, the penumbrae 0.6 → 0.61 %, the dimmest
+    // 1.3 → 1.52 % (the figures before are the bounds they were set to).
     let bounds = [
         ("corner-2cm", 1.2),
-        ("corner-5cm", 0.6),
-        ("corner-10cm", 0.6),
+        ("corner-5cm", 0.75),
+        ("corner-10cm", 0.7),
         ("edge-2cm", 1.2),
-        ("edge-5cm", 0.9),
+        ("edge-5cm", 1.0),
         ("edge-10cm", 0.5),
-        ("contact-1cm", 1.1),
-        ("contact-3cm", 1.3),
-        ("umbra", 1.0),
-        ("penumbra", 0.6),
-        ("dim", 1.3),
+        ("contact-1cm", 1.3),
+        ("contact-3cm", 1.4),
+        ("umbra", 1.1),
+        ("penumbra", 0.7),
+        ("dim", 1.6),
         ("open", 0.7),
     ];
     check("open-box", &bounds);
@@ -272,9 +278,13 @@ fn the_seats_on_tiers_are_no_worse_than_today() {
     // 1.07 % L2 beyond noise): the corners at 2 cm 2.2 → 1.85 %, the 3 cm contacts 2.1 →
     // 1.54 %, the undersides 3.6 → 2.10 %, the umbrae 6.7 → 4.35 %, the dimmest 5.7 → 4.37 %,
     // the open probes 0.6 → 0.44 % (the figures before are the bounds they were set to).
+    // Occluded pairs tested by random segments (docs/hierarchy.md, "Occluded pairs tested by
+    // random segments"): the corners at 2 cm 2.0 → 1.76 %, the 3 cm contacts 1.7 → 1.33 %,
+    // the undersides 2.3 → 1.72 %, the umbrae 4.6 → 3.53 %, the dimmest 4.6 → 4.56 %, the
+    // open probes 0.5 → 0.53 %.
     check(
         "seat-room",
-        &[("corner-2cm", 2.0), ("contact-3cm", 1.7), ("underside", 2.3), ("umbra", 4.6), ("dim", 4.6), ("open", 0.5)],
+        &[("corner-2cm", 1.8), ("contact-3cm", 1.4), ("underside", 1.8), ("umbra", 3.6), ("dim", 4.6), ("open", 0.6)],
     );
 }
 

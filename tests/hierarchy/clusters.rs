@@ -6,7 +6,7 @@ use super::{hierarchy, options, relative_difference};
 use crate::support::furnace;
 use glam::DVec3;
 use ugo::directions::DirectionSet;
-use ugo::geometry::{Emission, Shape, Surface};
+use ugo::geometry::{Emission, Mesh, Shape, Surface};
 use ugo::kernel::hierarchy::Hierarchy;
 use ugo::kernel::{Precision, Transport, TransportMatrix, assemble};
 use ugo::progress::Silent;
@@ -279,4 +279,45 @@ fn links_grow_much_slower_than_input_elements_squared() {
     let exponent = (counts[1].1 / counts[0].1).ln() / (counts[1].0 / counts[0].0).ln();
     eprintln!("clusters: links ∝ k^{exponent:.2}");
     assert!(exponent < 1.3, "growth exponent {exponent}");
+}
+
+/// A 1 m floor under a board 1.1 m above it with a 10 cm slot across its middle, a small lamp
+/// 3 m above: the floor's four points and its corners lie in the board's shadow, so every
+/// segment from them to the lamp is blocked, yet the strip of floor under the slot sees the
+/// lamp. The floor, at the smallest size, cannot be refined: the pair was dropped as occluded
+/// and the floor took none of the lamp's light (the lecture hall's treads under the desks,
+/// lit between the desks and the seats, saw 28 % too little of the ceiling); segments drawn
+/// at random on both ends find the slot (`sight.rs`). Against the explicit kernel on 5 cm
+/// patches: 16 segments a pair are a coarse estimate, but one without bias.
+#[test]
+fn a_slot_that_fixed_points_miss_takes_its_light() {
+    let mut scene = square_under_a_slab_and_a_far_box();
+    let board = |x0: f64, x1: f64| Shape::Box {
+        min: DVec3::new(x0, 1.1, -1.0),
+        max: DVec3::new(x1, 1.12, 2.0),
+        rotate_y_deg: 0.0,
+    };
+    let floor = Shape::Rectangle { origin: DVec3::ZERO, edge_u: DVec3::Z, edge_v: DVec3::X };
+    let lamp = Shape::Box { min: DVec3::new(0.4, 3.0, 0.4), max: DVec3::new(0.6, 3.2, 0.6), rotate_y_deg: 0.0 };
+    let shapes = [board(-1.0, 0.45), floor, lamp];
+    scene.surfaces.iter_mut().zip(shapes).for_each(|(s, shape)| s.shape = shape);
+    scene.surfaces.push(Surface { name: "board 2".into(), shape: board(0.55, 2.0), ..scene.surfaces[0].clone() });
+    let mut h = hierarchy(&scene, 1.0, DirectionSet::single(), options(1e-2, 1.0));
+    let op = h.operator(&Silent);
+    let leaves = h.leaf_mesh();
+    let fine = Mesh::build(&scene.surfaces, 0.05);
+    let flux = |mesh: &Mesh, gather: &dyn Fn(&[f64], &mut [f64])| -> f64 {
+        let x: Vec<f64> = mesh.patches.iter().map(|p| f64::from(u8::from(p.surface == 2))).collect();
+        let mut y = vec![0.0; x.len()];
+        gather(&x, &mut y);
+        mesh.patches.iter().zip(&y).filter(|(p, _)| p.surface == 1).map(|(p, y)| p.area * y).sum()
+    };
+    let hierarchical = flux(&leaves, &|x, y| op.arriving(x, y));
+    let uniform = flux(&fine, &|x, y| explicit(&fine).apply(x, y));
+    let floor = leaves.patches.iter().filter(|p| p.surface == 1).count();
+    eprintln!(
+        "clusters: the floor ({floor} leaf) under the slot gathers {hierarchical:.4e} of the lamp (explicit on 5 cm patches {uniform:.4e})"
+    );
+    // 0.749 of it: one pair, its 16 segments drawn once
+    assert!(uniform > 0.0 && (0.25..2.0).contains(&(hierarchical / uniform)), "{hierarchical} against {uniform}");
 }

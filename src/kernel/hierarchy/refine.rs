@@ -12,7 +12,7 @@ use super::link::{Link, cluster_factor, element_factor};
 use super::node::Node;
 use super::oracle::{Oracle, cluster_bound, variation};
 use super::partition::Partition;
-use super::sight::{Sight, corners_see, sight, stand_in_sight, stand_ins};
+use super::sight::{Sight, corners_see, sampled_sight, sight, stand_in_sight, stand_ins};
 use super::tree::{Exposure, Tree};
 use crate::directions::DirectionSet;
 use crate::geometry::{Patch, facing};
@@ -189,9 +189,11 @@ fn evaluate(
 /// elements they stand on: four points do not stand for a cluster's view (a chair base's
 /// rim sees the ceiling past its seat, the centroid of its top, the one stand-in that faces
 /// up, does not). When a corner sees the other end the pair is refined, so its elements
-/// decide, which drop an occluded pair only once the oracle accepts it; when none does it
-/// is dropped: refined, two rooms behind a wall would be refined down to their elements
-/// (`docs/hierarchy.md`, "Occluded cluster links").
+/// decide, which drop an occluded pair only once the oracle accepts it; when none does (or
+/// the pair cannot be refined) it is kept by the free share of segments drawn at random
+/// between the two ends, if any is free ([`sampled_sight`]), else dropped: refined, two
+/// rooms behind a wall would be refined down to their elements (`docs/hierarchy.md`,
+/// "Occluded cluster links", "Occluded pairs tested by random segments").
 fn clusters(
     tree: &Tree,
     brightness: f64,
@@ -212,11 +214,18 @@ fn clusters(
         return (Outcome::Split(n), 0);
     }
     let (from, to) = (stand_ins(tree, p, b.centre()), stand_ins(tree, q, a.centre()));
-    let (seen, visible, rays) = stand_in_sight(settings.visibility, &from, &to, blocker);
+    let (seen, mut visible, mut rays) = stand_in_sight(settings.visibility, &from, &to, blocker);
     if seen == Sight::Occluded {
         let (open, more) = corners_see(settings.visibility, tree, p, q, blocker);
-        let split = open.then(|| settings.oracle.choose(tree, p, q)).flatten();
-        return (split.map_or(Outcome::Drop, Outcome::Split), rays + more);
+        if let Some(n) = open.then(|| settings.oracle.choose(tree, p, q)).flatten() {
+            return (Outcome::Split(n), rays + more);
+        }
+        let (sampled, drawn) = sampled_sight(settings.visibility, tree, p, q, blocker);
+        rays += more + drawn;
+        if sampled <= 0.0 {
+            return (Outcome::Drop, rays);
+        }
+        visible = sampled;
     }
     let (factor, mut pieces) = cluster_factor(a, b, settings.directions);
     pieces.iter_mut().for_each(|piece| piece.2 *= visible);
@@ -251,7 +260,7 @@ fn elements(
     {
         return (Outcome::Split(n), 0);
     }
-    let (seen, visible, rays) = sight(settings.visibility, a, b, blocker);
+    let (mut seen, mut visible, mut rays) = sight(settings.visibility, a, b, blocker);
     // the light varies over the pair when a shadow boundary may cross it (4 or 16 blocked
     // segments do not prove that nothing passes) or some sample points see nothing of the
     // other element (their segments say nothing about visibility)
@@ -267,13 +276,18 @@ fn elements(
     // (`push.rs`), and some of them past what hid it from `a`'s four points (a chair's base
     // past its seat: `docs/hierarchy.md`, "A bundle per source"). Kept whether or not `p` is
     // a leaf now: it may be split later, and what a part's linking finds must not depend on
-    // the order in which the tree was split (`model/part_rows.rs`).
-    let mut rays = rays;
+    // the order in which the tree was split (`model/part_rows.rs`). When no corner sees,
+    // segments drawn at random decide, the pair kept as partly seen by their free share.
     if seen == Sight::Occluded {
         let (open, more) = corners_see(settings.visibility, tree, p, q, blocker);
         rays += more;
         if !open {
-            return (Outcome::Drop, rays);
+            let (sampled, drawn) = sampled_sight(settings.visibility, tree, p, q, blocker);
+            rays += drawn;
+            if sampled <= 0.0 {
+                return (Outcome::Drop, rays);
+            }
+            (visible, seen) = (sampled, Sight::Partial);
         }
     }
     let open = if seen == Sight::Occluded { 1.0 } else { visible };

@@ -6,13 +6,17 @@
 //! the centroids of four of its elements, one from each quarter of its median splits; a
 //! pair whose stand-ins see nothing of each other is tested again from those elements'
 //! corners ([`corners_see`]), and refined (`refine.rs`) only when some corner sees the
-//! other end.
+//! other end. A pair that neither sees is tested once more by segments between points
+//! drawn at random on the two ends ([`sampled_sight`]): fixed points miss a slot that some
+//! of an end sees through (a tread under a desk sees the ceiling between the desk and the
+//! seats behind it), and a pair dropped for it loses its light for certain.
 
 use super::oracle::CORNER_INSET;
 use super::tree::Tree;
 use crate::geometry::Patch;
+use crate::random::Rng;
 use crate::transfer::occlusion::{POINTS, fraction_between, polygon_points, visible_fraction};
-use crate::visibility::{Blocker, Visibility};
+use crate::visibility::{Blocker, PACKET, Segment, Visibility};
 use glam::DVec3;
 
 /// How much of one element sees the other.
@@ -171,4 +175,63 @@ pub fn stand_in_sight(
 ) -> (Sight, f64, usize) {
     let v = fraction_between(visibility, a, b, blocker);
     (Sight::of(v.fraction), v.fraction, v.rays)
+}
+
+/// The visible fraction of [`PACKET`] segments between points drawn uniformly on the faces of
+/// nodes `p` and `q` turned to each other, and the rays it took: an estimate without bias
+/// of the share of such segments that are free, where fixed points found none (`refine.rs`).
+/// The draws are keyed by the two ends' places, not their node ids, so that a linking does
+/// not depend on the order in which the tree was split (a part's linking, `model/part_rows.rs`).
+pub fn sampled_sight(visibility: &Visibility, tree: &Tree, p: u32, q: u32, blocker: &mut Blocker) -> (f64, usize) {
+    let (a, b) = (tree.node(p).centre(), tree.node(q).centre());
+    let mut rng = Rng::stream(place_key(tree, p), place_key(tree, q));
+    let mut segments = Vec::with_capacity(PACKET);
+    for _ in 0..PACKET {
+        let from = drawn(tree, p, b, &mut rng);
+        let to = drawn(tree, q, a, &mut rng);
+        if let (Some((x, f)), Some((y, g))) = (from, to) {
+            segments.push((x, y, [f, g]) as Segment);
+        }
+    }
+    let free = visibility.visible_together(&segments, blocker).count_ones();
+    (f64::from(free) / PACKET as f64, segments.len())
+}
+
+/// A point drawn uniformly on the faces of node `id` turned to `towards`, with its face: from
+/// a cluster down to one of its elements, each child by its projected area towards
+/// `towards`; none when no face is turned to it.
+fn drawn(tree: &Tree, id: u32, towards: DVec3, rng: &mut Rng) -> Option<(DVec3, u32)> {
+    let mut at = id;
+    loop {
+        let node = tree.node(at);
+        if let Some(patch) = node.patch() {
+            let x = patch.polygon.point_at(rng.uniform(), rng.uniform(), rng.uniform());
+            return ((towards - x).dot(patch.normal) > 0.0).then_some((x, patch.face));
+        }
+        let u = (towards - node.centre()).normalize_or_zero();
+        let children = tree.children(at);
+        let total: f64 = children.iter().map(|&c| tree.node(c).projected(u)).sum();
+        if total <= 0.0 {
+            return None;
+        }
+        let mut pick = rng.uniform() * total;
+        let last = *children.last()?;
+        at = children
+            .iter()
+            .copied()
+            .find(|&c| {
+                pick -= tree.node(c).projected(u);
+                pick < 0.0
+            })
+            .unwrap_or(last);
+    }
+}
+
+/// A key of node `id`'s box, the same whatever its id.
+fn place_key(tree: &Tree, id: u32) -> u64 {
+    let node = tree.node(id);
+    [node.lo, node.hi]
+        .iter()
+        .flat_map(|v| [v.x, v.y, v.z])
+        .fold(0, |key: u64, c| Rng::stream(key, c.to_bits()).next_u64())
 }
