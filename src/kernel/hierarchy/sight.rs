@@ -185,16 +185,18 @@ pub fn stand_in_sight(
 pub fn sampled_sight(visibility: &Visibility, tree: &Tree, p: u32, q: u32, blocker: &mut Blocker) -> (f64, usize) {
     let (a, b) = (tree.node(p).centre(), tree.node(q).centre());
     let mut rng = Rng::stream(place_key(tree, p), place_key(tree, q));
-    let mut segments = Vec::with_capacity(PACKET);
+    let mut segments: [Segment; PACKET] = [(a, b, [u32::MAX; 2]); PACKET];
+    let mut n = 0;
     for _ in 0..PACKET {
         let from = drawn(tree, p, b, &mut rng);
         let to = drawn(tree, q, a, &mut rng);
         if let (Some((x, f)), Some((y, g))) = (from, to) {
-            segments.push((x, y, [f, g]) as Segment);
+            segments[n] = (x, y, [f, g]);
+            n += 1;
         }
     }
-    let free = visibility.visible_together(&segments, blocker).count_ones();
-    (f64::from(free) / PACKET as f64, segments.len())
+    let free = visibility.visible_together(&segments[..n], blocker).count_ones();
+    (f64::from(free) / PACKET as f64, n)
 }
 
 /// A point drawn uniformly on the faces of node `id` turned to `towards`, with its face: from
