@@ -187,7 +187,7 @@ fn the_open_box_at_its_hard_probes_is_no_worse_than_today() {
     // open-box`), better: 34 of 240 beyond 1 % → 15, mean 0.48 → 0.36 %, largest 2.40 → 1.78 %.
     // Occluded pairs tested by random segments before they are dropped (docs/hierarchy.md,
     // "Occluded pairs tested by random segments": the lecture hall's hard probes beyond 1 %
-    // from 73 to 41) read these a little worse: the corners at 5 cm 0.6 → 0.70 %, at 10 cm
+    // from 73 to 45) read these a little worse: the corners at 5 cm 0.6 → 0.70 %, at 10 cm
     // 0.6 → 0.66 %, the 5 cm edges 0.9 → 0.95 %, the 1 cm contacts 1.1 → 1.24 %, the 3 cm
     // ones 1.3 → 1.33 %, the umbrae 1.0 → 1.03 %, the penumbrae 0.6 → 0.61 %, the dimmest
     // 1.3 → 1.52 % (the figures before are the bounds they were set to).

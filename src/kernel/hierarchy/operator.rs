@@ -4,9 +4,9 @@
 //! direction: a cluster's light towards a receiver is its elements' that face it), gather
 //! over the links at every level (`z_p += F_pq x̄_q`, by cells), push (each node's gathered
 //! light to all its leaves, each leaf with its own share, `push.rs`). The material blocks
-//! are the kernel's (`crate::kernel::Kernel`), as for the uniform kernel's `G`. Nodes are stored in depth-first order, so pull is one backward
-//! sweep; gather (over receivers) and push (over leaves) run in parallel. Nothing is
-//! allocated per application.
+//! are the kernel's (`crate::kernel::Kernel`), as for the uniform kernel's `G`. Nodes are
+//! stored in depth-first order, so pull is one backward sweep; gather (over receivers) and
+//! push (over leaves) run in parallel. Nothing is allocated per application.
 
 use super::bundle::Bundles;
 use super::link::{ALL_CELLS, Link, axis};
