@@ -4,14 +4,15 @@
 //! fraction; for `K > 1` split by cells `(d, m)` like `G[(i,d),(j,m)]`: the mean of the
 //! integral binned from either end (`binned_pair_integral`), as the uniform kernel's
 //! `T^{d,m} = v (S_pq^{d,m} + S_qp^{m,d})/2`, so that `A_p F_pq^{d,m} = A_q F_qp^{m,d}`. A link of a cluster uses the cluster's projected area across
-//! the link (Sillion 1995 with the directional area of Christensen et al. 1997: per-axis
-//! sums of the elements' facing areas, exact for axis-aligned rooms where the isotropic
-//! mean cosine 1/4 is off by up to 4×), and the light a cluster receives arrives from all
+//! the link (Sillion 1995 with the directional area of Christensen et al. 1997: from its
+//! vector areas, `vector_areas.rs`, exact for elements of a few normals in any orientation,
+//! where the isotropic mean cosine 1/4 is off by up to 4×), and the light a cluster receives arrives from all
 //! cells alike (`μ_d/π` each), so it holds in any frame.
 
 use super::node::Node;
 use super::pieces::{Piece, Pieces};
 use super::sight::Sight;
+use super::tree::Tree;
 use crate::directions::DirectionSet;
 use crate::geometry::Patch;
 use crate::transfer::far_field::far_pair_integral;
@@ -79,10 +80,11 @@ pub fn element_factor(
 
 /// The factor of a link with a cluster at one end (or both), and its one piece: the two
 /// ends' projected areas across the line between their centres,
-/// `F_pq = P_p(u) P_q(−u) / (A_p π d²)` (`Node::projected`).
-pub fn cluster_factor(p: &Node, q: &Node, directions: &DirectionSet) -> (f64, Vec<Piece>) {
+/// `F_pq = P_p(u) P_q(−u) / (A_p π d²)` (`Tree::projected`).
+pub fn cluster_factor(tree: &Tree, (p, q): (u32, u32), directions: &DirectionSet) -> (f64, Vec<Piece>) {
+    let factor = projected_transfer(tree, p, q);
+    let (p, q) = (tree.node(p), tree.node(q));
     let (u, _) = axis(p, q);
-    let factor = projected_transfer(p, q);
     let cell_p = cell(p, u, directions);
     let cell_q = match cell(q, -u, directions) {
         ALL_CELLS => 0,
@@ -92,13 +94,14 @@ pub fn cluster_factor(p: &Node, q: &Node, directions: &DirectionSet) -> (f64, Ve
     (factor, pieces)
 }
 
-/// `P_p(u) P_q(−u) / (A_p π d²)` along the line between the centres of `p` and `q`, at most 1
-/// (`docs/design.md` (3b.2)): the factor of a link with a cluster at one end, and the
+/// `P_p(u) P_q(−u) / (A_p π d²)` along the line between the centres of nodes `p` and `q`, at
+/// most 1 (`docs/design.md` (3b.2)): the factor of a link with a cluster at one end, and the
 /// estimate by which a leaf takes its share of what its element ancestor gathers from a
 /// cluster (`push.rs`).
-pub fn projected_transfer(p: &Node, q: &Node) -> f64 {
-    let (u, distance) = axis(p, q);
-    (p.projected(u) * q.projected(-u) / (p.area * PI * distance * distance)).min(1.0)
+pub fn projected_transfer(tree: &Tree, p: u32, q: u32) -> f64 {
+    let (u, distance) = axis(tree.node(p), tree.node(q));
+    let area = tree.node(p).area;
+    (tree.projected(p, u) * tree.projected(q, -u) / (area * PI * distance * distance)).min(1.0)
 }
 
 /// The unit direction from `p`'s centre to `q`'s and their distance (at least the gap

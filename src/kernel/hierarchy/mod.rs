@@ -48,6 +48,7 @@ mod split;
 mod structure;
 mod transpose;
 mod tree;
+mod vector_areas;
 
 pub use address::Address;
 pub use balance::RULES as BALANCING_RULES;

@@ -51,7 +51,7 @@ pub struct Node {
     pub emission: f64,
     /// Exposed area facing each axis direction (`+x, −x, +y, −y, +z, −z`), m²: an element's
     /// `A_e max(0, ±n_e·axis)`; a cluster's its children's times their openness within it
-    /// (`openness.rs`, (3b.8)), the projected area of a cluster (`projected`).
+    /// (`openness.rs`, (3b.8)), which weigh its facing values (`facing_weights`).
     pub facing: [f64; FACING],
 }
 
@@ -91,36 +91,20 @@ impl Node {
         self.patch().is_some() && self.exposed >= self.area * (1.0 - 1e-9)
     }
 
-    /// Exposed area of the node's elements projected onto a plane across the unit direction
-    /// `u`, counting the elements that face `u`: `A max(0, n·u)` for an element; for a cluster
-    /// `Σ_axes |u_a| facing[a, sign u_a]`, exact when its elements are axis-aligned (walls,
-    /// furniture) and otherwise at most `√3` times too large, m².
-    pub fn projected(&self, u: DVec3) -> f64 {
-        match &self.kind {
-            Kind::Element { patch, .. } => self.exposed * patch.normal.dot(u).max(0.0),
-            Kind::Cluster => [u.x, u.y, u.z]
-                .iter()
-                .enumerate()
-                .map(|(a, &c)| c.abs() * self.facing[2 * a + usize::from(c < 0.0)])
-                .sum(),
-        }
-    }
-
     /// How a cluster's light towards the unit direction `u` is made of its [`FACING`]
-    /// values: `|u_a| facing[a, sign u_a] / projected(u)` for each axis `a`, at that
-    /// value's index, 0 elsewhere (all 0 where nothing faces `u`). Its elements facing `u`
-    /// send it, each by its projected area, exactly when they are axis-aligned; what faces
-    /// away (the undersides of a row of seats seen from the ceiling) sends none.
+    /// values (`docs/design.md` (3b.7)): `|u_a| facing[a, sign u_a]` for each axis `a`, at
+    /// that value's index, 0 elsewhere, over their sum (all 0 where nothing faces `u`). Its
+    /// elements facing `u` send it, each by its projected area, exactly when they are
+    /// axis-aligned; what faces away (the undersides of a row of seats seen from the
+    /// ceiling) sends none.
     pub fn facing_weights(&self, u: DVec3) -> [f64; FACING] {
         let mut weights = [0.0; FACING];
-        let projected = self.projected(u);
-        if projected > 0.0 {
-            for (a, c) in [u.x, u.y, u.z].into_iter().enumerate() {
-                let at = 2 * a + usize::from(c < 0.0);
-                weights[at] = c.abs() * self.facing[at] / projected;
-            }
+        for (a, c) in [u.x, u.y, u.z].into_iter().enumerate() {
+            let at = 2 * a + usize::from(c < 0.0);
+            weights[at] = c.abs() * self.facing[at];
         }
-        weights
+        let sum: f64 = weights.iter().sum();
+        weights.map(|w| if sum > 0.0 { w / sum } else { 0.0 })
     }
 
     /// The patch of an element, `None` for a cluster.

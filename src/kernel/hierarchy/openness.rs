@@ -1,14 +1,15 @@
 //! Each cluster child's openness along the six axis directions (`docs/design.md` (3b.8)):
 //! the share of rays from the child's stand-ins facing an axis, leaning around it, that
 //! reach the side of the cluster's box without meeting a surface. A cluster's facing areas
-//! are its children's times their openness, so that its projected area (3b.2) counts what a
-//! receiver outside can see of it, and its facing values (3b.7) the light of those faces:
-//! the treads under a row's desks, which face the ceiling as the desks' tops do, send it
-//! nothing.
+//! are its children's times their openness, and so are its vector areas (3b.9), so that
+//! its projected area (3b.2) counts what a receiver outside can see of it, and its facing
+//! values (3b.7) the light of those faces: the treads under a row's desks, which face the
+//! ceiling as the desks' tops do, send it nothing.
 
 use super::node::FACING;
 use super::sight::stand_ins;
 use super::tree::Tree;
+use super::vector_areas::VectorAreas;
 use crate::transfer::occlusion::POINTS;
 use crate::visibility::{NO_BLOCKER, NO_FACE, Segment, Visibility};
 use glam::DVec3;
@@ -30,7 +31,7 @@ pub fn open_facing(tree: &mut Tree, visibility: &Visibility) -> Vec<[f64; FACING
             continue;
         }
         let (lo, hi) = (tree.node(id).lo, tree.node(id).hi);
-        let mut facing = [0.0; FACING];
+        let (mut facing, mut areas) = ([0.0; FACING], VectorAreas::default());
         for &child in tree.children(id) {
             let node = tree.node(child);
             for (c, axis) in AXES.iter().enumerate() {
@@ -40,8 +41,9 @@ pub fn open_facing(tree: &mut Tree, visibility: &Visibility) -> Vec<[f64; FACING
                 open[child as usize][c] = openness(tree, visibility, child, *axis, (lo, hi));
                 facing[c] += node.facing[c] * open[child as usize][c];
             }
+            areas.add(&tree.vector_areas(child), &open[child as usize]);
         }
-        tree.set_facing(id, facing);
+        tree.set_facing(id, facing, areas);
     }
     open
 }

@@ -280,7 +280,6 @@ impl View<'_> {
         let (id, patch) = leaf;
         // a leaf across a contact: its points inside the solid see nothing
         let own_rays = by_rays && a != id && !self.tree.node(id).straddles_contact();
-        let leaf = self.tree.node(id);
         let points = polygon_points(&patch.polygon);
         let from = points.map(|x| (x, patch.face));
         let mut sums = Sums::default();
@@ -290,18 +289,18 @@ impl View<'_> {
             let cluster_by_rays = !by_leaf && own_rays;
             let (open, visible) = match (by_leaf, own_rays) {
                 (true, true) => views.of(link.source, |blocker| {
-                    let open = self.open_factor(link, a, (leaf, &points), true);
+                    let open = self.open_factor(link, a, (id, &points), true);
                     if open <= 0.0 {
                         return (open, 0.0);
                     }
                     let to = stand_ins(self.tree, link.source, patch.centroid);
                     (open, fraction_between(self.visibility, &from, &to, blocker).fraction)
                 }),
-                (true, false) => (self.open_factor(link, a, (leaf, &points), true), f64::from(link.visible)),
+                (true, false) => (self.open_factor(link, a, (id, &points), true), f64::from(link.visible)),
                 // a cluster's light by the leaf's own rays to its stand-ins in place of the
                 // link's: the leaf may lie behind its receiver cluster's faces turned to it
                 (false, true) => {
-                    let open = self.open_factor(link, a, (leaf, &points), false);
+                    let open = self.open_factor(link, a, (id, &points), false);
                     if open <= 0.0 {
                         continue;
                     }
@@ -311,7 +310,7 @@ impl View<'_> {
                     });
                     (open, own / f64::from(link.visible))
                 }
-                (false, false) => (self.open_factor(link, a, (leaf, &points), false), 1.0),
+                (false, false) => (self.open_factor(link, a, (id, &points), false), 1.0),
             };
             if open <= 0.0 {
                 continue;
@@ -330,8 +329,8 @@ impl View<'_> {
     /// the leaf's own projected transfer against the ancestor's (its own direction and
     /// distance to the cluster: a leaf in a room's far corner takes less of a cluster in its
     /// middle than one beneath it).
-    fn open_factor(&self, link: &Link, a: u32, (leaf, points): (&Node, &[glam::DVec3; POINTS]), by_leaf: bool) -> f64 {
-        let source = self.tree.node(link.source);
+    fn open_factor(&self, link: &Link, a: u32, (id, points): (u32, &[glam::DVec3; POINTS]), by_leaf: bool) -> f64 {
+        let (leaf, source) = (self.tree.node(id), self.tree.node(link.source));
         let patch = leaf.patch().expect("a leaf is an element");
         if let Some(q) = source.patch() {
             let f = points.iter().map(|&x| point_factor(x, patch.normal, q)).sum::<f64>() / POINTS as f64;
@@ -339,11 +338,15 @@ impl View<'_> {
         }
         let ancestor = self.tree.node(a);
         if ancestor.patch().is_some() {
-            let whole = projected_transfer(ancestor, source);
-            return if whole > 0.0 { link.factor * projected_transfer(leaf, source) / whole } else { 0.0 };
+            let whole = projected_transfer(self.tree, a, link.source);
+            return if whole > 0.0 {
+                link.factor * projected_transfer(self.tree, id, link.source) / whole
+            } else {
+                0.0
+            };
         }
         let (u, _) = axis(ancestor, source);
-        let projected = ancestor.projected(u);
+        let projected = self.tree.projected(a, u);
         match projected > 0.0 {
             true => link.factor * ancestor.area * patch.normal.dot(u).max(0.0) / projected,
             false => 0.0,

@@ -227,7 +227,7 @@ fn clusters(
         }
         visible = sampled;
     }
-    let (factor, mut pieces) = cluster_factor(a, b, settings.directions);
+    let (factor, mut pieces) = cluster_factor(tree, (p, q), settings.directions);
     pieces.iter_mut().for_each(|piece| piece.2 *= visible);
     (Outcome::Keep(Link::new(p, q, visible * factor, visible, bound, pieces)), rays)
 }

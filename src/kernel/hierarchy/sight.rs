@@ -212,7 +212,7 @@ fn drawn(tree: &Tree, id: u32, towards: DVec3, rng: &mut Rng) -> Option<(DVec3, 
         }
         let u = (towards - node.centre()).normalize_or_zero();
         let children = tree.children(at);
-        let total: f64 = children.iter().map(|&c| tree.node(c).projected(u)).sum();
+        let total: f64 = children.iter().map(|&c| tree.projected(c, u)).sum();
         if total <= 0.0 {
             return None;
         }
@@ -222,7 +222,7 @@ fn drawn(tree: &Tree, id: u32, towards: DVec3, rng: &mut Rng) -> Option<(DVec3, 
             .iter()
             .copied()
             .find(|&c| {
-                pick -= tree.node(c).projected(u);
+                pick -= tree.projected(c, u);
                 pick < 0.0
             })
             .unwrap_or(last);

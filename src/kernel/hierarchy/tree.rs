@@ -7,6 +7,7 @@
 
 use super::cluster;
 use super::node::{FACING, Kind, NONE, Node, longest_edge};
+use super::vector_areas::VectorAreas;
 use crate::geometry::{ConvexPolygon, Cut, Mesh, Patch};
 
 /// How a new element's exposed area is measured, m².
@@ -25,6 +26,8 @@ pub struct Tree {
     /// Each cluster member's openness within its cluster along the axes (`openness.rs`), by
     /// node id; empty until [`Tree::set_open`] (1 for every node past its end).
     open: Vec<[f64; FACING]>,
+    /// Each cluster's vector areas (`vector_areas.rs`), by node id (empty for elements).
+    areas: Vec<VectorAreas>,
 }
 
 impl Tree {
@@ -41,7 +44,8 @@ impl Tree {
                 Node::element(Patch { exposed, ..*p }, p.twin, 0, albedo, e)
             })
             .collect();
-        let mut tree = Tree { nodes, children: Vec::new(), top: NONE, cuts: Vec::new(), open: Vec::new() };
+        let mut tree =
+            Tree { nodes, children: Vec::new(), top: NONE, cuts: Vec::new(), open: Vec::new(), areas: Vec::new() };
         let mut ids: Vec<u32> = (0..roots.len() as u32).collect();
         let centres: Vec<glam::DVec3> = tree.nodes.iter().map(Node::centre).collect();
         tree.top = cluster::build(&centres, &mut ids, &mut |members| tree.add_cluster(members));
@@ -63,9 +67,30 @@ impl Tree {
         self.open.get(id as usize).copied().unwrap_or([1.0; FACING])
     }
 
-    /// Sets cluster `id`'s facing areas (`openness.rs`).
-    pub(super) fn set_facing(&mut self, id: u32, facing: [f64; FACING]) {
+    /// Sets cluster `id`'s facing areas and vector areas (`openness.rs`).
+    pub(super) fn set_facing(&mut self, id: u32, facing: [f64; FACING], areas: VectorAreas) {
         self.nodes[id as usize].facing = facing;
+        self.areas[id as usize] = areas;
+    }
+
+    /// Node `id`'s vector areas: an element's one, a cluster's kept ones (`vector_areas.rs`).
+    pub fn vector_areas(&self, id: u32) -> VectorAreas {
+        let node = &self.nodes[id as usize];
+        match node.patch() {
+            Some(patch) => VectorAreas::face(node.exposed, patch.normal),
+            None => self.areas[id as usize].clone(),
+        }
+    }
+
+    /// Exposed area of node `id`'s elements projected onto a plane across the unit direction
+    /// `u`, counting those that face `u`, m² (`docs/design.md` (3b.2), (3b.9)): an element's
+    /// `A max(0, n·u)`, a cluster's `Σ_g max(0, m_g·u)` over its vector areas.
+    pub fn projected(&self, id: u32, u: glam::DVec3) -> f64 {
+        let node = &self.nodes[id as usize];
+        match node.patch() {
+            Some(patch) => node.exposed * patch.normal.dot(u).max(0.0),
+            None => self.areas[id as usize].projected(u),
+        }
     }
 
     /// The node at the top: the root cluster (or the only element, or [`NONE`] when empty).
@@ -104,7 +129,9 @@ impl Tree {
         node.exposed = 0.0;
         node.emission = 0.0;
         node.facing = [0.0; 6];
+        let mut areas = VectorAreas::default();
         for &m in members {
+            areas.add(&self.vector_areas(m), &[1.0; FACING]);
             let member = &mut self.nodes[m as usize];
             member.parent = id;
             node.area += member.area;
@@ -116,6 +143,8 @@ impl Tree {
         }
         self.children.extend_from_slice(members);
         self.nodes.push(node);
+        self.areas.resize(id as usize, VectorAreas::default());
+        self.areas.push(areas);
         id
     }
 
