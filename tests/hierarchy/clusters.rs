@@ -77,12 +77,12 @@ fn cluster_links_agree_with_the_explicit_kernel() {
     assert!(worst < 5e-2 && rms < 2e-2, "worst {worst}, rms {rms}");
 }
 
-/// A 10 cm box and a 20 cm square 4 m away up and aside facing it: far enough for a link
-/// from the box's cluster of six faces, whose transfer is then exact for axis-aligned faces.
-fn box_and_a_far_square() -> Scene {
+/// A box from the origin to `max`, turned `turn` degrees about the vertical, and nothing
+/// else (reflectance 0.5, no emission).
+fn a_lone_box(max: DVec3, turn: f64) -> Scene {
     let mut s = furnace(0.1, 0.5, 0.0, 1.0);
     s.surfaces.clear();
-    let shape = Shape::Box { min: DVec3::ZERO, max: DVec3::splat(0.1), rotate_y_deg: 0.0 };
+    let shape = Shape::Box { min: DVec3::ZERO, max, rotate_y_deg: turn };
     s.surfaces.push(Surface {
         name: "box".into(),
         shape,
@@ -91,6 +91,13 @@ fn box_and_a_far_square() -> Scene {
         inside: false,
         emission: None,
     });
+    s
+}
+
+/// A 10 cm box and a 20 cm square 4 m away up and aside facing it: far enough for a link
+/// from the box's cluster of six faces, whose transfer is then exact for axis-aligned faces.
+fn box_and_a_far_square() -> Scene {
+    let mut s = a_lone_box(DVec3::splat(0.1), 0.0);
     let towards = DVec3::new(2.0, 3.0, 1.5).normalize();
     let (u, v) = (towards.cross(DVec3::Y).normalize() * 0.2, towards.cross(DVec3::Y).normalize().cross(towards) * 0.2);
     let origin = towards * 4.0 - (u + v) / 2.0;
@@ -342,22 +349,13 @@ fn a_slot_that_fixed_points_miss_takes_its_light() {
     assert!(uniform > 0.0 && (0.25..2.0).contains(&(hierarchical / uniform)), "{hierarchical} against {uniform}");
 }
 
-/// A cube turned 45° about the vertical, alone: the cluster of its six faces projects
-/// exactly `Σ A max(0, n·u)` of them across any direction `u` (`docs/design.md` (3b.9)),
-/// where the per-axis sums of its facing areas read twice a side's area along its normal.
+/// A 0.1 × 0.2 × 0.3 m box turned 45° about the vertical, alone: the cluster of its six
+/// faces projects exactly `Σ A max(0, n·u)` of them across any direction `u`
+/// (`docs/design.md` (3b.9)), which the per-axis sums of its facing areas do not (a cube
+/// turned so reads twice a side's area along that side's normal).
 #[test]
 fn a_turned_cluster_projects_its_faces_exact_area() {
-    let mut s = furnace(0.1, 0.5, 0.0, 1.0);
-    s.surfaces.clear();
-    let shape = Shape::Box { min: DVec3::ZERO, max: DVec3::new(0.1, 0.2, 0.3), rotate_y_deg: 45.0 };
-    s.surfaces.push(Surface {
-        name: "box".into(),
-        shape,
-        material: 0,
-        two_sided: false,
-        inside: false,
-        emission: None,
-    });
+    let s = a_lone_box(DVec3::new(0.1, 0.2, 0.3), 45.0);
     let h = hierarchy(&s, 1.0, DirectionSet::single(), options(1e-2, 1.0));
     let tree = h.tree();
     let top = tree.top();

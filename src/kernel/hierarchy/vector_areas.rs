@@ -47,16 +47,6 @@ impl VectorAreas {
         self.0.iter().map(|m| m.dot(u).max(0.0)).sum()
     }
 
-    /// Number of vector areas kept.
-    pub fn len(&self) -> usize {
-        self.0.len()
-    }
-
-    /// True when no area is kept.
-    pub fn is_empty(&self) -> bool {
-        self.0.is_empty()
-    }
-
     /// Adds `m` to the vector area of its normal, or as a new one; beyond [`MOST`], the two
     /// whose normals are closest merge.
     fn insert(&mut self, m: DVec3) {
