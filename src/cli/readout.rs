@@ -13,6 +13,7 @@ use anyhow::{Context, Result};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use ugo::io::{OutputLock, read_solution, write_probes_csv, write_readout};
+use ugo::readout::daylight::DaylightReadings;
 use ugo::readout::grid::GridReading;
 use ugo::readout::grid_error::GridErrorBars;
 use ugo::readout::readings::Readings;
@@ -40,7 +41,7 @@ pub fn run(file: &Path, case: Option<&Path>, d: &Discretize, output: Option<Path
     let names: Vec<String> = scene.surfaces.iter().map(|s| s.name.clone()).collect();
     let files = GridFiles { sources: &r.model.sources, mesh: &r.model.mesh, surfaces: &names };
     match &r.readings {
-        Some(readings) => own_readings(readings, &output, &files)?,
+        Some(readings) => own_readings(readings, r.daylight.as_ref(), &output, &files)?,
         None => say!("  probes, grids, glare grids and observers as stored (unchanged)"),
     }
     let lit = |grids: &[GridReading], errors: &[GridErrorBars], stem: &str, light_scene: &LightScene| {
@@ -57,15 +58,24 @@ pub fn run(file: &Path, case: Option<&Path>, d: &Discretize, output: Option<Path
     Ok(())
 }
 
-/// Prints the case's own field's readings and writes their files beside `output`.
-fn own_readings(readings: &Readings, output: &Path, files: &GridFiles) -> Result<()> {
+/// Prints the case's own field's readings (with their daylight factors, `daylight`) and
+/// writes their files beside `output`.
+fn own_readings(
+    readings: &Readings,
+    daylight: Option<&DaylightReadings>,
+    output: &Path,
+    files: &GridFiles,
+) -> Result<()> {
     print_probes(&readings.probes);
     super::glare::report(readings.glare(), &readings.grids, "  ");
+    if let Some(d) = daylight {
+        super::daylight::report(d, &readings.probes, &readings.grids);
+    }
     let stem = output.with_extension("").display().to_string();
-    write_grids(&readings.grids, &readings.grid_errors, &stem, files, None)?;
+    write_grids(&readings.grids, &readings.grid_errors, &stem, files, daylight)?;
     if !readings.probes.is_empty() {
         let csv = super::beside(output, "-probes.csv");
-        write_probes_csv(&csv, &readings.probes, None)?;
+        write_probes_csv(&csv, &readings.probes, daylight)?;
         say!("  probes             {}", csv.display());
     }
     super::glare_grid::report(&readings.glare_grids, output, "  ")

@@ -1,7 +1,8 @@
 //! The file `ugo readout` writes (issue 38, point 2; `docs/light-scenes.md`, "After the
 //! solve"): a copy of a solution file whose case, readouts and light scenes are those of
 //! the edited case — `/case_files` and the root attributes of the case, `/probes`, `/grids`,
-//! `/observers` and `/glare_grids` (when read again), `/light_groups/{scene_names,factors}` and
+//! `/observers` and `/glare_grids` (when read again; with them `/daylight` when the case is lit by
+//! daylight alone), `/light_groups/{scene_names,factors}` and
 //! `/light_scenes/<name>` of every new or changed light scene (those no longer in the case
 //! dropped, the unchanged ones kept), `/light_groups/{grid_readings,bar_samples}` when light scenes were read
 //! (dropped when the readout tables changed and none was) — laid out as `hdf5_file.rs` and `light_scene_group.rs`
@@ -11,6 +12,7 @@
 //! complete (`atomic.rs`), so the input is never changed on error, even when it is also
 //! the output.
 
+use super::daylight_group::write_daylight;
 use super::glare_grid_group::write_glare_grids;
 use super::hdf5_file::{CASE_ATTRIBUTES, write_case};
 use super::light_scene_group::{write_factors, write_group_readouts, write_scenes};
@@ -18,6 +20,7 @@ use super::observer_group::write_observers;
 use super::readout_group::{write_grids, write_probes};
 use super::{IoError, LightSceneField};
 use crate::model::Model;
+use crate::readout::daylight::DaylightReadings;
 use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::readings::Readings;
 use crate::scene::Scene;
@@ -30,6 +33,9 @@ pub struct Readout {
     /// The case's own field read at the edited case's probes, grids and observers; `None`
     /// when they are the stored ones, whose readings are kept.
     pub readings: Option<Readings>,
+    /// The daylight factors of `readings` under a `[sky]` when the case is lit by daylight
+    /// alone (its field is the daylight's); `None` keeps the stored `/daylight`.
+    pub daylight: Option<DaylightReadings>,
     /// Every new or changed light scene of the edited case, a weighted sum of the stored
     /// groups' fields.
     pub light_scenes: Vec<LightSceneField>,
@@ -64,6 +70,10 @@ fn rewrite(path: &Path, scene: &Scene, r: &Readout) -> hdf5::Result<()> {
         write_observers(&file.create_group("observers")?, &readings.observers)?;
         write_glare_grids(&file.create_group("glare_grids")?, &readings.glare_grids)?;
         write_grids(&file.create_group("grids")?, &readings.grids, &readings.grid_errors, readings.glare())?;
+        if let Some(daylight) = &r.daylight {
+            unlink(&file, "daylight")?;
+            write_daylight(&file.create_group("daylight")?, daylight, &readings.probes, &readings.grids)?;
+        }
     }
     if !file.link_exists("light_groups") {
         unlink(&file, "light_scenes")?;

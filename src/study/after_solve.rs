@@ -13,8 +13,11 @@
 //! `readout::group_readouts`), read here (every group's, once) when the file holds none
 //! for these probes and grids.
 //! A light scene whose factors and readout tables are the stored ones keeps its stored
-//! readings.
+//! readings. Under a `[sky]`, new probes or grids get their daylight factors when the case
+//! is lit by daylight alone (its field is the daylight's, `super::daylight_alone`); with other
+//! light they would need the daylight solved alone, and are refused.
 
+use super::daylight_alone::lit_by_daylight_alone;
 use super::error::StudyError;
 use super::group_light::stored_group_terms;
 use super::kernel::model_with_kernel;
@@ -23,6 +26,7 @@ use super::readout_error::ReadoutError;
 use crate::io::{Readout, StoredGroup, read_group_readouts, read_light_groups, read_solution};
 use crate::model::Model;
 use crate::progress::Progress;
+use crate::readout::daylight::read_daylight;
 use crate::readout::field::Field;
 use crate::readout::group_readouts::GroupReadouts;
 use crate::readout::readings::read_field;
@@ -41,7 +45,8 @@ pub fn read_out_solved(file: &Path, scene: &Scene, progress: &dyn Progress) -> R
     let stored = read_solution(file)?;
     same_emission(scene, &model, &stored.mesh.emission, file)?;
     let (probes, grids) = (scene.probes == stored.scene.probes, scene.grids == stored.scene.grids);
-    if scene.sky.is_some() && !(probes && grids) {
+    let daylight_alone = lit_by_daylight_alone(scene, &model);
+    if scene.sky.is_some() && !(probes && grids) && !daylight_alone {
         let (case, file) = paths();
         return Err(ReadoutError::Daylight { case, file }.into());
     }
@@ -50,6 +55,11 @@ pub fn read_out_solved(file: &Path, scene: &Scene, progress: &dyn Progress) -> R
     let x = stored.luminance;
     let k = model.kernel.cells();
     let readings = (!same_tables).then(|| read_field(scene, &model, &Field::from_unknowns(&x, k), progress));
+    // Lit by daylight alone, the field read is the daylight's: its factors are read on it.
+    let daylight = match (&readings, &scene.sky) {
+        (Some(r), Some(sky)) if daylight_alone => Some(read_daylight(&model, sky, &r.probes, &r.grids)),
+        _ => None,
+    };
     let (kept, read): (Vec<&LightScene>, Vec<&LightScene>) =
         scene.lighting.scenes.iter().partition(|s| same_tables && stored.scene.lighting.scenes.contains(s));
     let groups = read_light_groups(file, x.len(), model.sources.len())?;
@@ -73,7 +83,7 @@ pub fn read_out_solved(file: &Path, scene: &Scene, progress: &dyn Progress) -> R
         }
     };
     let kept = kept.into_iter().map(|s| s.name.clone()).collect();
-    Ok(Readout { model, readings, light_scenes, shared, kept, traced })
+    Ok(Readout { model, readings, daylight, light_scenes, shared, kept, traced })
 }
 
 /// Refuses a case whose surfaces emit otherwise than the solved ones (`stored`, per patch).

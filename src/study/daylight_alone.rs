@@ -30,11 +30,10 @@ pub fn daylight_readings(
     progress: &dyn Progress,
 ) -> Result<Option<DaylightReadings>, StudyError> {
     let Some(sky) = scene.sky.as_ref() else { return Ok(None) };
-    let daylight: Vec<usize> = (0..model.sources.len()).filter(|&i| is_daylight(scene, model, i)).collect();
-    let electric = daylight.len() < model.sources.len() || model.mesh.emission.iter().any(|&e| e > 0.0);
-    if !electric {
+    if lit_by_daylight_alone(scene, model) {
         return Ok(Some(read_daylight(model, sky, probes, grids)));
     }
+    let daylight: Vec<usize> = (0..model.sources.len()).filter(|&i| is_daylight(scene, model, i)).collect();
     // The openings' light costs far more to integrate again than the luminaires': it is
     // the case's own less theirs.
     let others: Vec<usize> = (0..model.sources.len()).filter(|i| !daylight.contains(i)).collect();
@@ -53,6 +52,13 @@ pub fn daylight_readings(
     model.relight(own.0, own.1);
     crate::interrupt::check(|| "the daylight's readouts".to_string())?;
     Ok(Some(readings))
+}
+
+/// True when `model` is lit by daylight alone (every source is a window's sky and ground or
+/// the sun, no surface emits): its own field is the daylight's, and the daylight factors are
+/// read on it with no second solve.
+pub(super) fn lit_by_daylight_alone(scene: &Scene, model: &Model) -> bool {
+    (0..model.sources.len()).all(|i| is_daylight(scene, model, i)) && model.mesh.emission.iter().all(|&e| e <= 0.0)
 }
 
 /// True for source `i` of `model` when it is daylight: a window's sky and ground, or the

@@ -81,10 +81,12 @@ pub enum ReadoutError {
         /// The group.
         group: String,
     },
-    /// The case has a sky and new probes or grids: their daylight factors need a solve.
+    /// The case has a sky, other light and new probes or grids: their daylight factors need
+    /// a solve of the daylight alone.
     #[error(
-        "{}: the case has a [sky] and its probes or grids differ from those {} was solved with: their daylight \
-         factors need the daylight solved alone, which ugo readout does not do; solve the case again",
+        "{}: the case has a [sky] beside other light and its probes or grids differ from those {} was solved \
+         with: their daylight factors need the daylight solved alone, which ugo readout does not do; solve the \
+         case again",
         case.display(),
         file.display()
     )]

@@ -5,7 +5,9 @@
 //! reading as it was (not read again), and the groups' stored direct light reads it as
 //! their light traced again does (a file solved before it was stored); a changed geometry,
 //! a light scene lighting a group the file does not hold and a file without its kernel are
-//! refused, the file left as it was. (`group_by`'s groups: `tests/scene/luminaire_arrays.rs`.)
+//! refused, the file left as it was; under daylight alone, a probe and a grid added read
+//! their daylight factors as a solve does, and with a lamp beside the sky they are refused.
+//! (`group_by`'s groups: `tests/scene/luminaire_arrays.rs`.)
 
 use super::light_scenes::CASE;
 use super::{assert_clean_failure, stderr};
@@ -194,4 +196,90 @@ fn a_changed_case_is_refused_and_the_file_left_as_it_was() {
     run(&["solve", case.to_str().unwrap(), "-o", plain.to_str().unwrap()]);
     let err = assert_clean_failure(&ugo(&["readout", plain.to_str().unwrap(), case.to_str().unwrap()]));
     assert!(err.contains("--save-kernel"), "{err}");
+}
+
+/// A 1 × 1 m floor (ρ 0.5) and a 1 × 1 m wall beside it under a 1 × 1 m roof opening 1 m
+/// up, the uniform sky: a case lit by daylight alone.
+const DAYLIT: &str = r#"
+[discretization]
+patch_size = 0.25
+kernel = "uniform"
+[[material]]
+name = "white"
+type = "lambert"
+reflectance = 0.5
+[[surface]]
+name = "floor"
+shape = "rectangle"
+material = "white"
+origin = [0, 0, 0]
+edge_u = [0, 0, 1]
+edge_v = [1, 0, 0]
+[[surface]]
+name = "wall"
+shape = "rectangle"
+material = "white"
+origin = [0, 0, 0]
+edge_u = [0, 1, 0]
+edge_v = [0, 0, 1]
+[sky]
+type = "uniform"
+[[window]]
+name = "roof"
+origin = [0, 1, 0]
+edge_u = [1, 0, 0]
+edge_v = [0, 0, 1]
+[[probe]]
+name = "floor"
+position = [0.5, 0, 0.5]
+normal = [0, 1, 0]
+"#;
+
+/// What is added after the solve: a probe on the wall and a grid over the floor.
+const DAYLIT_READINGS: &str = r#"
+[[probe]]
+name = "wall"
+position = [0, 0.3, 0.5]
+normal = [1, 0, 0]
+[[grid]]
+name = "plane"
+origin = [0.1, 0.2, 0.1]
+edge_u = [0.8, 0, 0]
+edge_v = [0, 0, 0.8]
+resolution = [3, 2]
+normal = [0, 1, 0]
+"#;
+
+#[test]
+fn a_probe_and_a_grid_added_under_daylight_alone_read_their_daylight_factors_as_solved() {
+    let dir = scratch("readout-daylight");
+    let case = dir.write("roof.toml", DAYLIT);
+    let edited = dir.write("roof2.toml", &format!("{DAYLIT}{DAYLIT_READINGS}"));
+    let (case, edited) = (case.to_str().unwrap(), edited.to_str().unwrap());
+    let (solved, read_out, both) = (dir.join("a.h5"), dir.join("b.h5"), dir.join("c.h5"));
+    let (a, b, c) = (solved.to_str().unwrap(), read_out.to_str().unwrap(), both.to_str().unwrap());
+    run(&["solve", case, "--save-kernel", "-o", a]);
+    let summary = run(&["readout", a, edited, "-o", b]);
+    run(&["solve", edited, "-o", c]);
+    assert!(summary.contains("daylight"), "{summary}");
+    for what in ["sky_component", "internally_reflected", "daylight_factor"] {
+        let (probes, grid) = (format!("daylight/probes/{what}"), format!("daylight/grids/plane/{what}"));
+        let (x, y) = (read(&read_out, &probes), read(&both, &probes));
+        assert!(x.len() == 2 && y[1] > 0.0 && relative(&x, &y) <= 1e-12, "{what}: {x:?} against {y:?}");
+        let (x, y) = (read(&read_out, &grid), read(&both, &grid));
+        assert!(x.len() == 6 && relative(&x, &y) <= 1e-12, "{what}: {x:?} against {y:?}");
+    }
+    let csv = std::fs::read_to_string(dir.join("b-probes.csv")).unwrap();
+    assert!(csv.lines().next().unwrap().ends_with("DF_pct"), "{csv}");
+
+    // With a lamp beside the sky the daylight would need a solve of its own: refused, the
+    // file left as it was.
+    let lamp = "[[luminaire]]\nname = \"bulb\"\ntype = \"isotropic\"\nflux = 100\nposition = [0.5, 0.5, 0.5]\n";
+    let lit = dir.write("lit.toml", &format!("{DAYLIT}{lamp}"));
+    let lit_edited = dir.write("lit2.toml", &format!("{DAYLIT}{lamp}{DAYLIT_READINGS}"));
+    run(&["solve", lit.to_str().unwrap(), "--save-kernel", "-o", a]);
+    let before = std::fs::read(&solved).unwrap();
+    let err = assert_clean_failure(&ugo(&["readout", a, lit_edited.to_str().unwrap()]));
+    assert!(err.contains("beside other light") && err.contains("solved alone"), "{err}");
+    assert_eq!(std::fs::read(&solved).unwrap(), before, "the file changed: {err}");
 }

@@ -88,6 +88,16 @@ SETTINGS = {
         ("tolerance-3e-3", ["--link-tolerance", "3e-3"]),
         ("uniform-0.25", ["--kernel", "uniform", "--patch-size", "0.25"]),
     ],
+    "daylit-office": [
+        ("case", []),
+        ("hierarchy", ["--kernel", "hierarchical"]),
+        ("uniform-0.1", ["--kernel", "uniform", "--patch-size", "0.1"]),
+    ],
+    "mirror-room": [
+        ("case", []),
+        ("hierarchy", ["--kernel", "hierarchical"]),
+        ("uniform-0.15", ["--kernel", "uniform", "--patch-size", "0.15"]),
+    ],
 }
 DEFAULT_SETTINGS = [("case", [])]
 
