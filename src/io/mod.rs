@@ -81,7 +81,7 @@ pub use spectrum_plot::{RateLine, spectrum_plot};
 pub use ticks::{log_ticks, round_125, round_top, step, tick_label, ticks};
 pub use triptych::{CAPTION_HEIGHT, write_triptych};
 pub use ugr_table_csv::write_ugr_table_csv;
-pub use warning::{LeftOut, NegativeEscape, SensorFault, Warning};
+pub use warning::{LeftOut, MirrorCause, NegativeEscape, SensorFault, Warning};
 pub use warning_lines::{LINE, NOTE_SHARE, merged, one_line, told};
 
 use atomic::{atomic, atomic_png};

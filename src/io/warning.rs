@@ -120,6 +120,27 @@ pub enum Warning {
         /// The window's name.
         window: String,
     },
+    /// Mirror surfaces whose light the kernel carries cell to cell, not by images
+    /// (`study`'s `mirror_cells.rs`).
+    MirrorsByCells {
+        /// The mirror surfaces' names.
+        surfaces: Vec<String>,
+        /// Direction cells `K`.
+        cells: usize,
+        /// Why they have no images.
+        cause: MirrorCause,
+    },
+}
+
+/// Why a mirror's light is not carried by images (`docs/mirrors.md`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MirrorCause {
+    /// The hierarchical kernel carries no images.
+    Hierarchy,
+    /// Parallel light or an opening lights the scene: only a point source has an image.
+    NotPointLight,
+    /// The mirror is not plane, emits, or faces another mirror.
+    NotPlane,
 }
 
 /// A negative escaped flux of a closed scene: not light but discretization error, the
@@ -286,6 +307,30 @@ impl fmt::Display for Warning {
                 "window \"{window}\" lets in no light: none of it lands on a surface, so no surface sees its \
                  opening (it lies behind the room's surfaces or away from them); check its `origin` and edges"
             ),
+            Warning::MirrorsByCells { surfaces, cells, cause } => {
+                let named: Vec<String> = surfaces.iter().map(|name| format!("\"{name}\"")).collect();
+                let degrees = (2.0 * std::f64::consts::PI / *cells as f64).sqrt().to_degrees();
+                let (why, way_out) = match cause {
+                    MirrorCause::Hierarchy => (
+                        "the hierarchical kernel carries no images",
+                        "--kernel uniform carries a plane mirror by images when every luminaire is a point source",
+                    ),
+                    MirrorCause::NotPointLight => (
+                        "the scene has parallel light or an opening, whose light has no image",
+                        "compare with ugo trace",
+                    ),
+                    MirrorCause::NotPlane => {
+                        ("not plane, emitting, or facing another mirror", "compare with ugo trace")
+                    }
+                };
+                write!(
+                    f,
+                    "mirror {} reflects cell to cell, not by images ({why}): its image is smeared over about \
+                     {degrees:.0}° ({cells} direction cells), and what it lights may read several per cent off (the \
+                     mirror room's floor by the mirror 4.9 % with the hierarchy, docs/mirrors.md); {way_out}",
+                    named.join(", ")
+                )
+            }
         }
     }
 }

@@ -14,6 +14,7 @@ mod grid_points;
 mod group_light;
 mod kernel;
 mod light_scenes;
+mod mirror_cells;
 mod near;
 mod openings;
 mod readout_error;

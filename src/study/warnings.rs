@@ -27,7 +27,8 @@
 //! * a grid facing away from every source, or with points left out of its statistics
 //!   (inside a solid, under a surface nearer than its spacing: `grid_points.rs`);
 //! * parallel light (the sun) and a glazed window: the glass's `τ(θ)` and the window's
-//!   maintenance factor apply to the sky and ground it lets in, not to the beam.
+//!   maintenance factor apply to the sky and ground it lets in, not to the beam;
+//! * a mirror reflected cell to cell, not by images (`mirror_cells.rs`): its image smeared.
 //!
 //! The ones the model alone shows ([`before_solve`]: luminaires, probes, grids, parallel
 //! light through glass) are what `--strict` refuses before solving.
@@ -76,6 +77,7 @@ pub fn physics_warnings(scene: &Scene, model: &Model, x: &[f64], energy: &Energy
     let mut out = Vec::new();
     backs(scene, model, x, energy, &mut out);
     out.extend(before_solve(scene, model));
+    out.extend(super::mirror_cells::mirrors_by_cells(scene, model));
     let shares = || {
         let areas: Vec<f64> = model.mesh.patches.iter().map(|p| p.exposed).collect();
         sent_shares(&model.kernel, &areas, &model.mirrors)

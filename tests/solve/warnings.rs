@@ -1,6 +1,7 @@
 //! Physics warnings (issue 18, item 4): the field is solved, but a scene that loses its
-//! light on the backs of surfaces, a luminaire inside a box, a probe facing into the floor
-//! or a negative escaped flux is reported, each naming what is wrong.
+//! light on the backs of surfaces, a luminaire inside a box, a probe facing into the floor,
+//! a negative escaped flux or a mirror reflected cell to cell (not by images) is reported,
+//! each naming what is wrong.
 
 use std::path::Path;
 use ugo::io::{Solution, Warning};
@@ -314,4 +315,42 @@ fn the_links_own_loss_is_told_with_its_share_and_the_way_out() {
     let told = Warning::KernelLoss { lost: 2074.3277, emitted: 192_001.7 }.to_string();
     assert!(told.starts_with("2074.3277 lm (1.1 % of the flux emitted) is lost by the hierarchy's links"), "{told}");
     assert!(told.contains("a smaller link_tolerance loses less"), "{told}");
+}
+
+/// The unit room with 16 direction cells, its walls named in `mirrors` of a 90 % mirror,
+/// `kernel` the `[discretization]`'s kernel.
+fn mirrored(mirrors: &[&str], kernel: &str) -> String {
+    let mut text = room(false, "[[material]]\nname = \"mirror\"\ntype = \"mirror\"\nreflectance = 0.9\n")
+        .replace("patch_size = 0.25\n", &format!("patch_size = 0.25\ndirections = 16\nkernel = \"{kernel}\"\n"));
+    for wall in mirrors {
+        let at = text.find(&format!("name = \"{wall}\"\nshape = \"rectangle\"\nmaterial = \"grey\"")).unwrap();
+        let grey = at + text[at..].find("\"grey\"").unwrap();
+        text.replace_range(grey..grey + 6, "\"mirror\"");
+    }
+    text
+}
+
+#[test]
+fn a_mirror_reflected_cell_to_cell_is_told_with_its_cause_and_one_carried_by_images_is_not() {
+    let told = |mirrors: &[&str], kernel: &str| {
+        let (scene, s) = solved(&mirrored(mirrors, kernel));
+        let w: Vec<&Warning> = s.warnings.iter().filter(|w| matches!(w, Warning::MirrorsByCells { .. })).collect();
+        assert!(scene.materials.iter().any(|m| m.name == "mirror"));
+        w.iter().map(ToString::to_string).collect::<Vec<String>>()
+    };
+    // A plane mirror lit by a point lamp: the uniform kernel carries it by images.
+    assert!(told(&["north"], "uniform").is_empty());
+    let w = told(&["north"], "hierarchical");
+    assert!(
+        w.len() == 1
+            && w[0].contains("mirror \"north\" reflects cell to cell")
+            && w[0].contains("hierarchical kernel carries no images")
+            && w[0].contains("about 36°")
+            && w[0].contains("--kernel uniform"),
+        "{w:?}"
+    );
+    // Two mirrors facing each other would need images of images.
+    let w = told(&["north", "south"], "uniform");
+    assert!(w.len() == 1 && w[0].contains("\"north\"") && w[0].contains("\"south\""), "{w:?}");
+    assert!(w[0].contains("facing another mirror"), "{w:?}");
 }
