@@ -135,6 +135,13 @@ impl Source {
         }
     }
 
+    /// True when a plane mirror's reflection of this source's light is an image source
+    /// (`docs/mirrors.md`): a point source's is; parallel light's and an opening's are not
+    /// carried that way, so a scene lit by them keeps its mirrors' cell blocks.
+    pub fn mirrored_by_image(&self) -> bool {
+        matches!(self.light, Light::Point { .. })
+    }
+
     /// The intensity of a point source towards the unit world direction `w`, cd.
     pub fn intensity(&self, w: DVec3) -> f64 {
         match &self.light {

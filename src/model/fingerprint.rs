@@ -14,7 +14,7 @@
 
 use crate::geometry::{Shape, Surface};
 use crate::kernel::hierarchy::Options;
-use crate::luminaire::{Light, Source};
+use crate::luminaire::Source;
 use crate::material::MaterialModel;
 use crate::scene::{Discretization, KernelKind, Scene};
 use crate::transfer::form_factor::Quadrature;
@@ -279,7 +279,7 @@ fn mirrors(scene: &Scene, sources: &[Source], h: &mut Fnv) -> String {
         let _ = write!(h, "none");
         return "none (the uniform G depends on no material)".to_string();
     }
-    let points = sources.iter().all(|s| matches!(s.light, Light::Point { .. }));
+    let points = sources.iter().all(Source::mirrored_by_image);
     let _ = write!(h, "{mirroring:?} {points}");
     let images = if points { "carried by images" } else { "reflecting cell to cell" };
     format!("mirrors on {} surfaces {images}", mirroring.len())

@@ -7,7 +7,7 @@ use super::source::source_term;
 use super::system::{AssemblyStats, Model, ModelError};
 use crate::geometry::Mesh;
 use crate::kernel::{Assembled, Forecast, Kernel, Transport, TransportMatrix, assemble};
-use crate::luminaire::{Light, Source, direct_light};
+use crate::luminaire::{Source, direct_light};
 use crate::material::MaterialModel;
 use crate::progress::Progress;
 use crate::scene::Scene;
@@ -69,7 +69,7 @@ pub fn build(scene: &Scene, progress: &dyn Progress) -> Result<Model, ModelError
 /// opening: only a point source's light is mirrored by an image (`luminaire::patch_lights`),
 /// so their mirrors keep reflecting cell to cell.
 pub fn mirrors_of(scene: &Scene, mesh: &Mesh) -> Vec<PlaneMirror> {
-    if scene.luminaires.iter().map(Source::of).any(|s| !matches!(s.light, Light::Point { .. })) {
+    if !scene.luminaires.iter().map(Source::of).all(|s| s.mirrored_by_image()) {
         return Vec::new();
     }
     let reflectance: Vec<Option<f64>> = scene

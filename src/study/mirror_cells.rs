@@ -7,7 +7,7 @@
 //! bar (`docs/accuracy.md`, "The mirror room's hard probes").
 
 use crate::io::{MirrorCause, Warning};
-use crate::luminaire::Light;
+use crate::luminaire::Source;
 use crate::material::MaterialModel;
 use crate::model::Model;
 use crate::scene::Scene;
@@ -31,7 +31,7 @@ pub(super) fn mirrors_by_cells(scene: &Scene, model: &Model) -> Option<Warning> 
     }
     let cause = if model.hierarchy.is_some() {
         MirrorCause::Hierarchy
-    } else if model.sources.iter().any(|s| !matches!(s.light, Light::Point { .. })) {
+    } else if !model.sources.iter().all(Source::mirrored_by_image) {
         MirrorCause::NotPointLight
     } else {
         MirrorCause::NotPlane
