@@ -140,11 +140,12 @@ fn against_estimate(solution: &Path, reference: &Path, stored: &StoredSolution, 
     let (n, k) = (stored.mesh.len(), stored.directions.len());
     if mc.mesh.len() != n || mc.directions.name() != stored.directions.name() {
         bail!(
-            "the two files discretize differently: {n} patches × {} cells against {} × {} (trace with the \
-             solve's --patch-size and --directions)",
+            "the two files discretize differently: {n} patches × {} cells against {} × {} (bin the photons on \
+             the solve's own patches: ugo trace CASE --forward --bins-of {})",
             stored.directions.name(),
             mc.mesh.len(),
-            mc.directions.name()
+            mc.directions.name(),
+            solution.display()
         );
     }
     say!("ugo agree: {} against the forward estimate {}", solution.display(), reference.display());

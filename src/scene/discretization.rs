@@ -65,6 +65,21 @@ pub struct ChosenBySize {
     pub patch_size: f64,
     /// Unordered pairs of facing patches the uniform kernel would have at it.
     pub facing_pairs: f64,
+    /// What the choice was made for.
+    pub reason: SizeReason,
+}
+
+/// What decided the kernel chosen by size (`automatic.rs`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SizeReason {
+    /// Uniform: affordable, its patches fine against corners and contacts.
+    FinePatches,
+    /// Uniform: affordable, with mirrors, which only it carries by images.
+    Mirrors,
+    /// Hierarchical: uniform patches coarse against corners and contacts.
+    CoarsePatches,
+    /// Hierarchical: the uniform kernel would have too many facing pairs.
+    TooManyPairs,
 }
 
 impl Discretization {

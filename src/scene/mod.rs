@@ -40,11 +40,11 @@ mod validate;
 mod window_place;
 mod work_plane;
 
-pub use automatic::{UNIFORM_PAIRS, by_size};
+pub use automatic::{FINE_PATCH, UNIFORM_PAIRS, by_size};
 pub use check::number;
 pub use description::{Camera, Material, Scene, SolverSettings};
 pub use discretization::{
-    Asked, ChosenBySize, Discretization, Given, Hierarchical, KernelAsked, KernelKind, Origin, ROOTS,
+    Asked, ChosenBySize, Discretization, Given, Hierarchical, KernelAsked, KernelKind, Origin, ROOTS, SizeReason,
 };
 pub use discretization_keys::OldSpelling;
 pub use error::SceneError;
@@ -112,7 +112,7 @@ impl Scene {
         // the pairs forecast depends on the patch size only: a choice made at it stands
         let choose = |h, directions| match before.chosen_by_size {
             Some(chosen) if chosen.patch_size == h => (before.kernel, chosen),
-            _ => by_size(h, directions, surfaces),
+            _ => by_size(h, directions, surfaces, &self.materials),
         };
         self.discretization = asked.resolve(&self.path, choose)?;
         self.asked = asked;

@@ -71,7 +71,7 @@ pub fn validate(path: &Path, source: String, raw: RawScene, files: CaseFiles) ->
         electric: groups.len(),
     };
     let lighting = lighting(path, &source, raw.lighting, &raw.light_scene, sources)?;
-    let discretization = asked.resolve(path, |h, directions| by_size(h, directions, &surfaces))?;
+    let discretization = asked.resolve(path, |h, directions| by_size(h, directions, &surfaces, &materials.borrow()))?;
     Ok(Scene {
         path: path.to_path_buf(),
         source,

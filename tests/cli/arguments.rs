@@ -176,7 +176,8 @@ fn physics_warnings_reach_stderr_the_summary_and_the_file_and_strict_makes_them_
     assert_ne!(text, down);
     std::fs::write(&case, down).unwrap();
     let out = dir.join("res.h5");
-    let args = ["solve", case.to_str().unwrap(), "--patch-size", "0.25", "-o", out.to_str().unwrap()];
+    let args =
+        ["solve", case.to_str().unwrap(), "--patch-size", "0.25", "--kernel", "uniform", "-o", out.to_str().unwrap()];
     let o = ugo(&args);
     assert!(o.status.success(), "{}", stderr(&o));
     let err = stderr(&o);

@@ -153,6 +153,8 @@ fn direction_cells_reach_the_hdf5_file() {
         "16",
         "--patch-size",
         "0.25",
+        "--kernel",
+        "uniform",
         "-o",
         out.to_str().unwrap(),
     ]);

@@ -19,6 +19,7 @@ description = "a closed room with a glossy rug, a two-sided opal panel and a bul
 [discretization]
 patch_size = 0.5
 directions = 4
+kernel = "uniform"
 
 [solver]
 method = "direct"

@@ -25,7 +25,16 @@ fn without_a_terminal_the_solve_prints_progress_lines() {
     let dir = scratch("progress-lines");
     let out = dir.join("furnace.h5");
     let o = std::process::Command::new(env!("CARGO_BIN_EXE_ugo"))
-        .args(["solve", "cases/furnace-box.toml", "--patch-size", "0.25", "-o", out.to_str().unwrap()])
+        .args([
+            "solve",
+            "cases/furnace-box.toml",
+            "--patch-size",
+            "0.25",
+            "--kernel",
+            "uniform",
+            "-o",
+            out.to_str().unwrap(),
+        ])
         .env("UGO_PROGRESS_SECONDS", "0")
         .output()
         .unwrap();

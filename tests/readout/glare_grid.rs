@@ -123,7 +123,7 @@ fn a_glare_grid_is_validated_naming_table_key_and_line() {
         assert!(shown.contains("cases/test.toml") && shown.contains("glare_grid"), "{shown}");
         assert!(shown.contains(key) && shown.contains(words), "{shown}");
     };
-    rejected("resolution = [3, 2]\nlook = [1, 0, 0]\nview_step_deg = 7\n", "view_step_deg", "line 22: must divide");
+    rejected("resolution = [3, 2]\nlook = [1, 0, 0]\nview_step_deg = 7\n", "view_step_deg", "line 23: must divide");
     rejected("resolution = [3, 2]\nlook = [1, 0, 0]\nview_step_deg = 0\n", "view_step_deg", "must divide");
     rejected("resolution = [0, 2]\nlook = [1, 0, 0]\n", "resolution", "from 1 to 100");
     rejected("resolution = [3, 2]\nlook = [0, 1, 0]\n", "look", "from the vertical");

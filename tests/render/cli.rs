@@ -141,7 +141,16 @@ fn every_case_has_a_camera_and_renders_finite_lit_pixels() {
 fn a_camera_given_on_the_command_line_renders_and_is_checked_like_a_table() {
     let dir = scratch("cli-camera");
     let h5 = dir.join("furnace.h5");
-    let o = ugo(&["solve", "cases/furnace-box.toml", "--patch-size", "0.25", "-o", h5.to_str().unwrap()]);
+    let o = ugo(&[
+        "solve",
+        "cases/furnace-box.toml",
+        "--patch-size",
+        "0.25",
+        "--kernel",
+        "uniform",
+        "-o",
+        h5.to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "{}", text(&o));
     let h5 = h5.to_str().unwrap();
     let out = dir.join("images");

@@ -175,10 +175,11 @@ fn the_final_gather_shows_the_exact_point_luminance_and_smoothing_beats_flat() {
     assert!(gather < 1e-6 && flat > 1e-2, "rms relative error: flat {flat:.3e}, gather {gather:.3e}");
 }
 
-/// A two-sided grey plate under a lamp, with a camera below it.
+/// A two-sided grey plate under a lamp, with a camera below it, on the uniform mesh.
 const TWO_SIDED: &str = r#"
 [discretization]
 patch_size = 0.25
+kernel = "uniform"
 [[material]]
 name = "grey"
 type = "lambert"

@@ -5,7 +5,7 @@
 
 use super::{BASE, LAMP, assert_error, parse, rejected};
 use std::path::Path;
-use ugo::scene::{ChosenBySize, Hierarchical, KernelKind, ROOTS, Scene, UNIFORM_PAIRS};
+use ugo::scene::{ChosenBySize, FINE_PATCH, Hierarchical, KernelKind, ROOTS, Scene, SizeReason, UNIFORM_PAIRS};
 
 fn with(keys: &str) -> String {
     format!("{}{LAMP}", BASE.replace("patch_size = 0.1", &format!("patch_size = 0.1\n{keys}")))
@@ -13,8 +13,9 @@ fn with(keys: &str) -> String {
 
 /// The unit cube of `cases/furnace-box.toml` at `patch_size` `h`, with `keys` after it.
 fn cube(h: f64, keys: &str) -> Scene {
-    let text = std::fs::read_to_string("cases/furnace-box.toml").unwrap();
-    let text = text.replace("patch_size = 0.1", &format!("patch_size = {h}\n{keys}"));
+    let text = std::fs::read_to_string("cases/furnace-box.toml")
+        .unwrap()
+        .replace("patch_size = 0.1", &format!("patch_size = {h}\n{keys}"));
     Scene::parse(Path::new("cases/furnace-box.toml"), text).unwrap()
 }
 
@@ -49,14 +50,44 @@ fn without_kernel_it_is_chosen_by_the_uniform_ones_facing_pairs() {
     assert!(cube_pairs(h) > UNIFORM_PAIRS);
     assert_eq!(d.kernel, hierarchical(ROOTS * h, 1e-2));
     assert_eq!(d.patch_size, h);
-    let Some(ChosenBySize { patch_size, facing_pairs }) = d.chosen_by_size else { panic!("not chosen") };
-    assert_eq!(patch_size, h);
+    let Some(ChosenBySize { patch_size, facing_pairs, reason }) = d.chosen_by_size else { panic!("not chosen") };
+    assert_eq!((patch_size, reason), (h, SizeReason::TooManyPairs));
     assert!((facing_pairs / cube_pairs(h) - 1.0).abs() < 1e-9, "{facing_pairs} pairs");
     assert!(d.chosen_by_size.unwrap().to_string().contains("--kernel uniform"));
 
     // a kernel given is kept, whatever the size
     let given = cube(h, "kernel = \"uniform\"").discretization;
     assert_eq!((given.kernel, given.patch_size, given.chosen_by_size), (KernelKind::Uniform, h, None));
+}
+
+#[test]
+fn affordable_uniform_patches_coarse_against_corners_take_the_hierarchy_unless_there_are_mirrors() {
+    let chosen = |scene: &Scene| {
+        let d = &scene.discretization;
+        (d.kernel, d.chosen_by_size.expect("chosen").reason)
+    };
+    // 15 · 10⁴ pairs at FINE_PATCH: uniform
+    assert_eq!(FINE_PATCH, 0.1);
+    assert_eq!(chosen(&cube(0.1, "")), (KernelKind::Uniform, SizeReason::FinePatches));
+    // 15 · 4⁴ = 3,840 pairs, well affordable, but patches of 0.25 m: the hierarchy
+    let coarse = cube(0.25, "");
+    assert!(cube_pairs(0.25) < UNIFORM_PAIRS);
+    assert_eq!(chosen(&coarse), (hierarchical(ROOTS * 0.25, 1e-2), SizeReason::CoarsePatches));
+    let told = coarse.discretization.chosen_by_size.unwrap().to_string();
+    assert!(told.contains("over 0.1 m") && told.contains("--kernel uniform"), "{told}");
+    // the same cube with mirror walls keeps the uniform kernel, the one that carries images
+    let text =
+        std::fs::read_to_string("cases/furnace-box.toml").unwrap().replace("patch_size = 0.1", "patch_size = 0.25");
+    let mirrors = text.replace("type = \"lambert\"", "type = \"mirror\"");
+    assert_ne!(mirrors, text);
+    let mirrored = Scene::parse(Path::new("cases/furnace-box.toml"), mirrors).unwrap();
+    assert_eq!(chosen(&mirrored), (KernelKind::Uniform, SizeReason::Mirrors));
+    // --patch-size chooses again: the mirrorless cube at 0.05 m is uniform
+    let mut again = coarse;
+    let finer =
+        ugo::scene::Asked { patch_size: Some(ugo::scene::Given::flag("--patch-size")(0.05)), ..Default::default() };
+    again.discretize(&finer).unwrap();
+    assert_eq!(chosen(&again), (KernelKind::Uniform, SizeReason::FinePatches));
 }
 
 #[test]

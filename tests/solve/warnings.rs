@@ -9,12 +9,13 @@ use ugo::kernel::{closure_shares, sent_shares};
 use ugo::scene::Scene;
 use ugo::study::{Job, physics_warnings, solve_case};
 
-/// A closed unit room of six inward rectangles, a 1000 lm lamp in the middle, `extra` after.
+/// A closed unit room of six inward rectangles, a 1000 lm lamp in the middle, `extra` after;
+/// uniform patches of 0.25 m (named: the size rule would take the hierarchy at that size).
 fn room(floor_flipped: bool, extra: &str) -> String {
     let floor =
         if floor_flipped { "edge_u = [1, 0, 0]\nedge_v = [0, 0, 1]" } else { "edge_u = [0, 0, 1]\nedge_v = [1, 0, 0]" };
     let mut text = String::from(
-        "[discretization]\npatch_size = 0.25\n[[material]]\nname = \"grey\"\ntype = \"lambert\"\nreflectance = 0.5\n",
+        "[discretization]\npatch_size = 0.25\nkernel = \"uniform\"\n[[material]]\nname = \"grey\"\ntype = \"lambert\"\nreflectance = 0.5\n",
     );
     for (name, keys) in [
         ("floor", format!("origin = [0, 0, 0]\n{floor}")),
@@ -121,8 +122,10 @@ fn the_escaped_flux_is_the_outgoing_flux_weighted_by_the_columns_shortfall() {
         "origin = [0, 0, 1]\nedge_u = [0, 0.5, 0]\nedge_v = [1, 0, 0]",
     );
     // The hierarchy's columns come from its links run backwards (`Gᵀ`, no expansion).
-    let hierarchical =
-        open.replace("patch_size = 0.25\n", "patch_size = 0.125\nkernel = \"hierarchical\"\nroot_size = 0.5\n");
+    let hierarchical = open.replace(
+        "patch_size = 0.25\nkernel = \"uniform\"\n",
+        "patch_size = 0.125\nkernel = \"hierarchical\"\nroot_size = 0.5\n",
+    );
     assert!(hierarchical.contains("hierarchical"));
     for text in [room(false, CRATE), open, hierarchical] {
         let (_, s) = solved(&text);
@@ -321,7 +324,7 @@ fn the_links_own_loss_is_told_with_its_share_and_the_way_out() {
 /// `kernel` the `[discretization]`'s kernel.
 fn mirrored(mirrors: &[&str], kernel: &str) -> String {
     let mut text = room(false, "[[material]]\nname = \"mirror\"\ntype = \"mirror\"\nreflectance = 0.9\n")
-        .replace("patch_size = 0.25\n", &format!("patch_size = 0.25\ndirections = 16\nkernel = \"{kernel}\"\n"));
+        .replace("kernel = \"uniform\"\n", &format!("directions = 16\nkernel = \"{kernel}\"\n"));
     for wall in mirrors {
         let at = text.find(&format!("name = \"{wall}\"\nshape = \"rectangle\"\nmaterial = \"grey\"")).unwrap();
         let grey = at + text[at..].find("\"grey\"").unwrap();

@@ -110,7 +110,7 @@ name = "bulb-only"
 groups = { left = true, panel = false }
 "#;
 
-const UNIFORM: &str = "patch_size = 0.5";
+const UNIFORM: &str = "patch_size = 0.5\nkernel = \"uniform\"";
 const HIERARCHICAL: &str = "patch_size = 0.25\nkernel = \"hierarchical\"\nlink_tolerance = 0.05\nroot_size = 0.5";
 
 /// The room with the bulb, the downlight and the panel at these outputs.

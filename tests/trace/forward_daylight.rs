@@ -14,10 +14,11 @@ use ugo::progress::Silent;
 use ugo::scene::Scene;
 use ugo::trace::{TraceOptions, World, agreement, trace_photons};
 
-/// The daylit office, black, at 1 m patches, with its text changed by `edits`.
+/// The daylit office, black, at uniform 1 m patches, with its text changed by `edits`.
 fn black_office(edits: &[(&str, &str)]) -> Scene {
     let path = Path::new("cases/daylit-office.toml");
-    let mut text = std::fs::read_to_string(path).unwrap().replace("patch_size = 0.25", "patch_size = 1.0");
+    let mut text =
+        std::fs::read_to_string(path).unwrap().replace("patch_size = 0.25", "patch_size = 1.0\nkernel = \"uniform\"");
     for reflectance in ["0.7", "0.5", "0.2"] {
         let from = format!("\"lambert\"\nreflectance = {reflectance}");
         text = text.replace(&from, "\"lambert\"\nreflectance = 0.0");
