@@ -23,7 +23,7 @@ use ugo::solve::{Method, SolveParams, System, solve};
 /// lifted to 30 cm: 952 leaves, the dense direct solve 1.2 s (at 0.25 m, 2,128 leaves and a
 /// sparse LU of 20 s).
 fn hierarchical(text: &str) -> String {
-    text.replace("patch_size = 0.5", "patch_size = 0.5\nkernel = \"hierarchical\"\nroot_size = 1.0")
+    text.replace("kernel = \"uniform\"", "kernel = \"hierarchical\"\nroot_size = 1.0")
         .replace("origin = [0.25, 0.01, 0.25]", "origin = [0.25, 0.3, 0.25]")
 }
 

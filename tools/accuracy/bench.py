@@ -89,9 +89,13 @@ SETTINGS = {
         ("uniform-0.25", ["--kernel", "uniform", "--patch-size", "0.25"]),
     ],
     "daylit-office": [
+        # no `kernel` in the case: at its 0.25 m the size rule picks the hierarchy
         ("case", []),
-        ("hierarchy", ["--kernel", "hierarchical"]),
+        ("uniform-0.25", ["--kernel", "uniform"]),
+        ("uniform-0.15", ["--kernel", "uniform", "--patch-size", "0.15"]),
         ("uniform-0.1", ["--kernel", "uniform", "--patch-size", "0.1"]),
+        ("hierarchy-0.15", ["--kernel", "hierarchical", "--patch-size", "0.15"]),
+        ("hierarchy-0.1", ["--kernel", "hierarchical", "--patch-size", "0.1"]),
     ],
     "mirror-room": [
         ("case", []),
