@@ -74,6 +74,11 @@ SETTINGS = {
         ("hierarchy", ["--kernel", "hierarchical"]),
         # no `kernel` in the case: at 0.02 m the size rule picks the hierarchy (roots 0.08 m)
         ("leaves-0.02", ["--patch-size", "0.02"]),
+        # at the size rule's threshold: a small room whose uniform kernel stays affordable there
+        ("uniform-0.1", ["--kernel", "uniform", "--patch-size", "0.1"]),
+        ("hierarchy-0.1", ["--kernel", "hierarchical", "--patch-size", "0.1"]),
+        ("uniform-0.05", ["--kernel", "uniform", "--patch-size", "0.05"]),
+        ("hierarchy-0.05", ["--kernel", "hierarchical", "--patch-size", "0.05"]),
     ],
     "open-box": [
         ("case", []),
