@@ -17,17 +17,17 @@ use super::discretization::{ChosenBySize, Hierarchical, KernelKind, SizeReason};
 use crate::directions::Scheme;
 use crate::geometry::Surface;
 use crate::kernel::Forecast;
-use crate::material::MaterialModel;
 
 /// Facing pairs up to which the uniform kernel is affordable. The Cornell box at 0.025 m has
 /// 9.45 M (27 s, 0.67 GB on 2 cores); past this the uniform kernel's time and memory grow
 /// as the pairs do, the hierarchy's about as its leaves.
 pub const UNIFORM_PAIRS: f64 = 1e7;
 
-/// Largest patch, m, at which the uniform kernel reads a room's corners and contacts as
-/// well as the hierarchy: the daylit office's 160 hard probes read 3 beyond 1 % at 0.1 m
-/// and 29 at 0.25 m, where the hierarchy at 0.25 m reads 1; the Cornell box at 0.03 m and
-/// the open box at 0.04 m read 7 and 6 of 240, the hierarchy 46 and 75–101.
+/// Largest patch, m, kept on the uniform kernel: the daylit office's 160 hard probes read
+/// 29 beyond 1 % on it at 0.25 m, where the hierarchy reads 1; the Cornell box at 0.03 m
+/// and the open box at 0.04 m read 7 and 6 of 240 on it, the hierarchy 46 and 75–101. Too
+/// high for a small room: the Cornell box at 0.1 m reads 111 on it and 40 on the hierarchy
+/// (level at 0.05 m; docs/hierarchy.md, "The kernel chosen by size").
 pub const FINE_PATCH: f64 = 0.1;
 
 /// The kernel for `surfaces` (of `materials`) meshed at `patch_size` with `directions`, and why.
@@ -38,7 +38,7 @@ pub fn by_size(
     materials: &[Material],
 ) -> (KernelKind, ChosenBySize) {
     let facing_pairs = Forecast::uniform(surfaces, 0, patch_size, &directions.set()).facing_pairs;
-    let mirrors = surfaces.iter().any(|s| matches!(materials[s.material].model, MaterialModel::Mirror { .. }));
+    let mirrors = surfaces.iter().any(|s| materials[s.material].model.is_delta());
     let reason = match () {
         _ if facing_pairs > UNIFORM_PAIRS => SizeReason::TooManyPairs,
         _ if patch_size <= FINE_PATCH => SizeReason::FinePatches,

@@ -15,7 +15,8 @@ use ugo::progress::Silent;
 use ugo::study::{Job, solve_case};
 
 /// A 4 × 2.5 × 3 m room (x, y, z) under the overcast sky, its south wall (z = 0) given by
-/// `south`, the window by `window`; probes on the floor, the ceiling and the north wall.
+/// `south`, the window by `window`; probes on the floor, the ceiling and the north wall;
+/// uniform patches of 0.25 m (named: the size rule would take the hierarchy at that size).
 fn room(south: &str, window: &str) -> String {
     let rectangle = |name: &str, origin: &str, u: &str, v: &str, material: &str| {
         format!(
@@ -24,7 +25,7 @@ fn room(south: &str, window: &str) -> String {
         )
     };
     let mut text = String::from(
-        "[discretization]\npatch_size = 0.25\n\n[[material]]\nname = \"wall\"\ntype = \"lambert\"\nreflectance = 0.6\n\n\
+        "[discretization]\npatch_size = 0.25\nkernel = \"uniform\"\n\n[[material]]\nname = \"wall\"\ntype = \"lambert\"\nreflectance = 0.6\n\n\
          [sky]\ntype = \"overcast\"\nhorizontal_illuminance = 10000\n\n",
     );
     text += &rectangle("floor", "[0, 0, 0]", "[0, 0, 3]", "[4, 0, 0]", "wall");
