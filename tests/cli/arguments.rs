@@ -117,15 +117,15 @@ fn a_model_over_the_memory_limit_is_refused_before_meshing_with_its_estimate() {
         for fragment in ["6.000e24 patches", "facing pairs", "estimated before meshing", "--kernel hierarchical"] {
             assert!(err.contains(fragment), "{command}: {err}");
         }
-        // without `kernel`, the hierarchy is chosen, and its roots (4e-12 m) are refused
-        let err = assert_clean_failure(&ugo(&[command, case, "--patch-size", "1e-12"]));
+        // chosen by size, the hierarchy, and its roots (4e-12 m) are refused
+        let err = assert_clean_failure(&ugo(&[command, case, "--patch-size", "1e-12", "--kernel", "auto"]));
         for fragment in ["3.750e23 patches", "roots of the hierarchy", "estimated before meshing"] {
             assert!(err.contains(fragment), "{command}: {err}");
         }
         assert!(!err.contains("--kernel hierarchical") && err.contains("--root-size"), "{command}: {err}");
     }
     // the forecast before the refusal, in figures that fit its column
-    let o = ugo(&["info", case, "--patch-size", "1e-12"]);
+    let o = ugo(&["info", case, "--patch-size", "1e-12", "--kernel", "auto"]);
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(out.contains("memory before links 3.185e17 GiB"), "{out}");
     // info prints the forecast before it refuses, and the forecast of a model that fits.
@@ -148,8 +148,9 @@ fn an_obj_model_in_millimetres_is_warned_about_and_refused_before_meshing() {
     }
     obj += "f 1 3 2\nf 1 4 3\nf 1 2 6\nf 1 6 5\n";
     std::fs::write(dir.join("room.obj"), obj).unwrap();
-    let text = std::fs::read_to_string("cases/furnace-box.toml").unwrap()
-        + "\n[[surface]]\nname = \"model\"\nshape = \"mesh\"\nfile = \"room.obj\"\nmaterial = \"grey\"\n";
+    let text =
+        std::fs::read_to_string("cases/furnace-box.toml").unwrap().replace("kernel = \"uniform\"", "kernel = \"auto\"")
+            + "\n[[surface]]\nname = \"model\"\nshape = \"mesh\"\nfile = \"room.obj\"\nmaterial = \"grey\"\n";
     let case = dir.join("mm.toml");
     std::fs::write(&case, text).unwrap();
     let started = std::time::Instant::now();

@@ -37,14 +37,23 @@ fn a_hierarchical_solve_writes_its_passes_and_renders() {
     assert!(o.status.success(), "{}", stderr(&o));
 }
 
-/// Issue 14.8: the furnace cube has no `kernel`; at 0.025 m its uniform kernel would have
-/// 15 · 40⁴ = 3.8e7 facing pairs, so the hierarchy solves it, told on stderr, and the
-/// uniform mesh stays one option away.
+/// Issue 14.8: the furnace cube asked for `--kernel auto`; at 0.025 m its uniform kernel
+/// would have 15 · 40⁴ = 3.8e7 facing pairs, so the hierarchy solves it, told on stderr, and
+/// the uniform mesh stays one option away.
 #[test]
 fn a_case_without_kernel_is_solved_by_the_kernel_its_size_chooses() {
     let dir = scratch("automatic");
     let out = dir.join("furnace.h5");
-    let o = ugo(&["solve", "cases/furnace-box.toml", "--patch-size", "0.025", "-o", out.to_str().unwrap()]);
+    let o = ugo(&[
+        "solve",
+        "cases/furnace-box.toml",
+        "--patch-size",
+        "0.025",
+        "--kernel",
+        "auto",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let note = stderr(&o);
     assert!(note.contains("ugo: note: no `kernel`") && note.contains("3.840e7 facing pairs"), "{note}");

@@ -185,6 +185,8 @@ fn bench_reports_every_figure_as_json_and_exports_the_peer_data() {
     let (json, export) = (dir.join("bench.json"), dir.join("peers"));
     let o = ugo(&[
         "bench",
+        "--kernel",
+        "uniform",
         "--patch-size",
         "0.1",
         "--rays",

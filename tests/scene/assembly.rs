@@ -11,12 +11,17 @@ fn with(keys: &str) -> String {
     format!("{}{LAMP}", BASE.replace("patch_size = 0.1", &format!("patch_size = 0.1\n{keys}")))
 }
 
-/// The unit cube of `cases/furnace-box.toml` at `patch_size` `h`, with `keys` after it.
+/// The unit cube of `cases/furnace-box.toml` at `patch_size` `h`, with `keys` in place of
+/// the case's own `kernel` (the uniform one, on which the white furnace is exact).
 fn cube(h: f64, keys: &str) -> Scene {
-    let text = std::fs::read_to_string("cases/furnace-box.toml")
-        .unwrap()
-        .replace("patch_size = 0.1", &format!("patch_size = {h}\n{keys}"));
-    Scene::parse(Path::new("cases/furnace-box.toml"), text).unwrap()
+    Scene::parse(Path::new("cases/furnace-box.toml"), cube_text(h, keys)).unwrap()
+}
+
+fn cube_text(h: f64, keys: &str) -> String {
+    let text = std::fs::read_to_string("cases/furnace-box.toml").unwrap();
+    let kept: Vec<_> = text.lines().filter(|line| !line.starts_with("kernel = ")).collect();
+    assert_eq!(kept.len() + 1, text.lines().count(), "the case names its kernel once");
+    kept.join("\n").replace("patch_size = 0.1", &format!("patch_size = {h}\n{keys}"))
 }
 
 /// Facing pairs of the cube's uniform kernel at `h`: each of its 15 pairs of faces pairs
@@ -66,18 +71,18 @@ fn affordable_uniform_patches_coarse_against_corners_take_the_hierarchy_unless_t
         let d = &scene.discretization;
         (d.kernel, d.chosen_by_size.expect("chosen").reason)
     };
-    // 15 · 10⁴ pairs at FINE_PATCH: uniform
-    assert_eq!(FINE_PATCH, 0.1);
-    assert_eq!(chosen(&cube(0.1, "")), (KernelKind::Uniform, SizeReason::FinePatches));
+    // 15 · 20⁴ pairs at FINE_PATCH: uniform; at 0.1 m the hierarchy
+    assert_eq!(FINE_PATCH, 0.05);
+    assert_eq!(chosen(&cube(0.05, "")), (KernelKind::Uniform, SizeReason::FinePatches));
+    assert_eq!(chosen(&cube(0.1, "")), (hierarchical(ROOTS * 0.1, 1e-2), SizeReason::CoarsePatches));
     // 15 · 4⁴ = 3,840 pairs, well affordable, but patches of 0.25 m: the hierarchy
     let coarse = cube(0.25, "");
     assert!(cube_pairs(0.25) < UNIFORM_PAIRS);
     assert_eq!(chosen(&coarse), (hierarchical(ROOTS * 0.25, 1e-2), SizeReason::CoarsePatches));
     let told = coarse.discretization.chosen_by_size.unwrap().to_string();
-    assert!(told.contains("over 0.1 m") && told.contains("--kernel uniform"), "{told}");
+    assert!(told.contains("over 0.05 m") && told.contains("--kernel uniform"), "{told}");
     // the same cube with mirror walls keeps the uniform kernel, the one that carries images
-    let text =
-        std::fs::read_to_string("cases/furnace-box.toml").unwrap().replace("patch_size = 0.1", "patch_size = 0.25");
+    let text = cube_text(0.25, "");
     let mirrors = text.replace("type = \"lambert\"", "type = \"mirror\"");
     assert_ne!(mirrors, text);
     let mirrored = Scene::parse(Path::new("cases/furnace-box.toml"), mirrors).unwrap();

@@ -79,6 +79,12 @@ SETTINGS = {
         ("hierarchy-0.1", ["--kernel", "hierarchical", "--patch-size", "0.1"]),
         ("uniform-0.05", ["--kernel", "uniform", "--patch-size", "0.05"]),
         ("hierarchy-0.05", ["--kernel", "hierarchical", "--patch-size", "0.05"]),
+        ("uniform-0.07", ["--kernel", "uniform", "--patch-size", "0.07"]),
+        ("hierarchy-0.07", ["--kernel", "hierarchical", "--patch-size", "0.07"]),
+    ],
+    "glossy-cornell": [
+        ("case", []),
+        ("hierarchy", ["--kernel", "hierarchical"]),
     ],
     "open-box": [
         ("case", []),
