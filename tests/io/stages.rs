@@ -125,7 +125,7 @@ fn sigterm_stops_a_hierarchical_linking_promptly() {
 /// minutes; before they looked for a signal, that stage ran to its end (issue 37, point 7).
 #[test]
 fn sigterm_stops_the_exposed_areas_of_a_large_mesh_promptly() {
-    let args = ["cases/furnace-box.toml", "--patch-size", "5e-4"];
+    let args = ["cases/furnace-box.toml", "--patch-size", "5e-4", "--kernel", "auto"];
     solve_stops_promptly_during("stop-exposure", &args, "exposed areas", "the roots' exposed areas");
 }
 

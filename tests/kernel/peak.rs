@@ -14,7 +14,7 @@ const PATCH: &str = "5e-4";
 
 /// `ugo info`'s "memory before links", bytes.
 fn forecast_bytes() -> f64 {
-    let o = ugo(&["info", CASE, "--patch-size", PATCH]);
+    let o = ugo(&["info", CASE, "--patch-size", PATCH, "--kernel", "auto"]);
     let text = String::from_utf8_lossy(&o.stdout).into_owned();
     let line = text.lines().find(|l| l.contains("memory before links")).unwrap_or_else(|| panic!("{text}"));
     let mut words = line.split_whitespace().skip(3);
@@ -32,7 +32,7 @@ fn forecast_bytes() -> f64 {
 fn measured_peak_bytes() -> f64 {
     let dir = scratch("peak");
     let mut child = Command::new(env!("CARGO_BIN_EXE_ugo"))
-        .args(["solve", CASE, "--patch-size", PATCH, "-o", dir.join("res.h5").to_str().unwrap()])
+        .args(["solve", CASE, "--patch-size", PATCH, "--kernel", "auto", "-o", dir.join("res.h5").to_str().unwrap()])
         .env("UGO_PROGRESS_SECONDS", "0")
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
