@@ -203,6 +203,25 @@ def place(name, count, seed, apart_from=None):
     return bench, command
 
 
+def at_committed_probes(name, bench):
+    """The benchmark case `bench` with the probes of DATA/name.csv, where its references were
+    traced: placement follows the mesh (candidates over the exposed area, moved to walls), so
+    a change of either places probes elsewhere under the same names, which must not be
+    compared with those references. Says how many moved."""
+    with open(DATA / f"{name}.csv") as f:
+        rows = list(csv.DictReader(l for l in f if not l.startswith("#")))
+    placed = probe_tables(bench)
+    moved = sum(1 for r in rows if r["name"] not in placed
+                or math.dist(tuple(map(float, placed[r["name"]]["position"])), tuple(float(r[k]) for k in "xyz")) > 1e-6)
+    if moved:
+        print(f"  {moved} of {len(rows)} probes placed now stand elsewhere than in {os.path.relpath(DATA / f'{name}.csv', ROOT)}: "
+              "read at the references' probes")
+    tables = "".join(f'\n[[probe]]\nname = "{r["name"]}"\nposition = [{r["x"]}, {r["y"]}, {r["z"]}]\n'
+                     f'normal = [{r["nx"]}, {r["ny"]}, {r["nz"]}]\n' for r in rows)
+    bench.write_text(bench_case(ROOT / "cases" / f"{name}.toml", tables))
+    return bench
+
+
 def apart(probes, reference):
     """The `[[probe]]` tables of `probes` (a file's text) farther than TUNING_APART from
     every probe of `reference` (a references file)."""
@@ -415,6 +434,8 @@ def main():
     for name in args.cases:
         print(f"{name}:")
         bench, placed = place(name, count, seed, committed / f"{name}.csv" if args.tuning else None)
+        if args.step in ("solve", "compare", "trace", "unsteered") and (DATA / f"{name}.csv").exists():
+            bench = at_committed_probes(name, bench)
         if args.step == "pilot":
             pilot(name, bench, seed)
         if args.step in ("all", "reference"):

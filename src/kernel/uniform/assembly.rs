@@ -5,9 +5,11 @@
 //! rows: both exchange-area estimates (integrated over `i` and over `j`, split by cells
 //! when `K > 1`), their mean (so `A_i F_ij^{d,m} = A_j F_ji^{m,d}` holds exactly), the
 //! shared visibility fraction, and both patches' base-rule closure contributions. The
-//! exchange areas are then balanced row by row, `(patch, cell)`, and become
-//! `G[(i,d),(j,m)] = D_(i,d) D_(j,m) T_ij^{d,m} / A_i` (see [`cell_targets`] for what each
-//! row must carry). Plane mirrors carry light between patches by their images
+//! exchange areas of a patch that straddles a solid's foot print are taken from the share
+//! of its points outside to its exposed area (`e_i`, `transfer::exposure`). They are then
+//! balanced row by row, `(patch, cell)`, and become
+//! `G[(i,d),(j,m)] = D_(i,d) D_(j,m) e_i e_j T_ij^{d,m} / (φ_i A_i)`, `φ_i A_i` the exposed
+//! area ((3.11); see [`cell_targets`] for what each row must carry). Plane mirrors carry light between patches by their images
 //! (`images.rs`, `docs/design.md` (3.10)) instead of their columns of `G`.
 
 use super::balance::balance;
@@ -17,6 +19,7 @@ use crate::directions::DirectionSet;
 use crate::geometry::{Mesh, facing};
 use crate::interrupt::Interrupted;
 use crate::kernel::BalanceReport;
+use crate::transfer::exposure::point_corrections;
 use crate::transfer::form_factor::{Binning, Quadrature};
 use crate::transfer::image::PlaneMirror;
 use crate::transfer::occlusion::{POINTS, sample_points, visible_fraction};
@@ -77,11 +80,13 @@ pub fn assemble(
         let pairs: usize = work.iter().map(|w| w.visited).sum();
         format!("the assembly of G ({pairs} facing pairs of its {n} patches integrated)")
     })?;
-    let exchange = sparse_rows(mesh, k, &work);
-    let (mut d, mut report) = balance(&exchange, &cell_targets(mesh, directions, &work, &exchange, true));
+    let exposure = point_corrections(mesh, visibility);
+    let exchange = to_exposed_areas(sparse_rows(mesh, k, &work), &exposure, k);
+    let targets = |by_cell| cell_targets(mesh, directions, &work, &exchange, &exposure, by_cell);
+    let (mut d, mut report) = balance(&exchange, &targets(true));
     report.by_cell = true;
     if report.residual > BALANCED || report.max_correction > MOST_CORRECTION {
-        (d, report) = balance(&exchange, &cell_targets(mesh, directions, &work, &exchange, false));
+        (d, report) = balance(&exchange, &targets(false));
     }
     let (mut pairs, mut rays) = (work.iter().map(|w| w.visited).sum(), work.iter().map(|w| w.rays).sum());
     if mirrors.is_empty() {
@@ -105,10 +110,21 @@ pub fn assemble(
     crate::interrupt::check(|| format!("the mirror images of G ({n} patches)"))?;
     pairs += images.iter().map(|w| w.visited).sum::<usize>();
     rays += images.iter().map(|w| w.rays).sum::<usize>();
-    let images = sparse_rows(mesh, k, &images);
+    let images = to_exposed_areas(sparse_rows(mesh, k, &images), &exposure, k);
     let e = balance_images(mesh, mirrors, k, &exchange, &d, &images);
     let g = combine(mesh, k, &planes.held, (&exchange, &d), (&images, &e));
     Ok(Assembled { g, balance: report, pairs, rays })
+}
+
+/// `T[(i,d),(j,m)] e_i e_j`: the exchange areas integrated through the patches' points taken
+/// to their exposed areas (`e`, [`point_corrections`]; `K` cells a patch).
+fn to_exposed_areas(mut t: CsMat<f64>, e: &[f64], k: usize) -> CsMat<f64> {
+    for (r, mut row) in t.outer_iterator_mut().enumerate() {
+        for (c, v) in row.iter_mut() {
+            *v *= e[r / k] * e[c / k];
+        }
+    }
+    t
 }
 
 /// The order the rows are integrated in, `k ↦ k·stride mod n`: a stride near `0.618 n`
@@ -148,6 +164,7 @@ fn cell_targets(
     directions: &DirectionSet,
     work: &[RowWork],
     exchange: &CsMat<f64>,
+    exposure: &[f64],
     by_cell: bool,
 ) -> Vec<f64> {
     let k = directions.len();
@@ -157,6 +174,7 @@ fn cell_targets(
             closure[p.j as usize] += p.base_j;
         }
     }
+    closure.iter_mut().zip(exposure).for_each(|(c, e)| *c *= e);
     let row_sums: Vec<f64> = exchange.outer_iterator().map(|r| r.data().iter().sum()).collect();
     let mut targets = vec![0.0; row_sums.len()];
     for (i, patch) in mesh.patches.iter().enumerate() {
