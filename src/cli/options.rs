@@ -31,7 +31,8 @@ pub struct Discretize {
     /// (element trees from roots of `--root-size` down to `--patch-size`, links where the
     /// oracle accepts them; docs/hierarchy.md) or `auto`. Default: the case's `kernel`;
     /// without one, the uniform kernel up to 10⁷ facing pairs at patches of at most 0.05 m
-    /// (or with mirrors), else the hierarchical one with its defaults. A saved kernel is `--kernel-file`.
+    /// (or with mirrors), else the hierarchical one with its defaults. A saved kernel is
+    /// `--kernel-file`.
     #[arg(long, value_parser = kernel)]
     pub kernel: Option<KernelAsked>,
     /// Edge of the hierarchical kernel's roots, m (default: the case's `root_size`, else 4

@@ -9,8 +9,9 @@
 //! of its points outside to its exposed area (`e_i`, `transfer::exposure`). They are then
 //! balanced row by row, `(patch, cell)`, and become
 //! `G[(i,d),(j,m)] = D_(i,d) D_(j,m) e_i e_j T_ij^{d,m} / (φ_i A_i)`, `φ_i A_i` the exposed
-//! area ((3.11); see [`cell_targets`] for what each row must carry). Plane mirrors carry light between patches by their images
-//! (`images.rs`, `docs/design.md` (3.10)) instead of their columns of `G`.
+//! area ((3.11); see [`cell_targets`] for what each row must carry). Plane mirrors carry
+//! light between patches by their images (`images.rs`, `docs/design.md` (3.10)) instead of
+//! their columns of `G`.
 
 use super::balance::balance;
 use super::images::{Mirrors, balance_images, combine, image_row};
